@@ -1,0 +1,556 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// medial-axis: medial axis transform of a closed triangle mesh, from the command line.
+//
+// Reads a mesh (or generates the demo shape), runs vtkMedialAxisSampler, and
+// writes the medial balls, a picture and a JSON line of figures. Only wiring
+// lives here; every algorithm is in a filter.
+
+#include "vtkMedialAxisSampler.h"
+#include "vtkMedialShapeSource.h"
+
+#include "vtkActor.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkCommand.h"
+#include "vtkDataSetSurfaceFilter.h"
+#include "vtkDataSetReader.h"
+#include "vtkFieldData.h"
+#include "vtkDataArray.h"
+#include "vtkLookupTable.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkPLYReader.h"
+#include "vtkPNGWriter.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSTLReader.h"
+#include "vtkScalarBarActor.h"
+#include "vtkSmartPointer.h"
+#include "vtkTextProperty.h"
+#include "vtkWindowToImageFilter.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include <omp.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+namespace
+{
+const char* Usage =
+  "usage: medial-axis [INPUT] [-n N] [--method bisection|shrinking-ball] [--seed S]\n"
+  "                   [--threads T] [--tolerance E] [--min-angle DEG] [-o OUT.vtp]\n"
+  "                   [--render OUT.png] [--stats]\n"
+  "  INPUT        closed surface: .vtp .vtk .ply .stl .obj; none: the built-in demo shape\n"
+  "  -n N         number of surface samples (default 10000)\n"
+  "  --method M   bisection (default) or shrinking-ball\n"
+  "  --seed S     random seed (default 1); output is identical for any thread count\n"
+  "  --threads T  OpenMP threads, 0 = all cores (default 0)\n"
+  "  --tolerance E  bisection tolerance relative to the bounding-box diagonal (default 1e-6)\n"
+  "  --min-angle DEG  minimum separation angle theta in degrees (default 60; 0 = exact\n"
+  "               medial axis of the polyhedron)\n"
+  "  -o OUT.vtp   write the medial balls (points with Radius, SurfacePoint, ...)\n"
+  "  --render OUT.png  render the surface and the medial points offscreen (needs X; use xvfb-run)\n"
+  "  --stats      print one JSON line of figures on stdout\n";
+
+struct Options
+{
+  std::string Input;
+  long long Samples = 10000;
+  int Method = vtkMedialAxisSampler::BISECTION;
+  unsigned long long Seed = 1;
+  int Threads = 0;
+  double Tolerance = 1e-6;
+  double MinAngle = 60.0;
+  std::string Output;
+  std::string Render;
+  bool Stats = false;
+};
+
+[[noreturn]] void Fail(const std::string& reason)
+{
+  std::cerr << "medial-axis: error: " << reason << "\n";
+  std::exit(1);
+}
+
+// Collects VTK errors and warnings from readers and filters as one-line messages.
+struct MessageSink
+{
+  std::string LastError;
+  vtkNew<vtkCallbackCommand> Command;
+  MessageSink()
+  {
+    this->Command->SetClientData(this);
+    this->Command->SetCallback([](vtkObject*, unsigned long event, void* client, void* data) {
+      auto* self = static_cast<MessageSink*>(client);
+      std::string text = data ? static_cast<const char*>(data) : "";
+      // VTK prefixes "ERROR: In file, line N\nClass (0x...): message"; keep the message.
+      const size_t colon = text.find("): ");
+      if (colon != std::string::npos)
+      {
+        text = text.substr(colon + 3);
+      }
+      while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
+      {
+        text.pop_back();
+      }
+      std::replace(text.begin(), text.end(), '\n', ' ');
+      if (event == vtkCommand::ErrorEvent)
+      {
+        if (self->LastError.empty())
+        {
+          self->LastError = text;
+        }
+      }
+      else
+      {
+        std::cerr << "medial-axis: warning: " << text << "\n";
+      }
+    });
+  }
+  void Watch(vtkObject* o)
+  {
+    o->AddObserver(vtkCommand::ErrorEvent, this->Command);
+    o->AddObserver(vtkCommand::WarningEvent, this->Command);
+  }
+};
+
+bool ParseNumber(const char* text, double& value)
+{
+  char* end = nullptr;
+  value = std::strtod(text, &end);
+  return end != text && *end == '\0' && std::isfinite(value);
+}
+
+Options Parse(int argc, char* argv[])
+{
+  Options o;
+  auto need = [&](int& i) -> const char* {
+    if (i + 1 >= argc)
+    {
+      Fail(std::string(argv[i]) + " needs a value (see --help)");
+    }
+    return argv[++i];
+  };
+  auto number = [&](int& i, double lo, double hi) {
+    const std::string flag = argv[i];
+    const char* text = need(i);
+    double v;
+    if (!ParseNumber(text, v) || v < lo || v > hi)
+    {
+      std::ostringstream os;
+      os << flag << " expects a number in [" << lo << ", " << hi << "], got '" << text << "'";
+      Fail(os.str());
+    }
+    return v;
+  };
+  auto integer = [&](int& i, double lo, double hi) {
+    const std::string flag = argv[i];
+    const double v = number(i, lo, hi);
+    if (v != std::floor(v))
+    {
+      Fail(flag + " expects a whole number");
+    }
+    return v;
+  };
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if (a == "-h" || a == "--help")
+    {
+      std::cout << Usage;
+      std::exit(0);
+    }
+    else if (a == "-n")
+    {
+      o.Samples = static_cast<long long>(integer(i, 1, 1e15));
+    }
+    else if (a == "--method")
+    {
+      const std::string m = need(i);
+      if (m == "bisection")
+      {
+        o.Method = vtkMedialAxisSampler::BISECTION;
+      }
+      else if (m == "shrinking-ball")
+      {
+        o.Method = vtkMedialAxisSampler::SHRINKING_BALL;
+      }
+      else
+      {
+        Fail("unknown --method '" + m + "' (bisection, shrinking-ball)");
+      }
+    }
+    else if (a == "--seed")
+    {
+      o.Seed = static_cast<unsigned long long>(integer(i, 0, 9.0e15));
+    }
+    else if (a == "--threads")
+    {
+      o.Threads = static_cast<int>(integer(i, 0, 4096));
+    }
+    else if (a == "--tolerance")
+    {
+      o.Tolerance = number(i, 1e-15, 0.1);
+    }
+    else if (a == "--min-angle")
+    {
+      o.MinAngle = number(i, 0, 179);
+    }
+    else if (a == "-o")
+    {
+      o.Output = need(i);
+    }
+    else if (a == "--render")
+    {
+      o.Render = need(i);
+    }
+    else if (a == "--stats")
+    {
+      o.Stats = true;
+    }
+    else if (!a.empty() && a[0] == '-')
+    {
+      Fail("unknown option '" + a + "' (see --help)");
+    }
+    else if (o.Input.empty())
+    {
+      o.Input = a;
+    }
+    else
+    {
+      Fail("more than one input file given");
+    }
+  }
+  return o;
+}
+
+std::string Extension(const std::string& path)
+{
+  const size_t dot = path.find_last_of('.');
+  std::string e = dot == std::string::npos ? "" : path.substr(dot);
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
+  return e;
+}
+
+// Fails unless `path` can be created as a file.
+void CheckWritable(const std::string& path, const char* what)
+{
+  struct stat st;
+  if (stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+  {
+    Fail(std::string(what) + " path '" + path + "' is a directory");
+  }
+  const size_t slash = path.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
+  if (access(dir.c_str(), W_OK) != 0)
+  {
+    Fail(std::string(what) + " path '" + path + "' is not writable (folder '" + dir + "')");
+  }
+}
+
+vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, MessageSink& sink)
+{
+  struct stat st;
+  if (stat(path.c_str(), &st) != 0)
+  {
+    Fail("cannot open input '" + path + "': " + std::strerror(errno));
+  }
+  if (S_ISDIR(st.st_mode))
+  {
+    Fail("input '" + path + "' is a directory");
+  }
+  if (st.st_size == 0)
+  {
+    Fail("input '" + path + "' is empty");
+  }
+  const std::string ext = Extension(path);
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (ext == ".vtp")
+  {
+    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (ext == ".vtk")
+  {
+    // Any legacy dataset; its surface is extracted.
+    auto r = vtkSmartPointer<vtkDataSetReader>::New();
+    r->SetFileName(path.c_str());
+    auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
+    surface->SetInputConnection(r->GetOutputPort());
+    sink.Watch(r);
+    reader = surface;
+  }
+  else if (ext == ".ply")
+  {
+    auto r = vtkSmartPointer<vtkPLYReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (ext == ".stl")
+  {
+    auto r = vtkSmartPointer<vtkSTLReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (ext == ".obj")
+  {
+    auto r = vtkSmartPointer<vtkOBJReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else
+  {
+    Fail("unsupported input extension '" + ext + "' (.vtp .vtk .ply .stl .obj)");
+  }
+  sink.Watch(reader);
+  reader->Update();
+  if (!sink.LastError.empty())
+  {
+    Fail("cannot read '" + path + "': " + sink.LastError);
+  }
+  vtkPolyData* data = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!data || data->GetNumberOfPoints() == 0)
+  {
+    Fail("cannot read '" + path + "': no points (empty or not a " + ext + " file)");
+  }
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(data);
+  return copy;
+}
+
+void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, MessageSink& sink)
+{
+  vtkNew<vtkPolyDataMapper> surfaceMapper;
+  surfaceMapper->SetInputData(surface);
+  surfaceMapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> surfaceActor;
+  surfaceActor->SetMapper(surfaceMapper);
+  surfaceActor->GetProperty()->SetColor(0.80, 0.82, 0.86);
+  surfaceActor->GetProperty()->SetOpacity(0.22);
+
+  double range[2] = { 0.0, 1.0 };
+  if (auto* r = medial->GetPointData()->GetArray("Radius"))
+  {
+    if (r->GetNumberOfTuples() > 0)
+    {
+      r->GetRange(range);
+    }
+  }
+  vtkNew<vtkLookupTable> lut;
+  lut->SetHueRange(0.667, 0.0); // blue (thin) to red (thick)
+  lut->SetTableRange(range);
+  lut->Build();
+  vtkNew<vtkPolyDataMapper> medialMapper;
+  medialMapper->SetInputData(medial);
+  medialMapper->SetLookupTable(lut);
+  medialMapper->SetScalarModeToUsePointFieldData();
+  medialMapper->SelectColorArray("Radius");
+  medialMapper->SetScalarRange(range);
+  medialMapper->ScalarVisibilityOn();
+  vtkNew<vtkActor> medialActor;
+  medialActor->SetMapper(medialMapper);
+  medialActor->GetProperty()->SetPointSize(4);
+  medialActor->GetProperty()->RenderPointsAsSpheresOn();
+
+  vtkNew<vtkScalarBarActor> bar;
+  bar->SetLookupTable(lut);
+  bar->SetTitle("Radius");
+  bar->SetNumberOfLabels(5);
+  bar->SetWidth(0.09);
+  bar->SetHeight(0.6);
+  bar->SetPosition(0.89, 0.2);
+  bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
+  bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(1, 1, 1);
+  renderer->AddActor(surfaceActor);
+  renderer->AddActor(medialActor);
+  renderer->AddActor2D(bar);
+  renderer->ResetCamera();
+  renderer->GetActiveCamera()->Azimuth(30);
+  renderer->GetActiveCamera()->Elevation(20);
+  renderer->ResetCamera();
+  renderer->GetActiveCamera()->Zoom(1.25);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(900, 640);
+  window->AddRenderer(renderer);
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  vtkNew<vtkPNGWriter> png;
+  png->SetInputConnection(grab->GetOutputPort());
+  png->SetFileName(path.c_str());
+  sink.Watch(png);
+  png->Write();
+  if (!sink.LastError.empty())
+  {
+    Fail("cannot write '" + path + "': " + sink.LastError);
+  }
+}
+
+std::string JsonString(const std::string& s)
+{
+  std::string out = "\"";
+  for (char c : s)
+  {
+    if (c == '"' || c == '\\')
+    {
+      out += '\\';
+      out += c;
+    }
+    else if (static_cast<unsigned char>(c) < 0x20)
+    {
+      char buf[8];
+      std::snprintf(buf, sizeof(buf), "\\u%04x", c);
+      out += buf;
+    }
+    else
+    {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+}
+
+int main(int argc, char* argv[])
+{
+  const Options opt = Parse(argc, argv);
+  MessageSink sink;
+
+  if (!opt.Render.empty())
+  {
+    const char* display = std::getenv("DISPLAY");
+    if (!display || !*display)
+    {
+      Fail("--render needs an X display and none is set (DISPLAY is empty); run under "
+           "xvfb-run, e.g. 'xvfb-run -a medial-axis ... --render out.png'");
+    }
+    CheckWritable(opt.Render, "--render");
+  }
+  if (!opt.Output.empty())
+  {
+    if (Extension(opt.Output) != ".vtp")
+    {
+      Fail("-o writes VTK XML polydata and needs a .vtp name, got '" + opt.Output + "'");
+    }
+    CheckWritable(opt.Output, "-o");
+  }
+
+  vtkSmartPointer<vtkPolyData> surface;
+  if (opt.Input.empty())
+  {
+    vtkNew<vtkMedialShapeSource> demo;
+    demo->SetShapeToJack();
+    demo->Update();
+    surface = demo->GetOutput();
+  }
+  else
+  {
+    surface = ReadSurface(opt.Input, sink);
+  }
+
+  vtkNew<vtkMedialAxisSampler> sampler;
+  sink.Watch(sampler);
+  sampler->SetInputData(surface);
+  sampler->SetNumberOfSamples(static_cast<vtkIdType>(opt.Samples));
+  sampler->SetMethod(opt.Method);
+  sampler->SetRandomSeed(opt.Seed);
+  sampler->SetNumberOfThreads(opt.Threads);
+  sampler->SetTolerance(opt.Tolerance);
+  sampler->SetMinimumSeparationAngle(opt.MinAngle);
+
+  // Progress bar: only on a terminal, and only once a run has lasted a second.
+  const auto start = std::chrono::steady_clock::now();
+  struct Progress
+  {
+    std::chrono::steady_clock::time_point Start;
+    bool Shown = false;
+  } progress{ start };
+  vtkNew<vtkCallbackCommand> progressCommand;
+  if (isatty(STDERR_FILENO))
+  {
+    progressCommand->SetClientData(&progress);
+    progressCommand->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
+      auto* p = static_cast<Progress*>(client);
+      const double fraction = *static_cast<double*>(data);
+      const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - p->Start).count();
+      if (elapsed < 1.0 && !p->Shown)
+      {
+        return;
+      }
+      p->Shown = true;
+      const int width = 40, filled = static_cast<int>(fraction * width + 0.5);
+      std::fprintf(stderr, "\r[%s%s] %3d%%  %.1fs", std::string(filled, '#').c_str(),
+        std::string(width - filled, ' ').c_str(), static_cast<int>(fraction * 100 + 0.5), elapsed);
+      std::fflush(stderr);
+    });
+    sampler->AddObserver(vtkCommand::ProgressEvent, progressCommand);
+  }
+
+  sampler->Update();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (progress.Shown)
+  {
+    std::fprintf(stderr, "\n");
+  }
+  if (!sink.LastError.empty())
+  {
+    Fail(sink.LastError);
+  }
+  vtkPolyData* medial = sampler->GetOutput();
+
+  if (!opt.Output.empty())
+  {
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    sink.Watch(writer);
+    writer->SetInputData(medial);
+    writer->SetFileName(opt.Output.c_str());
+    writer->SetDataModeToBinary();
+    if (!writer->Write() || !sink.LastError.empty())
+    {
+      Fail("cannot write '" + opt.Output + "': " + sink.LastError);
+    }
+  }
+  if (!opt.Render.empty())
+  {
+    Render(surface, medial, opt.Render, sink);
+  }
+  if (opt.Stats)
+  {
+    const int threads = opt.Threads > 0 ? opt.Threads : omp_get_num_procs();
+    std::ostringstream js;
+    js.precision(6);
+    js << "{\"input\": " << JsonString(opt.Input.empty() ? "demo:jack" : opt.Input)
+       << ", \"triangles\": " << sampler->GetNumberOfTriangles() << ", \"samples\": " << opt.Samples
+       << ", \"medial_points\": " << medial->GetNumberOfPoints()
+       << ", \"discarded\": " << sampler->GetDiscardedSamples() << ", \"method\": "
+       << JsonString(vtkMedialAxisSampler::GetMethodName(opt.Method)) << ", \"threads\": " << threads
+       << ", \"min_angle\": " << opt.MinAngle << ", \"tolerance\": " << opt.Tolerance
+       << ", \"iterations_mean\": " << sampler->GetMeanIterations()
+       << ", \"capped\": " << sampler->GetCappedSamples() << ", \"seconds\": " << seconds << "}";
+    std::cout << js.str() << std::endl;
+  }
+  return 0;
+}

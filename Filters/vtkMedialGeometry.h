@@ -1,0 +1,194 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file vtkMedialGeometry.h
+ * @brief Small double-precision geometric kernels shared by the medial filters.
+ *
+ * Closest point on a triangle (Ericson, "Real-Time Collision Detection" 5.1.5),
+ * the same on a triangle clipped by a half-space (used to ignore contacts in
+ * the cap around a sample point), and vector helpers. Internal header; not
+ * installed. Every decisive inside/outside comparison goes through here, in
+ * double precision.
+ */
+#ifndef vtkMedialGeometry_h
+#define vtkMedialGeometry_h
+
+#include <algorithm>
+#include <cmath>
+
+namespace vtkMedialGeometry
+{
+inline double Dot(const double a[3], const double b[3])
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+inline void Sub(const double a[3], const double b[3], double r[3])
+{
+  r[0] = a[0] - b[0];
+  r[1] = a[1] - b[1];
+  r[2] = a[2] - b[2];
+}
+inline void Cross(const double a[3], const double b[3], double r[3])
+{
+  r[0] = a[1] * b[2] - a[2] * b[1];
+  r[1] = a[2] * b[0] - a[0] * b[2];
+  r[2] = a[0] * b[1] - a[1] * b[0];
+}
+inline double Distance2(const double a[3], const double b[3])
+{
+  const double d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+  return Dot(d, d);
+}
+/// r = a + s * d
+inline void AddScaled(const double a[3], double s, const double d[3], double r[3])
+{
+  r[0] = a[0] + s * d[0];
+  r[1] = a[1] + s * d[1];
+  r[2] = a[2] + s * d[2];
+}
+/// Angle between (a - apex) and (b - apex), in degrees; 0 when degenerate.
+inline double AngleDegrees(const double apex[3], const double a[3], const double b[3])
+{
+  double u[3], v[3], w[3];
+  Sub(a, apex, u);
+  Sub(b, apex, v);
+  Cross(u, v, w);
+  // atan2 of |u x v| and u.v is accurate at every angle, unlike acos.
+  return std::atan2(std::sqrt(Dot(w, w)), Dot(u, v)) * (180.0 / 3.14159265358979323846);
+}
+
+/// Closest point to p on triangle (a, b, c); returns the squared distance.
+inline double ClosestPointOnTriangle(
+  const double p[3], const double a[3], const double b[3], const double c[3], double out[3])
+{
+  double ab[3], ac[3], ap[3];
+  Sub(b, a, ab);
+  Sub(c, a, ac);
+  Sub(p, a, ap);
+  const double d1 = Dot(ab, ap), d2 = Dot(ac, ap);
+  if (d1 <= 0.0 && d2 <= 0.0)
+  {
+    std::copy(a, a + 3, out);
+    return Distance2(p, out);
+  }
+  double bp[3];
+  Sub(p, b, bp);
+  const double d3 = Dot(ab, bp), d4 = Dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3)
+  {
+    std::copy(b, b + 3, out);
+    return Distance2(p, out);
+  }
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
+  {
+    AddScaled(a, d1 / (d1 - d3), ab, out);
+    return Distance2(p, out);
+  }
+  double cp[3];
+  Sub(p, c, cp);
+  const double d5 = Dot(ab, cp), d6 = Dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6)
+  {
+    std::copy(c, c + 3, out);
+    return Distance2(p, out);
+  }
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
+  {
+    AddScaled(a, d2 / (d2 - d6), ac, out);
+    return Distance2(p, out);
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
+  {
+    double bc[3];
+    Sub(c, b, bc);
+    AddScaled(b, (d4 - d3) / ((d4 - d3) + (d5 - d6)), bc, out);
+    return Distance2(p, out);
+  }
+  const double sum = va + vb + vc;
+  if (!(sum > 0.0)) // degenerate triangle: fall back to its edges
+  {
+    double best = Distance2(p, a), q[3];
+    std::copy(a, a + 3, out);
+    const double* v[3] = { a, b, c };
+    for (int e = 0; e < 3; ++e)
+    {
+      const double* s = v[e];
+      const double* t = v[(e + 1) % 3];
+      double st[3], sp[3];
+      Sub(t, s, st);
+      Sub(p, s, sp);
+      const double len2 = Dot(st, st);
+      const double u = len2 > 0.0 ? std::min(1.0, std::max(0.0, Dot(sp, st) / len2)) : 0.0;
+      AddScaled(s, u, st, q);
+      const double d = Distance2(p, q);
+      if (d < best)
+      {
+        best = d;
+        std::copy(q, q + 3, out);
+      }
+    }
+    return best;
+  }
+  const double v = vb / sum, w = vc / sum;
+  for (int i = 0; i < 3; ++i)
+  {
+    out[i] = a[i] + ab[i] * v + ac[i] * w;
+  }
+  return Distance2(p, out);
+}
+
+/**
+ * Closest point to p on the part of triangle (a, b, c) where dot(w, x) <= k.
+ * Returns the squared distance, or +inf when that part is empty.
+ */
+inline double ClosestPointOnClippedTriangle(const double p[3], const double a[3], const double b[3],
+  const double c[3], const double w[3], double k, double out[3])
+{
+  const double* v[3] = { a, b, c };
+  const double s[3] = { Dot(w, a) - k, Dot(w, b) - k, Dot(w, c) - k };
+  if (s[0] <= 0.0 && s[1] <= 0.0 && s[2] <= 0.0)
+  {
+    return ClosestPointOnTriangle(p, a, b, c, out);
+  }
+  if (s[0] > 0.0 && s[1] > 0.0 && s[2] > 0.0)
+  {
+    return HUGE_VAL;
+  }
+  // Sutherland-Hodgman against one plane: at most 4 vertices survive.
+  double poly[4][3];
+  int n = 0;
+  for (int i = 0; i < 3; ++i)
+  {
+    const int j = (i + 1) % 3;
+    if (s[i] <= 0.0)
+    {
+      std::copy(v[i], v[i] + 3, poly[n++]);
+    }
+    if ((s[i] <= 0.0) != (s[j] <= 0.0))
+    {
+      const double t = s[i] / (s[i] - s[j]);
+      for (int d = 0; d < 3; ++d)
+      {
+        poly[n][d] = v[i][d] + t * (v[j][d] - v[i][d]);
+      }
+      ++n;
+    }
+  }
+  // The clipped polygon is convex: fan it into triangles.
+  double best = HUGE_VAL, q[3];
+  for (int i = 1; i + 1 < n; ++i)
+  {
+    const double d = ClosestPointOnTriangle(p, poly[0], poly[i], poly[i + 1], q);
+    if (d < best)
+    {
+      best = d;
+      std::copy(q, q + 3, out);
+    }
+  }
+  return best;
+}
+} // namespace vtkMedialGeometry
+
+#endif

@@ -1,0 +1,344 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkMedialShapeSource.h"
+
+#include "vtkCellArray.h"
+#include "vtkFlyingEdges3D.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <utility>
+#include <vector>
+
+vtkStandardNewMacro(vtkMedialShapeSource);
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+struct MeshBuilder
+{
+  std::vector<std::array<double, 3>> Points;
+  std::vector<std::array<vtkIdType, 3>> Triangles;
+
+  vtkIdType Add(double x, double y, double z)
+  {
+    this->Points.push_back({ x, y, z });
+    return static_cast<vtkIdType>(this->Points.size() - 1);
+  }
+  void Tri(vtkIdType a, vtkIdType b, vtkIdType c) { this->Triangles.push_back({ a, b, c }); }
+
+  void Emit(vtkPolyData* out) const
+  {
+    vtkNew<vtkPoints> pts;
+    pts->SetDataTypeToDouble();
+    pts->SetNumberOfPoints(static_cast<vtkIdType>(this->Points.size()));
+    for (size_t i = 0; i < this->Points.size(); ++i)
+    {
+      pts->SetPoint(static_cast<vtkIdType>(i), this->Points[i].data());
+    }
+    vtkNew<vtkCellArray> polys;
+    polys->AllocateExact(static_cast<vtkIdType>(this->Triangles.size()), 3 * this->Triangles.size());
+    for (const auto& t : this->Triangles)
+    {
+      polys->InsertNextCell(3, t.data());
+    }
+    out->SetPoints(pts);
+    out->SetPolys(polys);
+  }
+};
+
+void MakeSphere(MeshBuilder& m, double radius, int levels)
+{
+  const double g = (1.0 + std::sqrt(5.0)) / 2.0;
+  const double ico[12][3] = { { -1, g, 0 }, { 1, g, 0 }, { -1, -g, 0 }, { 1, -g, 0 }, { 0, -1, g },
+    { 0, 1, g }, { 0, -1, -g }, { 0, 1, -g }, { g, 0, -1 }, { g, 0, 1 }, { -g, 0, -1 },
+    { -g, 0, 1 } };
+  const int faces[20][3] = { { 0, 11, 5 }, { 0, 5, 1 }, { 0, 1, 7 }, { 0, 7, 10 }, { 0, 10, 11 },
+    { 1, 5, 9 }, { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 }, { 7, 1, 8 }, { 3, 9, 4 }, { 3, 4, 2 },
+    { 3, 2, 6 }, { 3, 6, 8 }, { 3, 8, 9 }, { 4, 9, 5 }, { 2, 4, 11 }, { 6, 2, 10 }, { 8, 6, 7 },
+    { 9, 8, 1 } };
+  auto addUnit = [&m](double x, double y, double z) {
+    const double l = std::sqrt(x * x + y * y + z * z);
+    return m.Add(x / l, y / l, z / l);
+  };
+  for (const auto& p : ico)
+  {
+    addUnit(p[0], p[1], p[2]);
+  }
+  for (const auto& f : faces)
+  {
+    m.Tri(f[0], f[1], f[2]);
+  }
+  for (int level = 0; level < levels; ++level)
+  {
+    std::map<std::pair<vtkIdType, vtkIdType>, vtkIdType> midpoints;
+    auto mid = [&](vtkIdType a, vtkIdType b) {
+      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      auto it = midpoints.find(key);
+      if (it != midpoints.end())
+      {
+        return it->second;
+      }
+      const auto pa = m.Points[a], pb = m.Points[b];
+      const vtkIdType id = addUnit(pa[0] + pb[0], pa[1] + pb[1], pa[2] + pb[2]);
+      midpoints.emplace(key, id);
+      return id;
+    };
+    std::vector<std::array<vtkIdType, 3>> next;
+    next.reserve(4 * m.Triangles.size());
+    for (const auto& t : m.Triangles)
+    {
+      const vtkIdType ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
+      next.push_back({ t[0], ab, ca });
+      next.push_back({ t[1], bc, ab });
+      next.push_back({ t[2], ca, bc });
+      next.push_back({ ab, bc, ca });
+    }
+    m.Triangles.swap(next);
+  }
+  for (auto& p : m.Points)
+  {
+    for (double& c : p)
+    {
+      c *= radius;
+    }
+  }
+}
+
+void MakeBox(MeshBuilder& m, const double lengths[3], int n)
+{
+  // Shared grid points: index by integer lattice coordinates on the box surface.
+  std::map<std::array<int, 3>, vtkIdType> ids;
+  auto point = [&](int i, int j, int k) {
+    const std::array<int, 3> key = { i, j, k };
+    auto it = ids.find(key);
+    if (it != ids.end())
+    {
+      return it->second;
+    }
+    const vtkIdType id = m.Add(lengths[0] * (static_cast<double>(i) / n - 0.5),
+      lengths[1] * (static_cast<double>(j) / n - 0.5), lengths[2] * (static_cast<double>(k) / n - 0.5));
+    ids.emplace(key, id);
+    return id;
+  };
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    for (int side = 0; side < 2; ++side)
+    {
+      for (int a = 0; a < n; ++a)
+      {
+        for (int b = 0; b < n; ++b)
+        {
+          vtkIdType q[4];
+          const int corners[4][2] = { { a, b }, { a + 1, b }, { a + 1, b + 1 }, { a, b + 1 } };
+          for (int c = 0; c < 4; ++c)
+          {
+            int ijk[3];
+            ijk[axis] = side * n;
+            ijk[u] = corners[c][0];
+            ijk[v] = corners[c][1];
+            q[c] = point(ijk[0], ijk[1], ijk[2]);
+          }
+          // (u, v, axis) is right-handed: counter-clockwise in (u, v) faces +axis.
+          if (side == 1)
+          {
+            m.Tri(q[0], q[1], q[2]);
+            m.Tri(q[0], q[2], q[3]);
+          }
+          else
+          {
+            m.Tri(q[0], q[2], q[1]);
+            m.Tri(q[0], q[3], q[2]);
+          }
+        }
+      }
+    }
+  }
+}
+
+void MakeCapsule(MeshBuilder& m, double radius, double length, int resolution)
+{
+  const int around = 4 * resolution;
+  const int capRings = resolution; // rings per hemisphere, excluding the pole
+  const int bodyRings = std::max(1, static_cast<int>(std::ceil(length / (2 * Pi * radius / around))));
+  // Profile from the south pole to the north pole: (distance from axis, z).
+  std::vector<std::pair<double, double>> profile;
+  for (int i = 1; i <= capRings; ++i)
+  {
+    const double a = -0.5 * Pi + 0.5 * Pi * i / capRings;
+    profile.emplace_back(radius * std::cos(a), -0.5 * length + radius * std::sin(a));
+  }
+  for (int i = 1; i <= bodyRings; ++i)
+  {
+    profile.emplace_back(radius, -0.5 * length + length * i / bodyRings);
+  }
+  for (int i = 1; i < capRings; ++i)
+  {
+    const double a = 0.5 * Pi * i / capRings;
+    profile.emplace_back(radius * std::cos(a), 0.5 * length + radius * std::sin(a));
+  }
+  const vtkIdType south = m.Add(0, 0, -0.5 * length - radius);
+  std::vector<vtkIdType> firstOfRing;
+  for (const auto& pr : profile)
+  {
+    firstOfRing.push_back(static_cast<vtkIdType>(m.Points.size()));
+    for (int k = 0; k < around; ++k)
+    {
+      const double phi = 2 * Pi * k / around;
+      m.Add(pr.first * std::cos(phi), pr.first * std::sin(phi), pr.second);
+    }
+  }
+  const vtkIdType north = m.Add(0, 0, 0.5 * length + radius);
+  for (int k = 0; k < around; ++k)
+  {
+    const int k1 = (k + 1) % around;
+    m.Tri(south, firstOfRing.front() + k1, firstOfRing.front() + k);
+    m.Tri(north, firstOfRing.back() + k, firstOfRing.back() + k1);
+  }
+  for (size_t r = 0; r + 1 < firstOfRing.size(); ++r)
+  {
+    for (int k = 0; k < around; ++k)
+    {
+      const int k1 = (k + 1) % around;
+      const vtkIdType a = firstOfRing[r] + k, b = firstOfRing[r] + k1;
+      const vtkIdType c = firstOfRing[r + 1] + k1, d = firstOfRing[r + 1] + k;
+      m.Tri(a, b, c);
+      m.Tri(a, c, d);
+    }
+  }
+}
+
+// Signed distance to a capsule (segment a-b, radius r).
+double CapsuleDistance(const double p[3], const double a[3], const double b[3], double r)
+{
+  double ab[3], ap[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    ab[i] = b[i] - a[i];
+    ap[i] = p[i] - a[i];
+  }
+  const double len2 = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];
+  const double t = std::min(1.0, std::max(0.0, (ap[0] * ab[0] + ap[1] * ab[1] + ap[2] * ab[2]) / len2));
+  double d2 = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    const double d = ap[i] - t * ab[i];
+    d2 += d * d;
+  }
+  return std::sqrt(d2) - r;
+}
+
+double SmoothMin(double a, double b, double k)
+{
+  const double h = std::max(k - std::fabs(a - b), 0.0) / k;
+  return std::min(a, b) - h * h * k * 0.25;
+}
+
+double JackDistance(const double p[3])
+{
+  static const double origin[3] = { 0, 0, 0 };
+  static const double armX[2][3] = { { -1.6, 0, 0 }, { 1.6, 0, 0 } };
+  static const double armY[2][3] = { { 0, -0.2, 0 }, { 0, 1.2, 0 } };
+  static const double armZ[2][3] = { { 0, 0, -0.9 }, { 0, 0, 0.9 } };
+  double d = CapsuleDistance(p, origin, origin, 0.55);
+  d = SmoothMin(d, CapsuleDistance(p, armX[0], armX[1], 0.3), 0.2);
+  d = SmoothMin(d, CapsuleDistance(p, armY[0], armY[1], 0.2), 0.2);
+  d = SmoothMin(d, CapsuleDistance(p, armZ[0], armZ[1], 0.12), 0.15);
+  return d;
+}
+
+void MakeJack(vtkPolyData* out, int resolution)
+{
+  const double lo[3] = { -2.0, -0.8, -1.1 }, hi[3] = { 2.0, 1.5, 1.1 };
+  const double h = (hi[0] - lo[0]) / (4.0 * resolution);
+  int dims[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    dims[i] = static_cast<int>(std::ceil((hi[i] - lo[i]) / h)) + 1;
+  }
+  vtkNew<vtkImageData> grid;
+  grid->SetDimensions(dims);
+  grid->SetOrigin(lo[0], lo[1], lo[2]);
+  grid->SetSpacing(h, h, h);
+  vtkNew<vtkFloatArray> field;
+  field->SetName("Distance");
+  field->SetNumberOfTuples(static_cast<vtkIdType>(dims[0]) * dims[1] * dims[2]);
+  vtkIdType id = 0;
+  for (int k = 0; k < dims[2]; ++k)
+  {
+    for (int j = 0; j < dims[1]; ++j)
+    {
+      for (int i = 0; i < dims[0]; ++i)
+      {
+        const double p[3] = { lo[0] + i * h, lo[1] + j * h, lo[2] + k * h };
+        field->SetValue(id++, static_cast<float>(JackDistance(p)));
+      }
+    }
+  }
+  grid->GetPointData()->SetScalars(field);
+  vtkNew<vtkFlyingEdges3D> contour;
+  contour->SetInputData(grid);
+  contour->SetValue(0, 0.0);
+  contour->ComputeNormalsOff();
+  contour->ComputeGradientsOff();
+  contour->ComputeScalarsOff();
+  contour->Update();
+  out->ShallowCopy(contour->GetOutput());
+}
+}
+
+vtkMedialShapeSource::vtkMedialShapeSource()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+int vtkMedialShapeSource::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  MeshBuilder m;
+  switch (this->Shape)
+  {
+    case SPHERE:
+      if (this->Resolution > 9)
+      {
+        vtkErrorMacro(<< "SPHERE resolution " << this->Resolution << " is above 9 (5M triangles).");
+        return 0;
+      }
+      MakeSphere(m, this->Radius, this->Resolution);
+      break;
+    case BOX:
+      MakeBox(m, this->BoxLengths, this->Resolution);
+      break;
+    case CAPSULE:
+      MakeCapsule(m, this->Radius, this->Length, this->Resolution);
+      break;
+    default:
+      MakeJack(output, this->Resolution);
+      return 1;
+  }
+  m.Emit(output);
+  return 1;
+}
+
+void vtkMedialShapeSource::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Shape: " << this->Shape << "\n";
+  os << indent << "Resolution: " << this->Resolution << "\n";
+  os << indent << "Radius: " << this->Radius << "\n";
+  os << indent << "Length: " << this->Length << "\n";
+  os << indent << "BoxLengths: " << this->BoxLengths[0] << " " << this->BoxLengths[1] << " "
+     << this->BoxLengths[2] << "\n";
+}

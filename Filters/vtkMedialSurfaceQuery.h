@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class vtkMedialSurfaceQuery
+ * @brief Internal: the only class that talks to Embree. Ray, bounded closest-point
+ * and contains-ball queries on a vtkMedialTriangleMesh.
+ *
+ * Build() copies the mesh into an Embree 3 BVH in single precision, translated to
+ * the bounding-box centre so float rounding is relative to the shape's size. The
+ * BVH only proposes candidate triangles: every decisive comparison is redone in
+ * double on the mesh's own vertices, and Embree's query radii are padded so that
+ * float boxes never hide a candidate.
+ *
+ * Queries are const and keep their state on the stack, so any number of threads
+ * may call them at once (e.g. from an OpenMP loop) after Build().
+ *
+ * A ContactFilter describes which surface points may block a ball tangent to the
+ * surface at a sample point P on triangle OwnTriangle:
+ *  - OwnTriangle never blocks (the ball is tangent to its plane at P);
+ *  - with CosMinAngle < 1, points of the cap around P are ignored: a point q
+ *    blocks a ball (c, r) only where (q - c).(P - c) <= r^2 cos(theta). On the
+ *    sphere this is exactly "the angle P-c-q is at least theta" (Foskey et al.
+ *    2003, theta-simplified medial axis); inside the ball it is a plane cut, so
+ *    surface deep inside the ball always blocks.
+ */
+#ifndef vtkMedialSurfaceQuery_h
+#define vtkMedialSurfaceQuery_h
+
+#include "vtkMedialAxisFiltersModule.h" // for export macro
+#include "vtkType.h"
+
+#include <string>
+
+class vtkMedialTriangleMesh;
+
+class VTKMEDIALAXISFILTERS_EXPORT vtkMedialSurfaceQuery
+{
+public:
+  struct ContactFilter
+  {
+    vtkIdType OwnTriangle = -1;
+    double SamplePoint[3] = { 0, 0, 0 };
+    double CosMinAngle = 1.0; // 1: theta = 0, nothing but OwnTriangle is ignored
+  };
+  struct RayHit
+  {
+    double Distance = 0.0;
+    vtkIdType Triangle = -1;
+  };
+  struct ClosestHit
+  {
+    double Point[3] = { 0, 0, 0 };
+    double Distance = 0.0;
+    vtkIdType Triangle = -1;
+  };
+
+  vtkMedialSurfaceQuery();
+  ~vtkMedialSurfaceQuery();
+  vtkMedialSurfaceQuery(const vtkMedialSurfaceQuery&) = delete;
+  vtkMedialSurfaceQuery& operator=(const vtkMedialSurfaceQuery&) = delete;
+
+  /// Builds the BVH. The mesh must outlive this object. Returns false with a reason.
+  bool Build(const vtkMedialTriangleMesh* mesh, std::string& error);
+
+  /// First hit of the ray origin + t * direction (unit), t in (tMin, tMax), skipping `ignoreTriangle`.
+  bool Intersect(const double origin[3], const double direction[3], double tMin, double tMax,
+    vtkIdType ignoreTriangle, RayHit& hit) const;
+
+  /// Closest admissible surface point to x with distance < upperBound (finite). False when none.
+  bool ClosestPoint(
+    const double x[3], double upperBound, ClosestHit& hit, const ContactFilter* filter = nullptr) const;
+
+  /// True when no admissible surface point lies strictly inside the ball. Stops at the first one found.
+  bool ContainsBall(const double centre[3], double radius, const ContactFilter* filter = nullptr) const;
+
+  /// Absolute slack: a point blocks a ball only when closer than radius - Slack. Tiny and unbiased.
+  double GetSlack() const { return this->Slack; }
+  const vtkMedialTriangleMesh* GetMesh() const { return this->Mesh; }
+
+  struct Internals;
+
+private:
+  Internals* Impl;
+  const vtkMedialTriangleMesh* Mesh = nullptr;
+  double Slack = 0.0;
+};
+
+#endif
