@@ -16,9 +16,12 @@
 #include "vtkDataSetReader.h"
 #include "vtkFieldData.h"
 #include "vtkDataArray.h"
+#include "vtkLogger.h"
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
+#include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
 #include "vtkPLYReader.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
@@ -88,47 +91,67 @@ struct Options
   std::exit(1);
 }
 
-// Collects VTK errors and warnings from readers and filters as one-line messages.
-struct MessageSink
+// Receives every VTK error and warning (readers' internal helpers included) and
+// turns them into one-line messages: warnings are printed, the first error is
+// kept as the reason for failing.
+class MessageSink : public vtkOutputWindow
 {
+public:
+  static MessageSink* New();
+  vtkTypeMacro(MessageSink, vtkOutputWindow);
+
   std::string LastError;
-  vtkNew<vtkCallbackCommand> Command;
-  MessageSink()
+
+  void DisplayErrorText(const char* raw) override
   {
-    this->Command->SetClientData(this);
-    this->Command->SetCallback([](vtkObject*, unsigned long event, void* client, void* data) {
-      auto* self = static_cast<MessageSink*>(client);
-      std::string text = data ? static_cast<const char*>(data) : "";
-      // VTK prefixes "ERROR: In file, line N\nClass (0x...): message"; keep the message.
-      const size_t colon = text.find("): ");
-      if (colon != std::string::npos)
+    const std::string text = OneLine(raw);
+    // The executive's "returned failure" follows the real reason; use it only alone.
+    const bool pipelineNote = text.find("returned failure for request") != std::string::npos;
+    if (this->LastError.empty() || this->ReasonIsFallback)
+    {
+      if (!pipelineNote)
       {
-        text = text.substr(colon + 3);
+        this->LastError = text;
+        this->ReasonIsFallback = false;
       }
-      while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
+      else if (this->LastError.empty())
       {
-        text.pop_back();
+        this->LastError = this->LastWarning.empty() ? text.substr(0, text.find(" for request")) : this->LastWarning;
+        this->ReasonIsFallback = true;
       }
-      std::replace(text.begin(), text.end(), '\n', ' ');
-      if (event == vtkCommand::ErrorEvent)
-      {
-        if (self->LastError.empty())
-        {
-          self->LastError = text;
-        }
-      }
-      else
-      {
-        std::cerr << "medial-axis: warning: " << text << "\n";
-      }
-    });
+    }
   }
-  void Watch(vtkObject* o)
+  void DisplayWarningText(const char* raw) override
   {
-    o->AddObserver(vtkCommand::ErrorEvent, this->Command);
-    o->AddObserver(vtkCommand::WarningEvent, this->Command);
+    this->LastWarning = OneLine(raw);
+    std::cerr << "medial-axis: warning: " << this->LastWarning << "\n";
+  }
+  void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
+  void DisplayText(const char* text) override { std::cerr << text; }
+  void DisplayDebugText(const char*) override {}
+
+private:
+  std::string LastWarning;
+  bool ReasonIsFallback = false;
+
+  // VTK writes "ERROR: In file, line N\nClass (0x...): message"; keep the message.
+  static std::string OneLine(const char* raw)
+  {
+    std::string text = raw ? raw : "";
+    const size_t colon = text.find("): ");
+    if (colon != std::string::npos)
+    {
+      text = text.substr(colon + 3);
+    }
+    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
+    {
+      text.pop_back();
+    }
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    return text;
   }
 };
+vtkStandardNewMacro(MessageSink);
 
 bool ParseNumber(const char* text, double& value)
 {
@@ -294,7 +317,6 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, MessageSink& s
     r->SetFileName(path.c_str());
     auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
     surface->SetInputConnection(r->GetOutputPort());
-    sink.Watch(r);
     reader = surface;
   }
   else if (ext == ".ply")
@@ -319,7 +341,6 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, MessageSink& s
   {
     Fail("unsupported input extension '" + ext + "' (.vtp .vtk .ply .stl .obj)");
   }
-  sink.Watch(reader);
   reader->Update();
   if (!sink.LastError.empty())
   {
@@ -388,7 +409,7 @@ void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, 
   renderer->GetActiveCamera()->Azimuth(30);
   renderer->GetActiveCamera()->Elevation(20);
   renderer->ResetCamera();
-  renderer->GetActiveCamera()->Zoom(1.25);
+  renderer->GetActiveCamera()->Zoom(1.6);
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetSize(900, 640);
@@ -400,7 +421,6 @@ void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, 
   vtkNew<vtkPNGWriter> png;
   png->SetInputConnection(grab->GetOutputPort());
   png->SetFileName(path.c_str());
-  sink.Watch(png);
   png->Write();
   if (!sink.LastError.empty())
   {
@@ -436,7 +456,10 @@ std::string JsonString(const std::string& s)
 int main(int argc, char* argv[])
 {
   const Options opt = Parse(argc, argv);
-  MessageSink sink;
+  vtkNew<MessageSink> sinkWindow;
+  vtkOutputWindow::SetInstance(sinkWindow);
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // the sink prints instead
+  MessageSink& sink = *sinkWindow;
 
   if (!opt.Render.empty())
   {
@@ -471,7 +494,6 @@ int main(int argc, char* argv[])
   }
 
   vtkNew<vtkMedialAxisSampler> sampler;
-  sink.Watch(sampler);
   sampler->SetInputData(surface);
   sampler->SetNumberOfSamples(static_cast<vtkIdType>(opt.Samples));
   sampler->SetMethod(opt.Method);
@@ -524,7 +546,6 @@ int main(int argc, char* argv[])
   if (!opt.Output.empty())
   {
     vtkNew<vtkXMLPolyDataWriter> writer;
-    sink.Watch(writer);
     writer->SetInputData(medial);
     writer->SetFileName(opt.Output.c_str());
     writer->SetDataModeToBinary();

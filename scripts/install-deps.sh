@@ -1,0 +1,10 @@
+#!/bin/sh
+# Installs the build and test dependencies on Debian 12 (run as root or with sudo).
+set -eu
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO=sudo
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends \
+  cmake ninja-build g++ make libvtk9-dev python3-vtk9 vtk9 python3-numpy \
+  libembree-dev xvfb xauth >/dev/null
