@@ -5,6 +5,6 @@ SUDO=""
 [ "$(id -u)" -eq 0 ] || SUDO=sudo
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends \
+$SUDO apt-get install -y -qq \
   cmake ninja-build g++ make libvtk9-dev python3-vtk9 vtk9 python3-numpy \
-  libembree-dev xvfb xauth >/dev/null
+  libembree-dev xvfb xauth libgl1-mesa-dri >/dev/null
