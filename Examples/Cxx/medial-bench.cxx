@@ -1,0 +1,282 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// medial-bench: throughput of the medial sampler and of its Embree queries.
+//
+// Input: horse.ply from ../shared/data/meshes, Loop-subdivided twice (>= 1.5 M
+// triangles); without the shared data, a generated demo shape of the same size.
+// Measures, in one run: BVH build time, ray and bounded closest-point throughput,
+// each method with 1 and 2 threads (with mean iterations), each method's ratio to
+// the "limit" (one ray plus one bounded closest-point query per sample), peak RSS,
+// and a 327k-triangle sphere as the worst case. Prints a table, or one JSON object
+// with --json. Not a test: it checks nothing.
+#include "vtkMedialAxisSampler.h"
+#include "vtkMedialRandom.h"
+#include "vtkMedialShapeSource.h"
+#include "vtkMedialSurfaceQuery.h"
+#include "vtkMedialTriangleMesh.h"
+
+#include "vtkDataArray.h"
+#include "vtkLoopSubdivisionFilter.h"
+#include "vtkNew.h"
+#include "vtkPLYReader.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkTriangleFilter.h"
+
+#include <omp.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+double Now()
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+double PeakRssMiB()
+{
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;
+}
+
+struct Row
+{
+  std::string Name;
+  double MicrosecondsPerSample;
+  double Iterations;
+  double Extra; // speed-up or ratio, depending on the row
+};
+
+vtkSmartPointer<vtkPolyData> LoadBenchMesh(const std::string& sharedDir, std::string& label)
+{
+  const std::string horse = sharedDir + "/horse.ply";
+  struct stat st;
+  if (stat(horse.c_str(), &st) == 0)
+  {
+    vtkNew<vtkPLYReader> reader;
+    reader->SetFileName(horse.c_str());
+    vtkNew<vtkTriangleFilter> triangles;
+    triangles->SetInputConnection(reader->GetOutputPort());
+    vtkNew<vtkLoopSubdivisionFilter> loop;
+    loop->SetInputConnection(triangles->GetOutputPort());
+    loop->SetNumberOfSubdivisions(2);
+    loop->Update();
+    label = "horse.ply, Loop x2";
+    return loop->GetOutput();
+  }
+  vtkNew<vtkMedialShapeSource> jack;
+  jack->SetResolution(230);
+  jack->Update();
+  label = "generated demo shape (shared data absent)";
+  return jack->GetOutput();
+}
+
+// Runs the sampler and returns microseconds per sample (wall).
+double RunSampler(vtkPolyData* mesh, int method, int threads, vtkIdType samples, double& iterations,
+  vtkIdType& capped)
+{
+  vtkNew<vtkMedialAxisSampler> sampler;
+  sampler->SetInputData(mesh);
+  sampler->SetMethod(method);
+  sampler->SetNumberOfThreads(threads);
+  sampler->SetNumberOfSamples(samples);
+  // Preparation (merge, orientation, BVH) is timed separately below.
+  const double t0 = Now();
+  sampler->Update();
+  const double seconds = Now() - t0;
+  iterations = sampler->GetMeanIterations();
+  capped = sampler->GetCappedSamples();
+  return 1e6 * seconds / samples;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  bool json = false;
+  vtkIdType samples = 200000;
+  vtkIdType defaultSamples = 1000000;
+  std::string sharedDir = MEDIALAXIS_SHARED_MESH_DIR;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if (a == "--json")
+    {
+      json = true;
+    }
+    else if (a == "--samples" && i + 1 < argc)
+    {
+      samples = std::atoll(argv[++i]);
+    }
+    else if (a == "--default-samples" && i + 1 < argc)
+    {
+      defaultSamples = std::atoll(argv[++i]);
+    }
+    else if (a == "--shared" && i + 1 < argc)
+    {
+      sharedDir = argv[++i];
+    }
+    else
+    {
+      std::fprintf(stderr,
+        "usage: medial-bench [--json] [--samples N (per method run, default 200000)]\n"
+        "                    [--default-samples N (default method, 2 threads; default 1000000)]\n"
+        "                    [--shared DIR]\n");
+      return 1;
+    }
+  }
+  std::string label;
+  const double tLoad = Now();
+  vtkSmartPointer<vtkPolyData> mesh = LoadBenchMesh(sharedDir, label);
+  const double loadSeconds = Now() - tLoad;
+
+  // Preparation and BVH build, timed apart from sampling.
+  vtkMedialTriangleMesh prepared;
+  std::string error;
+  const double tPrep = Now();
+  if (!prepared.Build(mesh, error))
+  {
+    std::fprintf(stderr, "medial-bench: %s\n", error.c_str());
+    return 1;
+  }
+  const double prepSeconds = Now() - tPrep;
+  vtkMedialSurfaceQuery query;
+  const double tBvh = Now();
+  if (!query.Build(&prepared, error))
+  {
+    std::fprintf(stderr, "medial-bench: %s\n", error.c_str());
+    return 1;
+  }
+  const double bvhSeconds = Now() - tBvh;
+
+  // Query throughput on 2 threads: rays from random surface points, then bounded
+  // closest-point queries from medial centres (radius as the bound).
+  const int queries = 200000;
+  std::vector<double> centres(3 * queries), radii(queries);
+  const double tRay = Now();
+#pragma omp parallel for num_threads(2) schedule(dynamic, 256)
+  for (int i = 0; i < queries; ++i)
+  {
+    vtkMedialSampleRandom random(7, i);
+    const vtkIdType t = prepared.PickTriangleByArea(random.Uniform());
+    const double s = std::sqrt(random.Uniform()), u = random.Uniform();
+    const vtkIdType* v = prepared.GetTriangle(t);
+    double p[3], n[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      p[k] = (1 - s) * prepared.GetPoint(v[0])[k] + s * (1 - u) * prepared.GetPoint(v[1])[k] +
+        s * u * prepared.GetPoint(v[2])[k];
+      n[k] = -prepared.GetNormal(t)[k];
+    }
+    vtkMedialSurfaceQuery::RayHit hit;
+    const bool ok = query.Intersect(p, n, 1e-9 * prepared.Diagonal, HUGE_VAL, t, hit);
+    radii[i] = ok ? 0.5 * hit.Distance : 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      centres[3 * i + k] = p[k] + radii[i] * n[k];
+    }
+  }
+  const double rayMicro = 1e6 * (Now() - tRay) / queries;
+
+  // Closest-point queries from the medial points of a short default run.
+  vtkNew<vtkMedialAxisSampler> probe;
+  probe->SetInputData(mesh);
+  probe->SetNumberOfSamples(20000);
+  probe->SetNumberOfThreads(2);
+  probe->Update();
+  vtkPolyData* medial = probe->GetOutput();
+  const int probes = static_cast<int>(medial->GetNumberOfPoints());
+  vtkDataArray* probeRadius = medial->GetPointData()->GetArray("Radius");
+  const double tClosest = Now();
+#pragma omp parallel for num_threads(2) schedule(dynamic, 64)
+  for (int i = 0; i < probes; ++i)
+  {
+    double c[3];
+    medial->GetPoint(i, c);
+    vtkMedialSurfaceQuery::ClosestHit hit;
+    query.ClosestPoint(c, probeRadius->GetComponent(i, 0) + 1e-6 * prepared.Diagonal, hit);
+  }
+  const double closestMicro = 1e6 * (Now() - tClosest) / probes;
+  const double limitMicro = rayMicro + closestMicro;
+
+  // Each method with 1 and 2 threads.
+  std::vector<Row> rows;
+  vtkNew<vtkMedialAxisSampler> defaults;
+  const int defaultMethod = defaults->GetMethod();
+  for (int method = vtkMedialAxisSampler::BISECTION; method <= vtkMedialAxisSampler::SHRINKING_BALL; ++method)
+  {
+    double it1, it2;
+    vtkIdType capped1, capped2;
+    const double one = RunSampler(mesh, method, 1, samples, it1, capped1);
+    const double two = RunSampler(mesh, method, 2, samples, it2, capped2);
+    rows.push_back({ std::string(vtkMedialAxisSampler::GetMethodName(method)) + ", 1 thread", one, it1, 0 });
+    rows.push_back({ std::string(vtkMedialAxisSampler::GetMethodName(method)) + ", 2 threads", two, it2, one / two });
+  }
+  double itDefault;
+  vtkIdType cappedDefault;
+  const double tDefault = Now();
+  const double defaultMicro = RunSampler(mesh, defaultMethod, 2, defaultSamples, itDefault, cappedDefault);
+  const double defaultSeconds = Now() - tDefault;
+
+  // Worst case: a 327k-triangle sphere (every closest-point query sees many equidistant facets).
+  vtkNew<vtkMedialShapeSource> sphere;
+  sphere->SetShapeToSphere();
+  sphere->SetResolution(7);
+  sphere->Update();
+  double itSphere;
+  vtkIdType cappedSphere;
+  const double sphereMicro = RunSampler(sphere->GetOutput(), defaultMethod, 2, 2000, itSphere, cappedSphere);
+  const double rss = PeakRssMiB();
+
+  if (json)
+  {
+    std::ostringstream js;
+    js << "{\"mesh\": \"" << label << "\", \"triangles\": " << prepared.GetNumberOfTriangles()
+       << ", \"load_seconds\": " << loadSeconds << ", \"prepare_seconds\": " << prepSeconds
+       << ", \"bvh_seconds\": " << bvhSeconds << ", \"ray_us\": " << rayMicro
+       << ", \"closest_point_us\": " << closestMicro << ", \"limit_us\": " << limitMicro;
+    for (const Row& r : rows)
+    {
+      js << ", \"" << r.Name << "\": {\"us_per_sample\": " << r.MicrosecondsPerSample
+         << ", \"iterations\": " << r.Iterations << ", \"ratio_to_limit\": " << r.MicrosecondsPerSample / limitMicro << "}";
+    }
+    js << ", \"default_method\": \"" << vtkMedialAxisSampler::GetMethodName(defaultMethod)
+       << "\", \"default_samples\": " << defaultSamples << ", \"default_seconds\": " << defaultSeconds
+       << ", \"default_us_per_sample\": " << defaultMicro << ", \"sphere_us_per_sample\": " << sphereMicro
+       << ", \"sphere_to_horse\": " << sphereMicro / defaultMicro << ", \"peak_rss_mib\": " << rss << "}";
+    std::printf("%s\n", js.str().c_str());
+    return 0;
+  }
+  std::printf("mesh: %s, %lld triangles\n", label.c_str(), static_cast<long long>(prepared.GetNumberOfTriangles()));
+  std::printf("load %.2f s, prepare (merge, orient) %.2f s, BVH build %.2f s\n", loadSeconds, prepSeconds, bvhSeconds);
+  std::printf("\n| query or method | us per sample | mean iterations | ratio to limit | 2-thread speed-up |\n");
+  std::printf("|---|---|---|---|---|\n");
+  std::printf("| ray (2 threads) | %.2f | - | - | - |\n", rayMicro);
+  std::printf("| bounded closest point from a medial centre (2 threads) | %.2f | - | - | - |\n", closestMicro);
+  std::printf("| limit: ray + closest point | %.2f | - | 1.00 | - |\n", limitMicro);
+  for (const Row& r : rows)
+  {
+    std::printf("| %s (%lld samples) | %.2f | %.2f | %.2f | %s |\n", r.Name.c_str(),
+      static_cast<long long>(samples), r.MicrosecondsPerSample, r.Iterations,
+      r.MicrosecondsPerSample / limitMicro, r.Extra > 0 ? std::to_string(r.Extra).substr(0, 4).c_str() : "-");
+  }
+  std::printf("\ndefault method (%s), %lld samples, 2 threads: %.2f s (%.2f us per sample, %.2f "
+              "iterations, %lld capped)\n",
+    vtkMedialAxisSampler::GetMethodName(defaultMethod), static_cast<long long>(defaultSamples),
+    defaultSeconds, defaultMicro, itDefault, static_cast<long long>(cappedDefault));
+  std::printf("worst case, sphere %lld triangles, default method, 2 threads: %.2f us per sample "
+              "(%.1fx the horse)\n",
+    static_cast<long long>(sphere->GetOutput()->GetNumberOfCells()), sphereMicro, sphereMicro / defaultMicro);
+  std::printf("peak RSS: %.0f MiB\n", rss);
+  return 0;
+}
