@@ -19,6 +19,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <omp.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
@@ -266,6 +267,17 @@ int vtkMedialAxisSampler::RequestData(
   const vtkIdType last = total * (piece + 1) / pieces;
   const vtkIdType count = last - first;
 
+  // Refuse up front what cannot fit: the per-sample results plus the output arrays.
+  const double bytesPerSample = sizeof(SampleResult) + 12 * sizeof(double) + 3 * sizeof(vtkIdType);
+  const double needed = bytesPerSample * static_cast<double>(count);
+  const double available = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
+  if (available > 0 && needed > 0.8 * available)
+  {
+    vtkErrorMacro(<< "NumberOfSamples " << count << " needs about " << needed / (1 << 30)
+                  << " GiB, more than this machine's memory allows (" << available / (1 << 30)
+                  << " GiB); use fewer samples or several pieces.");
+    return 0;
+  }
   std::vector<SampleResult> results;
   try
   {
@@ -286,8 +298,9 @@ int vtkMedialAxisSampler::RequestData(
   param.MaximumIterations = this->MaximumIterations;
   const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
 
-  // Blocks keep UpdateProgress and the abort check on the calling thread.
-  const vtkIdType block = 8192;
+  // Blocks keep UpdateProgress and the abort check on the calling thread; small
+  // enough that an abort is honoured within a fraction of a second.
+  const vtkIdType block = 256 * threads;
   for (vtkIdType begin = 0; begin < count && !this->GetAbortExecute(); begin += block)
   {
     const vtkIdType end = std::min(count, begin + block);

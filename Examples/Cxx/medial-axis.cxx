@@ -44,6 +44,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <csignal>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -84,6 +85,8 @@ struct Options
   std::string Render;
   bool Stats = false;
 };
+
+volatile std::sig_atomic_t Interrupted = 0;
 
 [[noreturn]] void Fail(const std::string& reason)
 {
@@ -531,7 +534,23 @@ int main(int argc, char* argv[])
     sampler->AddObserver(vtkCommand::ProgressEvent, progressCommand);
   }
 
+  // Ctrl-C: ask the sampler to abort at its next block, then exit with 130.
+  std::signal(SIGINT, [](int) { Interrupted = 1; });
+  vtkNew<vtkCallbackCommand> interruptCommand;
+  interruptCommand->SetCallback([](vtkObject* caller, unsigned long, void*, void*) {
+    if (Interrupted)
+    {
+      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+    }
+  });
+  sampler->AddObserver(vtkCommand::ProgressEvent, interruptCommand);
+
   sampler->Update();
+  if (Interrupted)
+  {
+    std::cerr << (progress.Shown ? "\n" : "") << "medial-axis: interrupted\n";
+    return 130;
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (progress.Shown)
   {
