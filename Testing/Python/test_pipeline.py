@@ -1,0 +1,97 @@
+#!/usr/bin/env python3
+"""Python pipeline test: stock VTK readers and writers around the medial sampler,
+numpy arrays, and one rendered image compared against a baseline.
+
+Arguments: BASELINE_PNG TEMP_DIR. Exits 0 on success, 1 on failure.
+"""
+import os
+import sys
+
+import numpy as np
+
+import medialaxis
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOPLY import vtkPLYReader, vtkPLYWriter
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
+from vtkmodules.vtkTestingRendering import vtkTesting
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "Examples", "Python"))
+import medial_axis_png  # noqa: E402
+
+baseline, temp = sys.argv[1], sys.argv[2]
+os.makedirs(temp, exist_ok=True)
+failures = []
+
+
+def check(condition, message):
+    print(("ok   " if condition else "FAIL ") + message)
+    if not condition:
+        failures.append(message)
+
+
+# A capsule written to PLY and read back by VTK's reader feeds the sampler.
+capsule = medialaxis.vtkMedialShapeSource()
+capsule.SetShapeToCapsule()
+capsule.SetRadius(0.5)
+capsule.SetLength(2.0)
+capsule.SetResolution(24)
+ply_path = os.path.join(temp, "capsule.ply")
+ply = vtkPLYWriter()
+ply.SetInputConnection(capsule.GetOutputPort())
+ply.SetFileName(ply_path)
+ply.Write()
+reader = vtkPLYReader()
+reader.SetFileName(ply_path)
+sampler = medialaxis.vtkMedialAxisSampler()
+sampler.SetInputConnection(reader.GetOutputPort())
+sampler.SetNumberOfSamples(3000)
+sampler.SetRandomSeed(5)
+vtp_path = os.path.join(temp, "capsule-medial.vtp")
+writer = vtkXMLPolyDataWriter()
+writer.SetInputConnection(sampler.GetOutputPort())
+writer.SetFileName(vtp_path)
+check(writer.Write() == 1, "pipeline PLY reader -> sampler -> XML writer ran")
+
+back = vtkXMLPolyDataReader()
+back.SetFileName(vtp_path)
+back.Update()
+medial = back.GetOutput()
+radius = vtk_to_numpy(medial.GetPointData().GetArray("Radius"))
+centres = vtk_to_numpy(medial.GetPoints().GetData())
+surface = vtk_to_numpy(medial.GetPointData().GetArray("SurfacePoint"))
+check(radius.shape == (3000,), f"3000 radii read back as numpy ({radius.shape})")
+axis = np.hypot(centres[:, 0], centres[:, 1])
+facet = 2 * np.pi * 0.5 / (4 * 24)
+check(axis.max() <= 2 * facet, f"centres on the axis: max offset {axis.max():.4f} <= {2 * facet:.4f}")
+body = np.abs(surface[:, 2]) <= 1.0
+check(np.abs(radius[body] - 0.5).max() <= facet,
+      f"body radii equal the capsule radius: max error {np.abs(radius[body] - 0.5).max():.4f}")
+tangent = np.abs(np.linalg.norm(centres - surface, axis=1) - radius).max()
+check(tangent < 1e-12, f"each centre is Radius away from its surface point ({tangent:.2e})")
+field = medial.GetFieldData()
+check(field.GetArray("DiscardedSamples").GetValue(0) == 0, "closed capsule: no discarded samples")
+
+# Same seed, same output from Python with 1 and 2 threads.
+for threads in (1, 2):
+    sampler.SetNumberOfThreads(threads)
+    sampler.Update()
+    if threads == 1:
+        first = vtk_to_numpy(sampler.GetOutput().GetPointData().GetArray("Radius")).copy()
+check(np.array_equal(first, vtk_to_numpy(sampler.GetOutput().GetPointData().GetArray("Radius"))),
+      "1 and 2 threads give identical radii")
+
+# One rendered image against its baseline.
+demo = medialaxis.vtkMedialShapeSource()
+demo_sampler = medialaxis.vtkMedialAxisSampler()
+demo_sampler.SetInputConnection(demo.GetOutputPort())
+demo_sampler.SetNumberOfSamples(5000)
+demo_sampler.Update()
+window = medial_axis_png.render(demo.GetOutputPort(), demo_sampler.GetOutput(), None, size=(400, 300))
+testing = vtkTesting()
+for arg in ("-V", baseline, "-T", temp):
+    testing.AddArgument(arg)
+testing.SetRenderWindow(window)
+check(testing.RegressionTest(10) == vtkTesting.PASSED, "rendered image matches " + os.path.basename(baseline))
+
+print(f"{len(failures)} failure(s)")
+sys.exit(1 if failures else 0)
