@@ -12,11 +12,12 @@ seconds=${FUZZ_SECONDS:-30}
 fuzzers="FuzzMedialMeshReader FuzzOFFReader"
 
 # Static libraries: the instrumented reader code is linked into each fuzzer.
+mkdir -p "$build"
 cmake -S "$root" -B "$build" -G Ninja \
   -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DMEDIALAXIS_BUILD_FUZZERS=ON -DBUILD_SHARED_LIBS=OFF -DBUILD_TESTING=OFF \
-  -DMEDIALAXIS_WRAP_PYTHON=OFF -DPython3_EXECUTABLE=/usr/bin/python3 >"$build.configure.log" 2>&1 ||
-  { cat "$build.configure.log"; exit 2; }
+  -DMEDIALAXIS_WRAP_PYTHON=OFF -DPython3_EXECUTABLE=/usr/bin/python3 >"$build/configure.log" 2>&1 ||
+  { cat "$build/configure.log"; exit 2; }
 ninja -C "$build" -j2 $fuzzers
 
 # Seeds: one valid file of each kind and a few variants; the dictionary holds the keywords.
