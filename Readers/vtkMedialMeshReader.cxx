@@ -38,9 +38,10 @@ public:
 
   bool Parse(const std::string& path, MedialMesh& mesh)
   {
-    if (!this->Lines.Open(path))
+    std::string why;
+    if (!this->Lines.Open(path, why))
     {
-      return this->Fail(0, "cannot open the file");
+      return this->Fail(0, why);
     }
     if (!this->Lines.NextRecord())
     {
@@ -64,10 +65,11 @@ public:
     }
     const vtkIdType nv = counts[0], ne = counts[1], nf = counts[2];
     // Header counts only bound the reservation by what the file can hold.
-    mesh.Coordinates.reserve(3 * this->Lines.CapReserve(nv));
-    mesh.Radii.reserve(this->Lines.CapReserve(nv));
-    mesh.Edges.reserve(2 * this->Lines.CapReserve(ne));
-    mesh.Faces.reserve(3 * this->Lines.CapReserve(nf));
+    // Shortest records: "v 0 0 0 0\n", "e 0 0\n", "f 0 0 0\n".
+    mesh.Coordinates.reserve(3 * this->Lines.CapReserve(nv, 10));
+    mesh.Radii.reserve(this->Lines.CapReserve(nv, 10));
+    mesh.Edges.reserve(2 * this->Lines.CapReserve(ne, 6));
+    mesh.Faces.reserve(3 * this->Lines.CapReserve(nf, 8));
 
     for (vtkIdType k = 0; k < nv; ++k)
     {

@@ -9,9 +9,13 @@
 
 #include "vtkType.h"
 
+#include <sys/stat.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <string>
 #include <string_view>
@@ -24,19 +28,30 @@ namespace medialreaders
 class TextLines
 {
 public:
-  /// Opens the file; false when it cannot be opened. Records its size in bytes.
-  bool Open(const std::string& path)
+  /// Opens the file and records its size in bytes. On failure returns false and
+  /// sets `why`.
+  bool Open(const std::string& path, std::string& why)
   {
+    struct stat info;
+    if (stat(path.c_str(), &info) != 0)
+    {
+      why = std::string("cannot open the file: ") + std::strerror(errno);
+      return false;
+    }
+    if (S_ISDIR(info.st_mode))
+    {
+      why = "it is a directory, not a file";
+      return false;
+    }
     this->Stream.open(path, std::ios::in | std::ios::binary);
     if (!this->Stream)
     {
+      why = "cannot open the file";
       return false;
     }
-    this->Stream.seekg(0, std::ios::end);
-    const std::streamoff size = this->Stream.tellg();
-    this->FileSize = size > 0 ? static_cast<vtkTypeInt64>(size) : 0;
-    this->Stream.seekg(0, std::ios::beg);
-    return static_cast<bool>(this->Stream);
+    // Regular files only: a pipe has no meaningful size, and then nothing is reserved.
+    this->FileSize = S_ISREG(info.st_mode) ? static_cast<vtkTypeInt64>(info.st_size) : 0;
+    return true;
   }
 
   /// Advances to the next line that has tokens (blank and comment-only lines are
@@ -47,6 +62,10 @@ public:
     {
       ++this->LinesRead;
       this->LineNumber = this->LinesRead;
+      if (this->LinesRead == 1 && this->Line.compare(0, 3, "\xEF\xBB\xBF") == 0)
+      {
+        this->Line.erase(0, 3); // UTF-8 byte order mark, written by some Windows tools
+      }
       this->Split();
       if (!this->Tokens.empty())
       {
@@ -63,12 +82,12 @@ public:
   const std::vector<std::string_view>& GetTokens() const { return this->Tokens; }
   vtkIdType GetLineNumber() const { return this->LineNumber; }
 
-  /// An upper bound on the records the file can still hold: a record takes at
-  /// least two bytes (one character and a newline). Used to cap reserve() so that
-  /// a header claiming 10^12 records allocates nothing before data is seen.
-  vtkIdType CapReserve(vtkIdType count) const
+  /// An upper bound on how many records of at least `minimumBytes` bytes (newline
+  /// included) the file can hold, and at most `count`. Used to cap reserve(), so
+  /// that a header claiming 10^12 records allocates nothing it cannot fill.
+  vtkIdType CapReserve(vtkIdType count, vtkIdType minimumBytes) const
   {
-    return std::max<vtkIdType>(0, std::min<vtkIdType>(count, this->FileSize / 2 + 1));
+    return std::max<vtkIdType>(0, std::min<vtkIdType>(count, this->FileSize / minimumBytes));
   }
 
 private:

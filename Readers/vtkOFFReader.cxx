@@ -51,9 +51,10 @@ public:
 
   bool Parse(const std::string& path, PolygonMesh& mesh)
   {
-    if (!this->Lines.Open(path))
+    std::string why;
+    if (!this->Lines.Open(path, why))
     {
-      return this->Fail(0, "cannot open the file");
+      return this->Fail(0, why);
     }
     if (!this->Lines.NextRecord())
     {
@@ -100,8 +101,10 @@ public:
       }
     }
 
-    mesh.Coordinates.reserve(3 * this->Lines.CapReserve(nv));
-    mesh.Offsets.reserve(this->Lines.CapReserve(nf) + 1);
+    // Shortest records: "0 0 0\n" and "3 0 0 0\n".
+    mesh.Coordinates.reserve(3 * this->Lines.CapReserve(nv, 6));
+    mesh.Offsets.reserve(this->Lines.CapReserve(nf, 8) + 1);
+    mesh.Connectivity.reserve(3 * this->Lines.CapReserve(nf, 8));
     const size_t vertexColumns = 3 + (this->HasNormals ? 3 : 0) + (this->HasColours ? 3 : 0);
     for (vtkIdType k = 0; k < nv; ++k)
     {

@@ -158,6 +158,24 @@ int CheckReaders(const TempDir& dir)
   return EXIT_SUCCESS;
 }
 
+// A directory is not read as an empty file.
+int CheckDirectory(const TempDir& dir)
+{
+  for (Format kind : { MA, OFF })
+  {
+    auto reader = MakeReader(kind, dir.Path);
+    EventLog log;
+    log.Watch(reader);
+    reader->Update();
+    const std::string message = log.LineWith("Cannot read");
+    std::printf("%-32s %s\n", "directory", Shown(message).c_str());
+    READER_CHECK(log.Errors >= 1 && message.find("is a directory") != std::string::npos,
+      "directory: %s", message.c_str());
+    READER_CHECK(reader->GetOutput()->GetNumberOfPoints() == 0, "directory: output not empty");
+  }
+  return EXIT_SUCCESS;
+}
+
 // A failed read after a good one must not leave the good data in the output.
 int CheckOutputClearedAfterFailure(const TempDir& dir)
 {
@@ -249,7 +267,7 @@ int TestMedialReadersBadInput(int, char*[])
 {
   TempDir dir;
   READER_CHECK(dir.Valid(), "cannot create a temporary folder");
-  for (auto check : { CheckReaders, CheckOutputClearedAfterFailure, CheckWriterRefuses })
+  for (auto check : { CheckReaders, CheckDirectory, CheckOutputClearedAfterFailure, CheckWriterRefuses })
   {
     if (check(dir) != EXIT_SUCCESS)
     {

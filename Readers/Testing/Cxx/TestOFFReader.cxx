@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // OFF files as tools write them: comments, blank lines, counts on the keyword's
 // line, polygons of any size, COFF/NOFF/CNOFF vertex columns, face colours,
-// CRLF, no keyword. Every one must give exactly the expected points and faces.
+// CRLF, a byte order mark, no keyword. Every one must give exactly the expected
+// points and faces.
 #include "ReaderTestUtilities.h"
 
 #include "vtkCellArray.h"
@@ -62,6 +63,9 @@ std::vector<Case> Cases()
     { "CRLF line endings",
       "OFF\r\n6 2 0\r\n0 0 0\r\n2 0 0\r\n2 2 0\r\n1 3 0\r\n0 2 0\r\n1.25 -0.5 1e-3\r\n"
       "5 0 1 2 3 4\r\n3 0 5 1\r\n",
+      House, HouseFaces },
+    { "UTF-8 byte order mark",
+      "\xEF\xBB\xBFOFF\n6 2 0\n0 0 0\n2 0 0\n2 2 0\n1 3 0\n0 2 0\n1.25 -0.5 1e-3\n5 0 1 2 3 4\n3 0 5 1\n",
       House, HouseFaces },
     { "no keyword, tabs",
       "6\t2\t0\n0\t0\t0\n2 0 0\n2 2 0\n1 3 0\n0 2 0\n1.25\t-0.5\t1e-3\n5 0 1 2 3 4\n3\t0 5 1",
