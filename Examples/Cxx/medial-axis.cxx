@@ -7,6 +7,7 @@
 
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialShapeSource.h"
+#include "vtkOFFReader.h"
 
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
@@ -60,7 +61,7 @@ const char* Usage =
   "usage: medial-axis [INPUT] [-n N] [--method bisection|shrinking-ball] [--seed S]\n"
   "                   [--threads T] [--tolerance E] [--min-angle DEG] [-o OUT.vtp]\n"
   "                   [--render OUT.png] [--stats]\n"
-  "  INPUT        closed surface: .vtp .vtk .ply .stl .obj; none: the built-in demo shape\n"
+  "  INPUT        closed surface: .vtp .vtk .ply .stl .obj .off; none: the built-in demo shape\n"
   "  -n N         number of surface samples (default 10000)\n"
   "  --method M   bisection (default) or shrinking-ball\n"
   "  --seed S     random seed (default 1); output is identical for any thread count\n"
@@ -340,9 +341,15 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, MessageSink& s
     r->SetFileName(path.c_str());
     reader = r;
   }
+  else if (ext == ".off")
+  {
+    auto r = vtkSmartPointer<vtkOFFReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
   else
   {
-    Fail("unsupported input extension '" + ext + "' (.vtp .vtk .ply .stl .obj)");
+    Fail("unsupported input extension '" + ext + "' (.vtp .vtk .ply .stl .obj .off)");
   }
   reader->Update();
   if (!sink.LastError.empty())

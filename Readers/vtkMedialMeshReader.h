@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class vtkMedialMeshReader
+ * @brief Reads a medial mesh in the .ma text format (Q-MAT, MATFP, Coverage Axis).
+ *
+ * Format, one record per line, 0-based indices:
+ * @code
+ * nv ne nf          header: numbers of vertices, edges and faces
+ * v x y z r         nv vertex records: medial ball centre and radius
+ * e i j             ne edge records
+ * f i j k           nf face (triangle) records
+ * @endcode
+ * Records appear in that order. Extra columns on `v` lines (some tools append
+ * them) are ignored; `e` and `f` lines must have exactly their indices. Blank
+ * lines and `#` comments are skipped.
+ *
+ * Output: vtkPolyData with double-precision points, a point-data array `Radius`
+ * (double, also the active scalars), one line cell per edge and one triangle
+ * per face, in file order.
+ *
+ * Bad input (missing or empty file, truncated file, counts that disagree with
+ * the records, non-numeric tokens, NaN or infinite values, negative radius,
+ * index out of range) gives one error naming the file and line, and an empty
+ * output. Header counts are not trusted for allocation: storage grows with the
+ * records actually read.
+ *
+ * @sa vtkMedialMeshWriter vtkOFFReader
+ */
+#ifndef vtkMedialMeshReader_h
+#define vtkMedialMeshReader_h
+
+#include "vtkMedialAxisReadersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class VTKMEDIALAXISREADERS_EXPORT vtkMedialMeshReader : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkMedialMeshReader* New();
+  vtkTypeMacro(vtkMedialMeshReader, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The .ma file to read.
+  vtkSetFilePathMacro(FileName);
+  vtkGetFilePathMacro(FileName);
+  ///@}
+
+protected:
+  vtkMedialMeshReader();
+  ~vtkMedialMeshReader() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  char* FileName = nullptr;
+
+private:
+  vtkMedialMeshReader(const vtkMedialMeshReader&) = delete;
+  void operator=(const vtkMedialMeshReader&) = delete;
+};
+
+#endif
