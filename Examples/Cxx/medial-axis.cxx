@@ -67,7 +67,7 @@ const char* Usage =
   "  --seed S     random seed (default 1); output is identical for any thread count\n"
   "  --threads T  OpenMP threads, 0 = all cores (default 0)\n"
   "  --tolerance E  bisection tolerance relative to the bounding-box diagonal (default 1e-6)\n"
-  "  --min-angle DEG  minimum separation angle theta in degrees (default 60; 0 = exact\n"
+  "  --min-angle DEG  minimum separation angle theta in degrees (default 45; 0 = exact\n"
   "               medial axis of the polyhedron)\n"
   "  -o OUT.vtp   write the medial balls (points with Radius, SurfacePoint, ...)\n"
   "  --render OUT.png  render the surface and the medial points offscreen (needs X; use xvfb-run)\n"
@@ -81,7 +81,7 @@ struct Options
   unsigned long long Seed = 1;
   int Threads = 0;
   double Tolerance = 1e-6;
-  double MinAngle = 60.0;
+  double MinAngle = 45.0;
   std::string Output;
   std::string Render;
   bool Stats = false;

@@ -29,7 +29,7 @@ int TestMedialSamplerBox(int, char*[])
   rotate->Update();
   const double diagonal = Diagonal(rotate->GetOutput());
 
-  for (double theta : { 0.0, 60.0 })
+  for (double theta : { 0.0, 45.0, 60.0 })
   {
     for (int method : { vtkMedialAxisSampler::BISECTION, vtkMedialAxisSampler::SHRINKING_BALL })
     {
