@@ -64,11 +64,11 @@ struct Candidate
 };
 
 constexpr int SuperBlock = 16;
-constexpr int Block = 4;
 
-// Distance bounds from centre c to the axis-aligned box [lo, hi]: nearest and farthest.
-inline void BoxDistanceBounds(
-  const double lo[3], const double hi[3], const double c[3], double& nearest, double& farthest)
+// Squared distance bounds from centre c to the axis-aligned box [lo, hi]: nearest and
+// farthest.
+inline void BoxDistanceBounds2(
+  const double lo[3], const double hi[3], const double c[3], double& nearest2, double& farthest2)
 {
   double n2 = 0.0, f2 = 0.0;
   for (int k = 0; k < 3; ++k)
@@ -79,8 +79,8 @@ inline void BoxDistanceBounds(
     const double far = std::max(c[k] - lo[k], hi[k] - c[k]);
     f2 += far * far;
   }
-  nearest = std::sqrt(n2);
-  farthest = std::sqrt(f2);
+  nearest2 = n2;
+  farthest2 = f2;
 }
 
 // Distance between two axis-aligned boxes.
@@ -99,22 +99,33 @@ inline double BoxBoxDistance(
 // Keeps the candidates of `from` that can give the clamped field inside box [lo, hi]:
 // those with lower bound below the band B and not above U, the smallest upper bound.
 // Returns U (+inf when nothing is left).
-double PruneCandidates(const std::vector<Ball>& balls, const std::vector<vtkIdType>& from,
+double PruneCandidates(const std::vector<Ball>& balls, const std::vector<Candidate>& from,
   const double lo[3], const double hi[3], double band, double slack, std::vector<Candidate>& kept)
 {
   kept.clear();
   double upper = std::numeric_limits<double>::infinity();
-  for (vtkIdType id : from)
+  for (const Candidate& candidate : from)
   {
+    const vtkIdType id = candidate.Ball;
     const Ball& b = balls[id];
-    double nearest, farthest;
-    BoxDistanceBounds(lo, hi, b.C, nearest, farthest);
-    const double lower = nearest - b.R - slack;
+    double nearest2, farthest2;
+    BoxDistanceBounds2(lo, hi, b.C, nearest2, farthest2);
+    // Squares first: most balls are rejected without a square root.
+    const double farEnough = band + b.R + slack;
+    if (nearest2 >= farEnough * farEnough)
+    {
+      continue; // lower bound >= band
+    }
+    const double lower = std::sqrt(nearest2) - b.R - slack;
     if (lower >= band)
     {
       continue;
     }
-    upper = std::min(upper, farthest - b.R + slack);
+    const double reach = upper + b.R - slack;
+    if (!(reach > 0.0) || farthest2 < reach * reach)
+    {
+      upper = std::min(upper, std::sqrt(farthest2) - b.R + slack);
+    }
     kept.push_back({ lower, id });
   }
   kept.erase(std::remove_if(kept.begin(), kept.end(),
@@ -122,6 +133,125 @@ double PruneCandidates(const std::vector<Ball>& balls, const std::vector<vtkIdTy
     kept.end());
   return upper;
 }
+
+// Fills the clamped field over boxes of grid points, refining each box into halves
+// while its candidate list is long: each level tightens the upper bound and so prunes
+// the list for the next.
+struct FieldFiller
+{
+  const std::vector<Ball>& Balls;
+  const Grid& G;
+  double Band;
+  double Slack;
+  double* Values;
+  vtkIdType SliceSize;
+
+  static constexpr int LeafSize = 4;      // voxels per side at which refinement stops
+  static constexpr size_t ShortList = 6; // candidates below which refinement stops
+  static constexpr size_t MaximumDepth = 8; // halvings from a superblock down to one voxel, and more
+
+  double PointOf(int k, int i) const { return this->G.Origin[k] + i * this->G.Spacing[k]; }
+
+  void Fill(const int first[3], const int last[3], double value) const
+  {
+    for (int z = first[2]; z <= last[2]; ++z)
+    {
+      for (int y = first[1]; y <= last[1]; ++y)
+      {
+        double* row = this->Values + z * this->SliceSize + static_cast<vtkIdType>(y) * this->G.Dims[0];
+        std::fill(row + first[0], row + last[0] + 1, value);
+      }
+    }
+  }
+
+  void Refine(const std::vector<Candidate>& parent, const int first[3], const int last[3], size_t depth,
+    std::vector<std::vector<Candidate>>& levels) const
+  {
+    // `levels` is sized up front (MaximumDepth): resizing here would move the parent's list.
+    std::vector<Candidate>& kept = levels[depth];
+    double lo[3], hi[3];
+    int longest = 1;
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = this->PointOf(k, first[k]);
+      hi[k] = this->PointOf(k, last[k]);
+      longest = std::max(longest, last[k] - first[k] + 1);
+    }
+    const double upper = PruneCandidates(this->Balls, parent, lo, hi, this->Band, this->Slack, kept);
+    if (kept.empty())
+    {
+      this->Fill(first, last, this->Band); // f >= B everywhere in the box
+      return;
+    }
+    if (upper <= -this->Band)
+    {
+      this->Fill(first, last, -this->Band); // f <= -B everywhere in the box
+      return;
+    }
+    if (longest > LeafSize && kept.size() > ShortList)
+    {
+      int mid[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        mid[k] = first[k] + (last[k] - first[k] + 1) / 2; // first index of the upper half
+      }
+      int childFirst[3], childLast[3];
+      for (int cz = 0; cz < (last[2] > first[2] ? 2 : 1); ++cz)
+      {
+        childFirst[2] = cz ? mid[2] : first[2];
+        childLast[2] = (cz || last[2] == first[2]) ? last[2] : mid[2] - 1;
+        for (int cy = 0; cy < (last[1] > first[1] ? 2 : 1); ++cy)
+        {
+          childFirst[1] = cy ? mid[1] : first[1];
+          childLast[1] = (cy || last[1] == first[1]) ? last[1] : mid[1] - 1;
+          for (int cx = 0; cx < (last[0] > first[0] ? 2 : 1); ++cx)
+          {
+            childFirst[0] = cx ? mid[0] : first[0];
+            childLast[0] = (cx || last[0] == first[0]) ? last[0] : mid[0] - 1;
+            this->Refine(kept, childFirst, childLast, depth + 1, levels);
+          }
+        }
+      }
+      return;
+    }
+    // Leaf: nearest lower bound first lets each voxel stop early; ties by id.
+    std::sort(kept.begin(), kept.end(), [](const Candidate& x, const Candidate& y) {
+      return x.Lower < y.Lower || (x.Lower == y.Lower && x.Ball < y.Ball);
+    });
+    const double band = this->Band;
+    for (int z = first[2]; z <= last[2]; ++z)
+    {
+      const double pz = this->PointOf(2, z);
+      for (int y = first[1]; y <= last[1]; ++y)
+      {
+        const double py = this->PointOf(1, y);
+        double* row = this->Values + z * this->SliceSize + static_cast<vtkIdType>(y) * this->G.Dims[0];
+        for (int x = first[0]; x <= last[0]; ++x)
+        {
+          const double px = this->PointOf(0, x);
+          double best = band;
+          for (const Candidate& c : kept)
+          {
+            if (c.Lower >= best || best <= -band)
+            {
+              break;
+            }
+            const Ball& ball = this->Balls[c.Ball];
+            const double dx = px - ball.C[0], dy = py - ball.C[1], dz = pz - ball.C[2];
+            const double d2 = dx * dx + dy * dy + dz * dz;
+            // Compare squares first: the square root only for a (near) improvement.
+            const double reach = best + ball.R;
+            if (reach > 0.0 && d2 <= reach * reach * (1.0 + 1e-12))
+            {
+              best = std::min(best, std::sqrt(d2) - ball.R);
+            }
+          }
+          row[x] = std::max(-band, best);
+        }
+      }
+    }
+  }
+};
 
 // Fits a plane to the centres. Returns 2 when they span exactly one plane, 1 when they
 // are collinear, 0 when they coincide, 3 otherwise; `frame` is the best-fit plane.
@@ -489,11 +619,10 @@ int vtkMedialBallUnion::RequestData(
   const double slack = 1e-12 * (diagonal + std::fabs(lo[0]) + std::fabs(lo[1]) + std::fabs(lo[2]));
 
   // 4. Field: bin the centres by superblock, then superblock -> blocks -> voxels.
-  int blockSize[3], superSize[3], supers[3];
+  int superSize[3], supers[3];
   for (int k = 0; k < 3; ++k)
   {
     superSize[k] = grid.Dims[k] > 1 ? SuperBlock : 1;
-    blockSize[k] = grid.Dims[k] > 1 ? Block : 1;
     supers[k] = (grid.Dims[k] + superSize[k] - 1) / superSize[k];
   }
   const vtkIdType binCount = static_cast<vtkIdType>(supers[0]) * supers[1] * supers[2];
@@ -556,14 +685,14 @@ int vtkMedialBallUnion::RequestData(
   const vtkIdType sliceSize = static_cast<vtkIdType>(grid.Dims[0]) * grid.Dims[1];
   const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
   const int superPerLayer = supers[0] * supers[1];
+  const FieldFiller filler{ balls, grid, band, slack, values, sliceSize };
 
   for (int sz = 0; sz < supers[2] && !this->GetAbortExecute(); ++sz)
   {
 #pragma omp parallel num_threads(threads)
     {
-      std::vector<vtkIdType> gathered;
-      std::vector<Candidate> superKept, blockKept;
-      std::vector<vtkIdType> superIds;
+      std::vector<Candidate> gathered;
+      std::vector<std::vector<Candidate>> levels(FieldFiller::MaximumDepth);
 #pragma omp for schedule(dynamic, 1)
       for (int s = 0; s < superPerLayer; ++s)
       {
@@ -577,17 +706,6 @@ int vtkMedialBallUnion::RequestData(
           slo[k] = pointOf(k, first[k]);
           shi[k] = pointOf(k, last[k]);
         }
-        auto fillBox = [&](const int from[3], const int to[3], double value) {
-          for (int z = from[2]; z <= to[2]; ++z)
-          {
-            for (int y = from[1]; y <= to[1]; ++y)
-            {
-              double* row = values + z * sliceSize + static_cast<vtkIdType>(y) * grid.Dims[0];
-              std::fill(row + from[0], row + to[0] + 1, value);
-            }
-          }
-        };
-
         // Candidates: balls in the bins that can reach this superblock.
         gathered.clear();
         int b[3];
@@ -608,86 +726,14 @@ int vtkMedialBallUnion::RequestData(
               {
                 continue;
               }
-              gathered.insert(gathered.end(), binBalls.begin() + binStart[bin],
-                binBalls.begin() + binStart[bin + 1]);
-            }
-          }
-        }
-        const double superUpper = PruneCandidates(balls, gathered, slo, shi, band, slack, superKept);
-        if (superKept.empty())
-        {
-          fillBox(first, last, band);
-          continue;
-        }
-        if (superUpper <= -band)
-        {
-          fillBox(first, last, -band);
-          continue;
-        }
-        superIds.clear();
-        for (const Candidate& c : superKept)
-        {
-          superIds.push_back(c.Ball);
-        }
-
-        // Blocks of this superblock.
-        int bf[3], bl[3];
-        for (bf[2] = first[2]; bf[2] <= last[2]; bf[2] += blockSize[2])
-        {
-          for (bf[1] = first[1]; bf[1] <= last[1]; bf[1] += blockSize[1])
-          {
-            for (bf[0] = first[0]; bf[0] <= last[0]; bf[0] += blockSize[0])
-            {
-              double blo[3], bhi[3];
-              for (int k = 0; k < 3; ++k)
+              for (vtkIdType j = binStart[bin]; j < binStart[bin + 1]; ++j)
               {
-                bl[k] = std::min(last[k], bf[k] + blockSize[k] - 1);
-                blo[k] = pointOf(k, bf[k]);
-                bhi[k] = pointOf(k, bl[k]);
-              }
-              const double upper = PruneCandidates(balls, superIds, blo, bhi, band, slack, blockKept);
-              if (blockKept.empty())
-              {
-                fillBox(bf, bl, band);
-                continue;
-              }
-              if (upper <= -band)
-              {
-                fillBox(bf, bl, -band);
-                continue;
-              }
-              // Nearest lower bound first lets each voxel stop early; ties by id.
-              std::sort(blockKept.begin(), blockKept.end(), [](const Candidate& x, const Candidate& y) {
-                return x.Lower < y.Lower || (x.Lower == y.Lower && x.Ball < y.Ball);
-              });
-              for (int z = bf[2]; z <= bl[2]; ++z)
-              {
-                const double pz = pointOf(2, z);
-                for (int y = bf[1]; y <= bl[1]; ++y)
-                {
-                  const double py = pointOf(1, y);
-                  double* row = values + z * sliceSize + static_cast<vtkIdType>(y) * grid.Dims[0];
-                  for (int x = bf[0]; x <= bl[0]; ++x)
-                  {
-                    const double px = pointOf(0, x);
-                    double best = band;
-                    for (const Candidate& c : blockKept)
-                    {
-                      if (c.Lower >= best || best <= -band)
-                      {
-                        break;
-                      }
-                      const Ball& ball = balls[c.Ball];
-                      const double dx = px - ball.C[0], dy = py - ball.C[1], dz = pz - ball.C[2];
-                      best = std::min(best, std::sqrt(dx * dx + dy * dy + dz * dz) - ball.R);
-                    }
-                    row[x] = std::max(-band, best);
-                  }
-                }
+                gathered.push_back({ 0.0, binBalls[j] });
               }
             }
           }
         }
+        filler.Refine(gathered, first, last, 0, levels);
       }
     }
     this->UpdateProgress(0.9 * (sz + 1) / supers[2]);

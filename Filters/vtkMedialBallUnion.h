@@ -21,19 +21,20 @@
  *     that the surface is closed) is sampled either with SampleDimensions points
  *     per axis or with an isotropic Spacing relative to that diagonal. In 2D the
  *     grid lies in the balls' plane, in a frame (origin, u, v) fitted to it.
- *  4. Field: the image is cut into 16^d superblocks and those into 4^d blocks. The
- *     centres are binned into the superblock grid, each bin remembering its
- *     largest radius. For a superblock the bins that can reach it give the
- *     candidate balls; a candidate whose distance lower bound over the block,
- *     |box - c| - r, is not below both the band half-width B and the smallest
- *     upper bound max_{x in box}|x - c| - r of all candidates can never be the
- *     minimum where the field matters, and is dropped. The same pruning runs
- *     again per block, and a block whose upper bound is <= -B (deep inside) or
- *     that has no candidates (far outside) is filled without visiting balls.
- *     Each remaining voxel takes the exact minimum over its block's candidates,
- *     visited in increasing lower bound so that the loop can stop early.
- *     Superblocks are processed in z-slabs, in parallel with OpenMP; each voxel
- *     is computed independently, so the image is identical for any thread count.
+ *  4. Field: the centres are binned into a grid of 16^d-voxel superblocks, each bin
+ *     remembering its largest radius. For a superblock the bins that can reach it
+ *     give the candidate balls. Over a box of grid points a ball has the bounds
+ *     lower = min_box |x - c| - r and upper = max_box |x - c| - r; with U the
+ *     smallest upper bound, a ball whose lower bound is >= B (the band half-width)
+ *     or > U can never give the clamped field in the box, and is dropped. A box
+ *     with no candidate left is filled with +B, one with U <= -B (deep inside)
+ *     with -B; otherwise it is halved along each axis and its children are pruned
+ *     from its list, down to 4^d voxels or 6 candidates. There every voxel takes
+ *     the exact minimum over the list, visited in increasing lower bound so that it
+ *     can stop early (squared distances are compared first; the square root is
+ *     taken for improvements only). Superblocks are processed in z-slabs, in
+ *     parallel with OpenMP; every voxel is computed independently, in a fixed
+ *     order, so the image is identical for any thread count.
  *  5. Surface: vtkFlyingEdges3D (3D) or vtkFlyingEdges2D + vtkStripper (2D) at
  *     value 0. The 3D surface is oriented outward; 2D curves are closed polylines
  *     (first point id repeated at the end) mapped back into the balls' plane.
