@@ -10,7 +10,9 @@
 #define MedialReconstructionError_h
 
 #include "vtkGenericCell.h"
+#include "vtkDataArray.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkStaticCellLocator.h"
 
@@ -74,6 +76,44 @@ inline DirectionalError VertexToSurface(vtkPolyData* from, vtkPolyData* to, doub
   e.Max /= scale;
   e.Mean = sum / n / scale;
   return e;
+}
+
+/// How far the balls cross the surface: max over balls of (radius - distance from the
+/// centre to the surface), divided by `scale`; 0 when every ball is empty. Centres are
+/// assumed inside. The union can leave the surface by exactly this much.
+inline double BallProtrusion(vtkPolyData* balls, vtkPolyData* surface, double scale, int threads)
+{
+  vtkDataArray* radius = balls->GetPointData()->GetArray("Radius");
+  const vtkIdType n = balls->GetNumberOfPoints();
+  if (!radius || n == 0)
+  {
+    return 0.0;
+  }
+  vtkNew<vtkStaticCellLocator> locator;
+  locator->SetDataSet(surface);
+  locator->BuildLocator();
+  surface->BuildCells();
+  std::vector<double> excess(static_cast<size_t>(n));
+#pragma omp parallel num_threads(threads)
+  {
+    vtkNew<vtkGenericCell> cell;
+#pragma omp for schedule(dynamic, 1024)
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double c[3], closest[3], d2 = 0.0;
+      vtkIdType cellId = -1;
+      int subId = 0;
+      balls->GetPoint(i, c);
+      locator->FindClosestPoint(c, closest, cell, cellId, subId, d2);
+      excess[i] = radius->GetTuple1(i) - std::sqrt(d2);
+    }
+  }
+  double worst = 0.0;
+  for (double e : excess)
+  {
+    worst = std::max(worst, e);
+  }
+  return worst / scale;
 }
 
 /// Both directions, relative to the diagonal of `original`.
