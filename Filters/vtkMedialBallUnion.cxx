@@ -7,7 +7,6 @@
 #include "vtkDoubleArray.h"
 #include "vtkFlyingEdges2D.h"
 #include "vtkFlyingEdges3D.h"
-#include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -26,7 +25,6 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkMedialBallUnion);
@@ -59,7 +57,7 @@ struct Grid
 // Candidate ball with its bounds over a box of grid points.
 struct Candidate
 {
-  double Lower; // min over the box of |x - c| - r
+  double Lower; // min over the box of |x - c| - r, less a rounding slack
   vtkIdType Ball;
 };
 
@@ -578,7 +576,7 @@ int vtkMedialBallUnion::RequestData(
       const double h = this->Spacing * diagonal;
       const double pad = std::max(this->Padding * diagonal, 2.0 * h);
       const double points = std::ceil((extent + 2.0 * pad) / h) + 1.0;
-      if (points > static_cast<double>(this->MaximumNumberOfVoxels))
+      if (points > static_cast<double>(this->MaximumNumberOfVoxels) || points > VTK_INT_MAX)
       {
         vtkErrorMacro(<< "Cannot build the union of balls: the spacing " << this->Spacing
                       << " needs more than MaximumNumberOfVoxels ("
