@@ -17,11 +17,12 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
-#include "vtkStripper.h"
+#include "vtkSmartPointer.h"
 
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -365,6 +366,83 @@ int FitPlane(const std::vector<Ball>& balls, double tolerance, PlaneFrame& frame
     frame.N[k] = normal[k];
   }
   return rank;
+}
+
+// Joins the two-point segments of a 2D contour into polylines; a closed curve repeats
+// its first point id at the end. vtkStripper would cap polylines at 100000 points.
+vtkSmartPointer<vtkCellArray> ChainSegments(vtkPolyData* segments)
+{
+  const vtkIdType np = segments->GetNumberOfPoints();
+  vtkCellArray* lines = segments->GetLines();
+  const vtkIdType ns = lines->GetNumberOfCells();
+  std::vector<std::array<vtkIdType, 2>> ends(static_cast<size_t>(ns));
+  std::vector<vtkIdType> incidentStart(np + 1, 0), incident;
+  {
+    auto it = vtk::TakeSmartPointer(lines->NewIterator());
+    vtkIdType k = 0;
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++k)
+    {
+      vtkIdType npts;
+      const vtkIdType* ids;
+      it->GetCurrentCell(npts, ids);
+      ends[k] = { ids[0], ids[npts - 1] };
+      ++incidentStart[ends[k][0] + 1];
+      ++incidentStart[ends[k][1] + 1];
+    }
+  }
+  std::partial_sum(incidentStart.begin(), incidentStart.end(), incidentStart.begin());
+  incident.resize(incidentStart.back());
+  {
+    std::vector<vtkIdType> fill(incidentStart.begin(), incidentStart.end() - 1);
+    for (vtkIdType k = 0; k < ns; ++k)
+    {
+      incident[fill[ends[k][0]]++] = k;
+      incident[fill[ends[k][1]]++] = k;
+    }
+  }
+  std::vector<char> used(static_cast<size_t>(ns), 0);
+  auto nextSegment = [&](vtkIdType point) -> vtkIdType {
+    for (vtkIdType j = incidentStart[point]; j < incidentStart[point + 1]; ++j)
+    {
+      if (!used[incident[j]])
+      {
+        return incident[j];
+      }
+    }
+    return -1;
+  };
+  auto polylines = vtkSmartPointer<vtkCellArray>::New();
+  std::vector<vtkIdType> chain, back;
+  for (vtkIdType first = 0; first < ns; ++first)
+  {
+    if (used[first])
+    {
+      continue;
+    }
+    used[first] = 1;
+    chain.assign({ ends[first][0], ends[first][1] });
+    // Forward from the second end, then backward from the first for open curves.
+    for (vtkIdType s = nextSegment(chain.back()); s >= 0 && chain.back() != chain.front();
+         s = nextSegment(chain.back()))
+    {
+      used[s] = 1;
+      chain.push_back(ends[s][0] == chain.back() ? ends[s][1] : ends[s][0]);
+    }
+    if (chain.back() != chain.front())
+    {
+      back.clear();
+      vtkIdType tip = chain.front();
+      for (vtkIdType s = nextSegment(tip); s >= 0; s = nextSegment(tip))
+      {
+        used[s] = 1;
+        tip = ends[s][0] == tip ? ends[s][1] : ends[s][0];
+        back.push_back(tip);
+      }
+      chain.insert(chain.begin(), back.rbegin(), back.rend());
+    }
+    polylines->InsertNextCell(static_cast<vtkIdType>(chain.size()), chain.data());
+  }
+  return polylines;
 }
 
 // Signed volume of a closed triangle surface (positive when oriented outward).
@@ -802,12 +880,8 @@ int vtkMedialBallUnion::RequestData(
     contour->SetInputData(local);
     contour->SetValue(0, 0.0);
     contour->ComputeScalarsOff();
-    vtkNew<vtkStripper> stripper;
-    stripper->SetInputConnection(contour->GetOutputPort());
-    stripper->JoinContiguousSegmentsOn();
-    stripper->SetMaximumLength(100000); // its largest: longer curves would be split
-    stripper->Update();
-    vtkPolyData* curves = stripper->GetOutput();
+    contour->Update();
+    vtkPolyData* curves = contour->GetOutput();
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
     const vtkIdType np = curves->GetNumberOfPoints();
@@ -823,7 +897,7 @@ int vtkMedialBallUnion::RequestData(
       points->SetPoint(i, w);
     }
     output->SetPoints(points);
-    output->SetLines(curves->GetLines());
+    output->SetLines(ChainSegments(curves));
   }
   this->OutputDimension = dimension;
   this->VoxelSize = voxelSize;

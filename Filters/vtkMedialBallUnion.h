@@ -35,7 +35,7 @@
  *     taken for improvements only). Superblocks are processed in z-slabs, in
  *     parallel with OpenMP; every voxel is computed independently, in a fixed
  *     order, so the image is identical for any thread count.
- *  5. Surface: vtkFlyingEdges3D (3D) or vtkFlyingEdges2D + vtkStripper (2D) at
+ *  5. Surface: vtkFlyingEdges3D (3D) or vtkFlyingEdges2D with its segments chained (2D) at
  *     value 0. The 3D surface is oriented outward; 2D curves are closed polylines
  *     (first point id repeated at the end) mapped back into the balls' plane.
  *
@@ -52,7 +52,11 @@
  *
  * Accuracy: the reconstructed boundary is within about one voxel of the exact
  * union boundary (flying edges interpolates linearly between exact samples).
- * Sharp creases of the union (where spheres meet) are cut by up to a voxel.
+ * Sharp creases of the union (where spheres meet) are cut by up to a voxel. In 2D,
+ * marching squares' fixed saddle case can split a sub-voxel closed loop off a concave
+ * crease; it lies within a voxel of the true boundary. The union is exact for the
+ * balls it is given: balls that cross the original surface (a sampler with a
+ * MinimumSeparationAngle above 0 allows it) make the reconstruction cross it too.
  *
  * @sa vtkMedialAxisSampler vtkFlyingEdges3D vtkSignedDistance
  */
