@@ -6,7 +6,10 @@ it with vtkMedialBallUnion at each resolution, and prints the distance from the
 original vertices to the reconstruction, separately for vertices on sharp edges
 (dihedral angle above 30 degrees) and for the others, in % of the bounding-box
 diagonal and in voxels. Run from the build tree's parent:
-  PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 scripts/fandisk-rounding.py [MESH] [SAMPLES]
+  PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 scripts/fandisk-rounding.py \
+      [MESH] [SAMPLES,...] [MIN_ANGLE]
+MIN_ANGLE (the sampler's MinimumSeparationAngle, default 60) = 0 keeps every ball inside
+the surface, which separates the rounding from balls that cross mild edges.
 """
 import sys
 
@@ -21,6 +24,7 @@ from vtkmodules.vtkIOGeometry import vtkOBJReader
 
 MESH = sys.argv[1] if len(sys.argv) > 1 else "/work/shared/data/meshes/fandisk.obj"
 SAMPLES = [int(s) for s in sys.argv[2].split(",")] if len(sys.argv) > 2 else [10000, 100000]
+MIN_ANGLE = float(sys.argv[3]) if len(sys.argv) > 3 else None
 RESOLUTIONS = [128, 256]
 
 reader = vtkOBJReader()
@@ -61,7 +65,9 @@ def distances_to(surface, query):
     return out
 
 
-print(f"{MESH}: {mesh.GetNumberOfCells()} triangles, {sharp.sum()} of {len(points)} vertices on sharp edges")
+theta = MIN_ANGLE if MIN_ANGLE is not None else medialaxis.vtkMedialAxisSampler().GetMinimumSeparationAngle()
+print(f"{MESH}: {mesh.GetNumberOfCells()} triangles, {sharp.sum()} of {len(points)} vertices on sharp edges, "
+      f"min angle {theta:g}; distances from original vertices to the reconstruction")
 print("| samples | grid | voxel % | sharp max % | sharp median % | sharp max voxels | other max % | other median % |")
 print("|---|---|---|---|---|---|---|---|")
 for count in SAMPLES:
@@ -69,6 +75,8 @@ for count in SAMPLES:
     sampler.SetInputData(mesh)
     sampler.SetNumberOfSamples(count)
     sampler.SetMethodToBisection()
+    if MIN_ANGLE is not None:
+        sampler.SetMinimumSeparationAngle(MIN_ANGLE)
     for n in RESOLUTIONS:
         union = medialaxis.vtkMedialBallUnion()
         union.SetInputConnection(sampler.GetOutputPort())
