@@ -730,7 +730,16 @@ int vtkMedialBallUnion::RequestData(
     std::vector<vtkIdType> fill(binStart.begin(), binStart.end() - 1);
     for (size_t i = 0; i < balls.size(); ++i)
     {
-      binBalls[fill[ballBin[i]]++] = static_cast<vtkIdType>(i); // ascending ids: deterministic
+      binBalls[fill[ballBin[i]]++] = static_cast<vtkIdType>(i);
+    }
+    // Largest radius first in each bin, so that a far bin's scan stops early; ties by
+    // id keep the order deterministic.
+    for (vtkIdType bin = 0; bin < binCount; ++bin)
+    {
+      std::sort(binBalls.begin() + binStart[bin], binBalls.begin() + binStart[bin + 1],
+        [&balls](vtkIdType a, vtkIdType b) {
+          return balls[a].R > balls[b].R || (balls[a].R == balls[b].R && a < b);
+        });
     }
   }
   // Centre bins are half-open boxes of superblock size.
@@ -798,12 +807,17 @@ int vtkMedialBallUnion::RequestData(
               }
               double blo[3], bhi[3];
               binBox(b, blo, bhi);
-              if (BoxBoxDistance(slo, shi, blo, bhi) - binMaxRadius[bin] - slack >= band)
+              const double gap = BoxBoxDistance(slo, shi, blo, bhi) - band - slack;
+              if (gap - binMaxRadius[bin] >= 0.0)
               {
                 continue;
               }
               for (vtkIdType j = binStart[bin]; j < binStart[bin + 1]; ++j)
               {
+                if (gap - balls[binBalls[j]].R >= 0.0)
+                {
+                  break; // this and every smaller ball stay beyond the band
+                }
                 gathered.push_back({ 0.0, binBalls[j] });
               }
             }
