@@ -5,7 +5,9 @@
 // writes the medial balls, a picture and a JSON line of figures. Only wiring
 // lives here; every algorithm is in a filter.
 
+#include "MedialReconstructionError.h"
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialBallUnion.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkOFFReader.h"
 
@@ -24,6 +26,8 @@
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
 #include "vtkPLYReader.h"
+#include "vtkPLYWriter.h"
+#include "vtkPolyDataNormals.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -32,6 +36,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSTLReader.h"
+#include "vtkSTLWriter.h"
 #include "vtkScalarBarActor.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextProperty.h"
@@ -60,7 +65,8 @@ namespace
 const char* Usage =
   "usage: medial-axis [INPUT] [-n N] [--method bisection|shrinking-ball] [--seed S]\n"
   "                   [--threads T] [--tolerance E] [--min-angle DEG] [-o OUT.vtp]\n"
-  "                   [--render OUT.png] [--stats]\n"
+  "                   [--render OUT.png] [--stats] [--reconstruct OUT.vtp|.stl|.ply]\n"
+  "                   [--resolution N]\n"
   "  INPUT        closed surface: .vtp .vtk .ply .stl .obj .off; none: the built-in demo shape\n"
   "  -n N         number of surface samples (default 10000)\n"
   "  --method M   bisection (default) or shrinking-ball\n"
@@ -71,7 +77,13 @@ const char* Usage =
   "               medial axis of the polyhedron)\n"
   "  -o OUT.vtp   write the medial balls (points with Radius, SurfacePoint, ...)\n"
   "  --render OUT.png  render the surface and the medial points offscreen (needs X; use xvfb-run)\n"
-  "  --stats      print one JSON line of figures on stdout\n";
+  "  --stats      print one JSON line of figures on stdout\n"
+  "  --reconstruct OUT  write the boundary of the union of the medial balls (.vtp .stl .ply);\n"
+  "               with --stats adds reconstruction_seconds and, for a closed input,\n"
+  "               hausdorff_max_rel and hausdorff_mean_rel (vertex to surface, the larger\n"
+  "               of the two directions, relative to the bounding-box diagonal);\n"
+  "               with --render the reconstruction is drawn beside the input\n"
+  "  --resolution N  grid points per axis of the reconstruction (default 128)\n";
 
 struct Options
 {
@@ -85,6 +97,8 @@ struct Options
   std::string Output;
   std::string Render;
   bool Stats = false;
+  std::string Reconstruct;
+  int Resolution = 128;
 };
 
 volatile std::sig_atomic_t Interrupted = 0;
@@ -251,6 +265,14 @@ Options Parse(int argc, char* argv[])
     {
       o.Stats = true;
     }
+    else if (a == "--reconstruct")
+    {
+      o.Reconstruct = need(i);
+    }
+    else if (a == "--resolution")
+    {
+      o.Resolution = static_cast<int>(integer(i, 8, 2048));
+    }
     else if (!a.empty() && a[0] == '-')
     {
       Fail("unknown option '" + a + "' (see --help)");
@@ -366,7 +388,94 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, MessageSink& s
   return copy;
 }
 
-void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, MessageSink& sink)
+// Checks the --reconstruct path before any work, like -o.
+void CheckReconstructPath(const std::string& path)
+{
+  const std::string ext = Extension(path);
+  if (ext != ".vtp" && ext != ".stl" && ext != ".ply")
+  {
+    Fail("--reconstruct writes .vtp, .stl or .ply, got '" + path + "'");
+  }
+  CheckWritable(path, "--reconstruct");
+}
+
+// Union of the medial balls, written to `path` by its extension.
+vtkSmartPointer<vtkPolyData> Reconstruct(vtkPolyData* medial, const Options& opt, MessageSink& sink)
+{
+  vtkNew<vtkMedialBallUnion> ballUnion;
+  ballUnion->SetInputData(medial);
+  ballUnion->SetSampleDimensions(opt.Resolution, opt.Resolution, opt.Resolution);
+  ballUnion->SetNumberOfThreads(opt.Threads);
+  ballUnion->Update();
+  if (!sink.LastError.empty())
+  {
+    Fail(sink.LastError);
+  }
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->ShallowCopy(ballUnion->GetOutput());
+  return result;
+}
+
+void WriteReconstruction(vtkPolyData* reconstruction, const std::string& path, MessageSink& sink)
+{
+  const std::string ext = Extension(path);
+  int written = 0;
+  if (ext == ".stl")
+  {
+    vtkNew<vtkSTLWriter> w;
+    w->SetInputData(reconstruction);
+    w->SetFileName(path.c_str());
+    w->SetFileTypeToBinary();
+    written = w->Write();
+  }
+  else if (ext == ".ply")
+  {
+    vtkNew<vtkPLYWriter> w;
+    w->SetInputData(reconstruction);
+    w->SetFileName(path.c_str());
+    w->SetFileTypeToBinary();
+    written = w->Write();
+  }
+  else
+  {
+    vtkNew<vtkXMLPolyDataWriter> w;
+    w->SetInputData(reconstruction);
+    w->SetFileName(path.c_str());
+    w->SetDataModeToBinary();
+    written = w->Write();
+  }
+  if (!written || !sink.LastError.empty())
+  {
+    Fail("cannot write '" + path + "': " + sink.LastError);
+  }
+}
+
+// Splits the window: the input and medial points on the left, the reconstruction on
+// the right with the same camera.
+void AddReconstructionView(vtkRenderWindow* window, vtkRenderer* left, vtkPolyData* reconstruction)
+{
+  left->SetViewport(0.0, 0.0, 0.5, 1.0);
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(reconstruction);
+  normals->SplittingOff();
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(normals->GetOutputPort());
+  mapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.90, 0.62, 0.40);
+  vtkNew<vtkRenderer> right;
+  right->SetViewport(0.5, 0.0, 1.0, 1.0);
+  right->SetBackground(1, 1, 1);
+  right->AddActor(actor);
+  right->SetActiveCamera(left->GetActiveCamera());
+  window->AddRenderer(right);
+  int* size = window->GetSize();
+  window->SetSize(2 * size[0], size[1]);
+}
+
+void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, MessageSink& sink,
+  vtkPolyData* reconstruction = nullptr)
 {
   vtkNew<vtkPolyDataMapper> surfaceMapper;
   surfaceMapper->SetInputData(surface);
@@ -424,6 +533,10 @@ void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, 
   window->SetOffScreenRendering(1);
   window->SetSize(900, 640);
   window->AddRenderer(renderer);
+  if (reconstruction)
+  {
+    AddReconstructionView(window, renderer, reconstruction);
+  }
   window->Render();
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
@@ -436,6 +549,27 @@ void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, 
   {
     Fail("cannot write '" + path + "': " + sink.LastError);
   }
+}
+
+// JSON members for --reconstruct; the Hausdorff figures only for a closed input.
+std::string ReconstructionStats(vtkPolyData* surface, vtkPolyData* reconstruction, double seconds,
+  vtkMedialAxisSampler* sampler, const Options& opt)
+{
+  if (!reconstruction)
+  {
+    return "";
+  }
+  std::ostringstream js;
+  js.precision(6);
+  js << ", \"reconstruction_seconds\": " << seconds << ", \"resolution\": " << opt.Resolution;
+  if (sampler->GetBoundaryEdges() == 0)
+  {
+    const int threads = opt.Threads > 0 ? opt.Threads : omp_get_num_procs();
+    const medialbench::ReconstructionError e =
+      medialbench::MeasureReconstruction(surface, reconstruction, threads);
+    js << ", \"hausdorff_max_rel\": " << e.MaxRel() << ", \"hausdorff_mean_rel\": " << e.MeanRel();
+  }
+  return js.str();
 }
 
 std::string JsonString(const std::string& s)
@@ -488,6 +622,10 @@ int main(int argc, char* argv[])
       Fail("-o writes VTK XML polydata and needs a .vtp name, got '" + opt.Output + "'");
     }
     CheckWritable(opt.Output, "-o");
+  }
+  if (!opt.Reconstruct.empty())
+  {
+    CheckReconstructPath(opt.Reconstruct);
   }
 
   vtkSmartPointer<vtkPolyData> surface;
@@ -580,9 +718,19 @@ int main(int argc, char* argv[])
       Fail("cannot write '" + opt.Output + "': " + sink.LastError);
     }
   }
+  vtkSmartPointer<vtkPolyData> reconstruction;
+  double reconstructionSeconds = 0.0;
+  if (!opt.Reconstruct.empty())
+  {
+    const auto reconstructStart = std::chrono::steady_clock::now();
+    reconstruction = Reconstruct(medial, opt, sink);
+    reconstructionSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - reconstructStart).count();
+    WriteReconstruction(reconstruction, opt.Reconstruct, sink);
+  }
   if (!opt.Render.empty())
   {
-    Render(surface, medial, opt.Render, sink);
+    Render(surface, medial, opt.Render, sink, reconstruction);
   }
   if (opt.Stats)
   {
@@ -596,7 +744,8 @@ int main(int argc, char* argv[])
        << JsonString(vtkMedialAxisSampler::GetMethodName(opt.Method)) << ", \"threads\": " << threads
        << ", \"min_angle\": " << opt.MinAngle << ", \"tolerance\": " << opt.Tolerance
        << ", \"iterations_mean\": " << sampler->GetMeanIterations()
-       << ", \"capped\": " << sampler->GetCappedSamples() << ", \"seconds\": " << seconds << "}";
+       << ", \"capped\": " << sampler->GetCappedSamples() << ", \"seconds\": " << seconds
+       << ReconstructionStats(surface, reconstruction, reconstructionSeconds, sampler, opt) << "}";
     std::cout << js.str() << std::endl;
   }
   return 0;

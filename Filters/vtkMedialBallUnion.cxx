@@ -1,0 +1,937 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkMedialBallUnion.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFlyingEdges2D.h"
+#include "vtkFlyingEdges3D.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkSmartPointer.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <vector>
+
+vtkStandardNewMacro(vtkMedialBallUnion);
+
+namespace
+{
+// Balls in the grid's frame: x, y, z, r. In 2D z is 0 for every centre.
+struct Ball
+{
+  double C[3];
+  double R;
+};
+
+// A plane fitted to the centres: origin, in-plane axes U, V and normal N.
+struct PlaneFrame
+{
+  double Origin[3] = { 0, 0, 0 };
+  double U[3] = { 1, 0, 0 };
+  double V[3] = { 0, 1, 0 };
+  double N[3] = { 0, 0, 1 };
+};
+
+struct Grid
+{
+  int Dims[3];
+  double Origin[3];
+  double Spacing[3];
+};
+
+// Candidate ball with its bounds over a box of grid points.
+struct Candidate
+{
+  double Lower; // min over the box of |x - c| - r, less a rounding slack
+  vtkIdType Ball;
+};
+
+constexpr int SuperBlock = 16;
+
+// Squared distance bounds from centre c to the axis-aligned box [lo, hi]: nearest and
+// farthest.
+inline void BoxDistanceBounds2(
+  const double lo[3], const double hi[3], const double c[3], double& nearest2, double& farthest2)
+{
+  double n2 = 0.0, f2 = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double below = lo[k] - c[k], above = c[k] - hi[k];
+    const double d = std::max(0.0, std::max(below, above));
+    n2 += d * d;
+    const double far = std::max(c[k] - lo[k], hi[k] - c[k]);
+    f2 += far * far;
+  }
+  nearest2 = n2;
+  farthest2 = f2;
+}
+
+// Distance between two axis-aligned boxes.
+inline double BoxBoxDistance(
+  const double alo[3], const double ahi[3], const double blo[3], const double bhi[3])
+{
+  double d2 = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double d = std::max(0.0, std::max(alo[k] - bhi[k], blo[k] - ahi[k]));
+    d2 += d * d;
+  }
+  return std::sqrt(d2);
+}
+
+// Keeps the candidates of `from` that can give the clamped field inside box [lo, hi]:
+// those with lower bound below the band B and not above U, the smallest upper bound.
+// Returns U (+inf when nothing is left).
+double PruneCandidates(const std::vector<Ball>& balls, const std::vector<Candidate>& from,
+  const double lo[3], const double hi[3], double band, double slack, std::vector<Candidate>& kept)
+{
+  kept.clear();
+  double upper = std::numeric_limits<double>::infinity();
+  for (const Candidate& candidate : from)
+  {
+    const vtkIdType id = candidate.Ball;
+    const Ball& b = balls[id];
+    double nearest2, farthest2;
+    BoxDistanceBounds2(lo, hi, b.C, nearest2, farthest2);
+    // Squares first: most balls are rejected without a square root.
+    const double farEnough = band + b.R + slack;
+    if (nearest2 >= farEnough * farEnough)
+    {
+      continue; // lower bound >= band
+    }
+    const double lower = std::sqrt(nearest2) - b.R - slack;
+    if (lower >= band)
+    {
+      continue;
+    }
+    const double reach = upper + b.R - slack;
+    if (!(reach > 0.0) || farthest2 < reach * reach)
+    {
+      upper = std::min(upper, std::sqrt(farthest2) - b.R + slack);
+    }
+    kept.push_back({ lower, id });
+  }
+  kept.erase(std::remove_if(kept.begin(), kept.end(),
+               [upper](const Candidate& c) { return c.Lower > upper; }),
+    kept.end());
+  return upper;
+}
+
+// Fills the clamped field over boxes of grid points, refining each box into halves
+// while its candidate list is long: each level tightens the upper bound and so prunes
+// the list for the next.
+struct FieldFiller
+{
+  const std::vector<Ball>& Balls;
+  const Grid& G;
+  double Band;
+  double Slack;
+  double* Values;
+  vtkIdType SliceSize;
+
+  static constexpr int LeafSize = 4;      // voxels per side at which refinement stops
+  static constexpr size_t ShortList = 6; // candidates below which refinement stops
+  static constexpr size_t MaximumDepth = 8; // halvings from a superblock down to one voxel, and more
+
+  double PointOf(int k, int i) const { return this->G.Origin[k] + i * this->G.Spacing[k]; }
+
+  void Fill(const int first[3], const int last[3], double value) const
+  {
+    for (int z = first[2]; z <= last[2]; ++z)
+    {
+      for (int y = first[1]; y <= last[1]; ++y)
+      {
+        double* row = this->Values + z * this->SliceSize + static_cast<vtkIdType>(y) * this->G.Dims[0];
+        std::fill(row + first[0], row + last[0] + 1, value);
+      }
+    }
+  }
+
+  void Refine(const std::vector<Candidate>& parent, const int first[3], const int last[3], size_t depth,
+    std::vector<std::vector<Candidate>>& levels) const
+  {
+    // `levels` is sized up front (MaximumDepth): resizing here would move the parent's list.
+    std::vector<Candidate>& kept = levels[depth];
+    double lo[3], hi[3];
+    int longest = 1;
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = this->PointOf(k, first[k]);
+      hi[k] = this->PointOf(k, last[k]);
+      longest = std::max(longest, last[k] - first[k] + 1);
+    }
+    const double upper = PruneCandidates(this->Balls, parent, lo, hi, this->Band, this->Slack, kept);
+    if (kept.empty())
+    {
+      this->Fill(first, last, this->Band); // f >= B everywhere in the box
+      return;
+    }
+    if (upper <= -this->Band)
+    {
+      this->Fill(first, last, -this->Band); // f <= -B everywhere in the box
+      return;
+    }
+    if (longest > LeafSize && kept.size() > ShortList)
+    {
+      int mid[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        mid[k] = first[k] + (last[k] - first[k] + 1) / 2; // first index of the upper half
+      }
+      int childFirst[3], childLast[3];
+      for (int cz = 0; cz < (last[2] > first[2] ? 2 : 1); ++cz)
+      {
+        childFirst[2] = cz ? mid[2] : first[2];
+        childLast[2] = (cz || last[2] == first[2]) ? last[2] : mid[2] - 1;
+        for (int cy = 0; cy < (last[1] > first[1] ? 2 : 1); ++cy)
+        {
+          childFirst[1] = cy ? mid[1] : first[1];
+          childLast[1] = (cy || last[1] == first[1]) ? last[1] : mid[1] - 1;
+          for (int cx = 0; cx < (last[0] > first[0] ? 2 : 1); ++cx)
+          {
+            childFirst[0] = cx ? mid[0] : first[0];
+            childLast[0] = (cx || last[0] == first[0]) ? last[0] : mid[0] - 1;
+            this->Refine(kept, childFirst, childLast, depth + 1, levels);
+          }
+        }
+      }
+      return;
+    }
+    // Leaf: nearest lower bound first lets each voxel stop early; ties by id.
+    std::sort(kept.begin(), kept.end(), [](const Candidate& x, const Candidate& y) {
+      return x.Lower < y.Lower || (x.Lower == y.Lower && x.Ball < y.Ball);
+    });
+    const double band = this->Band;
+    for (int z = first[2]; z <= last[2]; ++z)
+    {
+      const double pz = this->PointOf(2, z);
+      for (int y = first[1]; y <= last[1]; ++y)
+      {
+        const double py = this->PointOf(1, y);
+        double* row = this->Values + z * this->SliceSize + static_cast<vtkIdType>(y) * this->G.Dims[0];
+        for (int x = first[0]; x <= last[0]; ++x)
+        {
+          const double px = this->PointOf(0, x);
+          double best = band;
+          for (const Candidate& c : kept)
+          {
+            if (c.Lower >= best || best <= -band)
+            {
+              break;
+            }
+            const Ball& ball = this->Balls[c.Ball];
+            const double dx = px - ball.C[0], dy = py - ball.C[1], dz = pz - ball.C[2];
+            const double d2 = dx * dx + dy * dy + dz * dz;
+            // Compare squares first: the square root only for a (near) improvement.
+            const double reach = best + ball.R;
+            if (reach > 0.0 && d2 <= reach * reach * (1.0 + 1e-12))
+            {
+              best = std::min(best, std::sqrt(d2) - ball.R);
+            }
+          }
+          row[x] = std::max(-band, best);
+        }
+      }
+    }
+  }
+};
+
+// Fits a plane to the centres. Returns 2 when they span exactly one plane, 1 when they
+// are collinear, 0 when they coincide, 3 otherwise; `frame` is the best-fit plane.
+int FitPlane(const std::vector<Ball>& balls, double tolerance, PlaneFrame& frame)
+{
+  const size_t n = balls.size();
+  double centroid[3] = { 0, 0, 0 };
+  for (const Ball& b : balls)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      centroid[k] += b.C[k] / static_cast<double>(n);
+    }
+  }
+  double cov[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
+  for (const Ball& b : balls)
+  {
+    const double d[3] = { b.C[0] - centroid[0], b.C[1] - centroid[1], b.C[2] - centroid[2] };
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        cov[r][c] += d[r] * d[c];
+      }
+    }
+  }
+  double* rows[3] = { cov[0], cov[1], cov[2] };
+  double vecStorage[3][3];
+  double* vecs[3] = { vecStorage[0], vecStorage[1], vecStorage[2] };
+  double values[3];
+  vtkMath::Jacobi(rows, values, vecs); // eigenvalues in decreasing order, vectors in columns
+  double axis[3], normal[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    axis[k] = vecs[k][0];
+    normal[k] = vecs[k][2];
+  }
+  // Largest distance from the best line and from the best plane.
+  double fromLine = 0.0, fromPlane = 0.0;
+  for (const Ball& b : balls)
+  {
+    const double d[3] = { b.C[0] - centroid[0], b.C[1] - centroid[1], b.C[2] - centroid[2] };
+    const double along = vtkMath::Dot(d, axis);
+    const double off = vtkMath::Dot(d, normal);
+    fromLine = std::max(fromLine, std::sqrt(std::max(0.0, vtkMath::Dot(d, d) - along * along)));
+    fromPlane = std::max(fromPlane, std::fabs(off));
+  }
+  int rank = 3;
+  if (fromPlane <= tolerance)
+  {
+    rank = fromLine > tolerance ? 2 : (vtkMath::Norm(axis) > 0 && values[0] > 0 ? 1 : 0);
+  }
+  // Lower ranks: prefer the z = const plane when the centres lie in one.
+  if (rank < 2)
+  {
+    bool sameZ = true;
+    for (const Ball& b : balls)
+    {
+      sameZ = sameZ && std::fabs(b.C[2] - centroid[2]) <= tolerance;
+    }
+    if (sameZ)
+    {
+      normal[0] = normal[1] = 0.0;
+      normal[2] = 1.0;
+    }
+  }
+  // Snap near-axis normals so that axis-aligned planes give axis-aligned images.
+  for (int k = 0; k < 3; ++k)
+  {
+    if (std::fabs(std::fabs(normal[k]) - 1.0) < 1e-12)
+    {
+      normal[0] = normal[1] = normal[2] = 0.0;
+      normal[k] = 1.0;
+    }
+  }
+  // Sign: largest component positive, for a reproducible frame.
+  const int big = static_cast<int>(std::max_element(normal, normal + 3,
+                                     [](double a, double b) { return std::fabs(a) < std::fabs(b); }) -
+    normal);
+  if (normal[big] < 0)
+  {
+    for (double& c : normal)
+    {
+      c = -c;
+    }
+  }
+  vtkMath::Normalize(normal);
+  // U: the world axis most perpendicular to the normal, projected into the plane.
+  int pick = 0;
+  for (int k = 1; k < 3; ++k)
+  {
+    if (std::fabs(normal[k]) < std::fabs(normal[pick]))
+    {
+      pick = k;
+    }
+  }
+  double u[3] = { 0, 0, 0 };
+  u[pick] = 1.0;
+  const double un = vtkMath::Dot(u, normal);
+  for (int k = 0; k < 3; ++k)
+  {
+    u[k] -= un * normal[k];
+  }
+  vtkMath::Normalize(u);
+  double v[3];
+  vtkMath::Cross(normal, u, v);
+  const double offset = vtkMath::Dot(centroid, normal);
+  for (int k = 0; k < 3; ++k)
+  {
+    frame.Origin[k] = offset * normal[k];
+    frame.U[k] = u[k];
+    frame.V[k] = v[k];
+    frame.N[k] = normal[k];
+  }
+  return rank;
+}
+
+// Joins the two-point segments of a 2D contour into polylines; a closed curve repeats
+// its first point id at the end. vtkStripper would cap polylines at 100000 points.
+vtkSmartPointer<vtkCellArray> ChainSegments(vtkPolyData* segments)
+{
+  const vtkIdType np = segments->GetNumberOfPoints();
+  vtkCellArray* lines = segments->GetLines();
+  const vtkIdType ns = lines->GetNumberOfCells();
+  std::vector<std::array<vtkIdType, 2>> ends(static_cast<size_t>(ns));
+  std::vector<vtkIdType> incidentStart(np + 1, 0), incident;
+  {
+    auto it = vtk::TakeSmartPointer(lines->NewIterator());
+    vtkIdType k = 0;
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++k)
+    {
+      vtkIdType npts;
+      const vtkIdType* ids;
+      it->GetCurrentCell(npts, ids);
+      ends[k] = { ids[0], ids[npts - 1] };
+      ++incidentStart[ends[k][0] + 1];
+      ++incidentStart[ends[k][1] + 1];
+    }
+  }
+  std::partial_sum(incidentStart.begin(), incidentStart.end(), incidentStart.begin());
+  incident.resize(incidentStart.back());
+  {
+    std::vector<vtkIdType> fill(incidentStart.begin(), incidentStart.end() - 1);
+    for (vtkIdType k = 0; k < ns; ++k)
+    {
+      incident[fill[ends[k][0]]++] = k;
+      incident[fill[ends[k][1]]++] = k;
+    }
+  }
+  std::vector<char> used(static_cast<size_t>(ns), 0);
+  auto nextSegment = [&](vtkIdType point) -> vtkIdType {
+    for (vtkIdType j = incidentStart[point]; j < incidentStart[point + 1]; ++j)
+    {
+      if (!used[incident[j]])
+      {
+        return incident[j];
+      }
+    }
+    return -1;
+  };
+  auto polylines = vtkSmartPointer<vtkCellArray>::New();
+  std::vector<vtkIdType> chain, back;
+  for (vtkIdType first = 0; first < ns; ++first)
+  {
+    if (used[first])
+    {
+      continue;
+    }
+    used[first] = 1;
+    chain.assign({ ends[first][0], ends[first][1] });
+    // Forward from the second end, then backward from the first for open curves.
+    for (vtkIdType s = nextSegment(chain.back()); s >= 0 && chain.back() != chain.front();
+         s = nextSegment(chain.back()))
+    {
+      used[s] = 1;
+      chain.push_back(ends[s][0] == chain.back() ? ends[s][1] : ends[s][0]);
+    }
+    if (chain.back() != chain.front())
+    {
+      back.clear();
+      vtkIdType tip = chain.front();
+      for (vtkIdType s = nextSegment(tip); s >= 0; s = nextSegment(tip))
+      {
+        used[s] = 1;
+        tip = ends[s][0] == tip ? ends[s][1] : ends[s][0];
+        back.push_back(tip);
+      }
+      chain.insert(chain.begin(), back.rbegin(), back.rend());
+    }
+    polylines->InsertNextCell(static_cast<vtkIdType>(chain.size()), chain.data());
+  }
+  return polylines;
+}
+
+// Signed volume of a closed triangle surface (positive when oriented outward).
+double SignedVolume(vtkPolyData* surface)
+{
+  double volume = 0.0;
+  vtkPoints* points = surface->GetPoints();
+  if (!points)
+  {
+    return 0.0;
+  }
+  auto it = vtk::TakeSmartPointer(surface->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType npts;
+    const vtkIdType* ids;
+    it->GetCurrentCell(npts, ids);
+    if (npts != 3)
+    {
+      continue;
+    }
+    double a[3], b[3], c[3], bc[3];
+    points->GetPoint(ids[0], a);
+    points->GetPoint(ids[1], b);
+    points->GetPoint(ids[2], c);
+    vtkMath::Cross(b, c, bc);
+    volume += vtkMath::Dot(a, bc) / 6.0;
+  }
+  return volume;
+}
+}
+
+vtkMedialBallUnion::vtkMedialBallUnion()
+{
+  this->SetNumberOfOutputPorts(2);
+}
+
+vtkImageData* vtkMedialBallUnion::GetFieldOutput()
+{
+  return vtkImageData::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+int vtkMedialBallUnion::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+int vtkMedialBallUnion::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkPolyData" : "vtkImageData");
+  return 1;
+}
+
+int vtkMedialBallUnion::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  // The grid depends on the balls, which are not known yet: the extent is set in
+  // RequestData. Drop any stale extent so that downstream filters take the data's.
+  vtkInformation* imageInfo = outputVector->GetInformationObject(1);
+  imageInfo->Remove(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
+  return 1;
+}
+
+int vtkMedialBallUnion::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // Every ball can reach every part of the union: always ask for all of them.
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  return 1;
+}
+
+int vtkMedialBallUnion::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkInformation* imageInfo = outputVector->GetInformationObject(1);
+  vtkImageData* image = vtkImageData::GetData(outputVector, 1);
+  this->OutputDimension = 0;
+  this->VoxelSize = 0.0;
+
+  // 1. Validation.
+  const vtkIdType count = input ? input->GetNumberOfPoints() : 0;
+  if (count == 0)
+  {
+    vtkErrorMacro(<< "Cannot build the union of balls: the input has no points.");
+    return 0;
+  }
+  vtkDataArray* radii = input->GetPointData()->GetArray("Radius");
+  if (!radii)
+  {
+    vtkErrorMacro(<< "Cannot build the union of balls: the input has no point-data array "
+                     "named 'Radius'.");
+    return 0;
+  }
+  if (radii->GetNumberOfComponents() != 1)
+  {
+    vtkErrorMacro(<< "Cannot build the union of balls: 'Radius' has "
+                  << radii->GetNumberOfComponents() << " components, expected 1.");
+    return 0;
+  }
+  std::vector<Ball> balls(static_cast<size_t>(count));
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    Ball& b = balls[i];
+    input->GetPoint(i, b.C);
+    b.R = radii->GetTuple1(i);
+    if (!std::isfinite(b.R))
+    {
+      vtkErrorMacro(<< "Cannot build the union of balls: point " << i
+                    << " has a NaN or infinite radius.");
+      return 0;
+    }
+    if (b.R < 0.0)
+    {
+      vtkErrorMacro(<< "Cannot build the union of balls: point " << i << " has a negative radius ("
+                    << b.R << ").");
+      return 0;
+    }
+    if (!std::isfinite(b.C[0]) || !std::isfinite(b.C[1]) || !std::isfinite(b.C[2]))
+    {
+      vtkErrorMacro(<< "Cannot build the union of balls: point " << i
+                    << " has NaN or infinite coordinates.");
+      return 0;
+    }
+  }
+
+  // 2. Dimension.
+  double worldLo[3], worldHi[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    worldLo[k] = HUGE_VAL;
+    worldHi[k] = -HUGE_VAL;
+  }
+  for (const Ball& b : balls)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      worldLo[k] = std::min(worldLo[k], b.C[k] - b.R);
+      worldHi[k] = std::max(worldHi[k], b.C[k] + b.R);
+    }
+  }
+  const double worldDiagonal = std::sqrt(vtkMath::Distance2BetweenPoints(worldLo, worldHi));
+  PlaneFrame frame;
+  const int rank = FitPlane(balls, 1e-9 * worldDiagonal, frame);
+  int dimension = this->Dimension;
+  if (dimension == DIMENSION_AUTOMATIC)
+  {
+    dimension = rank == 2 ? 2 : 3;
+  }
+  else if (dimension == DIMENSION_2D && rank == 3)
+  {
+    vtkErrorMacro(<< "Cannot build a 2D union of disks: the centres do not lie in one plane.");
+    return 0;
+  }
+  if (dimension == 2)
+  {
+    // Centres into the plane's frame (z = 0).
+    for (Ball& b : balls)
+    {
+      double d[3];
+      vtkMath::Subtract(b.C, frame.Origin, d);
+      b.C[0] = vtkMath::Dot(d, frame.U);
+      b.C[1] = vtkMath::Dot(d, frame.V);
+      b.C[2] = 0.0;
+    }
+  }
+  const int axes = dimension; // active axes: x, y (and z)
+
+  // 3. Grid.
+  double lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
+  for (int k = 0; k < axes; ++k)
+  {
+    lo[k] = HUGE_VAL;
+    hi[k] = -HUGE_VAL;
+  }
+  for (const Ball& b : balls)
+  {
+    for (int k = 0; k < axes; ++k)
+    {
+      lo[k] = std::min(lo[k], b.C[k] - b.R);
+      hi[k] = std::max(hi[k], b.C[k] + b.R);
+    }
+  }
+  const double diagonal = std::sqrt(vtkMath::Distance2BetweenPoints(lo, hi));
+  if (!(diagonal > 0.0))
+  {
+    vtkErrorMacro(<< "Cannot build the union of balls: every ball has radius 0 at one point, "
+                     "so the union has no extent.");
+    return 0;
+  }
+  Grid grid;
+  for (int k = 0; k < 3; ++k)
+  {
+    grid.Dims[k] = 1;
+    grid.Origin[k] = 0.0;
+    grid.Spacing[k] = 1.0;
+  }
+  vtkIdType voxels = 1;
+  for (int k = 0; k < axes; ++k)
+  {
+    const double extent = hi[k] - lo[k];
+    if (this->ResolutionMode == USE_SPACING)
+    {
+      const double h = this->Spacing * diagonal;
+      const double pad = std::max(this->Padding * diagonal, 2.0 * h);
+      const double points = std::ceil((extent + 2.0 * pad) / h) + 1.0;
+      if (points > static_cast<double>(this->MaximumNumberOfVoxels) || points > VTK_INT_MAX)
+      {
+        vtkErrorMacro(<< "Cannot build the union of balls: the spacing " << this->Spacing
+                      << " needs more than MaximumNumberOfVoxels ("
+                      << this->MaximumNumberOfVoxels << ") grid points.");
+        return 0;
+      }
+      grid.Dims[k] = static_cast<int>(points);
+      grid.Spacing[k] = h;
+      // Centre the union in the grid.
+      grid.Origin[k] = lo[k] - 0.5 * ((grid.Dims[k] - 1) * h - extent);
+    }
+    else
+    {
+      const int n = std::max(8, this->SampleDimensions[k]);
+      // The padding p must be two voxels at least: p >= 2 (extent + 2p) / (n - 1).
+      const double pad = std::max(
+        { this->Padding * diagonal, 2.0 * extent / (n - 5) * (1.0 + 1e-9), 1e-3 * diagonal });
+      grid.Dims[k] = n;
+      grid.Spacing[k] = (extent + 2.0 * pad) / (n - 1);
+      grid.Origin[k] = lo[k] - pad;
+    }
+    voxels *= grid.Dims[k];
+    if (voxels > this->MaximumNumberOfVoxels)
+    {
+      vtkErrorMacro(<< "Cannot build the union of balls: the grid would exceed "
+                       "MaximumNumberOfVoxels ("
+                    << this->MaximumNumberOfVoxels << ").");
+      return 0;
+    }
+  }
+  double voxelSize = 0.0;
+  for (int k = 0; k < axes; ++k)
+  {
+    voxelSize = std::max(voxelSize, grid.Spacing[k]);
+  }
+  const double band = this->BandWidth * voxelSize;
+  // Rounding margin for the bounds so that pruning never drops the minimising ball.
+  const double slack = 1e-12 * (diagonal + std::fabs(lo[0]) + std::fabs(lo[1]) + std::fabs(lo[2]));
+
+  // 4. Field: bin the centres by superblock, then superblock -> blocks -> voxels.
+  int superSize[3], supers[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    superSize[k] = grid.Dims[k] > 1 ? SuperBlock : 1;
+    supers[k] = (grid.Dims[k] + superSize[k] - 1) / superSize[k];
+  }
+  const vtkIdType binCount = static_cast<vtkIdType>(supers[0]) * supers[1] * supers[2];
+  auto pointOf = [&grid](int k, vtkIdType i) { return grid.Origin[k] + i * grid.Spacing[k]; };
+  auto binOfBall = [&](const Ball& b) {
+    vtkIdType index = 0;
+    for (int k = 2; k >= 0; --k)
+    {
+      const double t = (b.C[k] - grid.Origin[k]) / (superSize[k] * grid.Spacing[k]);
+      const int i = std::min(supers[k] - 1, std::max(0, static_cast<int>(std::floor(t))));
+      index = index * supers[k] + i;
+    }
+    return index;
+  };
+  std::vector<vtkIdType> binStart(binCount + 1, 0);
+  std::vector<double> binMaxRadius(binCount, 0.0);
+  std::vector<vtkIdType> ballBin(balls.size());
+  double maxRadius = 0.0;
+  for (size_t i = 0; i < balls.size(); ++i)
+  {
+    ballBin[i] = binOfBall(balls[i]);
+    ++binStart[ballBin[i] + 1];
+    binMaxRadius[ballBin[i]] = std::max(binMaxRadius[ballBin[i]], balls[i].R);
+    maxRadius = std::max(maxRadius, balls[i].R);
+  }
+  std::partial_sum(binStart.begin(), binStart.end(), binStart.begin());
+  std::vector<vtkIdType> binBalls(balls.size());
+  {
+    std::vector<vtkIdType> fill(binStart.begin(), binStart.end() - 1);
+    for (size_t i = 0; i < balls.size(); ++i)
+    {
+      binBalls[fill[ballBin[i]]++] = static_cast<vtkIdType>(i);
+    }
+    // Largest radius first in each bin, so that a far bin's scan stops early; ties by
+    // id keep the order deterministic.
+    for (vtkIdType bin = 0; bin < binCount; ++bin)
+    {
+      std::sort(binBalls.begin() + binStart[bin], binBalls.begin() + binStart[bin + 1],
+        [&balls](vtkIdType a, vtkIdType b) {
+          return balls[a].R > balls[b].R || (balls[a].R == balls[b].R && a < b);
+        });
+    }
+  }
+  // Centre bins are half-open boxes of superblock size.
+  auto binBox = [&](const int b[3], double blo[3], double bhi[3]) {
+    for (int k = 0; k < 3; ++k)
+    {
+      const double w = superSize[k] * grid.Spacing[k];
+      blo[k] = grid.Origin[k] + b[k] * w;
+      bhi[k] = blo[k] + w;
+      if (grid.Dims[k] == 1)
+      {
+        blo[k] = bhi[k] = grid.Origin[k];
+      }
+    }
+  };
+  int reach[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    reach[k] = grid.Dims[k] > 1
+      ? static_cast<int>(std::ceil((maxRadius + band) / (superSize[k] * grid.Spacing[k]))) + 1
+      : 0;
+  }
+
+  vtkNew<vtkDoubleArray> field;
+  field->SetName("Distance");
+  field->SetNumberOfTuples(voxels);
+  double* values = field->GetPointer(0);
+  const vtkIdType sliceSize = static_cast<vtkIdType>(grid.Dims[0]) * grid.Dims[1];
+  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  const int superPerLayer = supers[0] * supers[1];
+  const FieldFiller filler{ balls, grid, band, slack, values, sliceSize };
+
+  for (int sz = 0; sz < supers[2] && !this->GetAbortExecute(); ++sz)
+  {
+#pragma omp parallel num_threads(threads)
+    {
+      std::vector<Candidate> gathered;
+      std::vector<std::vector<Candidate>> levels(FieldFiller::MaximumDepth);
+#pragma omp for schedule(dynamic, 1)
+      for (int s = 0; s < superPerLayer; ++s)
+      {
+        const int sb[3] = { s % supers[0], s / supers[0], sz };
+        int first[3], last[3];
+        double slo[3], shi[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          first[k] = sb[k] * superSize[k];
+          last[k] = std::min(grid.Dims[k] - 1, first[k] + superSize[k] - 1);
+          slo[k] = pointOf(k, first[k]);
+          shi[k] = pointOf(k, last[k]);
+        }
+        // Candidates: balls in the bins that can reach this superblock.
+        gathered.clear();
+        int b[3];
+        for (b[2] = std::max(0, sb[2] - reach[2]); b[2] <= std::min(supers[2] - 1, sb[2] + reach[2]); ++b[2])
+        {
+          for (b[1] = std::max(0, sb[1] - reach[1]); b[1] <= std::min(supers[1] - 1, sb[1] + reach[1]); ++b[1])
+          {
+            for (b[0] = std::max(0, sb[0] - reach[0]); b[0] <= std::min(supers[0] - 1, sb[0] + reach[0]); ++b[0])
+            {
+              const vtkIdType bin = (static_cast<vtkIdType>(b[2]) * supers[1] + b[1]) * supers[0] + b[0];
+              if (binStart[bin] == binStart[bin + 1])
+              {
+                continue;
+              }
+              double blo[3], bhi[3];
+              binBox(b, blo, bhi);
+              const double gap = BoxBoxDistance(slo, shi, blo, bhi) - band - slack;
+              if (gap - binMaxRadius[bin] >= 0.0)
+              {
+                continue;
+              }
+              for (vtkIdType j = binStart[bin]; j < binStart[bin + 1]; ++j)
+              {
+                if (gap - balls[binBalls[j]].R >= 0.0)
+                {
+                  break; // this and every smaller ball stay beyond the band
+                }
+                gathered.push_back({ 0.0, binBalls[j] });
+              }
+            }
+          }
+        }
+        filler.Refine(gathered, first, last, 0, levels);
+      }
+    }
+    this->UpdateProgress(0.9 * (sz + 1) / supers[2]);
+  }
+  if (this->GetAbortExecute())
+  {
+    return 1; // aborted: leave the outputs empty
+  }
+
+  // Output 1: the field image.
+  image->SetDimensions(grid.Dims);
+  image->SetOrigin(grid.Origin);
+  image->SetSpacing(grid.Spacing);
+  if (dimension == 2)
+  {
+    // Columns u, v, n; the origin is given in the plane's frame around frame.Origin.
+    const double m[9] = { frame.U[0], frame.V[0], frame.N[0], frame.U[1], frame.V[1], frame.N[1],
+      frame.U[2], frame.V[2], frame.N[2] };
+    image->SetDirectionMatrix(m);
+    double worldOrigin[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      worldOrigin[k] = frame.Origin[k] + grid.Origin[0] * frame.U[k] + grid.Origin[1] * frame.V[k];
+    }
+    image->SetOrigin(worldOrigin);
+  }
+  image->GetPointData()->SetScalars(field);
+  int wholeExtent[6] = { 0, grid.Dims[0] - 1, 0, grid.Dims[1] - 1, 0, grid.Dims[2] - 1 };
+  imageInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent, 6);
+
+  // Output 0: the zero level, contoured on an axis-aligned copy in the grid's frame.
+  vtkNew<vtkImageData> local;
+  local->SetDimensions(grid.Dims);
+  local->SetOrigin(grid.Origin);
+  local->SetSpacing(grid.Spacing);
+  local->GetPointData()->SetScalars(field);
+  if (dimension == 3)
+  {
+    vtkNew<vtkFlyingEdges3D> contour;
+    contour->SetInputData(local);
+    contour->SetValue(0, 0.0);
+    contour->ComputeNormalsOff();
+    contour->ComputeGradientsOff();
+    contour->ComputeScalarsOff();
+    contour->Update();
+    output->ShallowCopy(contour->GetOutput());
+    output->GetPointData()->Initialize();
+    // Flying edges winds triangles by the scalar gradient; make them face outward.
+    if (SignedVolume(output) < 0.0)
+    {
+      vtkNew<vtkCellArray> flipped;
+      auto it = vtk::TakeSmartPointer(output->GetPolys()->NewIterator());
+      for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+      {
+        vtkIdType npts;
+        const vtkIdType* ids;
+        it->GetCurrentCell(npts, ids);
+        std::vector<vtkIdType> reversed(ids, ids + npts);
+        std::reverse(reversed.begin(), reversed.end());
+        flipped->InsertNextCell(npts, reversed.data());
+      }
+      output->SetPolys(flipped);
+    }
+  }
+  else
+  {
+    vtkNew<vtkFlyingEdges2D> contour;
+    contour->SetInputData(local);
+    contour->SetValue(0, 0.0);
+    contour->ComputeScalarsOff();
+    contour->Update();
+    vtkPolyData* curves = contour->GetOutput();
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    const vtkIdType np = curves->GetNumberOfPoints();
+    points->SetNumberOfPoints(np);
+    for (vtkIdType i = 0; i < np; ++i)
+    {
+      double p[3], w[3];
+      curves->GetPoint(i, p);
+      for (int k = 0; k < 3; ++k)
+      {
+        w[k] = frame.Origin[k] + p[0] * frame.U[k] + p[1] * frame.V[k];
+      }
+      points->SetPoint(i, w);
+    }
+    output->SetPoints(points);
+    output->SetLines(ChainSegments(curves));
+  }
+  this->OutputDimension = dimension;
+  this->VoxelSize = voxelSize;
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkMedialBallUnion::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ResolutionMode: "
+     << (this->ResolutionMode == USE_SPACING ? "Spacing" : "SampleDimensions") << "\n";
+  os << indent << "SampleDimensions: " << this->SampleDimensions[0] << " "
+     << this->SampleDimensions[1] << " " << this->SampleDimensions[2] << "\n";
+  os << indent << "Spacing: " << this->Spacing << "\n";
+  os << indent << "Padding: " << this->Padding << "\n";
+  os << indent << "BandWidth: " << this->BandWidth << "\n";
+  os << indent << "Dimension: " << this->Dimension << "\n";
+  os << indent << "MaximumNumberOfVoxels: " << this->MaximumNumberOfVoxels << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "OutputDimension: " << this->OutputDimension << "\n";
+  os << indent << "VoxelSize: " << this->VoxelSize << "\n";
+}
