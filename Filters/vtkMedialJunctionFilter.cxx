@@ -190,30 +190,46 @@ public:
     return true;
   }
 
-  // Governors a disk touches; a contact at a reflex end of an edge counts as the vertex.
-  Governors Touching(const double c[2], double r) const
+  // Governors a disk touches within Tol. An edge whose closest point is inside it is
+  // touched as the edge; one whose closest point is a reflex end is touched as that
+  // vertex, unless the vertex's other edge is touched inside: a disk tangent to a
+  // line meets it once, so the vertex is then only near, and the set changes exactly
+  // where a contact passes the vertex (the transition the solver computes).
+  Governors Touching(const double c[2], double r, double tol) const
   {
-    Governors g;
-    this->Poly.VisitEdgesNear(c, r + this->Tol, [&](int e) {
+    Governors edges, vertices;
+    this->Poly.VisitEdgesNear(c, r + tol, [&](int e) {
       double q[2];
       const double d = std::sqrt(this->Poly.ClosestPointOnEdge(e, c, nullptr, q));
-      if (d > r + this->Tol)
+      if (d > r + tol)
       {
         return;
       }
       const auto& edge = this->Poly.GetEdge(e);
-      int id = e;
-      for (int v : { edge.A, edge.B })
+      const double* a = this->Poly.GetPoint(edge.A);
+      const double* b = this->Poly.GetPoint(edge.B);
+      const double t = ((c[0] - a[0]) * (b[0] - a[0]) + (c[1] - a[1]) * (b[1] - a[1])) / (edge.Length * edge.Length);
+      const int end = t <= 0.0 ? edge.A : (t >= 1.0 ? edge.B : -1);
+      if (end >= 0 && this->Poly.GetVertexKind(end) == vtkMedialPolygon::REFLEX)
       {
-        const double* p = this->Poly.GetPoint(v);
-        if (this->Poly.GetVertexKind(v) == vtkMedialPolygon::REFLEX &&
-          std::hypot(q[0] - p[0], q[1] - p[1]) <= this->Tol)
-        {
-          id = this->E + v;
-        }
+        vertices.push_back(end);
       }
-      g.push_back(id);
+      else
+      {
+        edges.push_back(e);
+      }
     });
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    Governors g = edges;
+    for (int v : vertices)
+    {
+      if (!std::binary_search(edges.begin(), edges.end(), this->Poly.GetIncomingEdge(v)) &&
+        !std::binary_search(edges.begin(), edges.end(), this->Poly.GetOutgoingEdge(v)))
+      {
+        g.push_back(this->E + v);
+      }
+    }
     std::sort(g.begin(), g.end());
     g.erase(std::unique(g.begin(), g.end()), g.end());
     return g;
@@ -253,7 +269,7 @@ public:
     out.Centre[0] = d.C[0];
     out.Centre[1] = d.C[1];
     out.Radius = d.R;
-    out.Gov = this->Touching(d.C, d.R);
+    out.Gov = this->Touching(d.C, d.R, this->Tol);
     // The own feature always governs (its contact may be within Tol of a reflex end).
     const int own = s.Feature;
     if (!std::binary_search(out.Gov.begin(), out.Gov.end(), own) && this->IsVertex(own))
@@ -459,10 +475,16 @@ public:
   // The disk touches each of f validly, lies between stations a and b, and is empty.
   bool Accept(const Disk& d, const int f[3], const Station& a, const Station& b) const
   {
-    const double eps = 1e-9;
+    // Governor sets change where a contact comes within Tol, not exactly at the
+    // event; at a transition (tangential contact) that shifts the change along the
+    // boundary by up to sqrt(2 r Tol). Stations are compared with that slack.
+    const double slack = 2.0 * std::sqrt(2.0 * d.R * this->Tol) + 2.0 * this->Tol;
     for (int i = 0; i < 3; ++i)
     {
       const double t = this->ContactParam(f[i], d.C, d.R);
+      const double eps = this->IsVertex(f[i])
+        ? slack / (std::max(d.R, this->Tol) * this->ConeAngle(this->VertexOf(f[i])))
+        : slack / this->Poly.GetEdge(f[i]).Length;
       if (!(t >= -eps && t <= 1.0 + eps))
       {
         return false;
@@ -520,13 +542,15 @@ public:
     ev.Centre[0] = d.C[0];
     ev.Centre[1] = d.C[1];
     ev.Radius = d.R;
-    ev.Count = static_cast<int>(this->Touching(d.C, d.R).size());
+    // Solved disks are exact to rounding: count their governors tightly, so that a
+    // transition next to a grazing third governor is not taken for a junction.
+    ev.Count = static_cast<int>(this->Touching(d.C, d.R, 1e-3 * this->Tol).size());
     ev.IsEnd = false;
     ev.Vertex = -1;
     return ev;
   }
 
-  static Item SampleItem(const Sample& s)
+  Item SampleItem(const Sample& s) const
   {
     Item it;
     it.IsEvent = s.End || s.Gov.size() >= 3;
@@ -537,6 +561,49 @@ public:
     it.Ev.Count = s.End ? 2 : static_cast<int>(s.Gov.size());
     it.Ev.IsEnd = s.End;
     it.Ev.Vertex = s.Vertex;
+    if (it.IsEvent && !s.End)
+    {
+      // A sample touching 3+ governors within Tol lies near an event, or on a branch
+      // grazing a third governor. Take the exact, valid, empty solution of three of
+      // its governors nearest to it; without one the sample is a regular point.
+      const size_t n = s.Gov.size();
+      double best = 1e-3 * this->Poly.GetDiagonal();
+      bool found = false;
+      // Large sets (a regular n-gon's centre) only need triples with the own feature.
+      const size_t own = static_cast<size_t>(
+        std::lower_bound(s.Gov.begin(), s.Gov.end(), s.After.Feature) - s.Gov.begin());
+      for (size_t i = 0; i < n; ++i)
+      {
+        if (n > 12 && i != own)
+        {
+          continue;
+        }
+        for (size_t j = n > 12 ? 0 : i + 1; j < n; ++j)
+        {
+          for (size_t k = j + 1; k < n; ++k)
+          {
+            if (j == i || k == i)
+            {
+              continue;
+            }
+            const int f[3] = { s.Gov[i], s.Gov[j], s.Gov[k] };
+            Disk d[2];
+            const int m = this->SolveTriple(f, d);
+            for (int q = 0; q < m; ++q)
+            {
+              const double dist = std::hypot(d[q].C[0] - s.Centre[0], d[q].C[1] - s.Centre[1]);
+              if (dist < best && this->Accept(d[q], f, Station(), Station()))
+              {
+                best = dist;
+                it.Ev = this->MakeEvent(d[q]);
+                found = true;
+              }
+            }
+          }
+        }
+      }
+      it.IsEvent = found;
+    }
     return it;
   }
 
@@ -569,6 +636,31 @@ public:
     Station mid;
     if (depth >= 60 || !Midway(a.After, b.Before, mid))
     {
+      // Several changes at one point (e.g. two transitions facing each other across
+      // a strip): any valid triple of the union describes it.
+      for (size_t i = 0; i < u.size() && u.size() <= 6; ++i)
+      {
+        for (size_t j = i + 1; j < u.size(); ++j)
+        {
+          for (size_t k = j + 1; k < u.size(); ++k)
+          {
+            const int f[3] = { u[i], u[j], u[k] };
+            Disk d[2];
+            const int n = this->SolveTriple(f, d);
+            for (int q = 0; q < n; ++q)
+            {
+              if (this->Accept(d[q], f, a.After, b.Before))
+              {
+                Item it;
+                it.IsEvent = true;
+                it.Ev = this->MakeEvent(d[q]);
+                items.push_back(it);
+                return;
+              }
+            }
+          }
+        }
+      }
       ++unresolved;
       return;
     }
@@ -777,7 +869,7 @@ int vtkMedialJunctionFilter::RequestData(
     {
       if (walks[loop][i].Valid)
       {
-        items.push_back(Solver::SampleItem(walks[loop][i]));
+        items.push_back(solver.SampleItem(walks[loop][i]));
       }
       items.insert(items.end(), found[next].begin(), found[next].end());
     }

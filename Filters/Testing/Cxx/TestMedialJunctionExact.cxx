@@ -146,7 +146,7 @@ int TestMedialJunctionExact(int, char*[])
     run("L-shape", MakePolygon(loops), e);
     run("L-shape reversed", Reversed(loops, true), e);
   }
-  for (int n : { 3, 5, 6, 7, 12 })
+  for (int n : { 3, 5, 6, 7, 12, 40 })
   {
     const double R = 1.5;
     const std::string name = "regular " + std::to_string(n) + "-gon";
