@@ -198,7 +198,7 @@ public:
   Governors Touching(const double c[2], double r, double tol) const
   {
     Governors edges, vertices;
-    this->Poly.VisitEdgesNear(c, r + tol, [&](int e) {
+    this->Poly.VisitEdgesInRing(c, r - tol, r + tol, [&](int e) {
       double q[2];
       const double d = std::sqrt(this->Poly.ClosestPointOnEdge(e, c, nullptr, q));
       if (d > r + tol)
@@ -578,9 +578,11 @@ public:
         {
           continue;
         }
-        for (size_t j = n > 12 ? 0 : i + 1; j < n; ++j)
+        // Any three governors of an exact event give it: a few pairs are enough.
+        const size_t last = n > 12 ? std::min<size_t>(n, 7) : n;
+        for (size_t j = n > 12 ? 0 : i + 1; j < last; ++j)
         {
-          for (size_t k = j + 1; k < n; ++k)
+          for (size_t k = j + 1; k < last; ++k)
           {
             if (j == i || k == i)
             {
@@ -786,7 +788,7 @@ int vtkMedialJunctionFilter::RequestData(
       if (poly.GetVertexKind(edge.B) == vtkMedialPolygon::REFLEX)
       {
         const int v = edge.B;
-        const int m = 2 + static_cast<int>(std::ceil(solver.ConeAngle(v) / (3.14159265358979323846 / 8)));
+        const int m = 1 + static_cast<int>(std::ceil(solver.ConeAngle(v) / (3.14159265358979323846 / 4)));
         for (int k = 0; k <= m; ++k)
         {
           Sample s;

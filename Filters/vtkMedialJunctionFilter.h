@@ -69,7 +69,7 @@ public:
   };
 
   ///@{
-  /// Boundary samples per bounding-box diagonal of boundary length (default 100).
+  /// Boundary samples per bounding-box diagonal of boundary length (default 20).
   vtkSetClampMacro(SamplesPerUnitLength, double, 0.0, 1e9);
   vtkGetMacro(SamplesPerUnitLength, double);
   ///@}

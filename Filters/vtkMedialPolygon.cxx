@@ -312,10 +312,54 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
   }
   const double diag3 = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
     (hi[2] - lo[2]) * (hi[2] - lo[2]));
-  if (!(best > 0.0) || !(diag3 > 0.0))
+  if (!(diag3 > 0.0))
   {
-    error = "loops have fewer than 3 distinct vertices or no area";
+    error = "a loop has fewer than 3 distinct vertices";
     return false;
+  }
+  if (!(best > 1e-12 * diag3 * diag3))
+  {
+    // No net area (e.g. a bow tie): take the plane of the widest vertex triangle, so
+    // that the validation below names the real problem.
+    const auto& p0 = xyz[loops[0][0]];
+    std::array<double, 3> far = p0;
+    double farthest = 0.0;
+    for (const auto& l : loops)
+    {
+      for (int v : l)
+      {
+        const double d = std::hypot(std::hypot(xyz[v][0] - p0[0], xyz[v][1] - p0[1]), xyz[v][2] - p0[2]);
+        if (d > farthest)
+        {
+          farthest = d;
+          far = xyz[v];
+        }
+      }
+    }
+    best = 0.0;
+    for (const auto& l : loops)
+    {
+      for (int v : l)
+      {
+        const double a[3] = { far[0] - p0[0], far[1] - p0[1], far[2] - p0[2] };
+        const double b[3] = { xyz[v][0] - p0[0], xyz[v][1] - p0[1], xyz[v][2] - p0[2] };
+        const double n[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+        const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        if (len > best)
+        {
+          best = len;
+          for (int k = 0; k < 3; ++k)
+          {
+            normal[k] = n[k] / len;
+          }
+        }
+      }
+    }
+    if (!(best > 1e-12 * diag3 * diag3))
+    {
+      error = "a loop has fewer than 3 distinct vertices (all points collinear)";
+      return false;
+    }
   }
   // Canonical sign: reversing every loop must not mirror the frame.
   int major = 0;
@@ -456,11 +500,6 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
       outer = static_cast<int>(i);
     }
   }
-  if (!(std::abs(areas[outer]) > 0.0))
-  {
-    error = "loops enclose no area";
-    return false;
-  }
 
   // Vertices: one per loop corner (a point shared by two loops is a touch and rejected below).
   std::vector<std::vector<int>> ordered(loops.size());
@@ -540,47 +579,36 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
   this->Diagonal = std::sqrt((hi2[0] - lo2[0]) * (hi2[0] - lo2[0]) + (hi2[1] - lo2[1]) * (hi2[1] - lo2[1]));
   this->BuildGrid();
 
-  // 6. No edge may touch another, except neighbours at their shared vertex.
-  for (int e = 0; e < this->GetNumberOfEdges(); ++e)
+  // 6. No edge may touch another, except neighbours at their shared vertex. Two
+  // touching edges share the grid cell of the touching point.
+  for (int cell = 0; cell + 1 < static_cast<int>(this->CellStart.size()); ++cell)
   {
-    const Edge& E = this->Edges[e];
-    const double* a = this->GetPoint(E.A);
-    const double* b = this->GetPoint(E.B);
-    const double mid[2] = { 0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]) };
-    bool bad = false;
-    this->VisitEdgesNear(mid, 0.5 * E.Length, [&](int f) {
-      if (f <= e || bad)
-      {
-        return;
-      }
-      const Edge& F = this->Edges[f];
-      const double* c = this->GetPoint(F.A);
-      const double* d = this->GetPoint(F.B);
-      if (F.A == E.B || F.B == E.A)
-      {
-        // Neighbours: they must not fold back onto each other.
-        const double* shared = F.A == E.B ? b : a;
-        const double* p = F.A == E.B ? a : b;
-        const double* q = F.A == E.B ? d : c;
-        if (F.A == E.B && F.B == E.A)
-        {
-          bad = true;
-          return;
-        }
-        if (Cross2(p, shared, q) == 0.0 &&
-          (q[0] - shared[0]) * (p[0] - shared[0]) + (q[1] - shared[1]) * (p[1] - shared[1]) > 0.0)
-        {
-          bad = true;
-        }
-        return;
-      }
-      bad = SegmentsTouch(a, b, c, d);
-    });
-    if (bad)
+    for (int i = this->CellStart[cell]; i < this->CellStart[cell + 1]; ++i)
     {
-      error = "loops intersect themselves or each other (self-intersecting polygon)";
-      return false;
+      for (int j = i + 1; j < this->CellStart[cell + 1]; ++j)
+      {
+        const int e = std::min(this->CellEdges[i], this->CellEdges[j]);
+        const int f = std::max(this->CellEdges[i], this->CellEdges[j]);
+        if (e == f || !this->EdgesTouch(e, f))
+        {
+          continue;
+        }
+        double x[3], y[3];
+        this->To3D(this->GetPoint(this->Edges[e].A), x);
+        this->To3D(this->GetPoint(this->Edges[f].A), y);
+        std::ostringstream os;
+        os << "loops intersect themselves or each other (self-intersecting polygon): the edge from ("
+           << x[0] << ", " << x[1] << ", " << x[2] << ") meets the edge from (" << y[0] << ", " << y[1]
+           << ", " << y[2] << ")";
+        error = os.str();
+        return false;
+      }
     }
+  }
+  if (!(std::abs(areas[outer]) > 0.0))
+  {
+    error = "loops enclose no area";
+    return false;
   }
   // Every hole inside the outer loop and in no other hole.
   for (int li = 1; li < this->NumberOfLoops; ++li)
@@ -611,6 +639,30 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
     }
   }
   return true;
+}
+
+bool vtkMedialPolygon::EdgesTouch(int e, int f) const
+{
+  const Edge& E = this->Edges[e];
+  const Edge& F = this->Edges[f];
+  const double* a = this->GetPoint(E.A);
+  const double* b = this->GetPoint(E.B);
+  const double* c = this->GetPoint(F.A);
+  const double* d = this->GetPoint(F.B);
+  if (F.A == E.B && F.B == E.A)
+  {
+    return true; // a two-edge loop
+  }
+  if (F.A == E.B || F.B == E.A)
+  {
+    // Neighbours share a vertex; they must not fold back onto each other.
+    const double* shared = F.A == E.B ? b : a;
+    const double* p = F.A == E.B ? a : b;
+    const double* q = F.A == E.B ? d : c;
+    return Cross2(p, shared, q) == 0.0 &&
+      (q[0] - shared[0]) * (p[0] - shared[0]) + (q[1] - shared[1]) * (p[1] - shared[1]) > 0.0;
+  }
+  return SegmentsTouch(a, b, c, d);
 }
 
 void vtkMedialPolygon::BuildGrid()
@@ -667,6 +719,41 @@ void vtkMedialPolygon::BuildGrid()
     this->CellEdges.insert(this->CellEdges.end(), bins[c].begin(), bins[c].end());
   }
   this->CellStart[cells] = static_cast<int>(this->CellEdges.size());
+
+  // Chebyshev distance (in cells) to the nearest cell with edges: closest-point
+  // searches skip that many rings of empty cells (empty disks are large and empty).
+  this->EmptyRings.assign(static_cast<size_t>(cells), -1);
+  std::vector<int> front;
+  for (int c = 0; c < cells; ++c)
+  {
+    if (this->CellStart[c + 1] > this->CellStart[c])
+    {
+      this->EmptyRings[c] = 0;
+      front.push_back(c);
+    }
+  }
+  for (size_t head = 0; head < front.size(); ++head)
+  {
+    const int c = front[head];
+    const int ci = c % this->Dims[0], cj = c / this->Dims[0];
+    for (int dj = -1; dj <= 1; ++dj)
+    {
+      for (int di = -1; di <= 1; ++di)
+      {
+        const int i = ci + di, j = cj + dj;
+        if (i < 0 || j < 0 || i >= this->Dims[0] || j >= this->Dims[1])
+        {
+          continue;
+        }
+        const int n = j * this->Dims[0] + i;
+        if (this->EmptyRings[n] < 0)
+        {
+          this->EmptyRings[n] = this->EmptyRings[c] + 1;
+          front.push_back(n);
+        }
+      }
+    }
+  }
 }
 
 void vtkMedialPolygon::CellRange(double lo, double hi, int axis, int& first, int& last) const
@@ -786,7 +873,7 @@ bool vtkMedialPolygon::ClosestPoint(const double x[2], double upperBound, const 
       }
     }
   };
-  for (int ring = 0; ring <= maxRing; ++ring)
+  for (int ring = std::max(0, this->EmptyRings[cj * this->Dims[0] + ci]); ring <= maxRing; ++ring)
   {
     // Cells of ring k are at least (k - 1) * CellSize away from x (or the grid's distance).
     const double reach = std::max(outside, (ring - 1) * this->CellSize);

@@ -35,6 +35,7 @@
 #include "vtkMedialAxisFiltersModule.h" // for export macro
 #include "vtkType.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -99,6 +100,9 @@ public:
   /// Calls visit(edge) for every edge that may lie within `reach` of x (a superset).
   template <typename F>
   void VisitEdgesNear(const double x[2], double reach, F&& visit) const;
+  /// The same, skipping cells entirely closer than `inner` to x (for an empty disk's rim).
+  template <typename F>
+  void VisitEdgesInRing(const double x[2], double inner, double reach, F&& visit) const;
 
   /// Closest point to x on edge e (restricted by the filter's cap); squared distance or HUGE_VAL.
   double ClosestPointOnEdge(int e, const double x[2], const ContactFilter* filter, double out[2]) const;
@@ -107,6 +111,7 @@ public:
 
 private:
   void BuildGrid();
+  bool EdgesTouch(int e, int f) const;
   void CellRange(double lo, double hi, int axis, int& first, int& last) const;
 
   std::vector<double> Points; // 2D, interleaved
@@ -122,6 +127,7 @@ private:
   double CellSize = 1.0;
   int Dims[2] = { 1, 1 };
   std::vector<int> CellStart, CellEdges;
+  std::vector<int> EmptyRings;
 };
 
 template <typename F>
@@ -134,6 +140,35 @@ void vtkMedialPolygon::VisitEdgesNear(const double x[2], double reach, F&& visit
   {
     for (int i = i0; i <= i1; ++i)
     {
+      const int c = j * this->Dims[0] + i;
+      for (int k = this->CellStart[c]; k < this->CellStart[c + 1]; ++k)
+      {
+        visit(this->CellEdges[k]);
+      }
+    }
+  }
+}
+
+template <typename F>
+void vtkMedialPolygon::VisitEdgesInRing(const double x[2], double inner, double reach, F&& visit) const
+{
+  int i0, i1, j0, j1;
+  this->CellRange(x[0] - reach, x[0] + reach, 0, i0, i1);
+  this->CellRange(x[1] - reach, x[1] + reach, 1, j0, j1);
+  const double inner2 = inner > 0.0 ? inner * inner : -1.0;
+  for (int j = j0; j <= j1; ++j)
+  {
+    const double y0 = this->GridOrigin[1] + j * this->CellSize - x[1];
+    const double y1 = y0 + this->CellSize;
+    const double fy = std::max(y0 * y0, y1 * y1);
+    for (int i = i0; i <= i1; ++i)
+    {
+      const double x0 = this->GridOrigin[0] + i * this->CellSize - x[0];
+      const double x1 = x0 + this->CellSize;
+      if (std::max(x0 * x0, x1 * x1) + fy < inner2)
+      {
+        continue; // the whole cell lies inside the inner disk
+      }
       const int c = j * this->Dims[0] + i;
       for (int k = this->CellStart[c]; k < this->CellStart[c + 1]; ++k)
       {
