@@ -73,7 +73,29 @@ bool vtkMedialPolygon::LooksPlanarLoops(vtkPolyData* input)
   }
   if (input->GetNumberOfLines() > 0)
   {
-    return input->GetNumberOfPolys() == 0;
+    if (input->GetNumberOfPolys() > 0)
+    {
+      return false;
+    }
+    // Loops: a closed polyline, or several pieces that may chain into loops (a
+    // single open piece is not a 2D shape at all and gets the surface error).
+    vtkIdType npts;
+    const vtkIdType* ids;
+    vtkCellArray* lines = input->GetLines();
+    for (lines->InitTraversal(); lines->GetNextCell(npts, ids);)
+    {
+      double a[3], b[3];
+      if (npts >= 2)
+      {
+        input->GetPoint(ids[0], a);
+        input->GetPoint(ids[npts - 1], b);
+        if (a[0] == b[0] && a[1] == b[1] && a[2] == b[2])
+        {
+          return true;
+        }
+      }
+    }
+    return input->GetNumberOfLines() >= 3;
   }
   // Polygons: 2D only when all points lie in one plane.
   double bounds[6];

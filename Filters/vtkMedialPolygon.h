@@ -69,7 +69,9 @@ public:
   /// Prepares the polygon. Returns false with a reason when the input is not valid planar loops.
   bool Build(vtkPolyData* input, std::string& error);
 
-  /// True when the data has line or polygon cells but no triangle strips (a 2D candidate).
+  /// True when the data looks like planar loops (the 2D mode of vtkMedialAxisSampler):
+  /// polygons all in one plane, or polylines of which one is closed or which come in
+  /// 3 or more pieces. Build() then validates them.
   static bool LooksPlanarLoops(vtkPolyData* input);
 
   int GetNumberOfEdges() const { return static_cast<int>(this->Edges.size()); }
