@@ -214,6 +214,7 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
       }
     }
   }
+  const size_t firstPolygon = loops.size();
   if (vtkCellArray* polys = input->GetPolys())
   {
     for (polys->InitTraversal(); polys->GetNextCell(npts, ids); ++cellId)
@@ -231,6 +232,42 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
   {
     error = "input has triangle strips, not planar loops";
     return false;
+  }
+  {
+    // Polygons sharing edges are a planar mesh (e.g. a triangulated polygon): its
+    // region is bounded by the edges used once, chained below like polylines.
+    std::map<std::pair<int, int>, int> uses;
+    bool shared = false;
+    for (size_t i = firstPolygon; i < loops.size(); ++i)
+    {
+      const auto& l = loops[i];
+      for (size_t k = 0; k < l.size(); ++k)
+      {
+        const int a = l[k], b = l[(k + 1) % l.size()];
+        if (a != b)
+        {
+          shared = ++uses[{ std::min(a, b), std::max(a, b) }] > 1 || shared;
+        }
+      }
+    }
+    if (shared)
+    {
+      for (size_t i = firstPolygon; i < loops.size(); ++i)
+      {
+        const auto& l = loops[i];
+        for (size_t k = 0; k < l.size(); ++k)
+        {
+          const int a = l[k], b = l[(k + 1) % l.size()];
+          if (a != b && uses[{ std::min(a, b), std::max(a, b) }] == 1)
+          {
+            open.push_back({ a, b });
+            openCells.push_back(loopCells[i]);
+          }
+        }
+      }
+      loops.resize(firstPolygon);
+      loopCells.resize(firstPolygon);
+    }
   }
   if (!open.empty())
   {
@@ -450,6 +487,14 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
   v[1] = normal[2] * u[0] - normal[0] * u[2];
   v[2] = normal[0] * u[1] - normal[1] * u[0];
 
+  std::vector<bool> inLoop(xyz.size(), false);
+  for (const auto& l : loops)
+  {
+    for (int p : l)
+    {
+      inLoop[p] = true;
+    }
+  }
   std::vector<double> pts2(2 * xyz.size());
   for (size_t i = 0; i < xyz.size(); ++i)
   {
@@ -464,12 +509,7 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
     if (std::abs(h) > 1e-6 * diag3)
     {
       // Only points used by a loop matter.
-      bool inLoop = false;
-      for (const auto& l : loops)
-      {
-        inLoop = inLoop || std::find(l.begin(), l.end(), static_cast<int>(i)) != l.end();
-      }
-      if (inLoop)
+      if (inLoop[i])
       {
         std::ostringstream os;
         os << "loops are not coplanar (a point lies " << std::abs(h) / diag3
@@ -794,14 +834,6 @@ void vtkMedialPolygon::To3D(const double p[2], double x[3]) const
   }
 }
 
-void vtkMedialPolygon::To3DDirection(const double d[2], double x[3]) const
-{
-  for (int k = 0; k < 3; ++k)
-  {
-    x[k] = d[0] * this->Frame[1][k] + d[1] * this->Frame[2][k];
-  }
-}
-
 double vtkMedialPolygon::ClosestPointOnEdge(
   int e, const double x[2], const ContactFilter* filter, double out[2]) const
 {
@@ -1061,20 +1093,4 @@ bool vtkMedialPolygon::Intersect(const double origin[2], const double direction[
     tHit = best;
   }
   return found;
-}
-
-bool vtkMedialPolygon::Inside(const double x[2]) const
-{
-  bool inside = false;
-  for (const Edge& e : this->Edges)
-  {
-    const double* p = this->GetPoint(e.A);
-    const double* q = this->GetPoint(e.B);
-    if ((p[1] > x[1]) != (q[1] > x[1]) &&
-      x[0] < (q[0] - p[0]) * (x[1] - p[1]) / (q[1] - p[1]) + p[0])
-    {
-      inside = !inside;
-    }
-  }
-  return inside;
 }

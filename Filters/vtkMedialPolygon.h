@@ -6,7 +6,9 @@
  *
  * Build() accepts vtkPolyData whose loops are polygon cells or closed polylines
  * (a polyline whose last point equals its first, or open polylines that chain
- * end to end into closed loops, e.g. vtkCutter output), lying in any plane:
+ * end to end into closed loops, e.g. vtkCutter output), lying in any plane.
+ * Polygons that share edges (a triangulated planar region) stand for the region
+ * bounded by their edges used once.
  *  1. coincident points are merged; the plane is fitted (Newell normal of the
  *     largest loop, sign made canonical so that reversed loops give the same
  *     frame) and every point must lie within 1e-6 * diagonal of it;
@@ -88,7 +90,6 @@ public:
 
   /// Plane frame: x3 = Origin + x * U + y * V.
   void To3D(const double p[2], double x[3]) const;
-  void To3DDirection(const double d[2], double x[3]) const;
   const double* GetNormal3D() const { return this->Frame[3]; }
 
   /// First hit of origin + t * direction (unit), t in (tMin, tMax), skipping filter's ignored edges.
@@ -108,8 +109,6 @@ public:
 
   /// Closest point to x on edge e (restricted by the filter's cap); squared distance or HUGE_VAL.
   double ClosestPointOnEdge(int e, const double x[2], const ContactFilter* filter, double out[2]) const;
-  /// Point-in-polygon (all loops, even-odd).
-  bool Inside(const double x[2]) const;
 
 private:
   void BuildGrid();

@@ -165,6 +165,64 @@ int TestMedialJunctionExact(int, char*[])
     std::vector<Loop2> sameWinding = loops;
     std::reverse(sameWinding[1].begin(), sameWinding[1].end());
     run("square frame same winding", MakePolygon(sameWinding), e);
+
+    // The same region as a planar mesh: 8 quads of a 3 x 3 grid without its centre.
+    auto quads = vtkSmartPointer<vtkPolyData>::New();
+    vtkNew<vtkPoints> pts;
+    const double xs[4] = { 0, 1, 3, 4 };
+    for (int j = 0; j < 4; ++j)
+    {
+      for (int i = 0; i < 4; ++i)
+      {
+        pts->InsertNextPoint(xs[i], xs[j], 0);
+      }
+    }
+    vtkNew<vtkCellArray> cells;
+    for (int j = 0; j < 3; ++j)
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        if (i == 1 && j == 1)
+        {
+          continue;
+        }
+        const vtkIdType q[4] = { 4 * j + i, 4 * j + i + 1, 4 * (j + 1) + i + 1, 4 * (j + 1) + i };
+        cells->InsertNextCell(4, q);
+      }
+    }
+    quads->SetPoints(pts);
+    quads->SetPolys(cells);
+    run("square frame as quads", quads, e);
+  }
+  {
+    // The L-shape as loose 2-point segments in shuffled order (vtkCutter-like).
+    const Loop2 l = { { 0, 0 }, { 2, 0 }, { 2, 1 }, { 1, 1 }, { 1, 2 }, { 0, 2 } };
+    auto segments = vtkSmartPointer<vtkPolyData>::New();
+    vtkNew<vtkPoints> pts;
+    vtkNew<vtkCellArray> lines;
+    for (int k : { 3, 0, 5, 1, 4, 2 })
+    {
+      const auto& a = l[k];
+      const auto& b = l[(k + 1) % l.size()];
+      // Separate point ids for each segment: ends meet by coordinates only.
+      const vtkIdType ids[2] = { pts->InsertNextPoint(a[0], a[1], 0), pts->InsertNextPoint(b[0], b[1], 0) };
+      lines->InsertNextCell(2, ids);
+    }
+    segments->SetPoints(pts);
+    segments->SetLines(lines);
+    const double r = 2.0 - std::sqrt(2.0);
+    run("L-shape as segments", segments, { { { r, r, 0 }, { 1.5, 0.5, 0 }, { 0.5, 1.5, 0 } }, { r, 0.5, 0.5 }, 5, 2 });
+  }
+  {
+    // 4 governors at a square's centre and n at a regular n-gon's: one junction each.
+    for (int n : { 4, 9 })
+    {
+      EventLog log;
+      auto graph = RunFilter(MakePolygon({ RegularPolygon(n, 1.0, 0.1) }), log);
+      const auto junctions = NodesOfType(graph, vtkMedialJunctionFilter::JUNCTION_POINT);
+      std::printf("regular %d-gon: GovernorCount %d\n", n, junctions.empty() ? -1 : junctions[0].Governors);
+      MEDIAL_CHECK(junctions.size() == 1 && junctions[0].Governors == n, "%d-gon governor count", n);
+    }
   }
   {
     // The rectangle rotated into a tilted plane and moved away from the origin.
