@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace
@@ -240,14 +241,20 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
     bool shared = false;
     for (size_t i = firstPolygon; i < loops.size(); ++i)
     {
+      // An edge counts once per polygon (a 2-point polygon runs it both ways).
+      std::set<std::pair<int, int>> own;
       const auto& l = loops[i];
       for (size_t k = 0; k < l.size(); ++k)
       {
         const int a = l[k], b = l[(k + 1) % l.size()];
         if (a != b)
         {
-          shared = ++uses[{ std::min(a, b), std::max(a, b) }] > 1 || shared;
+          own.insert({ std::min(a, b), std::max(a, b) });
         }
+      }
+      for (const auto& e : own)
+      {
+        shared = ++uses[e] > 1 || shared;
       }
     }
     if (shared)
