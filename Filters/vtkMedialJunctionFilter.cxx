@@ -788,7 +788,7 @@ int vtkMedialJunctionFilter::RequestData(
       if (poly.GetVertexKind(edge.B) == vtkMedialPolygon::REFLEX)
       {
         const int v = edge.B;
-        const int m = 1 + static_cast<int>(std::ceil(solver.ConeAngle(v) / (3.14159265358979323846 / 4)));
+        const int m = std::max(1, static_cast<int>(std::ceil(solver.ConeAngle(v) / (3.14159265358979323846 / 2))));
         for (int k = 0; k <= m; ++k)
         {
           Sample s;

@@ -913,15 +913,33 @@ bool vtkMedialPolygon::ClosestPoint(const double x[2], double upperBound, const 
   const double gy = std::max({ 0.0, this->GridOrigin[1] - x[1], x[1] - (this->GridOrigin[1] + this->Dims[1] * this->CellSize) });
   const double outside = std::sqrt(gx * gx + gy * gy);
   const int maxRing = std::max(this->Dims[0], this->Dims[1]);
+  // Long edges sit in many cells: test each once per query.
+  thread_local std::vector<unsigned> stamps;
+  thread_local unsigned stamp = 0;
+  if (stamps.size() != this->Edges.size() || ++stamp == 0)
+  {
+    stamps.assign(this->Edges.size(), 0);
+    stamp = 1;
+  }
   auto visitCell = [&](int i, int j) {
+    // Skip cells that lie entirely beyond the best distance so far.
+    const double x0 = this->GridOrigin[0] + i * this->CellSize - x[0];
+    const double y0 = this->GridOrigin[1] + j * this->CellSize - x[1];
+    const double dx = std::max({ 0.0, x0, -(x0 + this->CellSize) });
+    const double dy = std::max({ 0.0, y0, -(y0 + this->CellSize) });
+    if (dx * dx + dy * dy >= best2)
+    {
+      return;
+    }
     const int c = j * this->Dims[0] + i;
     for (int k = this->CellStart[c]; k < this->CellStart[c + 1]; ++k)
     {
       const int e = this->CellEdges[k];
-      if (filter && (e == filter->IgnoreEdge[0] || e == filter->IgnoreEdge[1]))
+      if (stamps[e] == stamp || (filter && (e == filter->IgnoreEdge[0] || e == filter->IgnoreEdge[1])))
       {
         continue;
       }
+      stamps[e] = stamp;
       double q[2];
       const double d2 = this->ClosestPointOnEdge(e, x, filter, q);
       if (d2 < best2)
