@@ -19,6 +19,7 @@
 #include "vtkDataSetReader.h"
 #include "vtkFieldData.h"
 #include "vtkDataArray.h"
+#include "vtkExecutive.h"
 #include "vtkCellData.h"
 #include "vtkGlyph3D.h"
 #include "vtkLookupTable.h"
@@ -534,6 +535,8 @@ vtkSmartPointer<vtkPolyData> RunJunctions(vtkPolyData* polygon, int threads, Mes
 {
   vtkNew<vtkMedialJunctionFilter> junctions;
   sink.Watch(junctions);
+  // The executive repeats a failure; the filter's own message is the one to show.
+  junctions->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, sink.Command);
   junctions->SetInputData(polygon);
   junctions->SetNumberOfThreads(threads);
   junctions->Update();
