@@ -171,11 +171,14 @@ int TestMedialJunctionOracle(int, char*[])
   for (int trial = 0; trial < trials; ++trial)
   {
     const int n = 6 + static_cast<int>(rng() % (trial < 40 ? 40 : 400));
-    std::vector<std::vector<std::array<long long, 2>>> loops = { RandomStar(rng, n, 300, 1000) };
+    // MEDIAL_ORACLE_SCALE < 1 shrinks the grid: rounding then makes many exact
+    // degeneracies (parallel and collinear edges, co-circular vertices).
+    const double scale = getenv("MEDIAL_ORACLE_SCALE") ? std::atof(getenv("MEDIAL_ORACLE_SCALE")) : 1.0;
+    std::vector<std::vector<std::array<long long, 2>>> loops = { RandomStar(rng, n, 300 * scale, 1000 * scale) };
     if (trial % 2 == 1)
     {
       // A small hole inside the star's kernel: a random triangle or quadrilateral.
-      loops.push_back(RandomStar(rng, 3 + static_cast<int>(rng() % 2), 60, 200));
+      loops.push_back(RandomStar(rng, 3 + static_cast<int>(rng() % 2), 60 * scale, 200 * scale));
     }
     std::vector<Loop2> dloops;
     for (const auto& l : loops)
@@ -238,6 +241,6 @@ int TestMedialJunctionOracle(int, char*[])
     MEDIAL_CHECK(missing <= 1e-6 && extra <= 1e-6, "trial %d: junction position", trial);
   }
   std::printf("%d random polygons, %d reference junctions, max junction error %.3g diagonal\n", tested, total, worst);
-  MEDIAL_CHECK(tested >= 30, "too few valid random polygons (%d)", tested);
+  MEDIAL_CHECK(tested >= trials / 2 || getenv("MEDIAL_ORACLE_SCALE"), "too few valid random polygons (%d)", tested);
   return EXIT_SUCCESS;
 }
