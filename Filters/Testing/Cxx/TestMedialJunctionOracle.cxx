@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Junctions of random polygons (star-shaped, integer coordinates, some with a hole)
+// Junctions of random polygons (star-shaped, integer coordinates, some with one or two holes)
 // against an independent exact reference: Boost.Polygon's segment Voronoi diagram.
 // A reference junction is a Voronoi vertex inside the polygon, off the boundary,
 // whose incident sites are 3 or more distinct governors (a segment and its own end
@@ -175,10 +175,23 @@ int TestMedialJunctionOracle(int, char*[])
     // degeneracies (parallel and collinear edges, co-circular vertices).
     const double scale = getenv("MEDIAL_ORACLE_SCALE") ? std::atof(getenv("MEDIAL_ORACLE_SCALE")) : 1.0;
     std::vector<std::vector<std::array<long long, 2>>> loops = { RandomStar(rng, n, 300 * scale, 1000 * scale) };
-    if (trial % 2 == 1)
+    if (trial % 4 == 1)
     {
       // A small hole inside the star's kernel: a random triangle or quadrilateral.
       loops.push_back(RandomStar(rng, 3 + static_cast<int>(rng() % 2), 60 * scale, 200 * scale));
+    }
+    else if (trial % 4 == 3)
+    {
+      // Two holes side by side (a trial whose loops cross is skipped below).
+      for (long long shift : { -140, 140 })
+      {
+        auto hole = RandomStar(rng, 3 + static_cast<int>(rng() % 3), 30 * scale, 100 * scale);
+        for (auto& p : hole)
+        {
+          p[0] += std::llround(shift * scale);
+        }
+        loops.push_back(hole);
+      }
     }
     std::vector<Loop2> dloops;
     for (const auto& l : loops)
