@@ -119,7 +119,8 @@ void Solve2D(const vtkMedialPolygon& poly, int method, double tolerance, double 
   else
   {
     ++out.Iterations;
-    if (!poly.ContainsBall(c, r, &own))
+    const auto first = MakeFilter(edge, p, c, r, cosMinAngle);
+    if (!poly.ContainsBall(c, r, &first))
     {
       double lo = 0.0, hi = r;
       while (hi - lo > tolerance)
