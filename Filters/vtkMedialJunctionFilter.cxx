@@ -852,6 +852,14 @@ int vtkMedialJunctionFilter::RequestData(
   {
     this->UnresolvedIntervals += u;
   }
+  // A sample without a disk (its ray found no far side) hides its two intervals.
+  for (const auto& walk : walks)
+  {
+    for (const Sample& s : walk)
+    {
+      this->UnresolvedIntervals += s.Valid ? 0 : 2;
+    }
+  }
 
   // 4. Nodes and arcs, in walk order.
   NodeSet nodes(1e-8 * diagonal);

@@ -902,6 +902,10 @@ double vtkMedialPolygon::ClosestPointOnEdge(
 bool vtkMedialPolygon::ClosestPoint(const double x[2], double upperBound, const ContactFilter* filter,
   double point[2], double& distance, int& edge) const
 {
+  if (!(upperBound > 0.0))
+  {
+    return false;
+  }
   double best2 = upperBound * upperBound;
   bool found = false;
   const int ci = static_cast<int>(
