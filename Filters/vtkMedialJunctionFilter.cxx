@@ -478,24 +478,28 @@ public:
     // Governor sets change where a contact comes within Tol, not exactly at the
     // event; at a transition (tangential contact) that shifts the change along the
     // boundary by up to sqrt(2 r Tol). Stations are compared with that slack.
+    // The contacts themselves must lie on their edges (or in their vertex's cone) to
+    // rounding: a line's tangency just beyond the segment's end is a different disk.
     const double slack = 2.0 * std::sqrt(2.0 * d.R * this->Tol) + 2.0 * this->Tol;
     for (int i = 0; i < 3; ++i)
     {
       const double t = this->ContactParam(f[i], d.C, d.R);
-      const double eps = this->IsVertex(f[i])
-        ? slack / (std::max(d.R, this->Tol) * this->ConeAngle(this->VertexOf(f[i])))
-        : slack / this->Poly.GetEdge(f[i]).Length;
-      if (!(t >= -eps && t <= 1.0 + eps))
+      const bool vertex = this->IsVertex(f[i]);
+      const double inside = vertex ? 1e-9 / this->ConeAngle(this->VertexOf(f[i])) : 1e-9;
+      if (!(t >= -inside && t <= 1.0 + inside))
       {
         return false;
       }
-      if (this->IsVertex(f[i]) &&
+      if (vertex &&
         std::abs(std::hypot(d.C[0] - this->Poly.GetPoint(this->VertexOf(f[i]))[0],
                    d.C[1] - this->Poly.GetPoint(this->VertexOf(f[i]))[1]) -
-          d.R) > this->Tol)
+          d.R) > 1e-3 * this->Tol)
       {
         return false;
       }
+      const double eps = vertex
+        ? slack / (std::max(d.R, this->Tol) * this->ConeAngle(this->VertexOf(f[i])))
+        : slack / this->Poly.GetEdge(f[i]).Length;
       if (f[i] == a.Feature && t < a.Param - eps)
       {
         return false;
@@ -640,7 +644,7 @@ public:
     {
       // Several changes at one point (e.g. two transitions facing each other across
       // a strip): any valid triple of the union describes it.
-      for (size_t i = 0; i < u.size() && u.size() <= 6; ++i)
+      for (size_t i = 0; i < u.size() && u.size() <= 12; ++i)
       {
         for (size_t j = i + 1; j < u.size(); ++j)
         {

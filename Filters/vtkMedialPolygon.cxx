@@ -1094,7 +1094,8 @@ bool vtkMedialPolygon::Intersect(const double origin[2], const double direction[
       const double w[2] = { a[0] - origin[0], a[1] - origin[1] };
       const double t = (w[0] * s[1] - w[1] * s[0]) / denom;
       const double u = (w[0] * direction[1] - w[1] * direction[0]) / denom;
-      if (u >= 0.0 && u <= 1.0 && t > tMin && t < best)
+      // A ray through a vertex may miss both of its edges by a rounding error.
+      if (u >= -1e-12 && u <= 1.0 + 1e-12 && t > tMin && t < best)
       {
         best = t;
         edgeHit = e;

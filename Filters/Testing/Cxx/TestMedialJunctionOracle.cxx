@@ -4,7 +4,8 @@
 // A reference junction is a Voronoi vertex inside the polygon, off the boundary,
 // whose incident sites are 3 or more distinct governors (a segment and its own end
 // point meeting there is a transition, not a junction). Every reference junction
-// must be found within 1e-6 of the diagonal, and no junction may be extra.
+// must be found within 1e-6 of the diagonal, and no junction may be extra. The
+// graph must also be connected with one independent cycle per hole.
 #include "MedialPolygonTestUtilities.h"
 #include "MedialTestUtilities.h"
 
@@ -16,6 +17,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <random>
 #include <set>
 
@@ -216,7 +218,59 @@ int TestMedialJunctionOracle(int, char*[])
       continue;
     }
     ++tested;
+    if (getenv("MEDIAL_ORACLE_DEBUG") && log.Warnings > 0)
+    {
+      for (const auto& l : loops)
+      {
+        for (const auto& p : l)
+        {
+          std::printf("(%lld,%lld) ", p[0], p[1]);
+        }
+        std::printf("\n");
+      }
+    }
     MEDIAL_CHECK(log.Warnings == 0, "trial %d: %s", trial, log.Text.c_str());
+    // The medial graph of a region with h holes is connected with h independent cycles.
+    {
+      vtkPolyData* graph = filter->GetOutput();
+      std::vector<vtkIdType> parent(static_cast<size_t>(graph->GetNumberOfPoints()));
+      for (size_t i = 0; i < parent.size(); ++i)
+      {
+        parent[i] = static_cast<vtkIdType>(i);
+      }
+      std::function<vtkIdType(vtkIdType)> root = [&](vtkIdType x) {
+        return parent[x] == x ? x : parent[x] = root(parent[x]);
+      };
+      std::set<vtkIdType> nodes;
+      vtkIdType npts;
+      const vtkIdType* ids;
+      for (graph->GetLines()->InitTraversal(); graph->GetLines()->GetNextCell(npts, ids);)
+      {
+        nodes.insert(ids[0]);
+        nodes.insert(ids[npts - 1]);
+        parent[root(ids[0])] = root(ids[npts - 1]);
+      }
+      std::set<vtkIdType> components;
+      for (vtkIdType n : nodes)
+      {
+        components.insert(root(n));
+      }
+      const long long cycles = graph->GetNumberOfLines() - static_cast<long long>(nodes.size()) + 1;
+      if (getenv("MEDIAL_ORACLE_DEBUG") && (components.size() != 1 || cycles != static_cast<long long>(loops.size()) - 1))
+      {
+        for (const auto& l : loops)
+        {
+          for (const auto& p : l)
+          {
+            std::printf("(%lld,%lld) ", p[0], p[1]);
+          }
+          std::printf("\n");
+        }
+      }
+      MEDIAL_CHECK(components.size() == 1 && cycles == static_cast<long long>(loops.size()) - 1,
+        "trial %d: graph has %zu components and %lld cycles for %zu holes", trial, components.size(), cycles,
+        loops.size() - 1);
+    }
     const Reference ref = VoronoiJunctions(loops, poly);
     const auto found = NodesOfType(filter->GetOutput(), vtkMedialJunctionFilter::JUNCTION_POINT);
     const double diag = Diagonal(poly);
