@@ -485,7 +485,11 @@ public:
     {
       const double t = this->ContactParam(f[i], d.C, d.R);
       const bool vertex = this->IsVertex(f[i]);
-      const double inside = vertex ? 1e-9 / this->ConeAngle(this->VertexOf(f[i])) : 1e-9;
+      // Up to Tol of overshoot: near-collinear edges put an exact contact at a shared
+      // vertex only to within rounding amplified by their conditioning.
+      const double inside = vertex
+        ? std::max(1e-9, this->Tol / std::max(d.R, this->Tol)) / this->ConeAngle(this->VertexOf(f[i]))
+        : std::max(1e-9, this->Tol / this->Poly.GetEdge(f[i]).Length);
       if (!(t >= -inside && t <= 1.0 + inside))
       {
         return false;

@@ -72,6 +72,29 @@ def horse_slice():
     return clean.GetOutput()
 
 
+def graph_cycles(graph):
+    """Independent cycles of the medial graph (equals the number of holes when correct)."""
+    parent = {}
+
+    def root(x):
+        parent.setdefault(x, x)
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+
+    nodes = set()
+    lines = graph.GetLines()
+    lines.InitTraversal()
+    ids = vtk.vtkIdList()
+    while lines.GetNextCell(ids):
+        a, b = ids.GetId(0), ids.GetId(ids.GetNumberOfIds() - 1)
+        nodes.update((a, b))
+        parent[root(a)] = root(b)
+    components = len({root(n) for n in nodes})
+    return graph.GetNumberOfLines() - len(nodes) + components, components
+
+
 for name, make in (("STAR shape (1024 spikes)", shape_star), ("random star", random_star), ("horse slice", horse_slice)):
     data = make()
     if data is None:
@@ -89,4 +112,4 @@ for name, make in (("STAR shape (1024 spikes)", shape_star), ("random star", ran
     print(f"{name}: {data.GetNumberOfPoints()} vertices, {threads} threads: {best:.3f} s, "
           f"{f.GetNumberOfJunctions()} junctions, {f.GetNumberOfEndPoints()} ends, "
           f"{f.GetNumberOfSamples()} samples, unresolved {f.GetUnresolvedIntervals()}, "
-          f"{f.GetOutput().GetNumberOfLines()} arcs")
+          f"{f.GetOutput().GetNumberOfLines()} arcs, (cycles, components) = {graph_cycles(f.GetOutput())}")
