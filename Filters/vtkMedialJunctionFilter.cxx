@@ -954,6 +954,24 @@ int vtkMedialJunctionFilter::RequestData(
     governors->InsertNextValue(g);
     return points->InsertNextPoint(x);
   };
+  // Where 3 or more arcs meet is a junction even if its disk, solved in an
+  // ill-conditioned corner (nearly straight vertices of a sampled curve), touched
+  // its third governor just outside the tight event tolerance.
+  std::vector<int> degree(nodes.Nodes.size(), 0);
+  for (const Arc& arc : arcs)
+  {
+    ++degree[arc.A];
+    ++degree[arc.B];
+  }
+  for (size_t i = 0; i < nodes.Nodes.size(); ++i)
+  {
+    Node& n = nodes.Nodes[i];
+    if (n.Type == REGULAR_POINT && degree[i] >= 3)
+    {
+      n.Type = JUNCTION_POINT;
+      n.Count = std::max(n.Count, degree[i]);
+    }
+  }
   for (const Node& n : nodes.Nodes)
   {
     addPoint(n.Centre, n.Radius, n.Type, n.Count);

@@ -69,7 +69,9 @@ def horse_slice():
     clean = vtk.vtkCleanPolyData()
     clean.SetInputConnection(strip.GetOutputPort())
     clean.Update()
-    return clean.GetOutput()
+    out = vtk.vtkPolyData()
+    out.DeepCopy(clean.GetOutput())  # independent of the pipeline objects going out of scope
+    return out
 
 
 def graph_cycles(graph):
