@@ -340,6 +340,87 @@ public:
         return 1;
       }
     }
+    // Two edges meeting at a nearly straight convex vertex V: the disk's centre is on
+    // their bisector, c = V + s b with r = s (n1 . b). Solving along it stays exact
+    // however flat the corner, where the general system below loses all precision
+    // (its condition grows as 1 / turn angle). Sharp corners keep the general system.
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        if (i == j || this->IsVertex(f[i]) || this->IsVertex(f[j]))
+        {
+          continue;
+        }
+        const auto& e1 = this->Poly.GetEdge(f[i]);
+        const auto& e2 = this->Poly.GetEdge(f[j]);
+        const double half = 0.5 * std::hypot(e1.Normal[0] - e2.Normal[0], e1.Normal[1] - e2.Normal[1]);
+        if (e1.B != e2.A || this->Poly.GetVertexKind(e1.B) != vtkMedialPolygon::CONVEX || half > 1e-3)
+        {
+          continue;
+        }
+        const double* V = this->Poly.GetPoint(e1.B);
+        double b[2] = { e1.Normal[0] + e2.Normal[0], e1.Normal[1] + e2.Normal[1] };
+        const double bl = std::hypot(b[0], b[1]);
+        b[0] /= bl;
+        b[1] /= bl;
+        const double rate = e1.Normal[0] * b[0] + e1.Normal[1] * b[1]; // r per unit of s
+        const int h = f[3 - i - j];
+        double roots[2];
+        int nr = 0;
+        if (!this->IsVertex(h))
+        {
+          const auto& g = this->Poly.GetEdge(h);
+          const double denom = rate - (g.Normal[0] * b[0] + g.Normal[1] * b[1]);
+          if (std::abs(denom) > 1e-15)
+          {
+            roots[nr++] = (g.Normal[0] * V[0] + g.Normal[1] * V[1] + g.Offset) / denom;
+          }
+        }
+        else
+        {
+          // |V + s b - q|^2 = (rate s)^2: (1 - rate^2) s^2 + 2 s b.(V - q) + |V - q|^2 = 0.
+          const double* q = this->Poly.GetPoint(this->VertexOf(h));
+          const double w[2] = { V[0] - q[0], V[1] - q[1] };
+          const double qa = half * half; // 1 - rate^2, without cancellation
+          const double qb = 2.0 * (b[0] * w[0] + b[1] * w[1]);
+          const double qc = w[0] * w[0] + w[1] * w[1];
+          if (qa < 1e-30 * (qb * qb + qc))
+          {
+            if (qb != 0.0)
+            {
+              roots[nr++] = -qc / qb;
+            }
+          }
+          else
+          {
+            const double disc = qb * qb - 4.0 * qa * qc;
+            if (disc >= 0.0)
+            {
+              const double t = -0.5 * (qb + std::copysign(std::sqrt(disc), qb));
+              if (t != 0.0)
+              {
+                roots[nr++] = t / qa;
+                roots[nr++] = qc / t;
+              }
+            }
+          }
+        }
+        int count = 0;
+        for (int k = 0; k < nr; ++k)
+        {
+          const double r = rate * roots[k];
+          if (r > 0.0 && std::isfinite(r))
+          {
+            out[count].C[0] = V[0] + roots[k] * b[0];
+            out[count].C[1] = V[1] + roots[k] * b[1];
+            out[count].R = r;
+            ++count;
+          }
+        }
+        return count;
+      }
+    }
     // Unknowns X = (cx, cy, r). Edges give n.c - r = -k; vertex pairs give
     // 2 (vi - v0).c = |vi|^2 - |v0|^2; the first vertex gives |c - v0|^2 = r^2.
     double rows[3][4];
