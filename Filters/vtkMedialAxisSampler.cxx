@@ -2,6 +2,7 @@
 #include "vtkMedialAxisSampler.h"
 
 #include "vtkMedialGeometry.h"
+#include "vtkMedialPolygon.h"
 #include "vtkMedialRandom.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
@@ -226,6 +227,12 @@ int vtkMedialAxisSampler::RequestData(
   this->MeanIterations = 0.0;
   this->BoundaryEdges = 0;
   this->NumberOfTriangles = 0;
+
+  // Planar polygons or closed polylines: the 2D mode (vtkMedialAxisSampler2D.cxx).
+  if (vtkMedialPolygon::LooksPlanarLoops(input))
+  {
+    return this->RequestData2D(input, outInfo, output);
+  }
 
   vtkMedialTriangleMesh mesh;
   std::string error;

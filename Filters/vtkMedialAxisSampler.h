@@ -48,6 +48,13 @@
  *  - SourceCellId (vtkIdType, the input cell that P lies on);
  * and field data RequestedSamples, DiscardedSamples, MeanIterations, CappedSamples.
  *
+ * 2D mode: when the input is planar polygons or closed polylines (any plane; see
+ * vtkMedialPolygon for what is accepted), samples are drawn on the edges with
+ * probability proportional to length, the ray follows the inward edge normal in
+ * the plane, and the largest empty disk is found by the same two methods and the
+ * same separation-angle cap, on an exact 2D edge grid instead of Embree. Output
+ * arrays are the same; SourceCellId is the input polygon or polyline cell.
+ *
  * Pieces: the filter always requests the whole input (rays need the whole surface)
  * and splits the samples among output pieces.
  *
@@ -134,6 +141,8 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// The 2D mode, for planar polygons or closed polylines (see vtkMedialAxisSampler2D.cxx).
+  int RequestData2D(vtkPolyData* input, vtkInformation* outInfo, vtkPolyData* output);
 
   vtkIdType NumberOfSamples = 10000;
   int Method = BISECTION;

@@ -259,6 +259,57 @@ double JackDistance(const double p[3])
   return d;
 }
 
+// Planar loops in z = 0, one polygon cell each (the first is the outer boundary).
+void EmitLoops(vtkPolyData* out, const std::vector<std::vector<std::array<double, 2>>>& loops)
+{
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> polys;
+  for (const auto& l : loops)
+  {
+    std::vector<vtkIdType> ids;
+    for (const auto& p : l)
+    {
+      ids.push_back(pts->InsertNextPoint(p[0], p[1], 0.0));
+    }
+    polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+  }
+  out->SetPoints(pts);
+  out->SetPolys(polys);
+}
+
+void MakePlanar(vtkPolyData* out, int shape, const double lengths[3], double radius, int resolution)
+{
+  std::vector<std::vector<std::array<double, 2>>> loops;
+  switch (shape)
+  {
+    case vtkMedialShapeSource::L_SHAPE:
+      loops.push_back({ { 0, 0 }, { 2, 0 }, { 2, 1 }, { 1, 1 }, { 1, 2 }, { 0, 2 } });
+      break;
+    case vtkMedialShapeSource::RECTANGLE:
+      loops.push_back({ { 0, 0 }, { lengths[0], 0 }, { lengths[0], lengths[1] }, { 0, lengths[1] } });
+      break;
+    case vtkMedialShapeSource::SQUARE_FRAME:
+      loops.push_back({ { -2, -2 }, { 2, -2 }, { 2, 2 }, { -2, 2 } });
+      loops.push_back({ { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } });
+      break;
+    default:
+    {
+      std::vector<std::array<double, 2>> star;
+      const int spikes = std::max(3, resolution);
+      for (int i = 0; i < 2 * spikes; ++i)
+      {
+        const double a = Pi * i / spikes;
+        // A fixed irrational wobble breaks the star's symmetry.
+        const double r = radius * (i % 2 == 0 ? 1.0 : 0.5) * (1.0 + 0.08 * std::sin(7.31 * i + 0.5));
+        star.push_back({ r * std::cos(a), r * std::sin(a) });
+      }
+      loops.push_back(star);
+    }
+  }
+  EmitLoops(out, loops);
+}
+
 void MakeJack(vtkPolyData* out, int resolution)
 {
   const double lo[3] = { -2.0, -0.8, -1.1 }, hi[3] = { 2.0, 1.5, 1.1 };
@@ -324,6 +375,12 @@ int vtkMedialShapeSource::RequestData(vtkInformation*, vtkInformationVector**, v
     case CAPSULE:
       MakeCapsule(m, this->Radius, this->Length, this->Resolution);
       break;
+    case L_SHAPE:
+    case RECTANGLE:
+    case SQUARE_FRAME:
+    case STAR:
+      MakePlanar(output, this->Shape, this->BoxLengths, this->Radius, this->Resolution);
+      return 1;
     default:
       MakeJack(output, this->Resolution);
       return 1;

@@ -17,7 +17,17 @@
  *  - CAPSULE: a cylinder of radius Radius and length Length along z with
  *    hemispherical caps, 4 * Resolution segments around.
  *
- * Output: vtkPolyData of triangles, double-precision points.
+ * Planar shapes in the z = 0 plane, as polygon cells (for vtkMedialJunctionFilter
+ * and the 2D mode of vtkMedialAxisSampler; Resolution is ignored unless stated):
+ *  - L_SHAPE: an L with unit-wide arms of length 2, corner at the origin; its
+ *    reflex vertex (1, 1) gives a parabolic arc and a junction of radius 2 - sqrt 2.
+ *  - RECTANGLE: BoxLengths[0] x BoxLengths[1], corner at the origin.
+ *  - SQUARE_FRAME: the square [-2, 2]^2 with the hole [-1, 1]^2.
+ *  - STAR: Resolution spikes of outer radius Radius and inner radius Radius / 2,
+ *    radii wobbled deterministically so the graph has no symmetric degeneracies
+ *    (2 * Resolution vertices).
+ *
+ * Output: vtkPolyData of triangles (polygons for the planar shapes), double-precision points.
  */
 #ifndef vtkMedialShapeSource_h
 #define vtkMedialShapeSource_h
@@ -37,17 +47,27 @@ public:
     JACK = 0,
     SPHERE = 1,
     BOX = 2,
-    CAPSULE = 3
+    CAPSULE = 3,
+    L_SHAPE = 4,
+    RECTANGLE = 5,
+    SQUARE_FRAME = 6,
+    STAR = 7
   };
 
   ///@{
   /// Which shape to generate (default JACK).
-  vtkSetClampMacro(Shape, int, JACK, CAPSULE);
+  vtkSetClampMacro(Shape, int, JACK, STAR);
   vtkGetMacro(Shape, int);
   void SetShapeToJack() { this->SetShape(JACK); }
   void SetShapeToSphere() { this->SetShape(SPHERE); }
   void SetShapeToBox() { this->SetShape(BOX); }
   void SetShapeToCapsule() { this->SetShape(CAPSULE); }
+  void SetShapeToLShape() { this->SetShape(L_SHAPE); }
+  void SetShapeToRectangle() { this->SetShape(RECTANGLE); }
+  void SetShapeToSquareFrame() { this->SetShape(SQUARE_FRAME); }
+  void SetShapeToStar() { this->SetShape(STAR); }
+  /// True for the planar (2D) shapes.
+  static bool IsPlanar(int shape) { return shape >= L_SHAPE; }
   ///@}
 
   ///@{

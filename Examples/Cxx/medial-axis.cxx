@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// medial-axis: medial axis transform of a closed triangle mesh, from the command line.
+// medial-axis: medial axis transform of a closed triangle mesh or of planar
+// polygons, from the command line.
 //
-// Reads a mesh (or generates the demo shape), runs vtkMedialAxisSampler, and
-// writes the medial balls, a picture and a JSON line of figures. Only wiring
-// lives here; every algorithm is in a filter.
+// Reads a mesh or polygon (or generates a demo shape), runs vtkMedialAxisSampler
+// (and, for 2D input, vtkMedialJunctionFilter), and writes the medial balls, the
+// medial graph, a picture and a JSON line of figures. Only wiring lives here;
+// every algorithm is in a filter.
 
 #include "MedialReconstructionError.h"
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialBallUnion.h"
+#include "vtkMedialJunctionFilter.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkOFFReader.h"
 
@@ -20,7 +23,14 @@
 #include "vtkFieldData.h"
 #include "vtkDataArray.h"
 #include "vtkLogger.h"
+#include "vtkCellData.h"
+#include "vtkGlyph3D.h"
 #include "vtkLookupTable.h"
+#include "vtkMath.h"
+#include "vtkPoints.h"
+#include "vtkCellArray.h"
+#include "vtkRegularPolygonSource.h"
+#include "vtkSphereSource.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkObjectFactory.h"
@@ -66,8 +76,11 @@ const char* Usage =
   "usage: medial-axis [INPUT] [-n N] [--method bisection|shrinking-ball] [--seed S]\n"
   "                   [--threads T] [--tolerance E] [--min-angle DEG] [-o OUT.vtp]\n"
   "                   [--render OUT.png] [--stats] [--reconstruct OUT.vtp|.stl|.ply]\n"
-  "                   [--resolution N]\n"
-  "  INPUT        closed surface: .vtp .vtk .ply .stl .obj .off; none: the built-in demo shape\n"
+  "                   [--resolution N] [--junctions OUT.vtp]\n"
+  "  INPUT        closed surface: .vtp .vtk .ply .stl .obj .off; or planar polygons / closed\n"
+  "               polylines (any plane, holes allowed) for the 2D medial axis;\n"
+  "               or a demo: demo:jack (3D, the default with no INPUT), demo:l-shape,\n"
+  "               demo:rectangle, demo:frame (square with a square hole), demo:star (2D)\n"
   "  -n N         number of surface samples (default 10000)\n"
   "  --method M   bisection (default) or shrinking-ball\n"
   "  --seed S     random seed (default 1); output is identical for any thread count\n"
@@ -83,7 +96,10 @@ const char* Usage =
   "               hausdorff_max_rel and hausdorff_mean_rel (vertex to surface, the larger\n"
   "               of the two directions, relative to the bounding-box diagonal);\n"
   "               with --render the reconstruction is drawn beside the input\n"
-  "  --resolution N  grid points per axis of the reconstruction (default 128)\n";
+  "  --resolution N  grid points per axis of the reconstruction (default 128)\n"
+  "  --junctions OUT.vtp  2D input only: write the medial graph (junctions, end points,\n"
+  "               linear and parabolic arcs; point data Radius, MedialPointType,\n"
+  "               GovernorCount; cell data ArcType). --render then draws it too.\n";
 
 struct Options
 {
@@ -96,6 +112,7 @@ struct Options
   double MinAngle = 45.0;
   std::string Output;
   std::string Render;
+  std::string Junctions;
   bool Stats = false;
   std::string Reconstruct;
   int Resolution = 128;
@@ -272,6 +289,10 @@ Options Parse(int argc, char* argv[])
     else if (a == "--resolution")
     {
       o.Resolution = static_cast<int>(integer(i, 8, 2048));
+    }
+    else if (a == "--junctions")
+    {
+      o.Junctions = need(i);
     }
     else if (!a.empty() && a[0] == '-')
     {
@@ -572,6 +593,273 @@ std::string ReconstructionStats(vtkPolyData* surface, vtkPolyData* reconstructio
   return js.str();
 }
 
+// ---- 2D input: demo shapes, planarity, the medial graph and its picture ----
+
+// demo:NAME inputs; returns false for an unknown name.
+bool MakeDemo(const std::string& name, vtkSmartPointer<vtkPolyData>& out)
+{
+  vtkNew<vtkMedialShapeSource> demo;
+  if (name == "demo:jack")
+  {
+    demo->SetShapeToJack();
+  }
+  else if (name == "demo:l-shape")
+  {
+    demo->SetShapeToLShape();
+  }
+  else if (name == "demo:rectangle")
+  {
+    demo->SetShapeToRectangle();
+  }
+  else if (name == "demo:frame")
+  {
+    demo->SetShapeToSquareFrame();
+  }
+  else if (name == "demo:star")
+  {
+    demo->SetShapeToStar();
+    demo->SetResolution(9);
+  }
+  else
+  {
+    return false;
+  }
+  demo->Update();
+  out = demo->GetOutput();
+  return true;
+}
+
+// Plane of the points (centroid and the normal of least variance); the returned
+// value is the largest distance of a point from it, relative to the diagonal.
+double FitPlane(vtkPolyData* pd, double centre[3], double normal[3])
+{
+  const vtkIdType n = pd->GetNumberOfPoints();
+  centre[0] = centre[1] = centre[2] = 0.0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    pd->GetPoint(i, p);
+    for (int k = 0; k < 3; ++k)
+    {
+      centre[k] += p[k] / n;
+    }
+  }
+  double cov[3][3] = {}, row0[3], row1[3], row2[3];
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    pd->GetPoint(i, p);
+    for (int a = 0; a < 3; ++a)
+    {
+      for (int b = 0; b < 3; ++b)
+      {
+        cov[a][b] += (p[a] - centre[a]) * (p[b] - centre[b]);
+      }
+    }
+  }
+  double* rows[3] = { row0, row1, row2 };
+  double* in[3] = { cov[0], cov[1], cov[2] };
+  double values[3], vecs[3][3];
+  double* v[3] = { vecs[0], vecs[1], vecs[2] };
+  for (int a = 0; a < 3; ++a)
+  {
+    std::copy(cov[a], cov[a] + 3, rows[a]);
+  }
+  vtkMath::Jacobi(in, values, v);
+  // Eigenvalues come sorted in decreasing order; vectors are the columns.
+  for (int k = 0; k < 3; ++k)
+  {
+    normal[k] = vecs[k][2];
+  }
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    pd->GetPoint(i, p);
+    worst = std::max(worst,
+      std::abs((p[0] - centre[0]) * normal[0] + (p[1] - centre[1]) * normal[1] + (p[2] - centre[2]) * normal[2]));
+  }
+  const double diag = pd->GetLength();
+  return diag > 0 ? worst / diag : 0.0;
+}
+
+// 2D input: planar loops as polygons or polylines (a closed surface is never planar).
+bool IsPlanarInput(vtkPolyData* pd)
+{
+  if (pd->GetNumberOfStrips() > 0 || (pd->GetNumberOfPolys() == 0 && pd->GetNumberOfLines() == 0))
+  {
+    return false;
+  }
+  double c[3], n[3];
+  return pd->GetNumberOfPoints() >= 3 && FitPlane(pd, c, n) <= 1e-6;
+}
+
+vtkSmartPointer<vtkPolyData> RunJunctions(vtkPolyData* polygon, int threads, MessageSink& sink)
+{
+  vtkNew<vtkMedialJunctionFilter> junctions;
+  junctions->SetInputData(polygon);
+  junctions->SetNumberOfThreads(threads);
+  junctions->Update();
+  if (!sink.LastError.empty())
+  {
+    Fail(sink.LastError);
+  }
+  auto graph = vtkSmartPointer<vtkPolyData>::New();
+  graph->ShallowCopy(junctions->GetOutput());
+  return graph;
+}
+
+// Points of the graph with one MedialPointType, as spheres.
+vtkSmartPointer<vtkActor> NodeActor(vtkPolyData* graph, int type, double size, const double rgb[3])
+{
+  vtkNew<vtkPoints> pts;
+  auto* types = graph->GetPointData()->GetArray("MedialPointType");
+  for (vtkIdType i = 0; types && i < graph->GetNumberOfPoints(); ++i)
+  {
+    if (static_cast<int>(types->GetTuple1(i)) == type)
+    {
+      pts->InsertNextPoint(graph->GetPoint(i));
+    }
+  }
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(pts);
+  vtkNew<vtkSphereSource> ball;
+  ball->SetRadius(size);
+  ball->SetThetaResolution(16);
+  ball->SetPhiResolution(12);
+  vtkNew<vtkGlyph3D> glyphs;
+  glyphs->SetInputData(cloud);
+  glyphs->SetSourceConnection(ball->GetOutputPort());
+  glyphs->ScalingOff();
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(glyphs->GetOutputPort());
+  mapper->ScalarVisibilityOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(rgb[0], rgb[1], rgb[2]);
+  return actor;
+}
+
+// Picture of a 2D medial axis: the polygon (black), the graph's arcs (blue linear,
+// orange parabolic), junctions (red), end points (green) and the maximal disks of
+// the largest junctions (grey circles).
+void Render2D(vtkPolyData* polygon, vtkPolyData* graph, const std::string& path, MessageSink& sink)
+{
+  double centre[3], normal[3];
+  FitPlane(polygon, centre, normal);
+  const double diag = polygon->GetLength();
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(1, 1, 1);
+
+  vtkNew<vtkPolyData> outline;
+  outline->SetPoints(polygon->GetPoints());
+  vtkNew<vtkCellArray> edges;
+  for (vtkCellArray* cells : { polygon->GetPolys(), polygon->GetLines() })
+  {
+    vtkIdType npts;
+    const vtkIdType* ids;
+    for (cells->InitTraversal(); cells->GetNextCell(npts, ids);)
+    {
+      std::vector<vtkIdType> loop(ids, ids + npts);
+      if (cells == polygon->GetPolys())
+      {
+        loop.push_back(ids[0]);
+      }
+      edges->InsertNextCell(static_cast<vtkIdType>(loop.size()), loop.data());
+    }
+  }
+  outline->SetLines(edges);
+  vtkNew<vtkPolyDataMapper> outlineMapper;
+  outlineMapper->SetInputData(outline);
+  outlineMapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> outlineActor;
+  outlineActor->SetMapper(outlineMapper);
+  outlineActor->GetProperty()->SetColor(0.1, 0.1, 0.1);
+  outlineActor->GetProperty()->SetLineWidth(3);
+  renderer->AddActor(outlineActor);
+
+  // Arcs coloured by ArcType through a two-entry table.
+  vtkNew<vtkLookupTable> arcColours;
+  arcColours->SetNumberOfTableValues(2);
+  arcColours->SetTableValue(0, 0.15, 0.35, 0.85);
+  arcColours->SetTableValue(1, 0.95, 0.55, 0.1);
+  arcColours->SetTableRange(0, 1);
+  arcColours->Build();
+  vtkNew<vtkPolyDataMapper> arcMapper;
+  arcMapper->SetInputData(graph);
+  arcMapper->SetScalarModeToUseCellFieldData();
+  arcMapper->SelectColorArray("ArcType");
+  arcMapper->SetLookupTable(arcColours);
+  arcMapper->SetScalarRange(0, 1);
+  arcMapper->ScalarVisibilityOn();
+  vtkNew<vtkActor> arcActor;
+  arcActor->SetMapper(arcMapper);
+  arcActor->GetProperty()->SetLineWidth(3);
+  renderer->AddActor(arcActor);
+
+  // Maximal disks of the (up to) six largest junctions.
+  std::vector<std::pair<double, vtkIdType>> junctions;
+  auto* types = graph->GetPointData()->GetArray("MedialPointType");
+  auto* radius = graph->GetPointData()->GetArray("Radius");
+  for (vtkIdType i = 0; types && i < graph->GetNumberOfPoints(); ++i)
+  {
+    if (static_cast<int>(types->GetTuple1(i)) == vtkMedialJunctionFilter::JUNCTION_POINT)
+    {
+      junctions.emplace_back(-radius->GetTuple1(i), i);
+    }
+  }
+  std::sort(junctions.begin(), junctions.end());
+  for (size_t k = 0; k < junctions.size() && k < 6; ++k)
+  {
+    vtkNew<vtkRegularPolygonSource> circle;
+    circle->SetNumberOfSides(96);
+    circle->GeneratePolygonOff();
+    circle->SetRadius(-junctions[k].first);
+    circle->SetCenter(graph->GetPoint(junctions[k].second));
+    circle->SetNormal(normal);
+    vtkNew<vtkPolyDataMapper> m;
+    m->SetInputConnection(circle->GetOutputPort());
+    vtkNew<vtkActor> a;
+    a->SetMapper(m);
+    a->GetProperty()->SetColor(0.55, 0.55, 0.6);
+    a->GetProperty()->SetLineWidth(1.5);
+    renderer->AddActor(a);
+  }
+  const double red[3] = { 0.85, 0.1, 0.1 }, green[3] = { 0.1, 0.65, 0.2 };
+  renderer->AddActor(NodeActor(graph, vtkMedialJunctionFilter::JUNCTION_POINT, 0.012 * diag, red));
+  renderer->AddActor(NodeActor(graph, vtkMedialJunctionFilter::END_POINT, 0.009 * diag, green));
+
+  // Look straight at the plane.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(centre);
+  camera->SetPosition(centre[0] + normal[0], centre[1] + normal[1], centre[2] + normal[2]);
+  double up[3] = { 0, 1, 0 };
+  if (std::abs(vtkMath::Dot(up, normal)) > 0.9)
+  {
+    up[0] = 1;
+    up[1] = 0;
+  }
+  camera->SetViewUp(up);
+  renderer->ResetCamera();
+  camera->Zoom(1.3);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(900, 700);
+  window->AddRenderer(renderer);
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  vtkNew<vtkPNGWriter> png;
+  png->SetInputConnection(grab->GetOutputPort());
+  png->SetFileName(path.c_str());
+  png->Write();
+  if (!sink.LastError.empty())
+  {
+    Fail("cannot write '" + path + "': " + sink.LastError);
+  }
+}
+
 std::string JsonString(const std::string& s)
 {
   std::string out = "\"";
@@ -628,17 +916,51 @@ int main(int argc, char* argv[])
     CheckReconstructPath(opt.Reconstruct);
   }
 
+  if (!opt.Junctions.empty())
+  {
+    if (Extension(opt.Junctions) != ".vtp")
+    {
+      Fail("--junctions writes VTK XML polydata and needs a .vtp name, got '" + opt.Junctions + "'");
+    }
+    CheckWritable(opt.Junctions, "--junctions");
+  }
+
   vtkSmartPointer<vtkPolyData> surface;
   if (opt.Input.empty())
   {
-    vtkNew<vtkMedialShapeSource> demo;
-    demo->SetShapeToJack();
-    demo->Update();
-    surface = demo->GetOutput();
+    MakeDemo("demo:jack", surface);
+  }
+  else if (opt.Input.rfind("demo:", 0) == 0)
+  {
+    if (!MakeDemo(opt.Input, surface))
+    {
+      Fail("unknown demo '" + opt.Input + "' (demo:jack, demo:l-shape, demo:rectangle, demo:frame, demo:star)");
+    }
   }
   else
   {
     surface = ReadSurface(opt.Input, sink);
+  }
+  const bool planar = IsPlanarInput(surface);
+  if (!opt.Junctions.empty() && !planar)
+  {
+    Fail("--junctions needs planar polygons or closed polylines; '" + opt.Input + "' is not planar");
+  }
+  vtkSmartPointer<vtkPolyData> graph;
+  if (planar && (!opt.Junctions.empty() || !opt.Render.empty() || opt.Stats))
+  {
+    graph = RunJunctions(surface, opt.Threads, sink);
+  }
+  if (!opt.Junctions.empty())
+  {
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetInputData(graph);
+    writer->SetFileName(opt.Junctions.c_str());
+    writer->SetDataModeToBinary();
+    if (!writer->Write() || !sink.LastError.empty())
+    {
+      Fail("cannot write '" + opt.Junctions + "': " + sink.LastError);
+    }
   }
 
   vtkNew<vtkMedialAxisSampler> sampler;
@@ -730,7 +1052,14 @@ int main(int argc, char* argv[])
   }
   if (!opt.Render.empty())
   {
-    Render(surface, medial, opt.Render, sink, reconstruction);
+    if (planar)
+    {
+      Render2D(surface, graph, opt.Render, sink);
+    }
+    else
+    {
+      Render(surface, medial, opt.Render, sink, reconstruction);
+    }
   }
   if (opt.Stats)
   {
@@ -745,7 +1074,21 @@ int main(int argc, char* argv[])
        << ", \"min_angle\": " << opt.MinAngle << ", \"tolerance\": " << opt.Tolerance
        << ", \"iterations_mean\": " << sampler->GetMeanIterations()
        << ", \"capped\": " << sampler->GetCappedSamples() << ", \"seconds\": " << seconds
-       << ReconstructionStats(surface, reconstruction, reconstructionSeconds, sampler, opt) << "}";
+       << ReconstructionStats(surface, reconstruction, reconstructionSeconds, sampler, opt);
+    if (graph)
+    {
+      vtkIdType junctions = 0, ends = 0;
+      auto* types = graph->GetPointData()->GetArray("MedialPointType");
+      for (vtkIdType i = 0; i < graph->GetNumberOfPoints(); ++i)
+      {
+        const int t = static_cast<int>(types->GetTuple1(i));
+        junctions += t == vtkMedialJunctionFilter::JUNCTION_POINT ? 1 : 0;
+        ends += t == vtkMedialJunctionFilter::END_POINT ? 1 : 0;
+      }
+      js << ", \"junctions\": " << junctions << ", \"end_points\": " << ends
+         << ", \"arcs\": " << graph->GetNumberOfLines();
+    }
+    js << "}";
     std::cout << js.str() << std::endl;
   }
   return 0;

@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class vtkMedialJunctionFilter
+ * @brief Medial graph of a planar polygon (with holes): junctions, end points and
+ * the linear and parabolic arcs between them.
+ *
+ * Algorithm:
+ *  1. The input loops are prepared by vtkMedialPolygon (plane frame, validation,
+ *     nesting, interior on the left of every edge). Governors are the edges and
+ *     the reflex vertices.
+ *  2. The boundary is walked in order. Every edge gets
+ *     max(MinimumSamplesPerEdge, SamplesPerUnitLength * length / diagonal)
+ *     samples; every reflex vertex gets samples over its cone of inward directions;
+ *     every convex vertex is an end point (radius 0). For each sample the maximal
+ *     inscribed disk tangent there is computed exactly (ray for an upper bound,
+ *     then closest blockers until none is left) and its governor set recorded:
+ *     the governors it touches within Tolerance * diagonal, a contact at a reflex
+ *     end of an edge counting as that vertex.
+ *  3. Between neighbouring samples whose governor sets differ, the three governors
+ *     involved are solved exactly for the disk tangent to all three (edge-edge-edge
+ *     linear; with vertices a quadratic; an edge and its own end vertex mean the
+ *     disk is tangent to the edge at that vertex), and the solution is accepted when
+ *     it lies between the two samples and is empty. When the interval hides more
+ *     than one change it is bisected. A solution touching 3 or more distinct
+ *     governors is a junction; one touching 2 is a transition (a regular point
+ *     where a line turns into a parabola). Junctions found from several sides or
+ *     from 4+ governors are merged within 1e-8 * diagonal.
+ *  4. The medial graph follows from the boundary order: consecutive events
+ *     (ends, junctions, transitions) are joined by one arc, found once from each
+ *     side and emitted once.
+ *
+ * Input: vtkPolyData with polygon cells or closed polylines in any plane, one outer
+ * boundary and any number of holes (see vtkMedialPolygon for what is rejected).
+ *
+ * Output (in the input's plane): points = junctions, end points, transitions and
+ * the inner points of parabolic arcs; lines = one cell per arc between events
+ * (2 points when linear, ArcResolution + 2 when parabolic). Point data Radius
+ * (double), MedialPointType (int: 0 end, 1 regular/arc sample, 2 junction),
+ * GovernorCount (int); cell data ArcType (int: 0 linear, 1 parabolic). Bisectors
+ * of two reflex vertices are straight and reported as linear.
+ *
+ * Output is identical for any thread count.
+ *
+ * @sa vtkMedialAxisSampler
+ */
+#ifndef vtkMedialJunctionFilter_h
+#define vtkMedialJunctionFilter_h
+
+#include "vtkMedialAxisFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class VTKMEDIALAXISFILTERS_EXPORT vtkMedialJunctionFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkMedialJunctionFilter* New();
+  vtkTypeMacro(vtkMedialJunctionFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum PointTypes
+  {
+    END_POINT = 0,
+    REGULAR_POINT = 1,
+    JUNCTION_POINT = 2
+  };
+  enum ArcTypes
+  {
+    LINEAR_ARC = 0,
+    PARABOLIC_ARC = 1
+  };
+
+  ///@{
+  /// Boundary samples per bounding-box diagonal of boundary length (default 20).
+  vtkSetClampMacro(SamplesPerUnitLength, double, 0.0, 1e9);
+  vtkGetMacro(SamplesPerUnitLength, double);
+  ///@}
+
+  ///@{
+  /// Samples on every edge however short (default 2).
+  vtkSetClampMacro(MinimumSamplesPerEdge, int, 1, 1000000);
+  vtkGetMacro(MinimumSamplesPerEdge, int);
+  ///@}
+
+  ///@{
+  /// Inner points of each parabolic arc (default 16).
+  vtkSetClampMacro(ArcResolution, int, 1, 100000);
+  vtkGetMacro(ArcResolution, int);
+  ///@}
+
+  ///@{
+  /// Contact tolerance relative to the bounding-box diagonal (default 1e-9).
+  vtkSetClampMacro(Tolerance, double, 1e-15, 1e-3);
+  vtkGetMacro(Tolerance, double);
+  ///@}
+
+  ///@{
+  /// OpenMP threads; 0 means all cores (default 0). The output does not depend on it.
+  vtkSetClampMacro(NumberOfThreads, int, 0, 4096);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
+  /// Figures from the last execution. UnresolvedIntervals counts sample intervals
+  /// whose governor change could not be solved (0 on valid input).
+  vtkGetMacro(NumberOfJunctions, vtkIdType);
+  vtkGetMacro(NumberOfEndPoints, vtkIdType);
+  vtkGetMacro(NumberOfSamples, vtkIdType);
+  vtkGetMacro(UnresolvedIntervals, vtkIdType);
+  ///@}
+
+protected:
+  vtkMedialJunctionFilter();
+  ~vtkMedialJunctionFilter() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double SamplesPerUnitLength = 100.0;
+  int MinimumSamplesPerEdge = 2;
+  int ArcResolution = 16;
+  double Tolerance = 1e-9;
+  int NumberOfThreads = 0;
+
+  vtkIdType NumberOfJunctions = 0;
+  vtkIdType NumberOfEndPoints = 0;
+  vtkIdType NumberOfSamples = 0;
+  vtkIdType UnresolvedIntervals = 0;
+
+private:
+  vtkMedialJunctionFilter(const vtkMedialJunctionFilter&) = delete;
+  void operator=(const vtkMedialJunctionFilter&) = delete;
+};
+
+#endif

@@ -1,0 +1,1126 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkMedialPolygon.h"
+
+#include "vtkCellArray.h"
+#include "vtkIdList.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace
+{
+double Cross2(const double a[2], const double b[2], const double c[2])
+{
+  return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+// Closed segments [a,b] and [c,d] share a point.
+bool SegmentsTouch(const double a[2], const double b[2], const double c[2], const double d[2])
+{
+  const double d1 = Cross2(c, d, a), d2 = Cross2(c, d, b);
+  const double d3 = Cross2(a, b, c), d4 = Cross2(a, b, d);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+  {
+    return true;
+  }
+  auto onSegment = [](const double p[2], const double q[2], const double r[2]) {
+    return std::min(p[0], q[0]) <= r[0] && r[0] <= std::max(p[0], q[0]) &&
+      std::min(p[1], q[1]) <= r[1] && r[1] <= std::max(p[1], q[1]);
+  };
+  return (d1 == 0 && onSegment(c, d, a)) || (d2 == 0 && onSegment(c, d, b)) ||
+    (d3 == 0 && onSegment(a, b, c)) || (d4 == 0 && onSegment(a, b, d));
+}
+
+double SignedArea(const std::vector<double>& pts, const std::vector<int>& loop)
+{
+  double a = 0.0;
+  for (size_t i = 0; i < loop.size(); ++i)
+  {
+    const double* p = &pts[2 * loop[i]];
+    const double* q = &pts[2 * loop[(i + 1) % loop.size()]];
+    a += p[0] * q[1] - p[1] * q[0];
+  }
+  return 0.5 * a;
+}
+
+bool InsideLoop(const std::vector<double>& pts, const std::vector<int>& loop, const double x[2])
+{
+  bool inside = false;
+  for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++)
+  {
+    const double* p = &pts[2 * loop[i]];
+    const double* q = &pts[2 * loop[j]];
+    if ((p[1] > x[1]) != (q[1] > x[1]) &&
+      x[0] < (q[0] - p[0]) * (x[1] - p[1]) / (q[1] - p[1]) + p[0])
+    {
+      inside = !inside;
+    }
+  }
+  return inside;
+}
+}
+
+bool vtkMedialPolygon::LooksPlanarLoops(vtkPolyData* input)
+{
+  if (!input || input->GetNumberOfPoints() < 3 || input->GetNumberOfStrips() > 0)
+  {
+    return false;
+  }
+  if (input->GetNumberOfLines() > 0)
+  {
+    if (input->GetNumberOfPolys() > 0)
+    {
+      return false;
+    }
+    // Loops: a closed polyline, or several pieces that may chain into loops (a
+    // single open piece is not a 2D shape at all and gets the surface error).
+    vtkIdType npts;
+    const vtkIdType* ids;
+    vtkCellArray* lines = input->GetLines();
+    for (lines->InitTraversal(); lines->GetNextCell(npts, ids);)
+    {
+      double a[3], b[3];
+      if (npts >= 2)
+      {
+        input->GetPoint(ids[0], a);
+        input->GetPoint(ids[npts - 1], b);
+        if (a[0] == b[0] && a[1] == b[1] && a[2] == b[2])
+        {
+          return true;
+        }
+      }
+    }
+    return input->GetNumberOfLines() >= 3;
+  }
+  // Polygons: 2D only when all points lie in one plane.
+  double bounds[6];
+  input->GetBounds(bounds);
+  const double diag = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) + (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  // A closed surface is never planar; a quick plane fit decides.
+  double n[3] = { 0, 0, 0 }, c[3] = { 0, 0, 0 };
+  const vtkIdType np = input->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    double p[3];
+    input->GetPoint(i, p);
+    for (int k = 0; k < 3; ++k)
+    {
+      c[k] += p[k] / np;
+    }
+  }
+  vtkIdType npts;
+  const vtkIdType* ids;
+  vtkCellArray* polys = input->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
+  {
+    for (vtkIdType i = 0; i < npts; ++i)
+    {
+      double p[3], q[3];
+      input->GetPoint(ids[i], p);
+      input->GetPoint(ids[(i + 1) % npts], q);
+      n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+      n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+      n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+    }
+    break; // the first polygon's plane
+  }
+  const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (!(len > 0.0))
+  {
+    return false;
+  }
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    double p[3];
+    input->GetPoint(i, p);
+    const double d = ((p[0] - c[0]) * n[0] + (p[1] - c[1]) * n[1] + (p[2] - c[2]) * n[2]) / len;
+    if (std::abs(d) > 1e-6 * diag)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
+{
+  this->Points.clear();
+  this->Edges.clear();
+  this->LoopEdges.clear();
+  const vtkIdType np = input ? input->GetNumberOfPoints() : 0;
+  if (np == 0)
+  {
+    error = "input has no points";
+    return false;
+  }
+  // 1. Merge coincident points; keep 3D coordinates of the canonical points.
+  std::vector<std::array<double, 3>> xyz;
+  std::vector<int> canonical(static_cast<size_t>(np));
+  {
+    std::map<std::array<double, 3>, int> seen;
+    for (vtkIdType i = 0; i < np; ++i)
+    {
+      std::array<double, 3> p;
+      input->GetPoint(i, p.data());
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      {
+        error = "input has NaN or infinite coordinates";
+        return false;
+      }
+      auto it = seen.emplace(p, static_cast<int>(xyz.size())).first;
+      if (it->second == static_cast<int>(xyz.size()))
+      {
+        xyz.push_back(p);
+      }
+      canonical[i] = it->second;
+    }
+  }
+
+  // 2. Loops: polygon cells, closed polylines, and open polylines chained end to end.
+  std::vector<std::vector<int>> loops;
+  std::vector<vtkIdType> loopCells;
+  vtkIdType cellId = 0;
+  vtkIdType npts;
+  const vtkIdType* ids;
+  vtkCellArray* verts = input->GetVerts();
+  cellId += verts ? verts->GetNumberOfCells() : 0;
+  std::vector<std::vector<int>> open;
+  std::vector<vtkIdType> openCells;
+  if (vtkCellArray* lines = input->GetLines())
+  {
+    for (lines->InitTraversal(); lines->GetNextCell(npts, ids); ++cellId)
+    {
+      std::vector<int> l;
+      for (vtkIdType i = 0; i < npts; ++i)
+      {
+        l.push_back(canonical[ids[i]]);
+      }
+      if (l.size() >= 2 && l.front() == l.back())
+      {
+        l.pop_back();
+        loops.push_back(l);
+        loopCells.push_back(cellId);
+      }
+      else if (l.size() >= 2)
+      {
+        open.push_back(l);
+        openCells.push_back(cellId);
+      }
+    }
+  }
+  const size_t firstPolygon = loops.size();
+  if (vtkCellArray* polys = input->GetPolys())
+  {
+    for (polys->InitTraversal(); polys->GetNextCell(npts, ids); ++cellId)
+    {
+      std::vector<int> l;
+      for (vtkIdType i = 0; i < npts; ++i)
+      {
+        l.push_back(canonical[ids[i]]);
+      }
+      loops.push_back(l);
+      loopCells.push_back(cellId);
+    }
+  }
+  if (input->GetNumberOfStrips() > 0)
+  {
+    error = "input has triangle strips, not planar loops";
+    return false;
+  }
+  {
+    // Polygons sharing edges are a planar mesh (e.g. a triangulated polygon): its
+    // region is bounded by the edges used once, chained below like polylines.
+    std::map<std::pair<int, int>, int> uses;
+    bool shared = false;
+    for (size_t i = firstPolygon; i < loops.size(); ++i)
+    {
+      // An edge counts once per polygon (a 2-point polygon runs it both ways).
+      std::set<std::pair<int, int>> own;
+      const auto& l = loops[i];
+      for (size_t k = 0; k < l.size(); ++k)
+      {
+        const int a = l[k], b = l[(k + 1) % l.size()];
+        if (a != b)
+        {
+          own.insert({ std::min(a, b), std::max(a, b) });
+        }
+      }
+      for (const auto& e : own)
+      {
+        shared = ++uses[e] > 1 || shared;
+      }
+    }
+    if (shared)
+    {
+      for (size_t i = firstPolygon; i < loops.size(); ++i)
+      {
+        const auto& l = loops[i];
+        for (size_t k = 0; k < l.size(); ++k)
+        {
+          const int a = l[k], b = l[(k + 1) % l.size()];
+          if (a != b && uses[{ std::min(a, b), std::max(a, b) }] == 1)
+          {
+            open.push_back({ a, b });
+            openCells.push_back(loopCells[i]);
+          }
+        }
+      }
+      loops.resize(firstPolygon);
+      loopCells.resize(firstPolygon);
+    }
+  }
+  if (!open.empty())
+  {
+    // Chain open polylines sharing end points; every end must meet exactly one other end.
+    std::map<int, std::vector<int>> ends;
+    for (size_t i = 0; i < open.size(); ++i)
+    {
+      ends[open[i].front()].push_back(static_cast<int>(i));
+      ends[open[i].back()].push_back(static_cast<int>(i));
+    }
+    for (const auto& kv : ends)
+    {
+      if (kv.second.size() != 2)
+      {
+        std::ostringstream os;
+        os << (kv.second.size() < 2 ? "open polyline: an end point meets no other polyline"
+                                    : "polylines branch at a point")
+           << " (point " << kv.first << ")";
+        error = os.str();
+        return false;
+      }
+    }
+    std::vector<bool> used(open.size(), false);
+    for (size_t s = 0; s < open.size(); ++s)
+    {
+      if (used[s])
+      {
+        continue;
+      }
+      used[s] = true;
+      std::vector<int> chain = open[s];
+      while (chain.back() != chain.front())
+      {
+        const auto& cand = ends[chain.back()];
+        int next = -1;
+        for (int c : cand)
+        {
+          if (!used[c])
+          {
+            next = c;
+          }
+        }
+        if (next < 0)
+        {
+          error = "open polyline: chained polylines do not close";
+          return false;
+        }
+        used[next] = true;
+        std::vector<int> piece = open[next];
+        if (piece.front() != chain.back())
+        {
+          std::reverse(piece.begin(), piece.end());
+        }
+        chain.insert(chain.end(), piece.begin() + 1, piece.end());
+      }
+      chain.pop_back();
+      loops.push_back(chain);
+      loopCells.push_back(openCells[s]);
+    }
+  }
+  if (loops.empty())
+  {
+    error = "input has no polygons or closed polylines";
+    return false;
+  }
+
+  // 3. Plane: Newell normal of the loop with the largest one.
+  double best = -1.0, normal[3] = { 0, 0, 1 };
+  for (const auto& l : loops)
+  {
+    double n[3] = { 0, 0, 0 };
+    for (size_t i = 0; i < l.size(); ++i)
+    {
+      const auto& p = xyz[l[i]];
+      const auto& q = xyz[l[(i + 1) % l.size()]];
+      n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+      n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+      n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+    }
+    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (len > best)
+    {
+      best = len;
+      for (int k = 0; k < 3; ++k)
+      {
+        normal[k] = len > 0 ? n[k] / len : 0.0;
+      }
+    }
+  }
+  double lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+  for (const auto& l : loops)
+  {
+    for (int v : l)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        lo[k] = std::min(lo[k], xyz[v][k]);
+        hi[k] = std::max(hi[k], xyz[v][k]);
+      }
+    }
+  }
+  const double diag3 = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+    (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  if (!(diag3 > 0.0))
+  {
+    error = "a loop has fewer than 3 distinct vertices";
+    return false;
+  }
+  if (!(best > 1e-12 * diag3 * diag3))
+  {
+    // No net area (e.g. a bow tie): take the plane of the widest vertex triangle, so
+    // that the validation below names the real problem.
+    const auto& p0 = xyz[loops[0][0]];
+    std::array<double, 3> far = p0;
+    double farthest = 0.0;
+    for (const auto& l : loops)
+    {
+      for (int v : l)
+      {
+        const double d = std::hypot(std::hypot(xyz[v][0] - p0[0], xyz[v][1] - p0[1]), xyz[v][2] - p0[2]);
+        if (d > farthest)
+        {
+          farthest = d;
+          far = xyz[v];
+        }
+      }
+    }
+    best = 0.0;
+    for (const auto& l : loops)
+    {
+      for (int v : l)
+      {
+        const double a[3] = { far[0] - p0[0], far[1] - p0[1], far[2] - p0[2] };
+        const double b[3] = { xyz[v][0] - p0[0], xyz[v][1] - p0[1], xyz[v][2] - p0[2] };
+        const double n[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+        const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        if (len > best)
+        {
+          best = len;
+          for (int k = 0; k < 3; ++k)
+          {
+            normal[k] = n[k] / len;
+          }
+        }
+      }
+    }
+    if (!(best > 1e-12 * diag3 * diag3))
+    {
+      error = "a loop has fewer than 3 distinct vertices (all points collinear)";
+      return false;
+    }
+  }
+  // Canonical sign: reversing every loop must not mirror the frame.
+  int major = 0;
+  for (int k = 1; k < 3; ++k)
+  {
+    if (std::abs(normal[k]) > std::abs(normal[major]))
+    {
+      major = k;
+    }
+  }
+  if (normal[major] < 0)
+  {
+    for (double& c : normal)
+    {
+      c = -c;
+    }
+  }
+  double* origin = this->Frame[0];
+  double* u = this->Frame[1];
+  double* v = this->Frame[2];
+  for (int k = 0; k < 3; ++k)
+  {
+    origin[k] = 0.5 * (lo[k] + hi[k]);
+    this->Frame[3][k] = normal[k];
+  }
+  // Put the origin on the plane (through the mean of the vertices).
+  {
+    double mean[3] = { 0, 0, 0 };
+    size_t count = 0;
+    for (const auto& l : loops)
+    {
+      for (int p : l)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          mean[k] += xyz[p][k];
+        }
+        ++count;
+      }
+    }
+    double off = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      off += (mean[k] / count - origin[k]) * normal[k];
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      origin[k] += off * normal[k];
+    }
+  }
+  const int minor = std::abs(normal[0]) <= std::abs(normal[1])
+    ? (std::abs(normal[0]) <= std::abs(normal[2]) ? 0 : 2)
+    : (std::abs(normal[1]) <= std::abs(normal[2]) ? 1 : 2);
+  double axis[3] = { 0, 0, 0 };
+  axis[minor] = 1.0;
+  // u = axis x n, v = n x u: (u, v, n) is right-handed.
+  u[0] = axis[1] * normal[2] - axis[2] * normal[1];
+  u[1] = axis[2] * normal[0] - axis[0] * normal[2];
+  u[2] = axis[0] * normal[1] - axis[1] * normal[0];
+  const double ul = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+  for (int k = 0; k < 3; ++k)
+  {
+    u[k] /= ul;
+  }
+  v[0] = normal[1] * u[2] - normal[2] * u[1];
+  v[1] = normal[2] * u[0] - normal[0] * u[2];
+  v[2] = normal[0] * u[1] - normal[1] * u[0];
+
+  std::vector<bool> inLoop(xyz.size(), false);
+  for (const auto& l : loops)
+  {
+    for (int p : l)
+    {
+      inLoop[p] = true;
+    }
+  }
+  std::vector<double> pts2(2 * xyz.size());
+  for (size_t i = 0; i < xyz.size(); ++i)
+  {
+    double d[3], h = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      d[k] = xyz[i][k] - origin[k];
+      h += d[k] * normal[k];
+    }
+    pts2[2 * i] = d[0] * u[0] + d[1] * u[1] + d[2] * u[2];
+    pts2[2 * i + 1] = d[0] * v[0] + d[1] * v[1] + d[2] * v[2];
+    if (std::abs(h) > 1e-6 * diag3)
+    {
+      // Only points used by a loop matter.
+      if (inLoop[i])
+      {
+        std::ostringstream os;
+        os << "loops are not coplanar (a point lies " << std::abs(h) / diag3
+           << " diagonals off their plane)";
+        error = os.str();
+        return false;
+      }
+    }
+  }
+
+  // 4. Clean loops: drop repeated points and straight vertices.
+  for (auto& l : loops)
+  {
+    bool changed = true;
+    while (changed && l.size() >= 3)
+    {
+      changed = false;
+      for (size_t i = 0; i < l.size() && l.size() >= 3; ++i)
+      {
+        const size_t n = l.size();
+        const double* a = &pts2[2 * l[(i + n - 1) % n]];
+        const double* b = &pts2[2 * l[i]];
+        const double* c = &pts2[2 * l[(i + 1) % n]];
+        const bool repeated = (a[0] == b[0] && a[1] == b[1]);
+        const bool straight = Cross2(a, b, c) == 0.0 &&
+          ((c[0] - b[0]) * (b[0] - a[0]) + (c[1] - b[1]) * (b[1] - a[1])) > 0.0;
+        if (repeated || straight)
+        {
+          l.erase(l.begin() + static_cast<long>(i));
+          changed = true;
+          --i;
+        }
+      }
+    }
+    if (l.size() < 3)
+    {
+      error = "a loop has fewer than 3 distinct vertices";
+      return false;
+    }
+  }
+
+  // 5. Nesting and orientation.
+  std::vector<double> areas;
+  int outer = 0;
+  for (size_t i = 0; i < loops.size(); ++i)
+  {
+    areas.push_back(SignedArea(pts2, loops[i]));
+    if (std::abs(areas[i]) > std::abs(areas[outer]))
+    {
+      outer = static_cast<int>(i);
+    }
+  }
+
+  // Vertices: one per loop corner (a point shared by two loops is a touch and rejected below).
+  std::vector<std::vector<int>> ordered(loops.size());
+  for (size_t i = 0; i < loops.size(); ++i)
+  {
+    ordered[i] = loops[i];
+    const bool ccw = areas[i] > 0.0;
+    if ((static_cast<int>(i) == outer) != ccw)
+    {
+      std::reverse(ordered[i].begin(), ordered[i].end());
+    }
+  }
+  // Outer first, then holes in input order: deterministic ids.
+  std::vector<int> order = { outer };
+  for (size_t i = 0; i < loops.size(); ++i)
+  {
+    if (static_cast<int>(i) != outer)
+    {
+      order.push_back(static_cast<int>(i));
+    }
+  }
+  this->NumberOfLoops = static_cast<int>(loops.size());
+  this->LoopEdges.assign(loops.size(), {});
+  for (int li = 0; li < this->NumberOfLoops; ++li)
+  {
+    const auto& l = ordered[order[li]];
+    const int first = static_cast<int>(this->Points.size() / 2);
+    for (int p : l)
+    {
+      this->Points.push_back(pts2[2 * p]);
+      this->Points.push_back(pts2[2 * p + 1]);
+    }
+    const int n = static_cast<int>(l.size());
+    for (int i = 0; i < n; ++i)
+    {
+      Edge e;
+      e.A = first + i;
+      e.B = first + (i + 1) % n;
+      e.Loop = li;
+      e.SourceCell = loopCells[order[li]];
+      const double* a = this->GetPoint(e.A);
+      const double* b = this->GetPoint(e.B);
+      const double dx = b[0] - a[0], dy = b[1] - a[1];
+      e.Length = std::sqrt(dx * dx + dy * dy);
+      e.Normal[0] = -dy / e.Length;
+      e.Normal[1] = dx / e.Length;
+      e.Offset = -(e.Normal[0] * a[0] + e.Normal[1] * a[1]);
+      this->LoopEdges[li].push_back(static_cast<int>(this->Edges.size()));
+      this->Edges.push_back(e);
+    }
+  }
+  const int nv = this->GetNumberOfVertices();
+  this->Kinds.assign(nv, CONVEX);
+  this->Incoming.assign(nv, -1);
+  this->Outgoing.assign(nv, -1);
+  for (int e = 0; e < this->GetNumberOfEdges(); ++e)
+  {
+    this->Outgoing[this->Edges[e].A] = e;
+    this->Incoming[this->Edges[e].B] = e;
+  }
+  for (int vtx = 0; vtx < nv; ++vtx)
+  {
+    const Edge& in = this->Edges[this->Incoming[vtx]];
+    const Edge& out = this->Edges[this->Outgoing[vtx]];
+    this->Kinds[vtx] =
+      Cross2(this->GetPoint(in.A), this->GetPoint(vtx), this->GetPoint(out.B)) < 0.0 ? REFLEX : CONVEX;
+  }
+  double lo2[2] = { HUGE_VAL, HUGE_VAL }, hi2[2] = { -HUGE_VAL, -HUGE_VAL };
+  for (int i = 0; i < nv; ++i)
+  {
+    for (int k = 0; k < 2; ++k)
+    {
+      lo2[k] = std::min(lo2[k], this->Points[2 * i + k]);
+      hi2[k] = std::max(hi2[k], this->Points[2 * i + k]);
+    }
+  }
+  this->Diagonal = std::sqrt((hi2[0] - lo2[0]) * (hi2[0] - lo2[0]) + (hi2[1] - lo2[1]) * (hi2[1] - lo2[1]));
+  this->BuildGrid();
+
+  // 6. No edge may touch another, except neighbours at their shared vertex. Two
+  // touching edges share the grid cell of the touching point.
+  for (int cell = 0; cell + 1 < static_cast<int>(this->CellStart.size()); ++cell)
+  {
+    for (int i = this->CellStart[cell]; i < this->CellStart[cell + 1]; ++i)
+    {
+      for (int j = i + 1; j < this->CellStart[cell + 1]; ++j)
+      {
+        const int e = std::min(this->CellEdges[i], this->CellEdges[j]);
+        const int f = std::max(this->CellEdges[i], this->CellEdges[j]);
+        if (e == f || !this->EdgesTouch(e, f))
+        {
+          continue;
+        }
+        double x[3], y[3];
+        this->To3D(this->GetPoint(this->Edges[e].A), x);
+        this->To3D(this->GetPoint(this->Edges[f].A), y);
+        std::ostringstream os;
+        os << "loops intersect themselves or each other (self-intersecting polygon): the edge from ("
+           << x[0] << ", " << x[1] << ", " << x[2] << ") meets the edge from (" << y[0] << ", " << y[1]
+           << ", " << y[2] << ")";
+        error = os.str();
+        return false;
+      }
+    }
+  }
+  if (!(std::abs(areas[outer]) > 0.0))
+  {
+    error = "loops enclose no area";
+    return false;
+  }
+  // Every hole inside the outer loop and in no other hole.
+  for (int li = 1; li < this->NumberOfLoops; ++li)
+  {
+    const double* p = this->GetPoint(this->Edges[this->LoopEdges[li][0]].A);
+    std::vector<int> outerIds;
+    for (int e : this->LoopEdges[0])
+    {
+      outerIds.push_back(this->Edges[e].A);
+    }
+    if (!InsideLoop(this->Points, outerIds, p))
+    {
+      error = "a loop lies outside the outer boundary (only one outer boundary is supported)";
+      return false;
+    }
+    for (int lj = 1; lj < this->NumberOfLoops; ++lj)
+    {
+      std::vector<int> hole;
+      for (int e : this->LoopEdges[lj])
+      {
+        hole.push_back(this->Edges[e].A);
+      }
+      if (lj != li && InsideLoop(this->Points, hole, p))
+      {
+        error = "a loop lies inside a hole (nested islands are not supported)";
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool vtkMedialPolygon::EdgesTouch(int e, int f) const
+{
+  const Edge& E = this->Edges[e];
+  const Edge& F = this->Edges[f];
+  const double* a = this->GetPoint(E.A);
+  const double* b = this->GetPoint(E.B);
+  const double* c = this->GetPoint(F.A);
+  const double* d = this->GetPoint(F.B);
+  if (F.A == E.B && F.B == E.A)
+  {
+    return true; // a two-edge loop
+  }
+  if (F.A == E.B || F.B == E.A)
+  {
+    // Neighbours share a vertex; they must not fold back onto each other.
+    const double* shared = F.A == E.B ? b : a;
+    const double* p = F.A == E.B ? a : b;
+    const double* q = F.A == E.B ? d : c;
+    return Cross2(p, shared, q) == 0.0 &&
+      (q[0] - shared[0]) * (p[0] - shared[0]) + (q[1] - shared[1]) * (p[1] - shared[1]) > 0.0;
+  }
+  return SegmentsTouch(a, b, c, d);
+}
+
+void vtkMedialPolygon::BuildGrid()
+{
+  double lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL };
+  const int nv = this->GetNumberOfVertices();
+  for (int i = 0; i < nv; ++i)
+  {
+    for (int k = 0; k < 2; ++k)
+    {
+      lo[k] = std::min(lo[k], this->Points[2 * i + k]);
+      hi[k] = std::max(hi[k], this->Points[2 * i + k]);
+    }
+  }
+  const double w = std::max(hi[0] - lo[0], 1e-300), h = std::max(hi[1] - lo[1], 1e-300);
+  const double ne = std::max<double>(1, this->Edges.size());
+  // About two cells per edge.
+  this->CellSize = std::max(std::sqrt(w * h / (2.0 * ne)), 1e-3 * std::max(w, h));
+  for (int k = 0; k < 2; ++k)
+  {
+    const double ext = (k == 0 ? w : h);
+    this->Dims[k] = std::max(1, std::min(4096, static_cast<int>(std::ceil(ext / this->CellSize)) + 1));
+    this->GridOrigin[k] = lo[k] - 0.5 * (this->Dims[k] * this->CellSize - ext);
+  }
+  const int cells = this->Dims[0] * this->Dims[1];
+  std::vector<std::vector<int>> bins(static_cast<size_t>(cells));
+  const double halfDiag = this->CellSize * 0.7072;
+  for (int e = 0; e < this->GetNumberOfEdges(); ++e)
+  {
+    const double* a = this->GetPoint(this->Edges[e].A);
+    const double* b = this->GetPoint(this->Edges[e].B);
+    int i0, i1, j0, j1;
+    this->CellRange(std::min(a[0], b[0]), std::max(a[0], b[0]), 0, i0, i1);
+    this->CellRange(std::min(a[1], b[1]), std::max(a[1], b[1]), 1, j0, j1);
+    for (int j = j0; j <= j1; ++j)
+    {
+      for (int i = i0; i <= i1; ++i)
+      {
+        const double c[2] = { this->GridOrigin[0] + (i + 0.5) * this->CellSize,
+          this->GridOrigin[1] + (j + 0.5) * this->CellSize };
+        double q[2];
+        if (this->ClosestPointOnEdge(e, c, nullptr, q) <= halfDiag * halfDiag)
+        {
+          bins[j * this->Dims[0] + i].push_back(e);
+        }
+      }
+    }
+  }
+  this->CellStart.assign(static_cast<size_t>(cells) + 1, 0);
+  this->CellEdges.clear();
+  for (int c = 0; c < cells; ++c)
+  {
+    this->CellStart[c] = static_cast<int>(this->CellEdges.size());
+    this->CellEdges.insert(this->CellEdges.end(), bins[c].begin(), bins[c].end());
+  }
+  this->CellStart[cells] = static_cast<int>(this->CellEdges.size());
+
+  // Chebyshev distance (in cells) to the nearest cell with edges: closest-point
+  // searches skip that many rings of empty cells (empty disks are large and empty).
+  this->EmptyRings.assign(static_cast<size_t>(cells), -1);
+  std::vector<int> front;
+  for (int c = 0; c < cells; ++c)
+  {
+    if (this->CellStart[c + 1] > this->CellStart[c])
+    {
+      this->EmptyRings[c] = 0;
+      front.push_back(c);
+    }
+  }
+  for (size_t head = 0; head < front.size(); ++head)
+  {
+    const int c = front[head];
+    const int ci = c % this->Dims[0], cj = c / this->Dims[0];
+    for (int dj = -1; dj <= 1; ++dj)
+    {
+      for (int di = -1; di <= 1; ++di)
+      {
+        const int i = ci + di, j = cj + dj;
+        if (i < 0 || j < 0 || i >= this->Dims[0] || j >= this->Dims[1])
+        {
+          continue;
+        }
+        const int n = j * this->Dims[0] + i;
+        if (this->EmptyRings[n] < 0)
+        {
+          this->EmptyRings[n] = this->EmptyRings[c] + 1;
+          front.push_back(n);
+        }
+      }
+    }
+  }
+}
+
+void vtkMedialPolygon::CellRange(double lo, double hi, int axis, int& first, int& last) const
+{
+  const double f = std::floor((lo - this->GridOrigin[axis]) / this->CellSize);
+  const double l = std::floor((hi - this->GridOrigin[axis]) / this->CellSize);
+  first = static_cast<int>(std::max(0.0, std::min(f, this->Dims[axis] - 1.0)));
+  last = static_cast<int>(std::max(0.0, std::min(l, this->Dims[axis] - 1.0)));
+}
+
+void vtkMedialPolygon::To3D(const double p[2], double x[3]) const
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    x[k] = this->Frame[0][k] + p[0] * this->Frame[1][k] + p[1] * this->Frame[2][k];
+  }
+}
+
+double vtkMedialPolygon::ClosestPointOnEdge(
+  int e, const double x[2], const ContactFilter* filter, double out[2]) const
+{
+  const double* a = this->GetPoint(this->Edges[e].A);
+  const double* b = this->GetPoint(this->Edges[e].B);
+  double t0 = 0.0, t1 = 1.0;
+  const double d[2] = { b[0] - a[0], b[1] - a[1] };
+  if (filter && filter->UseCap)
+  {
+    // Keep the part where Cap . (a + t d) <= CapLimit.
+    const double s0 = filter->Cap[0] * a[0] + filter->Cap[1] * a[1] - filter->CapLimit;
+    const double sd = filter->Cap[0] * d[0] + filter->Cap[1] * d[1];
+    if (sd == 0.0)
+    {
+      if (s0 > 0.0)
+      {
+        return HUGE_VAL;
+      }
+    }
+    else
+    {
+      const double tc = -s0 / sd;
+      if (sd > 0.0)
+      {
+        t1 = std::min(t1, tc);
+      }
+      else
+      {
+        t0 = std::max(t0, tc);
+      }
+      if (t0 > t1)
+      {
+        return HUGE_VAL;
+      }
+    }
+  }
+  const double len2 = d[0] * d[0] + d[1] * d[1];
+  double t = ((x[0] - a[0]) * d[0] + (x[1] - a[1]) * d[1]) / len2;
+  t = std::min(t1, std::max(t0, t));
+  if (t == 0.0)
+  {
+    out[0] = a[0];
+    out[1] = a[1];
+  }
+  else if (t == 1.0)
+  {
+    out[0] = b[0];
+    out[1] = b[1];
+  }
+  else
+  {
+    out[0] = a[0] + t * d[0];
+    out[1] = a[1] + t * d[1];
+  }
+  const double dx = out[0] - x[0], dy = out[1] - x[1];
+  return dx * dx + dy * dy;
+}
+
+bool vtkMedialPolygon::ClosestPoint(const double x[2], double upperBound, const ContactFilter* filter,
+  double point[2], double& distance, int& edge) const
+{
+  if (!(upperBound > 0.0))
+  {
+    return false;
+  }
+  double best2 = upperBound * upperBound;
+  bool found = false;
+  const int ci = static_cast<int>(
+    std::max(0.0, std::min(std::floor((x[0] - this->GridOrigin[0]) / this->CellSize), this->Dims[0] - 1.0)));
+  const int cj = static_cast<int>(
+    std::max(0.0, std::min(std::floor((x[1] - this->GridOrigin[1]) / this->CellSize), this->Dims[1] - 1.0)));
+  // Distance from x to the grid box; rings closer than that are empty.
+  const double gx = std::max({ 0.0, this->GridOrigin[0] - x[0], x[0] - (this->GridOrigin[0] + this->Dims[0] * this->CellSize) });
+  const double gy = std::max({ 0.0, this->GridOrigin[1] - x[1], x[1] - (this->GridOrigin[1] + this->Dims[1] * this->CellSize) });
+  const double outside = std::sqrt(gx * gx + gy * gy);
+  const int maxRing = std::max(this->Dims[0], this->Dims[1]);
+  // Long edges sit in many cells: test each once per query.
+  thread_local std::vector<unsigned> stamps;
+  thread_local unsigned stamp = 0;
+  if (stamps.size() != this->Edges.size() || ++stamp == 0)
+  {
+    stamps.assign(this->Edges.size(), 0);
+    stamp = 1;
+  }
+  auto visitCell = [&](int i, int j) {
+    // Skip cells that lie entirely beyond the best distance so far.
+    const double x0 = this->GridOrigin[0] + i * this->CellSize - x[0];
+    const double y0 = this->GridOrigin[1] + j * this->CellSize - x[1];
+    const double dx = std::max({ 0.0, x0, -(x0 + this->CellSize) });
+    const double dy = std::max({ 0.0, y0, -(y0 + this->CellSize) });
+    if (dx * dx + dy * dy >= best2)
+    {
+      return;
+    }
+    const int c = j * this->Dims[0] + i;
+    for (int k = this->CellStart[c]; k < this->CellStart[c + 1]; ++k)
+    {
+      const int e = this->CellEdges[k];
+      if (stamps[e] == stamp || (filter && (e == filter->IgnoreEdge[0] || e == filter->IgnoreEdge[1])))
+      {
+        continue;
+      }
+      stamps[e] = stamp;
+      double q[2];
+      const double d2 = this->ClosestPointOnEdge(e, x, filter, q);
+      if (d2 < best2)
+      {
+        best2 = d2;
+        point[0] = q[0];
+        point[1] = q[1];
+        edge = e;
+        found = true;
+      }
+    }
+  };
+  for (int ring = std::max(0, this->EmptyRings[cj * this->Dims[0] + ci]); ring <= maxRing; ++ring)
+  {
+    // Cells of ring k are at least (k - 1) * CellSize away from x (or the grid's distance).
+    const double reach = std::max(outside, (ring - 1) * this->CellSize);
+    if (reach * reach >= best2)
+    {
+      break;
+    }
+    const int i0 = ci - ring, i1 = ci + ring, j0 = cj - ring, j1 = cj + ring;
+    for (int i = std::max(0, i0); i <= std::min(this->Dims[0] - 1, i1); ++i)
+    {
+      if (j0 >= 0)
+      {
+        visitCell(i, j0);
+      }
+      if (j1 < this->Dims[1] && j1 != j0)
+      {
+        visitCell(i, j1);
+      }
+    }
+    for (int j = std::max(0, j0 + 1); j <= std::min(this->Dims[1] - 1, j1 - 1); ++j)
+    {
+      if (i0 >= 0)
+      {
+        visitCell(i0, j);
+      }
+      if (i1 < this->Dims[0] && i1 != i0)
+      {
+        visitCell(i1, j);
+      }
+    }
+  }
+  if (found)
+  {
+    distance = std::sqrt(best2);
+  }
+  return found;
+}
+
+bool vtkMedialPolygon::ContainsBall(const double centre[2], double radius, const ContactFilter* filter) const
+{
+  if (!(radius > 0.0))
+  {
+    return true;
+  }
+  bool blocked = false;
+  const double r2 = radius * radius;
+  this->VisitEdgesNear(centre, radius, [&](int e) {
+    if (blocked || (filter && (e == filter->IgnoreEdge[0] || e == filter->IgnoreEdge[1])))
+    {
+      return;
+    }
+    double q[2];
+    blocked = this->ClosestPointOnEdge(e, centre, filter, q) < r2;
+  });
+  return !blocked;
+}
+
+bool vtkMedialPolygon::Intersect(const double origin[2], const double direction[2], double tMin,
+  double tMax, const ContactFilter* filter, double& tHit, int& edgeHit) const
+{
+  // Amanatides-Woo walk through the grid; a cell's edges are tested in full, so a
+  // hit is final once it lies before the next cell boundary.
+  double best = tMax;
+  bool found = false;
+  double tEnter = 0.0;
+  double p[2] = { origin[0], origin[1] };
+  // Clip the ray start to the grid box.
+  {
+    double t0 = 0.0, t1 = HUGE_VAL;
+    for (int k = 0; k < 2; ++k)
+    {
+      const double lo = this->GridOrigin[k], hi = lo + this->Dims[k] * this->CellSize;
+      if (direction[k] == 0.0)
+      {
+        if (origin[k] < lo || origin[k] > hi)
+        {
+          return false;
+        }
+        continue;
+      }
+      double a = (lo - origin[k]) / direction[k], b = (hi - origin[k]) / direction[k];
+      if (a > b)
+      {
+        std::swap(a, b);
+      }
+      t0 = std::max(t0, a);
+      t1 = std::min(t1, b);
+    }
+    if (t0 > t1)
+    {
+      return false;
+    }
+    tEnter = t0;
+    p[0] = origin[0] + t0 * direction[0];
+    p[1] = origin[1] + t0 * direction[1];
+  }
+  int cell[2], step[2];
+  double tNext[2], tDelta[2];
+  for (int k = 0; k < 2; ++k)
+  {
+    cell[k] = static_cast<int>(std::max(0.0,
+      std::min(std::floor((p[k] - this->GridOrigin[k]) / this->CellSize), this->Dims[k] - 1.0)));
+    step[k] = direction[k] > 0 ? 1 : -1;
+    if (direction[k] == 0.0)
+    {
+      tNext[k] = HUGE_VAL;
+      tDelta[k] = HUGE_VAL;
+    }
+    else
+    {
+      const double boundary = this->GridOrigin[k] + (cell[k] + (direction[k] > 0 ? 1 : 0)) * this->CellSize;
+      tNext[k] = (boundary - origin[k]) / direction[k];
+      tDelta[k] = this->CellSize / std::abs(direction[k]);
+    }
+  }
+  (void)tEnter;
+  for (;;)
+  {
+    const int c = cell[1] * this->Dims[0] + cell[0];
+    for (int k = this->CellStart[c]; k < this->CellStart[c + 1]; ++k)
+    {
+      const int e = this->CellEdges[k];
+      if (filter && (e == filter->IgnoreEdge[0] || e == filter->IgnoreEdge[1]))
+      {
+        continue;
+      }
+      const double* a = this->GetPoint(this->Edges[e].A);
+      const double* b = this->GetPoint(this->Edges[e].B);
+      const double s[2] = { b[0] - a[0], b[1] - a[1] };
+      const double denom = direction[0] * s[1] - direction[1] * s[0];
+      if (denom == 0.0)
+      {
+        continue;
+      }
+      const double w[2] = { a[0] - origin[0], a[1] - origin[1] };
+      const double t = (w[0] * s[1] - w[1] * s[0]) / denom;
+      const double u = (w[0] * direction[1] - w[1] * direction[0]) / denom;
+      // A ray through a vertex may miss both of its edges by a rounding error.
+      if (u >= -1e-12 && u <= 1.0 + 1e-12 && t > tMin && t < best)
+      {
+        best = t;
+        edgeHit = e;
+        found = true;
+      }
+    }
+    const int axis = tNext[0] < tNext[1] ? 0 : 1;
+    if (found && best <= tNext[axis])
+    {
+      break;
+    }
+    if (tNext[axis] > tMax)
+    {
+      break;
+    }
+    cell[axis] += step[axis];
+    if (cell[axis] < 0 || cell[axis] >= this->Dims[axis])
+    {
+      break;
+    }
+    tNext[axis] += tDelta[axis];
+  }
+  if (found)
+  {
+    tHit = best;
+  }
+  return found;
+}
