@@ -235,7 +235,7 @@ int main(int argc, char* argv[])
   sphere->Update();
   double itSphere;
   vtkIdType cappedSphere;
-  const double sphereMicro = RunSampler(sphere->GetOutput(), defaultMethod, 2, 2000, itSphere, cappedSphere);
+  const double sphereMicro = RunSampler(sphere->GetOutput(), defaultMethod, 2, 300, itSphere, cappedSphere);
   const double rss = PeakRssMiB();
 
   if (json)
