@@ -4,6 +4,7 @@
 #include "vtkMedialGeometry.h"
 #include "vtkMedialPolygon.h"
 #include "vtkMedialRandom.h"
+#include "vtkMedialSampleRecord.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
 
@@ -34,18 +35,7 @@ namespace
 {
 namespace G = vtkMedialGeometry;
 
-struct SampleResult
-{
-  double Centre[3];
-  double Radius;
-  double Surface[3];
-  double Contact[3];
-  double Angle;
-  vtkIdType Triangle;
-  int Iterations;
-  bool Valid;
-  bool Capped;
-};
+using SampleResult = vtkMedialSampleRecord;
 
 struct BallParameters
 {
@@ -85,7 +75,7 @@ void SolveBall(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& 
   out.Valid = false;
   out.Capped = false;
   out.Iterations = 0;
-  out.Triangle = triangle;
+  out.SourceCell = mesh.SourceCellIds[triangle];
   std::copy(p, p + 3, out.Surface);
   const double* outward = mesh.GetNormal(triangle);
   const double n[3] = { -outward[0], -outward[1], -outward[2] };
@@ -326,16 +316,30 @@ int vtkMedialAxisSampler::RequestData(
     return 1; // aborted: leave the output empty
   }
 
+  this->WriteSamples(output, count, results);
+
+  if (mesh.BoundaryEdges > 0)
+  {
+    vtkWarningMacro(<< "Input surface is open (" << mesh.BoundaryEdges << " boundary edges): "
+                    << this->DiscardedSamples << " of " << count
+                    << " samples were discarded because their ray escaped through a hole.");
+  }
+  return 1;
+}
+
+void vtkMedialAxisSampler::WriteSamples(
+  vtkPolyData* output, vtkIdType requested, const std::vector<vtkMedialSampleRecord>& records)
+{
   vtkIdType accepted = 0;
   long long iterations = 0;
-  for (const SampleResult& r : results)
+  for (const vtkMedialSampleRecord& r : records)
   {
     accepted += r.Valid ? 1 : 0;
     iterations += r.Iterations;
     this->CappedSamples += r.Capped ? 1 : 0;
   }
-  this->DiscardedSamples = count - accepted;
-  this->MeanIterations = count > 0 ? static_cast<double>(iterations) / count : 0.0;
+  this->DiscardedSamples = requested - accepted;
+  this->MeanIterations = requested > 0 ? static_cast<double>(iterations) / requested : 0.0;
 
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -354,11 +358,10 @@ int vtkMedialAxisSampler::RequestData(
   vtkNew<vtkIdTypeArray> cells;
   cells->SetName("SourceCellId");
   cells->SetNumberOfTuples(accepted);
-  vtkNew<vtkCellArray> verts;
   vtkNew<vtkIdTypeArray> connectivity;
   connectivity->SetNumberOfTuples(accepted);
   vtkIdType k = 0;
-  for (const SampleResult& r : results)
+  for (const vtkMedialSampleRecord& r : records)
   {
     if (!r.Valid)
     {
@@ -369,7 +372,7 @@ int vtkMedialAxisSampler::RequestData(
     surface->SetTypedTuple(k, r.Surface);
     contact->SetTypedTuple(k, r.Contact);
     angle->SetValue(k, r.Angle);
-    cells->SetValue(k, mesh.SourceCellIds[r.Triangle]);
+    cells->SetValue(k, r.SourceCell);
     connectivity->SetValue(k, k);
     ++k;
   }
@@ -379,6 +382,7 @@ int vtkMedialAxisSampler::RequestData(
   {
     offsets->SetValue(i, i);
   }
+  vtkNew<vtkCellArray> verts;
   verts->SetData(offsets, connectivity);
   output->SetPoints(points);
   output->SetVerts(verts);
@@ -395,18 +399,10 @@ int vtkMedialAxisSampler::RequestData(
     a->InsertNextValue(value);
     output->GetFieldData()->AddArray(a);
   };
-  addField("RequestedSamples", static_cast<double>(count));
+  addField("RequestedSamples", static_cast<double>(requested));
   addField("DiscardedSamples", static_cast<double>(this->DiscardedSamples));
   addField("MeanIterations", this->MeanIterations);
   addField("CappedSamples", static_cast<double>(this->CappedSamples));
-
-  if (mesh.BoundaryEdges > 0)
-  {
-    vtkWarningMacro(<< "Input surface is open (" << mesh.BoundaryEdges << " boundary edges): "
-                    << this->DiscardedSamples << " of " << count
-                    << " samples were discarded because their ray escaped through a hole.");
-  }
-  return 1;
 }
 
 void vtkMedialAxisSampler::PrintSelf(ostream& os, vtkIndent indent)

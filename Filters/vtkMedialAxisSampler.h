@@ -66,6 +66,10 @@
 #include "vtkMedialAxisFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include <vector> // for std::vector
+
+struct vtkMedialSampleRecord;
+
 class VTKMEDIALAXISFILTERS_EXPORT vtkMedialAxisSampler : public vtkPolyDataAlgorithm
 {
 public:
@@ -143,6 +147,11 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   /// The 2D mode, for planar polygons or closed polylines (see vtkMedialAxisSampler2D.cxx).
   int RequestData2D(vtkPolyData* input, vtkInformation* outInfo, vtkPolyData* output);
+
+  // Turns the valid records into output vertices, point data and field data, and
+  // sets DiscardedSamples, CappedSamples and MeanIterations. Shared by 2D and 3D.
+  void WriteSamples(
+    vtkPolyData* output, vtkIdType requested, const std::vector<vtkMedialSampleRecord>& records);
 
   vtkIdType NumberOfSamples = 10000;
   int Method = BISECTION;

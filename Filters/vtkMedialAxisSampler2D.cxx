@@ -5,6 +5,7 @@
 #include "vtkMedialAxisSampler.h"
 
 #include "vtkMedialPolygon.h"
+#include "vtkMedialSampleRecord.h"
 #include "vtkMedialRandom.h"
 
 #include "vtkCellArray.h"
@@ -235,72 +236,26 @@ int vtkMedialAxisSampler::RequestData2D(vtkPolyData* input, vtkInformation* outI
     return 1;
   }
 
-  vtkIdType accepted = 0;
-  long long iterations = 0;
-  for (const Sample2D& r : results)
+  // Back to 3D coordinates, then the output shared with the 3D path.
+  std::vector<vtkMedialSampleRecord> records(results.size());
+  for (size_t i = 0; i < results.size(); ++i)
   {
-    accepted += r.Valid ? 1 : 0;
-    iterations += r.Iterations;
-    this->CappedSamples += r.Capped ? 1 : 0;
-  }
-  this->DiscardedSamples = count - accepted;
-  this->MeanIterations = count > 0 ? static_cast<double>(iterations) / count : 0.0;
-
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(accepted);
-  auto makeArray = [accepted](const char* name, int components) {
-    vtkNew<vtkDoubleArray> a;
-    a->SetName(name);
-    a->SetNumberOfComponents(components);
-    a->SetNumberOfTuples(accepted);
-    return a;
-  };
-  auto radius = makeArray("Radius", 1);
-  auto surface = makeArray("SurfacePoint", 3);
-  auto contact = makeArray("ContactPoint", 3);
-  auto angle = makeArray("SeparationAngle", 1);
-  vtkNew<vtkIdTypeArray> cells;
-  cells->SetName("SourceCellId");
-  cells->SetNumberOfTuples(accepted);
-  vtkNew<vtkCellArray> verts;
-  vtkIdType k = 0;
-  for (const Sample2D& r : results)
-  {
+    const Sample2D& r = results[i];
+    vtkMedialSampleRecord& record = records[i];
+    record.Valid = r.Valid;
+    record.Capped = r.Capped;
+    record.Iterations = r.Iterations;
     if (!r.Valid)
     {
       continue;
     }
-    double x[3];
-    poly.To3D(r.Centre, x);
-    points->SetPoint(k, x);
-    radius->SetValue(k, r.Radius);
-    poly.To3D(r.Surface, x);
-    surface->SetTypedTuple(k, x);
-    poly.To3D(r.Contact, x);
-    contact->SetTypedTuple(k, x);
-    angle->SetValue(k, r.Angle);
-    cells->SetValue(k, poly.GetEdge(r.Edge).SourceCell);
-    verts->InsertNextCell(1, &k);
-    ++k;
+    poly.To3D(r.Centre, record.Centre);
+    poly.To3D(r.Surface, record.Surface);
+    poly.To3D(r.Contact, record.Contact);
+    record.Radius = r.Radius;
+    record.Angle = r.Angle;
+    record.SourceCell = poly.GetEdge(r.Edge).SourceCell;
   }
-  output->SetPoints(points);
-  output->SetVerts(verts);
-  output->GetPointData()->AddArray(radius);
-  output->GetPointData()->SetActiveScalars("Radius");
-  output->GetPointData()->AddArray(surface);
-  output->GetPointData()->AddArray(contact);
-  output->GetPointData()->AddArray(angle);
-  output->GetPointData()->AddArray(cells);
-  auto addField = [output](const char* name, double value) {
-    vtkNew<vtkDoubleArray> a;
-    a->SetName(name);
-    a->InsertNextValue(value);
-    output->GetFieldData()->AddArray(a);
-  };
-  addField("RequestedSamples", static_cast<double>(count));
-  addField("DiscardedSamples", static_cast<double>(this->DiscardedSamples));
-  addField("MeanIterations", this->MeanIterations);
-  addField("CappedSamples", static_cast<double>(this->CappedSamples));
+  this->WriteSamples(output, count, records);
   return 1;
 }
