@@ -334,6 +334,14 @@ void CheckWritable(const std::string& path, const char* what)
   }
 }
 
+template <class Reader>
+vtkSmartPointer<vtkAlgorithm> FileReader(const std::string& path)
+{
+  auto reader = vtkSmartPointer<Reader>::New();
+  reader->SetFileName(path.c_str());
+  return reader;
+}
+
 vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, MessageSink& sink)
 {
   struct stat st;
@@ -350,45 +358,34 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, MessageSink& s
     Fail("input '" + path + "' is empty");
   }
   const std::string ext = Extension(path);
-  vtkSmartPointer<vtkAlgorithm> reader;
+  vtkSmartPointer<vtkAlgorithm> reader, legacy;
   if (ext == ".vtp")
   {
-    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    reader = FileReader<vtkXMLPolyDataReader>(path);
   }
   else if (ext == ".vtk")
   {
     // Any legacy dataset; its surface is extracted.
-    auto r = vtkSmartPointer<vtkDataSetReader>::New();
-    r->SetFileName(path.c_str());
+    legacy = FileReader<vtkDataSetReader>(path); // kept alive: the connection does not own it
     auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
-    surface->SetInputConnection(r->GetOutputPort());
+    surface->SetInputConnection(legacy->GetOutputPort());
     reader = surface;
   }
   else if (ext == ".ply")
   {
-    auto r = vtkSmartPointer<vtkPLYReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    reader = FileReader<vtkPLYReader>(path);
   }
   else if (ext == ".stl")
   {
-    auto r = vtkSmartPointer<vtkSTLReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    reader = FileReader<vtkSTLReader>(path);
   }
   else if (ext == ".obj")
   {
-    auto r = vtkSmartPointer<vtkOBJReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    reader = FileReader<vtkOBJReader>(path);
   }
   else if (ext == ".off")
   {
-    auto r = vtkSmartPointer<vtkOFFReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    reader = FileReader<vtkOFFReader>(path);
   }
   else
   {
