@@ -492,6 +492,22 @@ void AddReconstructionView(vtkRenderWindow* window, vtkRenderer* left, vtkPolyDa
   window->SetSize(2 * size[0], size[1]);
 }
 
+// Saves what the window shows as a PNG; fails with the writer's reason.
+void WritePng(vtkRenderWindow* window, const std::string& path, MessageSink& sink)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  vtkNew<vtkPNGWriter> png;
+  png->SetInputConnection(grab->GetOutputPort());
+  png->SetFileName(path.c_str());
+  png->Write();
+  if (!sink.LastError.empty())
+  {
+    Fail("cannot write '" + path + "': " + sink.LastError);
+  }
+}
+
 void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, MessageSink& sink,
   vtkPolyData* reconstruction = nullptr)
 {
@@ -556,17 +572,7 @@ void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, 
     AddReconstructionView(window, renderer, reconstruction);
   }
   window->Render();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff();
-  vtkNew<vtkPNGWriter> png;
-  png->SetInputConnection(grab->GetOutputPort());
-  png->SetFileName(path.c_str());
-  png->Write();
-  if (!sink.LastError.empty())
-  {
-    Fail("cannot write '" + path + "': " + sink.LastError);
-  }
+  WritePng(window, path, sink);
 }
 
 // JSON members for --reconstruct; the Hausdorff figures only for a closed input.
@@ -844,17 +850,7 @@ void Render2D(vtkPolyData* polygon, vtkPolyData* graph, const std::string& path,
   window->SetSize(900, 700);
   window->AddRenderer(renderer);
   window->Render();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff();
-  vtkNew<vtkPNGWriter> png;
-  png->SetInputConnection(grab->GetOutputPort());
-  png->SetFileName(path.c_str());
-  png->Write();
-  if (!sink.LastError.empty())
-  {
-    Fail("cannot write '" + path + "': " + sink.LastError);
-  }
+  WritePng(window, path, sink);
 }
 
 std::string JsonString(const std::string& s)
