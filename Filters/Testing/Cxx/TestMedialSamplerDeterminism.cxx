@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The same seed gives bit-identical output with 1 and 2 threads, and a mesh with
-// every triangle's winding reversed (all normals flipped) gives the same output.
+// every triangle's winding reversed (all normals flipped), or with every other
+// triangle reversed (mixed orientation), gives the same output.
 #include "MedialTestUtilities.h"
 
+#include "vtkCellArray.h"
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkReverseSense.h"
@@ -59,9 +61,29 @@ int TestMedialSamplerDeterminism(int, char*[])
   reverse->ReverseCellsOn();
   reverse->ReverseNormalsOn();
 
+  // Mixed orientation: every other triangle's winding reversed.
+  jack->Update();
+  vtkNew<vtkPolyData> mixed;
+  mixed->SetPoints(jack->GetOutput()->GetPoints());
+  vtkNew<vtkCellArray> mixedCells;
+  for (vtkIdType c = 0; c < jack->GetOutput()->GetNumberOfCells(); ++c)
+  {
+    vtkIdType n;
+    const vtkIdType* pts;
+    jack->GetOutput()->GetCellPoints(c, n, pts);
+    const vtkIdType reversed[3] = { pts[2], pts[1], pts[0] };
+    mixedCells->InsertNextCell(3, c % 2 ? reversed : pts);
+  }
+  mixed->SetPolys(mixedCells);
+
   for (int method : { vtkMedialAxisSampler::BISECTION, vtkMedialAxisSampler::SHRINKING_BALL })
   {
-    vtkNew<vtkMedialAxisSampler> one, two, flipped;
+    vtkNew<vtkMedialAxisSampler> one, two, flipped, mixedSampler;
+    mixedSampler->SetNumberOfSamples(4000);
+    mixedSampler->SetRandomSeed(99);
+    mixedSampler->SetMethod(method);
+    mixedSampler->SetInputData(mixed);
+    mixedSampler->Update();
     for (vtkMedialAxisSampler* s : { one.Get(), two.Get(), flipped.Get() })
     {
       s->SetNumberOfSamples(4000);
@@ -84,6 +106,9 @@ int TestMedialSamplerDeterminism(int, char*[])
     std::printf("%s: values differing 1 vs 2 threads: %lld; original vs flipped: %lld\n", m, threads, flips);
     MEDIAL_CHECK(threads == 0, "%s: thread count changed %lld values", m, threads);
     MEDIAL_CHECK(flips == 0, "%s: flipping the winding changed %lld values", m, flips);
+    const long long mixes = Differences(one->GetOutput(), mixedSampler->GetOutput());
+    std::printf("%s: original vs mixed orientation: %lld\n", m, mixes);
+    MEDIAL_CHECK(mixes == 0, "%s: mixed orientation changed %lld values", m, mixes);
 
     // A different seed must give a different sample set (the seed is honoured).
     one->SetRandomSeed(100);

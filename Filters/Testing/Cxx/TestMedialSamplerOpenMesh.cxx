@@ -8,6 +8,7 @@
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkOBJReader.h"
+#include "vtkPoints.h"
 
 #include <cstdlib>
 
@@ -64,6 +65,54 @@ int TestMedialSamplerOpenMesh(int, char*[])
     const double centre = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
     MEDIAL_CHECK(centre < 1.0 && Value(out, "Radius", i) <= 1.0, "ball %lld: |c| %g r %g",
       static_cast<long long>(i), centre, Value(out, "Radius", i));
+  }
+
+  // Non-manifold: two boxes sharing one edge (4 triangles meet there). Warned, not fatal.
+  {
+    vtkNew<vtkMedialShapeSource> box;
+    box->SetShapeToBox();
+    box->SetBoxLengths(1, 1, 1);
+    box->SetResolution(1);
+    box->Update();
+    vtkPolyData* b = box->GetOutput();
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkCellArray> cells;
+    for (int copy = 0; copy < 2; ++copy)
+    {
+      for (vtkIdType i = 0; i < b->GetNumberOfPoints(); ++i)
+      {
+        double x[3];
+        b->GetPoint(i, x);
+        // The second box sits diagonally, touching the first along its edge x = y = 0.5.
+        points->InsertNextPoint(x[0] + copy, x[1] + copy, x[2]);
+      }
+      for (vtkIdType c = 0; c < b->GetNumberOfCells(); ++c)
+      {
+        vtkIdType n;
+        const vtkIdType* pts;
+        b->GetCellPoints(c, n, pts);
+        vtkIdType shifted[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          shifted[k] = pts[k] + copy * b->GetNumberOfPoints();
+        }
+        cells->InsertNextCell(3, shifted);
+      }
+    }
+    vtkNew<vtkPolyData> pair;
+    pair->SetPoints(points);
+    pair->SetPolys(cells);
+    EventLog pairLog;
+    vtkNew<vtkMedialAxisSampler> pairSampler;
+    pairLog.Watch(pairSampler);
+    pairSampler->SetInputData(pair);
+    pairSampler->SetNumberOfSamples(1000);
+    pairSampler->Update();
+    std::printf("two boxes sharing an edge: %d warning(s), %d error(s), %lld points\n", pairLog.Warnings,
+      pairLog.Errors, static_cast<long long>(pairSampler->GetOutput()->GetNumberOfPoints()));
+    MEDIAL_CHECK(pairLog.Errors == 0 && pairLog.Text.find("1 non-manifold edges") != std::string::npos,
+      "non-manifold warning missing: %s", pairLog.Text.c_str());
+    MEDIAL_CHECK(pairSampler->GetOutput()->GetNumberOfPoints() == 1000, "non-manifold pair lost samples");
   }
 
   const std::string bunny = SharedMesh("stanford-bunny.obj");
