@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Helpers shared by the filter tests: error capture, array access, shared-mesh lookup.
+// Helpers shared by the filter tests: array access, shared-mesh lookup (error capture
+// and MEDIAL_CHECK come from Testing/Cxx/MedialTestSupport.h).
 #ifndef MedialTestUtilities_h
 #define MedialTestUtilities_h
 
-#include "vtkCallbackCommand.h"
-#include "vtkCommand.h"
+#include "MedialTestSupport.h"
+
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkNew.h"
@@ -20,29 +21,6 @@
 
 namespace medialtest
 {
-/// Counts error and warning events of the objects it watches, keeping the texts.
-struct EventLog
-{
-  int Errors = 0;
-  int Warnings = 0;
-  std::string Text;
-  vtkNew<vtkCallbackCommand> Command;
-  EventLog()
-  {
-    this->Command->SetClientData(this);
-    this->Command->SetCallback([](vtkObject*, unsigned long event, void* client, void* data) {
-      auto* self = static_cast<EventLog*>(client);
-      (event == vtkCommand::ErrorEvent ? self->Errors : self->Warnings)++;
-      self->Text += data ? static_cast<const char*>(data) : "";
-    });
-  }
-  void Watch(vtkObject* o)
-  {
-    o->AddObserver(vtkCommand::ErrorEvent, this->Command);
-    o->AddObserver(vtkCommand::WarningEvent, this->Command);
-  }
-};
-
 inline double Value(vtkPolyData* pd, const char* name, vtkIdType i, int c = 0)
 {
   return pd->GetPointData()->GetArray(name)->GetComponent(i, c);
@@ -77,17 +55,6 @@ inline double Median(std::vector<double> v)
   return v[v.size() / 2];
 }
 
-#define MEDIAL_CHECK(cond, ...)                                                                    \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(cond))                                                                                   \
-    {                                                                                              \
-      std::printf("FAILED %s:%d: %s: ", __FILE__, __LINE__, #cond);                                 \
-      std::printf(__VA_ARGS__);                                                                    \
-      std::printf("\n");                                                                           \
-      return EXIT_FAILURE;                                                                         \
-    }                                                                                              \
-  } while (0)
 }
 
 #endif

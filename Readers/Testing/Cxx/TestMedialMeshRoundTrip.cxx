@@ -128,36 +128,36 @@ int CheckExactRoundTrip(const TempDir& dir)
   Add(pd->GetStrips(), { 2, 3, 4, 5 }); // strip: two triangles, alternating order
 
   const std::string first = dir.File("exact.ma");
-  READER_CHECK(Write(pd, first), "writing exact.ma failed");
+  MEDIAL_CHECK(Write(pd, first), "writing exact.ma failed");
   const std::string text = Slurp(first);
-  READER_CHECK(text.rfind("6 3 3\n", 0) == 0, "header is not '6 3 3': %s", text.c_str());
+  MEDIAL_CHECK(text.rfind("6 3 3\n", 0) == 0, "header is not '6 3 3': %s", text.c_str());
   const ReadResult back = Read(first);
-  READER_CHECK(back.Errors == 0, "reading exact.ma: %s", back.Text.c_str());
+  MEDIAL_CHECK(back.Errors == 0, "reading exact.ma: %s", back.Text.c_str());
   vtkPolyData* out = back.Data;
-  READER_CHECK(out->GetNumberOfPoints() == 6, "%lld points", (long long)out->GetNumberOfPoints());
+  MEDIAL_CHECK(out->GetNumberOfPoints() == 6, "%lld points", (long long)out->GetNumberOfPoints());
   vtkDataArray* radius = out->GetPointData()->GetArray("Radius");
-  READER_CHECK(radius && radius->GetDataType() == VTK_DOUBLE, "no double Radius array");
+  MEDIAL_CHECK(radius && radius->GetDataType() == VTK_DOUBLE, "no double Radius array");
   for (vtkIdType i = 0; i < 6; ++i)
   {
     double p[3];
     out->GetPoint(i, p);
     for (int c = 0; c < 3; ++c)
     {
-      READER_CHECK(SameBits(p[c], balls[i][c]), "point %lld component %d: %.17g != %.17g",
+      MEDIAL_CHECK(SameBits(p[c], balls[i][c]), "point %lld component %d: %.17g != %.17g",
         (long long)i, c, p[c], balls[i][c]);
     }
-    READER_CHECK(SameBits(radius->GetComponent(i, 0), balls[i][3]), "radius %lld: %.17g != %.17g",
+    MEDIAL_CHECK(SameBits(radius->GetComponent(i, 0), balls[i][3]), "radius %lld: %.17g != %.17g",
       (long long)i, radius->GetComponent(i, 0), balls[i][3]);
   }
-  READER_CHECK(CellsOf(out->GetLines()) == Cells({ { 0, 1 }, { 1, 2 }, { 2, 3 } }), "edges differ");
-  READER_CHECK(CellsOf(out->GetPolys()) == Cells({ { 0, 1, 2 }, { 2, 3, 4 }, { 4, 3, 5 } }),
+  MEDIAL_CHECK(CellsOf(out->GetLines()) == Cells({ { 0, 1 }, { 1, 2 }, { 2, 3 } }), "edges differ");
+  MEDIAL_CHECK(CellsOf(out->GetPolys()) == Cells({ { 0, 1, 2 }, { 2, 3, 4 }, { 4, 3, 5 } }),
     "faces differ");
-  READER_CHECK(out->GetNumberOfStrips() == 0 && out->GetNumberOfVerts() == 0, "extra cells");
+  MEDIAL_CHECK(out->GetNumberOfStrips() == 0 && out->GetNumberOfVerts() == 0, "extra cells");
 
   // Writing what was read gives the same file.
   const std::string second = dir.File("exact2.ma");
-  READER_CHECK(Write(out, second), "writing exact2.ma failed");
-  READER_CHECK(Slurp(second) == text, "second write differs from the first");
+  MEDIAL_CHECK(Write(out, second), "writing exact2.ma failed");
+  MEDIAL_CHECK(Slurp(second) == text, "second write differs from the first");
   return EXIT_SUCCESS;
 }
 
@@ -191,9 +191,9 @@ int CheckRandomValues(const TempDir& dir)
     Add(pd->GetLines(), { i + 2, i });
   }
   const std::string path = dir.File("random.ma");
-  READER_CHECK(Write(pd, path), "writing random.ma failed");
+  MEDIAL_CHECK(Write(pd, path), "writing random.ma failed");
   const ReadResult back = Read(path);
-  READER_CHECK(back.Errors == 0, "reading random.ma: %s", back.Text.c_str());
+  MEDIAL_CHECK(back.Errors == 0, "reading random.ma: %s", back.Text.c_str());
   vtkDataArray* radius = back.Data->GetPointData()->GetArray("Radius");
   for (vtkIdType i = 0; i < 2000; ++i)
   {
@@ -201,10 +201,10 @@ int CheckRandomValues(const TempDir& dir)
     back.Data->GetPoint(i, p);
     const bool same = SameBits(p[0], balls[i][0]) && SameBits(p[1], balls[i][1]) &&
       SameBits(p[2], balls[i][2]) && SameBits(radius->GetComponent(i, 0), balls[i][3]);
-    READER_CHECK(same, "random ball %lld changed", (long long)i);
+    MEDIAL_CHECK(same, "random ball %lld changed", (long long)i);
   }
-  READER_CHECK(CellsOf(back.Data->GetPolys()) == CellsOf(pd->GetPolys()), "random faces differ");
-  READER_CHECK(CellsOf(back.Data->GetLines()) == CellsOf(pd->GetLines()), "random edges differ");
+  MEDIAL_CHECK(CellsOf(back.Data->GetPolys()) == CellsOf(pd->GetPolys()), "random faces differ");
+  MEDIAL_CHECK(CellsOf(back.Data->GetLines()) == CellsOf(pd->GetLines()), "random edges differ");
 
   // Float storage: the written doubles are the floats, exactly.
   vtkNew<vtkPoints> floatPoints;
@@ -217,11 +217,11 @@ int CheckRandomValues(const TempDir& dir)
   floatRadius->InsertNextValue(0.7f);
   fp->GetPointData()->AddArray(floatRadius);
   const std::string floatPath = dir.File("float.ma");
-  READER_CHECK(Write(fp, floatPath), "writing float.ma failed");
+  MEDIAL_CHECK(Write(fp, floatPath), "writing float.ma failed");
   const ReadResult floats = Read(floatPath);
   double p[3];
   floats.Data->GetPoint(0, p);
-  READER_CHECK(p[0] == double(0.1f) && p[1] == double(float(1.0 / 3.0)) && p[2] == double(1e30f) &&
+  MEDIAL_CHECK(p[0] == double(0.1f) && p[1] == double(float(1.0 / 3.0)) && p[2] == double(1e30f) &&
       floats.Data->GetPointData()->GetArray("Radius")->GetComponent(0, 0) == double(0.7f),
     "float values changed");
   return EXIT_SUCCESS;
@@ -245,14 +245,14 @@ int CheckPolygonSplitting(const TempDir& dir)
   writer->SetInputData(pd);
   const std::string path = dir.File("polygons.ma");
   writer->SetFileName(path.c_str());
-  READER_CHECK(writer->Write() == 1 && log.Errors == 0, "writing polygons.ma: %s", log.Text.c_str());
-  READER_CHECK(log.Warnings == 1 && log.Text.find("Skipped 1") != std::string::npos,
+  MEDIAL_CHECK(writer->Write() == 1 && log.Errors == 0, "writing polygons.ma: %s", log.Text.c_str());
+  MEDIAL_CHECK(log.Warnings == 1 && log.Text.find("Skipped 1") != std::string::npos,
     "no warning about the one-point line: %s", log.Text.c_str());
   const ReadResult back = Read(path);
-  READER_CHECK(back.Errors == 0, "reading polygons.ma: %s", back.Text.c_str());
+  MEDIAL_CHECK(back.Errors == 0, "reading polygons.ma: %s", back.Text.c_str());
   const Cells faces = CellsOf(back.Data->GetPolys());
-  READER_CHECK(faces.size() == 2 + 3, "%zu triangles, expected 5", faces.size());
-  READER_CHECK(back.Data->GetNumberOfLines() == 0, "the one-point line was written");
+  MEDIAL_CHECK(faces.size() == 2 + 3, "%zu triangles, expected 5", faces.size());
+  MEDIAL_CHECK(back.Data->GetNumberOfLines() == 0, "the one-point line was written");
   const double expectedArea[2] = { 4.0, 2.5 };
   for (int polygon = 0; polygon < 2; ++polygon)
   {
@@ -264,7 +264,7 @@ int CheckPolygonSplitting(const TempDir& dir)
       double a[3], b[3], c[3];
       for (vtkIdType id : faces[t])
       {
-        READER_CHECK(id >= lowest && id <= highest, "triangle uses vertex %lld", (long long)id);
+        MEDIAL_CHECK(id >= lowest && id <= highest, "triangle uses vertex %lld", (long long)id);
       }
       back.Data->GetPoint(faces[t][0], a);
       back.Data->GetPoint(faces[t][1], b);
@@ -272,7 +272,7 @@ int CheckPolygonSplitting(const TempDir& dir)
       // Signed area: a consistently oriented split keeps the polygon's winding.
       area += 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]));
     }
-    READER_CHECK(std::fabs(area - expectedArea[polygon]) < 1e-12, "polygon %d: area %g, expected %g",
+    MEDIAL_CHECK(std::fabs(area - expectedArea[polygon]) < 1e-12, "polygon %d: area %g, expected %g",
       polygon, area, expectedArea[polygon]);
   }
   return EXIT_SUCCESS;
@@ -293,22 +293,22 @@ int CheckForeignFile(const TempDir& dir)
     "f 0 1 2\r\n"
     "# trailing comment\r\n");
   const ReadResult back = Read(path);
-  READER_CHECK(back.Errors == 0, "reading foreign.ma: %s", back.Text.c_str());
+  MEDIAL_CHECK(back.Errors == 0, "reading foreign.ma: %s", back.Text.c_str());
   vtkPolyData* out = back.Data;
-  READER_CHECK(out->GetNumberOfPoints() == 3, "%lld points", (long long)out->GetNumberOfPoints());
+  MEDIAL_CHECK(out->GetNumberOfPoints() == 3, "%lld points", (long long)out->GetNumberOfPoints());
   double p[3];
   out->GetPoint(1, p);
-  READER_CHECK(p[0] == 1.5 && p[1] == -2.0 && p[2] == 3.0, "point 1 is %g %g %g", p[0], p[1], p[2]);
+  MEDIAL_CHECK(p[0] == 1.5 && p[1] == -2.0 && p[2] == 3.0, "point 1 is %g %g %g", p[0], p[1], p[2]);
   vtkDataArray* radius = out->GetPointData()->GetArray("Radius");
-  READER_CHECK(radius->GetComponent(0, 0) == 1.0 && radius->GetComponent(1, 0) == 0.5 &&
+  MEDIAL_CHECK(radius->GetComponent(0, 0) == 1.0 && radius->GetComponent(1, 0) == 0.5 &&
       radius->GetComponent(2, 0) == 0.0,
     "radii are not 1, 0.5, 0");
-  READER_CHECK(CellsOf(out->GetLines()) == Cells({ { 0, 1 }, { 1, 2 } }), "edges differ");
-  READER_CHECK(CellsOf(out->GetPolys()) == Cells({ { 0, 1, 2 } }), "faces differ");
+  MEDIAL_CHECK(CellsOf(out->GetLines()) == Cells({ { 0, 1 }, { 1, 2 } }), "edges differ");
+  MEDIAL_CHECK(CellsOf(out->GetPolys()) == Cells({ { 0, 1, 2 } }), "faces differ");
 
   // An empty mesh is valid and round-trips.
   const ReadResult none = Read(dir.Write("none.ma", "0 0 0\n"));
-  READER_CHECK(none.Errors == 0 && none.Data->GetNumberOfPoints() == 0, "empty mesh");
+  MEDIAL_CHECK(none.Errors == 0 && none.Data->GetNumberOfPoints() == 0, "empty mesh");
   return EXIT_SUCCESS;
 }
 }
@@ -316,7 +316,7 @@ int CheckForeignFile(const TempDir& dir)
 int TestMedialMeshRoundTrip(int, char*[])
 {
   TempDir dir;
-  READER_CHECK(dir.Valid(), "cannot create a temporary folder");
+  MEDIAL_CHECK(dir.Valid(), "cannot create a temporary folder");
   for (auto check : { CheckExactRoundTrip, CheckRandomValues, CheckPolygonSplitting, CheckForeignFile })
   {
     if (check(dir) != EXIT_SUCCESS)

@@ -144,15 +144,15 @@ int CheckReaders(const TempDir& dir)
     const int ok = reader->GetExecutive()->Update();
     const std::string message = log.LineWith("Cannot read");
     std::printf("%-32s %s\n", c.Name, Shown(message).c_str());
-    READER_CHECK(!ok && log.Errors >= 1, "%s: no error reported", c.Name);
+    MEDIAL_CHECK(!ok && log.Errors >= 1, "%s: no error reported", c.Name);
     const std::string where =
       c.Line > 0 ? "', line " + std::to_string(c.Line) + ": " : std::string("': ");
-    READER_CHECK(message.find(where) != std::string::npos, "%s: message lacks \"%s\"", c.Name,
+    MEDIAL_CHECK(message.find(where) != std::string::npos, "%s: message lacks \"%s\"", c.Name,
       where.c_str());
-    READER_CHECK(message.find(c.Expected) != std::string::npos, "%s: message lacks \"%s\"",
+    MEDIAL_CHECK(message.find(c.Expected) != std::string::npos, "%s: message lacks \"%s\"",
       c.Name, c.Expected);
     vtkPolyData* out = reader->GetOutput();
-    READER_CHECK(out->GetNumberOfPoints() == 0 && out->GetNumberOfCells() == 0,
+    MEDIAL_CHECK(out->GetNumberOfPoints() == 0 && out->GetNumberOfCells() == 0,
       "%s: output not empty", c.Name);
   }
   return EXIT_SUCCESS;
@@ -169,9 +169,9 @@ int CheckDirectory(const TempDir& dir)
     reader->Update();
     const std::string message = log.LineWith("Cannot read");
     std::printf("%-32s %s\n", "directory", Shown(message).c_str());
-    READER_CHECK(log.Errors >= 1 && message.find("is a directory") != std::string::npos,
+    MEDIAL_CHECK(log.Errors >= 1 && message.find("is a directory") != std::string::npos,
       "directory: %s", message.c_str());
-    READER_CHECK(reader->GetOutput()->GetNumberOfPoints() == 0, "directory: output not empty");
+    MEDIAL_CHECK(reader->GetOutput()->GetNumberOfPoints() == 0, "directory: output not empty");
   }
   return EXIT_SUCCESS;
 }
@@ -186,11 +186,11 @@ int CheckOutputClearedAfterFailure(const TempDir& dir)
   log.Watch(reader);
   reader->SetFileName(good.c_str());
   reader->Update();
-  READER_CHECK(log.Errors == 0 && reader->GetOutput()->GetNumberOfPoints() == 2, "good file");
+  MEDIAL_CHECK(log.Errors == 0 && reader->GetOutput()->GetNumberOfPoints() == 2, "good file");
   reader->SetFileName(bad.c_str());
   reader->Update();
-  READER_CHECK(log.Errors >= 1, "bad file after good: no error");
-  READER_CHECK(reader->GetOutput()->GetNumberOfPoints() == 0 &&
+  MEDIAL_CHECK(log.Errors >= 1, "bad file after good: no error");
+  MEDIAL_CHECK(reader->GetOutput()->GetNumberOfPoints() == 0 &&
       reader->GetOutput()->GetNumberOfCells() == 0 &&
       !reader->GetOutput()->GetPointData()->GetArray("Radius"),
     "bad file after good: output not empty");
@@ -254,10 +254,10 @@ int CheckWriterRefuses(const TempDir& dir)
     const int ok = writer->Write();
     const std::string message = log.LineWith("Cannot write");
     std::printf("%-32s %s\n", c.Name, Shown(message).c_str());
-    READER_CHECK(!ok && log.Errors >= 1, "%s: no error reported", c.Name);
-    READER_CHECK(message.find(c.Expected) != std::string::npos, "%s: message lacks \"%s\"",
+    MEDIAL_CHECK(!ok && log.Errors >= 1, "%s: no error reported", c.Name);
+    MEDIAL_CHECK(message.find(c.Expected) != std::string::npos, "%s: message lacks \"%s\"",
       c.Name, c.Expected);
-    READER_CHECK(!Exists(path), "%s: a file was written", c.Name);
+    MEDIAL_CHECK(!Exists(path), "%s: a file was written", c.Name);
   }
   return EXIT_SUCCESS;
 }
@@ -266,7 +266,7 @@ int CheckWriterRefuses(const TempDir& dir)
 int TestMedialReadersBadInput(int, char*[])
 {
   TempDir dir;
-  READER_CHECK(dir.Valid(), "cannot create a temporary folder");
+  MEDIAL_CHECK(dir.Valid(), "cannot create a temporary folder");
   for (auto check : { CheckReaders, CheckDirectory, CheckOutputClearedAfterFailure, CheckWriterRefuses })
   {
     if (check(dir) != EXIT_SUCCESS)

@@ -92,7 +92,7 @@ Cells CellsOf(vtkCellArray* cells)
 int TestOFFReader(int, char*[])
 {
   TempDir dir;
-  READER_CHECK(dir.Valid(), "cannot create a temporary folder");
+  MEDIAL_CHECK(dir.Valid(), "cannot create a temporary folder");
   int index = 0;
   for (const Case& c : Cases())
   {
@@ -105,11 +105,11 @@ int TestOFFReader(int, char*[])
     vtkPolyData* out = reader->GetOutput();
     std::printf("%-42s %lld points, %lld polygons\n", c.Name, (long long)out->GetNumberOfPoints(),
       (long long)out->GetNumberOfPolys());
-    READER_CHECK(log.Errors == 0 && log.Warnings == 0, "%s: %s", c.Name, log.Text.c_str());
+    MEDIAL_CHECK(log.Errors == 0 && log.Warnings == 0, "%s: %s", c.Name, log.Text.c_str());
     const vtkIdType n = static_cast<vtkIdType>(c.Coordinates.size() / 3);
-    READER_CHECK(out->GetNumberOfPoints() == n, "%s: %lld points, expected %lld", c.Name,
+    MEDIAL_CHECK(out->GetNumberOfPoints() == n, "%s: %lld points, expected %lld", c.Name,
       (long long)out->GetNumberOfPoints(), (long long)n);
-    READER_CHECK(n == 0 || out->GetPoints()->GetDataType() == VTK_DOUBLE, "%s: points not double",
+    MEDIAL_CHECK(n == 0 || out->GetPoints()->GetDataType() == VTK_DOUBLE, "%s: points not double",
       c.Name);
     for (vtkIdType i = 0; i < n; ++i)
     {
@@ -117,12 +117,12 @@ int TestOFFReader(int, char*[])
       out->GetPoint(i, p);
       for (int k = 0; k < 3; ++k)
       {
-        READER_CHECK(p[k] == c.Coordinates[3 * i + k], "%s: point %lld component %d is %g, expected %g",
+        MEDIAL_CHECK(p[k] == c.Coordinates[3 * i + k], "%s: point %lld component %d is %g, expected %g",
           c.Name, (long long)i, k, p[k], c.Coordinates[3 * i + k]);
       }
     }
-    READER_CHECK(CellsOf(out->GetPolys()) == c.Faces, "%s: faces differ", c.Name);
-    READER_CHECK(out->GetNumberOfCells() == static_cast<vtkIdType>(c.Faces.size()),
+    MEDIAL_CHECK(CellsOf(out->GetPolys()) == c.Faces, "%s: faces differ", c.Name);
+    MEDIAL_CHECK(out->GetNumberOfCells() == static_cast<vtkIdType>(c.Faces.size()),
       "%s: cells other than polygons", c.Name);
   }
   return EXIT_SUCCESS;
