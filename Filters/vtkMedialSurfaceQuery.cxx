@@ -201,6 +201,12 @@ bool vtkMedialSurfaceQuery::Build(const vtkMedialTriangleMesh* mesh, std::string
     error = "Embree failed to build the BVH";
     return false;
   }
+  if (!this->Tree.Build(*mesh))
+  {
+    this->Impl->Release();
+    error = "cannot build the tangent-ball tree";
+    return false;
+  }
   return true;
 }
 
@@ -264,6 +270,12 @@ bool vtkMedialSurfaceQuery::Intersect(const double origin[3], const double direc
 bool vtkMedialSurfaceQuery::ClosestPoint(
   const double x[3], double upperBound, ClosestHit& hit, const ContactFilter* filter) const
 {
+  if (this->PointQueryEngine == OWN_TREE)
+  {
+    return this->Tree.ClosestPoint(x, upperBound, filter ? filter->OwnTriangle : -1,
+      filter ? filter->SamplePoint : nullptr, filter ? filter->CosMinAngle : 1.0, hit.Point,
+      hit.Distance, hit.Triangle);
+  }
   QueryState s;
   s.Self = this;
   s.Mesh = this->Mesh;
@@ -297,6 +309,11 @@ bool vtkMedialSurfaceQuery::ContainsBall(
   {
     return true;
   }
+  if (this->PointQueryEngine == OWN_TREE)
+  {
+    return this->Tree.ContainsBall(centre, limit, filter ? filter->OwnTriangle : -1,
+      filter ? filter->SamplePoint : nullptr, filter ? filter->CosMinAngle : 1.0);
+  }
   QueryState s;
   s.Self = this;
   s.Mesh = this->Mesh;
@@ -311,4 +328,10 @@ bool vtkMedialSurfaceQuery::ContainsBall(
   rtcInitPointQueryContext(&context);
   rtcPointQuery(this->Impl->Scene, &q, &context, ContainsBallCallback, &s);
   return !s.Blocked;
+}
+
+void vtkMedialSurfaceQuery::MaximalTangentBall(
+  const double p[3], const double n[3], const ContactFilter& filter, TangentBall& ball) const
+{
+  this->Tree.MaximalTangentBall(p, n, filter.OwnTriangle, filter.CosMinAngle, this->Slack, ball);
 }

@@ -13,6 +13,11 @@
  * Queries are const and keep their state on the stack, so any number of threads
  * may call them at once (e.g. from an OpenMP loop) after Build().
  *
+ * Ray queries always use Embree. Point queries (closest point, contains ball)
+ * use Embree or, with SetPointQueryEngine(OWN_TREE), the internal
+ * vtkMedialTriangleBVH; MaximalTangentBall always uses the latter, because its
+ * culling sphere moves with the shrinking ball and Embree's cannot.
+ *
  * A ContactFilter describes which surface points may block a ball tangent to the
  * surface at a sample point P on triangle OwnTriangle:
  *  - OwnTriangle never blocks (the ball is tangent to its plane at P);
@@ -26,6 +31,7 @@
 #define vtkMedialSurfaceQuery_h
 
 #include "vtkMedialAxisFiltersModule.h" // for export macro
+#include "vtkMedialTriangleBVH.h"
 #include "vtkType.h"
 
 #include <string>
@@ -53,6 +59,13 @@ public:
     vtkIdType Triangle = -1;
   };
 
+  using TangentBall = vtkMedialTriangleBVH::TangentBall;
+  enum PointQueryEngines
+  {
+    EMBREE = 0,
+    OWN_TREE = 1
+  };
+
   vtkMedialSurfaceQuery();
   ~vtkMedialSurfaceQuery();
   vtkMedialSurfaceQuery(const vtkMedialSurfaceQuery&) = delete;
@@ -72,6 +85,20 @@ public:
   /// True when no admissible surface point lies strictly inside the ball. Stops at the first one found.
   bool ContainsBall(const double centre[3], double radius, const ContactFilter* filter = nullptr) const;
 
+  /**
+   * Largest admissible ball tangent at p with centre p + r n (n unit, inward),
+   * found in one traversal that shrinks the ball at every blocking point (see
+   * vtkMedialTriangleBVH). On entry `ball` holds an upper bound and its contact.
+   */
+  void MaximalTangentBall(
+    const double p[3], const double n[3], const ContactFilter& filter, TangentBall& ball) const;
+
+  /// Which BVH answers ClosestPoint and ContainsBall (default OWN_TREE, measured faster; EMBREE is the reference).
+  void SetPointQueryEngine(int engine) { this->PointQueryEngine = engine; }
+  int GetPointQueryEngine() const { return this->PointQueryEngine; }
+  /// Rank of each triangle in the internal tree's leaf order (spatially coherent).
+  const std::vector<std::int32_t>& GetLeafRanks() const { return this->Tree.GetLeafRanks(); }
+
   /// Absolute slack: a point blocks a ball only when closer than radius - Slack. Tiny and unbiased.
   double GetSlack() const { return this->Slack; }
   const vtkMedialTriangleMesh* GetMesh() const { return this->Mesh; }
@@ -80,6 +107,8 @@ public:
 
 private:
   Internals* Impl;
+  vtkMedialTriangleBVH Tree;
+  int PointQueryEngine = OWN_TREE;
   const vtkMedialTriangleMesh* Mesh = nullptr;
   double Slack = 0.0;
 };

@@ -1,0 +1,739 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkMedialTriangleBVH.h"
+
+#include "vtkMedialGeometry.h"
+#include "vtkMedialTriangleMesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace
+{
+namespace G = vtkMedialGeometry;
+using Node = vtkMedialTriangleBVH::Node;
+
+constexpr int LeafSize = 4;
+constexpr int Bins = 16;
+// Closed-form candidates settle a ball on a face, an edge or a vertex at once;
+// a ball still shrinking after this many steps is settling on the cap's cone.
+constexpr int StepsBeforeBisection = 4;
+constexpr std::int32_t SlabMaximumTriangles = 1 << 14;
+// Seed subtrees: this many levels above the leaf, about 2^levels leaves.
+constexpr int SeedLevels = 4;
+
+double BoxDistance2(const Node& node, const double x[3])
+{
+  double d2 = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double d = std::max({ node.Lo[k] - x[k], 0.0, x[k] - node.Hi[k] });
+    d2 += d * d;
+  }
+  return d2;
+}
+
+// The node cannot reach into the ball (centre, radius): its box or its slab misses it.
+bool MissesBall(const Node& node, const double centre[3], double radius)
+{
+  if (BoxDistance2(node, centre) >= radius * radius)
+  {
+    return true;
+  }
+  if (node.Axis[0] != 0.0 || node.Axis[1] != 0.0 || node.Axis[2] != 0.0)
+  {
+    const double m = G::Dot(node.Axis, centre);
+    return m - radius >= node.SlabHi || m + radius <= node.SlabLo;
+  }
+  return false;
+}
+
+// Largest value of n.(q - p) over the node's box.
+double HeightAbove(const Node& node, const double p[3], const double n[3])
+{
+  double h = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    h += n[k] * (0.5 * (node.Lo[k] + node.Hi[k]) - p[k]) + std::fabs(n[k]) * 0.5 * (node.Hi[k] - node.Lo[k]);
+  }
+  return h;
+}
+
+/**
+ * The smallest f(x) = |x - p|^2 / (2 n.(x - p)), the radius of the ball tangent at
+ * p through x, over the closed-form critical points of triangle (a, b, c): the
+ * point where a ball touches the face's plane, the critical points along each
+ * edge, and the vertices. Only points admissible for the current radius (n.(x - p)
+ * >= radius * lift) count, so each candidate blocks every radius in (f(x), radius].
+ * The slack rule is the closest-point test's. These let a ball that settles on a face or an edge get there in one step
+ * instead of converging to it linearly.
+ */
+void TangentCandidates(const double p[3], const double n[3], const double* a, const double* b,
+  const double* c, double lift, double radius, double slack, double& best, double bestPoint[3])
+{
+  double centre[3];
+  G::AddScaled(p, radius, n, centre);
+  const double limit = radius - slack;
+  auto consider = [&](const double x[3]) {
+    double u[3];
+    G::Sub(x, p, u);
+    const double along = G::Dot(n, u);
+    // Blocking by the same rule as the closest-point test: strictly inside by the
+    // slack, so rounding on the tangent plane near p never counts.
+    if (along > 0.0 && along >= radius * lift && G::Distance2(x, centre) < limit * limit)
+    {
+      const double f = G::Dot(u, u) / (2.0 * along);
+      if (f < best)
+      {
+        best = f;
+        std::copy(x, x + 3, bestPoint);
+      }
+    }
+  };
+  // Face: the ball tangent to the plane on p's side has r = sigma / (1 - m.n).
+  double ab[3], ac[3], m[3];
+  G::Sub(b, a, ab);
+  G::Sub(c, a, ac);
+  G::Cross(ab, ac, m);
+  const double m2 = G::Dot(m, m);
+  if (m2 > 0.0)
+  {
+    const double len = std::sqrt(m2);
+    for (double& v : m)
+    {
+      v /= len;
+    }
+    const double face[3] = { m[0], m[1], m[2] }; // before orienting towards p
+    double pa[3];
+    G::Sub(p, a, pa);
+    double sigma = G::Dot(m, pa);
+    if (sigma < 0.0)
+    {
+      sigma = -sigma;
+      for (double& v : m)
+      {
+        v = -v;
+      }
+    }
+    const double denom = 1.0 - G::Dot(m, n);
+    if (sigma > 0.0 && denom > 0.0)
+    {
+      const double r = sigma / denom;
+      double x[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        x[k] = p[k] + r * n[k] - r * m[k];
+      }
+      // Inside the triangle: barycentric coordinates from the sub-areas.
+      double ax[3], t1[3], t2[3];
+      G::Sub(x, a, ax);
+      G::Cross(ab, ax, t1);
+      G::Cross(ax, ac, t2);
+      const double w2 = G::Dot(t1, face), w1 = G::Dot(t2, face);
+      if (w1 >= 0.0 && w2 >= 0.0 && w1 + w2 <= len)
+      {
+        consider(x);
+      }
+    }
+  }
+  // Edges: d f / d lambda = 0 on x = s + lambda e is a quadratic in lambda.
+  const double* v[3] = { a, b, c };
+  for (int i = 0; i < 3; ++i)
+  {
+    const double* s0 = v[i];
+    const double* s1 = v[(i + 1) % 3];
+    double e[3], w[3];
+    G::Sub(s1, s0, e);
+    G::Sub(s0, p, w);
+    const double A = G::Dot(e, e), B = G::Dot(w, e), C = G::Dot(w, w), D = G::Dot(n, e),
+                 E = G::Dot(n, w);
+    const double qa = A * D, qb = 2.0 * A * E, qc = 2.0 * B * E - C * D;
+    double roots[2];
+    int count = 0;
+    if (std::fabs(qa) <= 1e-14 * (std::fabs(qb) + std::fabs(qc)))
+    {
+      if (qb != 0.0)
+      {
+        roots[count++] = -qc / qb;
+      }
+    }
+    else
+    {
+      const double disc = qb * qb - 4.0 * qa * qc;
+      if (disc >= 0.0)
+      {
+        const double sq = std::sqrt(disc);
+        // Numerically stable pair of roots.
+        const double t = -0.5 * (qb + (qb >= 0.0 ? sq : -sq));
+        roots[count++] = t / qa;
+        if (t != 0.0)
+        {
+          roots[count++] = qc / t;
+        }
+      }
+    }
+    for (int r = 0; r < count; ++r)
+    {
+      if (roots[r] > 0.0 && roots[r] < 1.0)
+      {
+        double x[3];
+        G::AddScaled(s0, roots[r], e, x);
+        consider(x);
+      }
+    }
+    consider(s0);
+  }
+}
+
+// Scratch space reused by every query on a thread: no allocation per sample.
+struct Scratch
+{
+  std::vector<std::int32_t> Stack;
+  std::vector<std::int32_t> Deferred;
+};
+Scratch& ThreadScratch()
+{
+  thread_local Scratch scratch;
+  scratch.Stack.clear();
+  scratch.Deferred.clear();
+  return scratch;
+}
+}
+
+bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh)
+{
+  const vtkIdType nt = mesh.GetNumberOfTriangles();
+  this->Nodes.clear();
+  if (nt <= 0 || nt >= std::numeric_limits<std::int32_t>::max() / 2)
+  {
+    return false;
+  }
+  std::vector<double> centroids(3 * nt), boxes(6 * nt);
+  std::vector<std::int32_t> order(nt);
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    const vtkIdType* v = mesh.GetTriangle(t);
+    for (int k = 0; k < 3; ++k)
+    {
+      const double a = mesh.GetPoint(v[0])[k], b = mesh.GetPoint(v[1])[k], c = mesh.GetPoint(v[2])[k];
+      boxes[6 * t + k] = std::min({ a, b, c });
+      boxes[6 * t + 3 + k] = std::max({ a, b, c });
+      centroids[3 * t + k] = (a + b + c) / 3.0;
+    }
+    order[t] = static_cast<std::int32_t>(t);
+  }
+  this->Nodes.reserve(static_cast<size_t>(2 * nt / LeafSize * 2 + 1));
+  this->Nodes.emplace_back();
+  this->BuildNode(0, 0, static_cast<std::int32_t>(nt), order, centroids, boxes, mesh);
+
+  this->Vertices.resize(9 * static_cast<size_t>(nt));
+  this->TriangleIds.resize(nt);
+  this->LeafRank.resize(nt);
+  this->Planes.resize(4 * static_cast<size_t>(nt));
+  for (vtkIdType i = 0; i < nt; ++i)
+  {
+    const vtkIdType t = order[i];
+    const double* normal = mesh.GetNormal(t);
+    std::copy_n(normal, 3, &this->Planes[4 * i]);
+    this->Planes[4 * i + 3] = G::Dot(normal, mesh.GetPoint(mesh.GetTriangle(t)[0]));
+    this->TriangleIds[i] = t;
+    this->LeafRank[t] = static_cast<std::int32_t>(i);
+    for (int j = 0; j < 3; ++j)
+    {
+      std::copy_n(mesh.GetPoint(mesh.GetTriangle(t)[j]), 3, &this->Vertices[9 * i + 3 * j]);
+    }
+  }
+  this->Nodes.shrink_to_fit();
+  this->Parent.assign(this->Nodes.size(), -1);
+  this->LeafNode.resize(nt);
+  for (size_t i = 0; i < this->Nodes.size(); ++i)
+  {
+    const Node& node = this->Nodes[i];
+    if (node.Count > 0)
+    {
+      std::fill_n(&this->LeafNode[node.Start], node.Count, static_cast<std::int32_t>(i));
+    }
+    else
+    {
+      this->Parent[node.Start] = this->Parent[node.Start + 1] = static_cast<std::int32_t>(i);
+    }
+  }
+  return true;
+}
+
+void vtkMedialTriangleBVH::BuildNode(std::int32_t nodeIndex, std::int32_t begin, std::int32_t end,
+  std::vector<std::int32_t>& order, const std::vector<double>& centroids,
+  const std::vector<double>& boxes, const vtkMedialTriangleMesh& mesh)
+{
+  // Bounds: the box of the triangles and of their centroids, and the area vector sum.
+  Node node{};
+  double cLo[3], cHi[3], area[3] = { 0, 0, 0 };
+  for (int k = 0; k < 3; ++k)
+  {
+    node.Lo[k] = cLo[k] = HUGE_VAL;
+    node.Hi[k] = cHi[k] = -HUGE_VAL;
+  }
+  for (std::int32_t i = begin; i < end; ++i)
+  {
+    const std::int32_t t = order[i];
+    for (int k = 0; k < 3; ++k)
+    {
+      node.Lo[k] = std::min(node.Lo[k], boxes[6 * t + k]);
+      node.Hi[k] = std::max(node.Hi[k], boxes[6 * t + 3 + k]);
+      cLo[k] = std::min(cLo[k], centroids[3 * t + k]);
+      cHi[k] = std::max(cHi[k], centroids[3 * t + k]);
+      area[k] += mesh.Areas[t] * mesh.GetNormal(t)[k];
+    }
+  }
+  // The slab along the mean normal; skipped when the normals (nearly) cancel out.
+  const double areaNorm = std::sqrt(G::Dot(area, area));
+  double totalArea = 0.0;
+  for (std::int32_t i = begin; i < end; ++i)
+  {
+    totalArea += mesh.Areas[order[i]];
+  }
+  // Large nodes are never culled by a slab (their boxes decide), so they skip it.
+  if (end - begin <= SlabMaximumTriangles && areaNorm > 0.25 * totalArea && areaNorm > 0.0)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      node.Axis[k] = area[k] / areaNorm;
+    }
+    node.SlabLo = HUGE_VAL;
+    node.SlabHi = -HUGE_VAL;
+    for (std::int32_t i = begin; i < end; ++i)
+    {
+      const vtkIdType* v = mesh.GetTriangle(order[i]);
+      for (int j = 0; j < 3; ++j)
+      {
+        const double m = G::Dot(node.Axis, mesh.GetPoint(v[j]));
+        node.SlabLo = std::min(node.SlabLo, m);
+        node.SlabHi = std::max(node.SlabHi, m);
+      }
+    }
+  }
+
+  const std::int32_t count = end - begin;
+  node.Start = begin;
+  node.Count = count;
+  if (count <= LeafSize)
+  {
+    this->Nodes[nodeIndex] = node;
+    return;
+  }
+
+  // Binned SAH along the widest centroid axis.
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+  {
+    if (cHi[k] - cLo[k] > cHi[axis] - cLo[axis])
+    {
+      axis = k;
+    }
+  }
+  std::int32_t mid = begin + count / 2;
+  const double extent = cHi[axis] - cLo[axis];
+  if (extent > 0.0)
+  {
+    struct Bin
+    {
+      double Lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
+      double Hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+      std::int32_t Count = 0;
+    } bins[Bins];
+    const double scale = Bins / extent;
+    auto binOf = [&](std::int32_t t) {
+      return std::min(Bins - 1, static_cast<int>((centroids[3 * t + axis] - cLo[axis]) * scale));
+    };
+    for (std::int32_t i = begin; i < end; ++i)
+    {
+      const std::int32_t t = order[i];
+      Bin& b = bins[binOf(t)];
+      ++b.Count;
+      for (int k = 0; k < 3; ++k)
+      {
+        b.Lo[k] = std::min(b.Lo[k], boxes[6 * t + k]);
+        b.Hi[k] = std::max(b.Hi[k], boxes[6 * t + 3 + k]);
+      }
+    }
+    auto halfArea = [](const double lo[3], const double hi[3]) {
+      const double d[3] = { hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] };
+      return d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
+    };
+    // Sweep from the right, then from the left, to price every split plane.
+    double rightCost[Bins];
+    {
+      double lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+      std::int32_t n = 0;
+      for (int b = Bins - 1; b > 0; --b)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          lo[k] = std::min(lo[k], bins[b].Lo[k]);
+          hi[k] = std::max(hi[k], bins[b].Hi[k]);
+        }
+        n += bins[b].Count;
+        rightCost[b] = n > 0 ? n * halfArea(lo, hi) : 0.0;
+      }
+    }
+    double lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+    std::int32_t n = 0;
+    double bestCost = HUGE_VAL;
+    int bestSplit = -1;
+    for (int b = 0; b + 1 < Bins; ++b)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        lo[k] = std::min(lo[k], bins[b].Lo[k]);
+        hi[k] = std::max(hi[k], bins[b].Hi[k]);
+      }
+      n += bins[b].Count;
+      if (n == 0 || n == count)
+      {
+        continue;
+      }
+      const double cost = n * halfArea(lo, hi) + rightCost[b + 1];
+      if (cost < bestCost)
+      {
+        bestCost = cost;
+        bestSplit = b;
+      }
+    }
+    if (bestSplit >= 0)
+    {
+      mid = static_cast<std::int32_t>(
+        std::partition(order.begin() + begin, order.begin() + end,
+          [&](std::int32_t t) { return binOf(t) <= bestSplit; }) -
+        order.begin());
+    }
+  }
+  if (mid <= begin || mid >= end)
+  {
+    // All centroids in one bin: split at the median, ties broken by id (deterministic).
+    mid = begin + count / 2;
+    std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
+      [&](std::int32_t a, std::int32_t b) {
+        const double ca = centroids[3 * a + axis], cb = centroids[3 * b + axis];
+        return ca < cb || (ca == cb && a < b);
+      });
+  }
+  const std::int32_t left = static_cast<std::int32_t>(this->Nodes.size());
+  this->Nodes.emplace_back();
+  this->Nodes.emplace_back();
+  node.Start = left;
+  node.Count = 0;
+  this->Nodes[nodeIndex] = node;
+  this->BuildNode(left, begin, mid, order, centroids, boxes, mesh);
+  this->BuildNode(left + 1, mid, end, order, centroids, boxes, mesh);
+}
+
+void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[3],
+  vtkIdType ownTriangle, double cosMinAngle, double slack, TangentBall& result) const
+{
+  const bool capped = cosMinAngle < 1.0;
+  const double lift = 1.0 - cosMinAngle;                            // admissible: n.(q - p) >= r * lift
+  const double coneSin = capped ? std::sqrt(0.5 * lift) : 0.0;     // sin(theta / 2)
+  double radius = result.Radius;
+  double centre[3];
+  G::AddScaled(p, radius, n, centre);
+  Scratch& scratch = ThreadScratch();
+
+  // Shrinks the ball on triangle `slot` until it no longer blocks. Returns true
+  // when the triangle still reaches into the ball, but only inside the cap: a
+  // smaller ball lowers the cap's plane, so it must be looked at again.
+  auto shrinkOn = [&](std::int32_t slot) {
+    const double* a = &this->Vertices[9 * slot];
+    const double* b = a + 3;
+    const double* c = a + 6;
+    // Closest admissible point q of the triangle strictly inside the ball of radius r.
+    auto blocks = [&](double r, double q[3]) {
+      const double limit = r - slack;
+      if (!(limit > 0.0))
+      {
+        return false;
+      }
+      double x[3];
+      G::AddScaled(p, r, n, x);
+      double d2;
+      if (capped)
+      {
+        // Half-space (q - x).(p - x) <= r^2 cos(theta), written as w.q <= k.
+        const double w[3] = { -r * n[0], -r * n[1], -r * n[2] };
+        const double k = G::Dot(w, x) + r * r * cosMinAngle;
+        d2 = G::ClosestPointOnClippedTriangle(x, a, b, c, w, k, q);
+      }
+      else
+      {
+        d2 = G::ClosestPointOnTriangle(x, a, b, c, q);
+      }
+      return d2 < limit * limit;
+    };
+    // The triangle reaches into the ball only below the cap's plane. A smaller
+    // ball lowers that plane, so it is looked at again at the end, unless its
+    // box lies outside the cone where blockers can ever be.
+    auto inCap = [&]() {
+      const double limit = radius - slack;
+      if (!capped || !(limit > 0.0))
+      {
+        return false;
+      }
+      Node box;
+      for (int k = 0; k < 3; ++k)
+      {
+        box.Lo[k] = std::min({ a[k], b[k], c[k] });
+        box.Hi[k] = std::max({ a[k], b[k], c[k] });
+      }
+      const double h = HeightAbove(box, p, n);
+      if (!(h > 0.0) || h < coneSin * std::sqrt(BoxDistance2(box, p)))
+      {
+        return false;
+      }
+      double any[3];
+      return G::ClosestPointOnTriangle(centre, a, b, c, any) < limit * limit;
+    };
+    auto accept = [&](double r, const double q[3]) {
+      radius = r;
+      G::AddScaled(p, radius, n, centre);
+      std::copy(q, q + 3, result.Contact);
+      result.ContactTriangle = this->TriangleIds[slot];
+      ++result.Steps;
+    };
+    // The ball misses the triangle's plane: nothing to do (cheap and common).
+    const double* plane = &this->Planes[4 * slot];
+    if (std::fabs(G::Dot(plane, centre) - plane[3]) >= radius)
+    {
+      return false;
+    }
+    double q[3];
+    for (int step = 0; step < StepsBeforeBisection; ++step)
+    {
+      if (!blocks(radius, q))
+      {
+        return inCap();
+      }
+      double u[3];
+      G::Sub(q, p, u);
+      const double along = G::Dot(n, u);
+      double next = along > 0.0 ? G::Dot(u, u) / (2.0 * along) : HUGE_VAL;
+      TangentCandidates(p, n, a, b, c, lift, radius, slack, next, q);
+      if (!(next < radius))
+      {
+        return inCap(); // no progress left at double precision
+      }
+      accept(next, q);
+    }
+    if (!blocks(radius, q))
+    {
+      return inCap();
+    }
+    // Still blocking: the ball is converging (linearly) onto the point where the
+    // triangle crosses the cap's cone. For one triangle the blocked radii form an
+    // interval that contains the current radius, so bisection below it is exact.
+    double lo = 0.0, hi = radius, hiPoint[3] = { q[0], q[1], q[2] };
+    for (int i = 0; i < 80 && hi - lo > 4.0 * std::numeric_limits<double>::epsilon() * hi; ++i)
+    {
+      const double mid = 0.5 * (lo + hi);
+      if (blocks(mid, q))
+      {
+        hi = mid;
+        std::copy(q, q + 3, hiPoint);
+      }
+      else
+      {
+        lo = mid;
+      }
+    }
+    accept(lo, hiPoint);
+    return inCap();
+  };
+
+  // Depth first, nearer child first; a node is dropped as soon as it cannot
+  // block the current ball (tested again when popped: the ball keeps shrinking).
+  auto culled = [&](const Node& node) {
+    if (MissesBall(node, centre, radius))
+    {
+      return true;
+    }
+    // Only points with n.(q - p) > sin(theta / 2) |q - p| can ever block.
+    const double h = HeightAbove(node, p, n);
+    if (!(h > 0.0))
+    {
+      return true;
+    }
+    return coneSin > 0.0 && h < coneSin * std::sqrt(BoxDistance2(node, p));
+  };
+  auto traverse = [&](std::int32_t root, const std::int32_t skip[2]) {
+    scratch.Stack.push_back(root);
+    while (!scratch.Stack.empty())
+    {
+      const std::int32_t index = scratch.Stack.back();
+      scratch.Stack.pop_back();
+      const Node& node = this->Nodes[index];
+      if (index == skip[0] || index == skip[1] || culled(node))
+      {
+        continue;
+      }
+      if (node.Count > 0)
+      {
+        for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
+        {
+          if (this->TriangleIds[slot] != ownTriangle && shrinkOn(slot))
+          {
+            scratch.Deferred.push_back(slot);
+          }
+        }
+        continue;
+      }
+      const double dl = BoxDistance2(this->Nodes[node.Start], centre);
+      const double dr = BoxDistance2(this->Nodes[node.Start + 1], centre);
+      scratch.Stack.push_back(dl <= dr ? node.Start + 1 : node.Start);
+      scratch.Stack.push_back(dl <= dr ? node.Start : node.Start + 1);
+    }
+  };
+  // First the small subtrees around the far hit and around p: on smooth meshes
+  // the final contacts are usually there, and a ball that is small early culls
+  // most of the rest of the tree. Then the whole tree, without those subtrees.
+  std::int32_t seeds[2] = { -1, -1 };
+  const vtkIdType seedTriangles[2] = { result.ContactTriangle, ownTriangle };
+  const std::int32_t none[2] = { -1, -1 };
+  for (int i = 0; i < 2; ++i)
+  {
+    if (seedTriangles[i] >= 0)
+    {
+      std::int32_t node = this->LeafNode[this->LeafRank[seedTriangles[i]]];
+      for (int level = 0; level < SeedLevels && this->Parent[node] >= 0; ++level)
+      {
+        node = this->Parent[node];
+      }
+      seeds[i] = node;
+      traverse(node, none);
+    }
+  }
+  traverse(0, seeds);
+  // Triangles that only reached into the cap: look again until the radius settles.
+  for (bool changed = !scratch.Deferred.empty(); changed;)
+  {
+    changed = false;
+    for (std::int32_t slot : scratch.Deferred)
+    {
+      const double before = radius;
+      shrinkOn(slot);
+      changed = changed || radius < before;
+    }
+  }
+  result.Radius = radius;
+}
+
+bool vtkMedialTriangleBVH::ClosestPoint(const double x[3], double upperBound,
+  vtkIdType ownTriangle, const double samplePoint[3], double cosMinAngle, double point[3],
+  double& distance, vtkIdType& triangle) const
+{
+  const bool capped = cosMinAngle < 1.0 && samplePoint;
+  double w[3] = { 0, 0, 0 }, k = 0.0;
+  if (capped)
+  {
+    G::Sub(samplePoint, x, w);
+    k = G::Dot(w, x) + G::Dot(w, w) * cosMinAngle;
+  }
+  double best2 = upperBound * upperBound;
+  triangle = -1;
+  Scratch& scratch = ThreadScratch();
+  scratch.Stack.push_back(0);
+  while (!scratch.Stack.empty())
+  {
+    const Node& node = this->Nodes[scratch.Stack.back()];
+    scratch.Stack.pop_back();
+    if (MissesBall(node, x, std::sqrt(best2)))
+    {
+      continue;
+    }
+    if (node.Count > 0)
+    {
+      for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
+      {
+        if (this->TriangleIds[slot] == ownTriangle)
+        {
+          continue;
+        }
+        const double* a = &this->Vertices[9 * slot];
+        double q[3];
+        const double d2 = capped ? G::ClosestPointOnClippedTriangle(x, a, a + 3, a + 6, w, k, q)
+                                 : G::ClosestPointOnTriangle(x, a, a + 3, a + 6, q);
+        if (d2 < best2)
+        {
+          best2 = d2;
+          std::copy(q, q + 3, point);
+          triangle = this->TriangleIds[slot];
+        }
+      }
+      continue;
+    }
+    const double dl = BoxDistance2(this->Nodes[node.Start], x);
+    const double dr = BoxDistance2(this->Nodes[node.Start + 1], x);
+    scratch.Stack.push_back(dl <= dr ? node.Start + 1 : node.Start);
+    scratch.Stack.push_back(dl <= dr ? node.Start : node.Start + 1);
+  }
+  distance = std::sqrt(best2);
+  return triangle >= 0;
+}
+
+bool vtkMedialTriangleBVH::ContainsBall(const double x[3], double radius, vtkIdType ownTriangle,
+  const double samplePoint[3], double cosMinAngle) const
+{
+  const bool capped = cosMinAngle < 1.0 && samplePoint;
+  double w[3] = { 0, 0, 0 }, k = 0.0;
+  if (capped)
+  {
+    G::Sub(samplePoint, x, w);
+    k = G::Dot(w, x) + G::Dot(w, w) * cosMinAngle;
+  }
+  const double limit2 = radius * radius;
+  Scratch& scratch = ThreadScratch();
+  scratch.Stack.push_back(0);
+  while (!scratch.Stack.empty())
+  {
+    const Node& node = this->Nodes[scratch.Stack.back()];
+    scratch.Stack.pop_back();
+    if (MissesBall(node, x, radius))
+    {
+      continue;
+    }
+    if (capped)
+    {
+      // The whole box on the cap's side of the plane w.q = k: nothing there counts.
+      double lowest = -k;
+      for (int d = 0; d < 3; ++d)
+      {
+        lowest += w[d] * (w[d] > 0.0 ? node.Lo[d] : node.Hi[d]);
+      }
+      if (lowest > 0.0)
+      {
+        continue;
+      }
+    }
+    if (node.Count > 0)
+    {
+      for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
+      {
+        if (this->TriangleIds[slot] == ownTriangle)
+        {
+          continue;
+        }
+        const double* a = &this->Vertices[9 * slot];
+        double q[3];
+        const double d2 = capped ? G::ClosestPointOnClippedTriangle(x, a, a + 3, a + 6, w, k, q)
+                                 : G::ClosestPointOnTriangle(x, a, a + 3, a + 6, q);
+        if (d2 < limit2)
+        {
+          return false;
+        }
+      }
+      continue;
+    }
+    const double dl = BoxDistance2(this->Nodes[node.Start], x);
+    const double dr = BoxDistance2(this->Nodes[node.Start + 1], x);
+    scratch.Stack.push_back(dl <= dr ? node.Start + 1 : node.Start);
+    scratch.Stack.push_back(dl <= dr ? node.Start : node.Start + 1);
+  }
+  return true;
+}

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class vtkMedialTriangleBVH
+ * @brief Internal: a bounding volume hierarchy over a vtkMedialTriangleMesh for
+ * the medial-ball queries that Embree's point query cannot cull well.
+ *
+ * Used only by vtkMedialSurfaceQuery. Embree's point query tests a fixed sphere
+ * against axis-aligned boxes. The medial queries need more:
+ *  - the ball tangent at P shrinks *and moves* (its centre is P + r n), so the
+ *    culling sphere must follow the current radius;
+ *  - contacts within the separation angle theta of P never count, so whole
+ *    subtrees outside the cone n.(q - P) > sin(theta / 2) |q - P| can be skipped;
+ *  - near the medial axis a smooth surface lies all around the ball at almost
+ *    the same distance. A box around a curved patch bulges into the ball; a slab
+ *    along the patch's mean normal does not, so every node also keeps one.
+ *
+ * Build: top-down binned SAH (16 bins on the widest centroid axis), leaves of at
+ * most 4 triangles, children stored next to each other. Each node has its box
+ * and a slab [SlabLo, SlabHi] of m.x over its vertices, m the normalised sum of
+ * its triangles' area vectors. Triangle vertices are copied in leaf order so a
+ * leaf is read contiguously. The tree depends only on the mesh: deterministic.
+ *
+ * Every decision is made in double precision on the mesh's own coordinates
+ * (boxes and slabs are exact bounds of them). Queries are const and keep their
+ * scratch space per thread, so any number of threads may query after Build().
+ */
+#ifndef vtkMedialTriangleBVH_h
+#define vtkMedialTriangleBVH_h
+
+#include "vtkType.h"
+
+#include <cstdint>
+#include <vector>
+
+class vtkMedialTriangleMesh;
+
+class vtkMedialTriangleBVH
+{
+public:
+  struct TangentBall
+  {
+    double Radius = 0.0;
+    double Contact[3] = { 0, 0, 0 }; // the surface point that stopped the ball
+    vtkIdType ContactTriangle = -1;
+    int Steps = 0;       // radius updates
+    bool Capped = false; // a triangle needed more than the per-triangle step cap
+  };
+
+  /// Builds the tree. Returns false when the mesh is empty or too large.
+  bool Build(const vtkMedialTriangleMesh& mesh);
+
+  /**
+   * Largest ball tangent at p with centre p + r n (n the unit inward normal),
+   * r <= result.Radius on entry, that no admissible surface point enters by more
+   * than `slack`. On entry `result` holds the known upper bound and its contact
+   * (the ray's far hit). A point q is admissible for radius r when
+   * n.(q - p) >= r (1 - cosMinAngle), i.e. it lies on the far side of the plane
+   * through the circle at angle theta from p (vtkMedialSurfaceQuery's rule).
+   * Every blocking point q found shrinks the ball to the one through q,
+   * r = |q - p|^2 / (2 n.(q - p)) (Ma et al. 2012), within a single traversal.
+   */
+  void MaximalTangentBall(const double p[3], const double n[3], vtkIdType ownTriangle,
+    double cosMinAngle, double slack, TangentBall& result) const;
+
+  /**
+   * Closest point of the mesh to x within upperBound, skipping ownTriangle; with
+   * cosMinAngle < 1, only the part of each triangle where (q - x).(s - x) <=
+   * |s - x|^2 cosMinAngle counts (s = samplePoint). False when none.
+   */
+  bool ClosestPoint(const double x[3], double upperBound, vtkIdType ownTriangle,
+    const double samplePoint[3], double cosMinAngle, double point[3], double& distance,
+    vtkIdType& triangle) const;
+
+  /// True when no admissible point (same rule as ClosestPoint) is closer to x than radius.
+  bool ContainsBall(const double x[3], double radius, vtkIdType ownTriangle,
+    const double samplePoint[3], double cosMinAngle) const;
+
+  /// Position of each mesh triangle in leaf order: nearby triangles get nearby ranks.
+  const std::vector<std::int32_t>& GetLeafRanks() const { return this->LeafRank; }
+  vtkIdType GetNumberOfNodes() const { return static_cast<vtkIdType>(this->Nodes.size()); }
+
+  struct Node
+  {
+    double Lo[3], Hi[3]; // axis-aligned box
+    double Axis[3];      // slab normal, unit; zero when the normals cancel out
+    double SlabLo, SlabHi;
+    std::int32_t Start; // leaf: first triangle in leaf order; inner: left child (right is Start + 1)
+    std::int32_t Count; // leaf: number of triangles; inner: 0
+  };
+
+private:
+  void BuildNode(std::int32_t node, std::int32_t begin, std::int32_t end,
+    std::vector<std::int32_t>& order, const std::vector<double>& centroids,
+    const std::vector<double>& boxes, const vtkMedialTriangleMesh& mesh);
+
+  std::vector<Node> Nodes;
+  std::vector<double> Vertices;       // 9 per triangle, leaf order
+  std::vector<double> Planes;         // 4 per triangle, leaf order: unit normal, offset
+  std::vector<vtkIdType> TriangleIds; // mesh triangle of each leaf-order slot
+  std::vector<std::int32_t> LeafRank; // inverse of TriangleIds
+  std::vector<std::int32_t> LeafNode; // leaf node of each leaf-order slot
+  std::vector<std::int32_t> Parent;   // parent of each node, -1 for the root
+};
+
+#endif
