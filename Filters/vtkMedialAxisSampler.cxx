@@ -102,6 +102,22 @@ void SolveBall(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& 
   bool haveContact = false;
   vtkMedialSurfaceQuery::ClosestHit closest;
 
+  if (param.Method == vtkMedialAxisSampler::ONE_PASS)
+  {
+    vtkMedialSurfaceQuery::TangentBall ball;
+    ball.Radius = radius;
+    std::copy(q, q + 3, ball.Contact);
+    ball.ContactTriangle = hit.Triangle;
+    query.MaximalTangentBall(p, n, filter, ball);
+    out.Iterations = 1 + ball.Steps;
+    out.Capped = ball.Capped;
+    G::AddScaled(p, ball.Radius, n, out.Centre);
+    out.Radius = ball.Radius;
+    std::copy(ball.Contact, ball.Contact + 3, out.Contact);
+    out.Angle = G::AngleDegrees(out.Centre, p, ball.Contact);
+    out.Valid = true;
+    return;
+  }
   if (param.Method == vtkMedialAxisSampler::SHRINKING_BALL)
   {
     for (;;)
@@ -184,6 +200,8 @@ const char* vtkMedialAxisSampler::GetMethodName(int method)
       return "bisection";
     case SHRINKING_BALL:
       return "shrinking-ball";
+    case ONE_PASS:
+      return "one-pass";
     default:
       return "unknown";
   }
@@ -297,17 +315,43 @@ int vtkMedialAxisSampler::RequestData(
 
   // Blocks keep UpdateProgress and the abort check on the calling thread; small
   // enough that an abort is honoured within a fraction of a second.
+  // Draw every sample first, then solve them in the BVH's leaf order: samples
+  // close on the surface touch the same nodes, so the caches stay warm. Each
+  // result still goes to its own index, so the order cannot change the output.
+  std::vector<vtkIdType> triangles;
+  std::vector<vtkIdType> order;
+  try
+  {
+    triangles.resize(static_cast<size_t>(count));
+    order.resize(static_cast<size_t>(count));
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro(<< "Cannot allocate memory for " << count << " samples.");
+    return 0;
+  }
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    DrawSurfacePoint(mesh, this->RandomSeed, first + i, triangles[i], results[i].Surface);
+    order[i] = i;
+  }
+  const std::vector<std::int32_t>& rank = query.GetLeafRanks();
+  std::sort(order.begin(), order.end(), [&](vtkIdType a, vtkIdType b) {
+    const std::int32_t ra = rank[triangles[a]], rb = rank[triangles[b]];
+    return ra < rb || (ra == rb && a < b);
+  });
+
   const vtkIdType block = 256 * threads;
   for (vtkIdType begin = 0; begin < count && !this->GetAbortExecute(); begin += block)
   {
     const vtkIdType end = std::min(count, begin + block);
-#pragma omp parallel for num_threads(threads) schedule(dynamic, 64)
-    for (vtkIdType i = begin; i < end; ++i)
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 16)
+    for (vtkIdType k = begin; k < end; ++k)
     {
-      vtkIdType triangle;
-      double p[3];
-      DrawSurfacePoint(mesh, this->RandomSeed, first + i, triangle, p);
-      SolveBall(query, mesh, param, triangle, p, results[i]);
+      const vtkIdType i = order[k];
+      const double p[3] = { results[i].Surface[0], results[i].Surface[1], results[i].Surface[2] };
+      SolveBall(query, mesh, param, triangles[i], p, results[i]);
     }
     this->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
   }

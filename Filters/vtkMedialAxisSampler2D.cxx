@@ -81,7 +81,7 @@ void Solve2D(const vtkMedialPolygon& poly, int method, double tolerance, double 
   double c[2] = { p[0] + r * n[0], p[1] + r * n[1] };
   double blocker[2] = { q[0], q[1] };
   bool haveBlocker = false;
-  if (method == vtkMedialAxisSampler::SHRINKING_BALL)
+  if (method != vtkMedialAxisSampler::BISECTION) // one pass is the shrinking ball in 2D
   {
     for (;;)
     {

@@ -145,7 +145,7 @@ int TestMedialSampler2D(int, char*[])
   };
   for (const Case& c : cases)
   {
-    for (int method : { vtkMedialAxisSampler::BISECTION, vtkMedialAxisSampler::SHRINKING_BALL })
+    for (int method : { vtkMedialAxisSampler::BISECTION, vtkMedialAxisSampler::SHRINKING_BALL, vtkMedialAxisSampler::ONE_PASS })
     {
       if (Check(c.Name, c.Polygon, method) != EXIT_SUCCESS)
       {

@@ -31,7 +31,7 @@ int TestMedialSamplerBox(int, char*[])
 
   for (double theta : { 0.0, 45.0, 60.0 })
   {
-    for (int method : { vtkMedialAxisSampler::BISECTION, vtkMedialAxisSampler::SHRINKING_BALL })
+    for (int method : { vtkMedialAxisSampler::BISECTION, vtkMedialAxisSampler::SHRINKING_BALL, vtkMedialAxisSampler::ONE_PASS })
     {
       vtkNew<vtkMedialAxisSampler> sampler;
       sampler->SetInputConnection(rotate->GetOutputPort());

@@ -24,7 +24,7 @@ int TestMedialSamplerCapsule(int, char*[])
   capsule->SetRadius(R);
   capsule->SetLength(length);
   capsule->SetResolution(resolution);
-  for (int method : { vtkMedialAxisSampler::BISECTION, vtkMedialAxisSampler::SHRINKING_BALL })
+  for (int method : { vtkMedialAxisSampler::BISECTION, vtkMedialAxisSampler::SHRINKING_BALL, vtkMedialAxisSampler::ONE_PASS })
   {
     vtkNew<vtkMedialAxisSampler> sampler;
     sampler->SetInputConnection(capsule->GetOutputPort());

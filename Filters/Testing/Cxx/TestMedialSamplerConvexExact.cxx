@@ -147,7 +147,7 @@ int CheckConvex(vtkPolyData* shape, const char* label)
     }
   }
   const double diagonal = Diagonal(shape);
-  for (int method : { vtkMedialAxisSampler::BISECTION, vtkMedialAxisSampler::SHRINKING_BALL })
+  for (int method : { vtkMedialAxisSampler::BISECTION, vtkMedialAxisSampler::SHRINKING_BALL, vtkMedialAxisSampler::ONE_PASS })
   {
     vtkNew<vtkMedialAxisSampler> sampler;
     sampler->SetInputData(shape);

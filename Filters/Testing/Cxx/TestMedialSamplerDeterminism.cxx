@@ -76,7 +76,7 @@ int TestMedialSamplerDeterminism(int, char*[])
   }
   mixed->SetPolys(mixedCells);
 
-  for (int method : { vtkMedialAxisSampler::BISECTION, vtkMedialAxisSampler::SHRINKING_BALL })
+  for (int method : { vtkMedialAxisSampler::BISECTION, vtkMedialAxisSampler::SHRINKING_BALL, vtkMedialAxisSampler::ONE_PASS })
   {
     vtkNew<vtkMedialAxisSampler> one, two, flipped, mixedSampler;
     mixedSampler->SetNumberOfSamples(4000);

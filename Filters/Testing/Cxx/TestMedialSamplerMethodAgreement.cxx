@@ -26,7 +26,7 @@ int CheckAgreement(vtkAlgorithmOutput* surface, const char* label, double diagon
     reference->SetMinimumSeparationAngle(theta);
     reference->SetMethodToBisection();
     reference->Update();
-    for (int method = vtkMedialAxisSampler::BISECTION + 1; method <= vtkMedialAxisSampler::SHRINKING_BALL; ++method)
+    for (int method = vtkMedialAxisSampler::BISECTION + 1; method <= vtkMedialAxisSampler::ONE_PASS; ++method)
     {
       vtkNew<vtkMedialAxisSampler> other;
       other->SetInputConnection(surface);

@@ -39,7 +39,7 @@ int TestMedialSamplerRealMesh(int, char*[])
   locator->BuildLocator();
   vtkNew<vtkGenericCell> cell;
 
-  for (int method : { vtkMedialAxisSampler::BISECTION, vtkMedialAxisSampler::SHRINKING_BALL })
+  for (int method : { vtkMedialAxisSampler::BISECTION, vtkMedialAxisSampler::SHRINKING_BALL, vtkMedialAxisSampler::ONE_PASS })
   {
     vtkNew<vtkMedialAxisSampler> sampler;
     sampler->SetInputData(surface);

@@ -21,7 +21,7 @@ int TestMedialSamplerScale(int, char*[])
   jack->SetResolution(12);
   jack->Update();
   const double diagonal = Diagonal(jack->GetOutput());
-  for (int method : { vtkMedialAxisSampler::BISECTION, vtkMedialAxisSampler::SHRINKING_BALL })
+  for (int method : { vtkMedialAxisSampler::BISECTION, vtkMedialAxisSampler::SHRINKING_BALL, vtkMedialAxisSampler::ONE_PASS })
   {
     vtkNew<vtkMedialAxisSampler> unit;
     unit->SetInputConnection(jack->GetOutputPort());

@@ -1,0 +1,172 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// ONE_PASS against brute force over every triangle, on non-convex shapes where no
+// closed form exists: each ball must be empty (no admissible surface point inside
+// by more than 1e-10 of the diagonal), maximal (the ball 1e-7 of the diagonal
+// larger along the same normal is entered), and its ContactPoint must lie on its
+// sphere and be admissible. "Admissible" is the sampler's rule: q counts for a
+// ball (c, r) tangent at P when (q - c).(P - c) <= r^2 cos(theta). Checked for
+// theta = 0 and the default theta, on the demo shape, a capsule and, when
+// present, 300 samples of horse.ply.
+#include "MedialTestUtilities.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkMedialAxisSampler.h"
+#include "vtkMedialGeometry.h"
+#include "vtkMedialShapeSource.h"
+#include "vtkPLYReader.h"
+#include "vtkPoints.h"
+#include "vtkTriangleFilter.h"
+
+#include <cstdlib>
+
+using namespace medialtest;
+namespace G = vtkMedialGeometry;
+
+namespace
+{
+struct Triangles
+{
+  std::vector<double> Vertices; // 9 per triangle
+};
+
+Triangles Collect(vtkPolyData* surface)
+{
+  vtkNew<vtkTriangleFilter> tri;
+  tri->SetInputData(surface);
+  tri->Update();
+  Triangles all;
+  vtkPolyData* t = tri->GetOutput();
+  vtkIdType npts;
+  const vtkIdType* ids;
+  auto polys = vtk::TakeSmartPointer(t->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+  {
+    polys->GetCurrentCell(npts, ids);
+    for (int j = 0; j < 3; ++j)
+    {
+      double x[3];
+      t->GetPoint(ids[j], x);
+      all.Vertices.insert(all.Vertices.end(), x, x + 3);
+    }
+  }
+  return all;
+}
+
+// Smallest distance from c to an admissible point of any triangle, skipping the
+// triangles that contain P (they touch every tangent ball at P only).
+double AdmissibleDistance(
+  const Triangles& all, const double c[3], const double p[3], double cosTheta, double onSurface)
+{
+  double w[3];
+  G::Sub(p, c, w);
+  const double k = G::Dot(w, c) + G::Dot(w, w) * cosTheta;
+  double best = HUGE_VAL;
+  const size_t n = all.Vertices.size() / 9;
+  for (size_t i = 0; i < n; ++i)
+  {
+    const double* a = &all.Vertices[9 * i];
+    double q[3];
+    if (G::ClosestPointOnTriangle(p, a, a + 3, a + 6, q) <= onSurface * onSurface)
+    {
+      continue;
+    }
+    const double d2 = cosTheta < 1.0 ? G::ClosestPointOnClippedTriangle(c, a, a + 3, a + 6, w, k, q)
+                                     : G::ClosestPointOnTriangle(c, a, a + 3, a + 6, q);
+    best = std::min(best, d2);
+  }
+  return std::sqrt(best);
+}
+
+int Check(vtkPolyData* surface, const char* label, vtkIdType samples)
+{
+  const Triangles all = Collect(surface);
+  const double diag = Diagonal(surface);
+  vtkNew<vtkMedialAxisSampler> defaults;
+  for (double theta : { 0.0, defaults->GetMinimumSeparationAngle() })
+  {
+    vtkNew<vtkMedialAxisSampler> sampler;
+    sampler->SetInputData(surface);
+    sampler->SetMethodToOnePass();
+    sampler->SetNumberOfSamples(samples);
+    sampler->SetRandomSeed(5);
+    sampler->SetMinimumSeparationAngle(theta);
+    sampler->Update();
+    vtkPolyData* out = sampler->GetOutput();
+    MEDIAL_CHECK(out->GetNumberOfPoints() == samples, "%s: %lld of %lld samples", label,
+      static_cast<long long>(out->GetNumberOfPoints()), static_cast<long long>(samples));
+    const double cosTheta = theta > 0 ? std::cos(theta * 3.14159265358979323846 / 180.0) : 1.0;
+    double worstIntrusion = -HUGE_VAL, worstContact = 0.0, widestMiss = -HUGE_VAL;
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    {
+      double c[3], p[3], contact[3], n[3];
+      out->GetPoint(i, c);
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] = Value(out, "SurfacePoint", i, k);
+        contact[k] = Value(out, "ContactPoint", i, k);
+      }
+      const double r = Value(out, "Radius", i);
+      for (int k = 0; k < 3; ++k)
+      {
+        n[k] = (c[k] - p[k]) / r;
+      }
+      // Empty.
+      const double d = AdmissibleDistance(all, c, p, cosTheta, 1e-12 * diag);
+      worstIntrusion = std::max(worstIntrusion, (r - d) / diag);
+      // Maximal: a slightly larger ball along the same normal is entered.
+      const double bigger = r + 1e-7 * diag;
+      double c2[3];
+      G::AddScaled(p, bigger, n, c2);
+      const double d2 = AdmissibleDistance(all, c2, p, cosTheta, 1e-12 * diag);
+      widestMiss = std::max(widestMiss, (d2 - bigger) / diag);
+      // The contact is on the sphere and admissible.
+      double pc[3], qc[3];
+      G::Sub(p, c, pc);
+      G::Sub(contact, c, qc);
+      const double onSphere = std::fabs(std::sqrt(G::Distance2(contact, c)) - r) / diag;
+      const double admissible = G::Dot(qc, pc) - r * r * cosTheta; // <= 0
+      worstContact = std::max({ worstContact, onSphere, admissible / (r * diag) });
+    }
+    std::printf("%s, theta %.0f, %lld balls: worst intrusion %.2e, worst gap of the 1e-7 larger "
+                "ball %.2e, worst contact %.2e (all / diagonal)\n",
+      label, theta, static_cast<long long>(out->GetNumberOfPoints()), worstIntrusion, widestMiss,
+      worstContact);
+    MEDIAL_CHECK(worstIntrusion <= 1e-10, "%s theta %g: a ball is not empty (%g)", label, theta, worstIntrusion);
+    MEDIAL_CHECK(widestMiss < 0.0, "%s theta %g: a ball is not maximal (%g)", label, theta, widestMiss);
+    MEDIAL_CHECK(worstContact <= 1e-9, "%s theta %g: a contact is off its sphere or in the cap (%g)",
+      label, theta, worstContact);
+  }
+  return EXIT_SUCCESS;
+}
+}
+
+int TestMedialSamplerOnePassBruteForce(int, char*[])
+{
+  vtkNew<vtkMedialShapeSource> jack;
+  jack->SetResolution(24);
+  jack->Update();
+  std::printf("demo shape: %lld triangles\n", static_cast<long long>(jack->GetOutput()->GetNumberOfCells()));
+  if (Check(jack->GetOutput(), "demo shape", 400) != EXIT_SUCCESS)
+  {
+    return EXIT_FAILURE;
+  }
+  vtkNew<vtkMedialShapeSource> capsule;
+  capsule->SetShapeToCapsule();
+  capsule->SetResolution(12);
+  capsule->Update();
+  if (Check(capsule->GetOutput(), "capsule", 400) != EXIT_SUCCESS)
+  {
+    return EXIT_FAILURE;
+  }
+  const std::string horse = SharedMesh("horse.ply");
+  if (horse.empty())
+  {
+    std::printf("shared meshes absent: horse part skipped\n");
+    return EXIT_SUCCESS;
+  }
+  vtkNew<vtkPLYReader> reader;
+  reader->SetFileName(horse.c_str());
+  reader->Update();
+  return Check(reader->GetOutput(), "horse", 300);
+}
