@@ -27,6 +27,7 @@
 #ifndef vtkMedialTriangleBVH_h
 #define vtkMedialTriangleBVH_h
 
+#include "vtkMedialAxisFiltersModule.h" // for export macro
 #include "vtkType.h"
 
 #include <cstdint>
@@ -34,7 +35,7 @@
 
 class vtkMedialTriangleMesh;
 
-class vtkMedialTriangleBVH
+class VTKMEDIALAXISFILTERS_EXPORT vtkMedialTriangleBVH
 {
 public:
   struct TangentBall

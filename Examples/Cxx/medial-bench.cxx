@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// medial-bench: throughput of the medial sampler and of its Embree queries.
+// medial-bench: throughput of the medial sampler and of its BVH queries (Embree and the own tree).
 //
 // Input: horse.ply from ../shared/data/meshes, Loop-subdivided twice (>= 1.5 M
 // triangles); without the shared data, a generated demo shape of the same size.
-// Measures, in one run: BVH build time, ray and bounded closest-point throughput,
+// Measures, in one run: BVH build time, ray throughput, closest-point and
+// contains-ball throughput on Embree and on the own tree side by side,
 // each method with 1 and 2 threads (with mean iterations), each method's ratio to
 // the "limit" (one ray plus one bounded closest-point query per sample), peak RSS,
 // and a 327k-triangle sphere as the worst case. Prints a table, or one JSON object
@@ -12,6 +13,7 @@
 #include "vtkMedialRandom.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkMedialSurfaceQuery.h"
+#include "vtkMedialTriangleBVH.h"
 #include "vtkMedialTriangleMesh.h"
 
 #include "vtkDataArray.h"
@@ -82,8 +84,7 @@ vtkSmartPointer<vtkPolyData> LoadBenchMesh(const std::string& sharedDir, std::st
   return jack->GetOutput();
 }
 
-// Runs the sampler and returns microseconds per sample (wall).
-double RunSampler(vtkPolyData* mesh, int method, int threads, vtkIdType samples, double& iterations,
+double TimeSampler(vtkPolyData* mesh, int method, int threads, vtkIdType samples, double& iterations,
   vtkIdType& capped)
 {
   vtkNew<vtkMedialAxisSampler> sampler;
@@ -91,13 +92,27 @@ double RunSampler(vtkPolyData* mesh, int method, int threads, vtkIdType samples,
   sampler->SetMethod(method);
   sampler->SetNumberOfThreads(threads);
   sampler->SetNumberOfSamples(samples);
-  // Preparation (merge, orientation, BVH) is timed separately below.
   const double t0 = Now();
   sampler->Update();
-  const double seconds = Now() - t0;
   iterations = sampler->GetMeanIterations();
   capped = sampler->GetCappedSamples();
-  return 1e6 * seconds / samples;
+  return Now() - t0;
+}
+
+// Microseconds per sample (wall), without the preparation (merge, orientation,
+// BVH builds): the time of a 1-sample run with the same settings is subtracted.
+double RunSampler(vtkPolyData* mesh, int method, int threads, vtkIdType samples, double& iterations,
+  vtkIdType& capped, double* totalSeconds = nullptr)
+{
+  double it;
+  vtkIdType cap;
+  const double preparation = TimeSampler(mesh, method, threads, 1, it, cap);
+  const double seconds = TimeSampler(mesh, method, threads, samples, iterations, capped);
+  if (totalSeconds)
+  {
+    *totalSeconds = seconds;
+  }
+  return 1e6 * (seconds - preparation) / samples;
 }
 }
 
@@ -158,6 +173,11 @@ int main(int argc, char* argv[])
     return 1;
   }
   const double bvhSeconds = Now() - tBvh;
+  // The own tree alone (query.Build makes both it and Embree's scene).
+  vtkMedialTriangleBVH ownTree;
+  const double tTree = Now();
+  ownTree.Build(prepared);
+  const double treeSeconds = Now() - tTree;
 
   // Query throughput on 2 threads: rays from random surface points, then bounded
   // closest-point queries from medial centres (radius as the bound).
@@ -197,23 +217,47 @@ int main(int argc, char* argv[])
   vtkPolyData* medial = probe->GetOutput();
   const int probes = static_cast<int>(medial->GetNumberOfPoints());
   vtkDataArray* probeRadius = medial->GetPointData()->GetArray("Radius");
-  const double tClosest = Now();
-#pragma omp parallel for num_threads(2) schedule(dynamic, 64)
-  for (int i = 0; i < probes; ++i)
+  // Point queries from the medial centres, on each engine: bounded closest point,
+  // and contains-ball just inside ("yes", must see every candidate) and just
+  // outside ("no", may stop at the first blocker) the medial radius.
+  struct EngineRow
   {
-    double c[3];
-    medial->GetPoint(i, c);
-    vtkMedialSurfaceQuery::ClosestHit hit;
-    query.ClosestPoint(c, probeRadius->GetComponent(i, 0) + 1e-6 * prepared.Diagonal, hit);
+    double Closest, Yes, No;
+  } engines[2];
+  for (int engine : { vtkMedialSurfaceQuery::EMBREE, vtkMedialSurfaceQuery::OWN_TREE })
+  {
+    query.SetPointQueryEngine(engine);
+    auto timed = [&](int kind) {
+      const double t0 = Now();
+#pragma omp parallel for num_threads(2) schedule(dynamic, 64)
+      for (int i = 0; i < probes; ++i)
+      {
+        double c[3];
+        medial->GetPoint(i, c);
+        const double r = probeRadius->GetComponent(i, 0);
+        vtkMedialSurfaceQuery::ClosestHit hit;
+        if (kind == 0)
+        {
+          query.ClosestPoint(c, r + 1e-6 * prepared.Diagonal, hit);
+        }
+        else
+        {
+          query.ContainsBall(c, kind == 1 ? r * (1 - 1e-6) : r * 1.01);
+        }
+      }
+      return 1e6 * (Now() - t0) / probes;
+    };
+    engines[engine] = { timed(0), timed(1), timed(2) };
   }
-  const double closestMicro = 1e6 * (Now() - tClosest) / probes;
+  query.SetPointQueryEngine(vtkMedialSurfaceQuery::OWN_TREE);
+  const double closestMicro = engines[vtkMedialSurfaceQuery::OWN_TREE].Closest;
   const double limitMicro = rayMicro + closestMicro;
 
   // Each method with 1 and 2 threads.
   std::vector<Row> rows;
   vtkNew<vtkMedialAxisSampler> defaults;
   const int defaultMethod = defaults->GetMethod();
-  for (int method = vtkMedialAxisSampler::BISECTION; method <= vtkMedialAxisSampler::SHRINKING_BALL; ++method)
+  for (int method = vtkMedialAxisSampler::BISECTION; method <= vtkMedialAxisSampler::ONE_PASS; ++method)
   {
     double it1, it2;
     vtkIdType capped1, capped2;
@@ -224,9 +268,9 @@ int main(int argc, char* argv[])
   }
   double itDefault;
   vtkIdType cappedDefault;
-  const double tDefault = Now();
-  const double defaultMicro = RunSampler(mesh, defaultMethod, 2, defaultSamples, itDefault, cappedDefault);
-  const double defaultSeconds = Now() - tDefault;
+  double defaultSeconds; // including the preparation
+  const double defaultMicro =
+    RunSampler(mesh, defaultMethod, 2, defaultSamples, itDefault, cappedDefault, &defaultSeconds);
 
   // Worst case: a 327k-triangle sphere (every closest-point query sees many equidistant facets).
   vtkNew<vtkMedialShapeSource> sphere;
@@ -243,8 +287,14 @@ int main(int argc, char* argv[])
     std::ostringstream js;
     js << "{\"mesh\": \"" << label << "\", \"triangles\": " << prepared.GetNumberOfTriangles()
        << ", \"load_seconds\": " << loadSeconds << ", \"prepare_seconds\": " << prepSeconds
-       << ", \"bvh_seconds\": " << bvhSeconds << ", \"ray_us\": " << rayMicro
+       << ", \"bvh_seconds\": " << bvhSeconds << ", \"own_tree_seconds\": " << treeSeconds
+       << ", \"own_tree_nodes\": " << ownTree.GetNumberOfNodes() << ", \"ray_us\": " << rayMicro
        << ", \"closest_point_us\": " << closestMicro << ", \"limit_us\": " << limitMicro;
+    for (int e : { 0, 1 })
+    {
+      js << ", \"" << (e ? "own_tree" : "embree") << "\": {\"closest_point_us\": " << engines[e].Closest
+         << ", \"contains_ball_yes_us\": " << engines[e].Yes << ", \"contains_ball_no_us\": " << engines[e].No << "}";
+    }
     for (const Row& r : rows)
     {
       js << ", \"" << r.Name << "\": {\"us_per_sample\": " << r.MicrosecondsPerSample
@@ -258,11 +308,23 @@ int main(int argc, char* argv[])
     return 0;
   }
   std::printf("mesh: %s, %lld triangles\n", label.c_str(), static_cast<long long>(prepared.GetNumberOfTriangles()));
-  std::printf("load %.2f s, prepare (merge, orient) %.2f s, BVH build %.2f s\n", loadSeconds, prepSeconds, bvhSeconds);
-  std::printf("\n| query or method | us per sample | mean iterations | ratio to limit | 2-thread speed-up |\n");
+  std::printf("load %.2f s, prepare (merge, orient) %.2f s, BVH build (Embree + own tree) %.2f s, "
+              "own tree alone %.2f s (%lld nodes)\n",
+    loadSeconds, prepSeconds, bvhSeconds, treeSeconds, static_cast<long long>(ownTree.GetNumberOfNodes()));
+  std::printf("\n| point query from a medial centre (2 threads), us | Embree | own tree | speed-up |\n");
+  std::printf("|---|---|---|---|\n");
+  const char* kinds[3] = { "bounded closest point", "contains ball, yes (r - 1e-6 r)", "contains ball, no (1.01 r)" };
+  for (int k = 0; k < 3; ++k)
+  {
+    const double e = k == 0 ? engines[0].Closest : k == 1 ? engines[0].Yes : engines[0].No;
+    const double o = k == 0 ? engines[1].Closest : k == 1 ? engines[1].Yes : engines[1].No;
+    std::printf("| %s | %.2f | %.2f | %.1fx |\n", kinds[k], e, o, e / o);
+  }
+  std::printf("\nMethod rows: wall time per sample without the preparation (a 1-sample run is subtracted).\n");
+  std::printf("| query or method | us per sample | mean iterations | ratio to limit | 2-thread speed-up |\n");
   std::printf("|---|---|---|---|---|\n");
   std::printf("| ray (2 threads) | %.2f | - | - | - |\n", rayMicro);
-  std::printf("| bounded closest point from a medial centre (2 threads) | %.2f | - | - | - |\n", closestMicro);
+  std::printf("| bounded closest point from a medial centre (2 threads, own tree) | %.2f | - | - | - |\n", closestMicro);
   std::printf("| limit: ray + closest point | %.2f | - | 1.00 | - |\n", limitMicro);
   for (const Row& r : rows)
   {
@@ -270,8 +332,8 @@ int main(int argc, char* argv[])
       static_cast<long long>(samples), r.MicrosecondsPerSample, r.Iterations,
       r.MicrosecondsPerSample / limitMicro, r.Extra > 0 ? std::to_string(r.Extra).substr(0, 4).c_str() : "-");
   }
-  std::printf("\ndefault method (%s), %lld samples, 2 threads: %.2f s (%.2f us per sample, %.2f "
-              "iterations, %lld capped)\n",
+  std::printf("\ndefault method (%s), %lld samples, 2 threads: %.2f s with the preparation (sampling "
+              "alone %.2f us per sample, %.2f iterations, %lld capped)\n",
     vtkMedialAxisSampler::GetMethodName(defaultMethod), static_cast<long long>(defaultSamples),
     defaultSeconds, defaultMicro, itDefault, static_cast<long long>(cappedDefault));
   std::printf("worst case, sphere %lld triangles, default method, 2 threads: %.2f us per sample "
