@@ -445,35 +445,33 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
     const double* a = &this->Vertices[9 * slot];
     const double* b = a + 3;
     const double* c = a + 6;
-    // Closest admissible point q of the triangle strictly inside the ball of radius r.
-    auto blocks = [&](double r, double q[3]) {
+    // Closest admissible point q of the triangle strictly inside the ball of
+    // radius r; `touches` tells whether any part of it is inside.
+    auto blocks = [&](double r, double q[3], bool& touches) {
       const double limit = r - slack;
+      touches = false;
       if (!(limit > 0.0))
       {
         return false;
       }
-      double x[3];
+      double x[3], u[3];
       G::AddScaled(p, r, n, x);
-      double d2;
-      if (capped)
+      touches = G::ClosestPointOnTriangle(x, a, b, c, q) < limit * limit;
+      G::Sub(q, p, u);
+      if (!touches || !capped || G::Dot(n, u) >= r * lift)
       {
-        // Half-space (q - x).(p - x) <= r^2 cos(theta), written as w.q <= k.
-        const double w[3] = { -r * n[0], -r * n[1], -r * n[2] };
-        const double k = G::Dot(w, x) + r * r * cosMinAngle;
-        d2 = G::ClosestPointOnClippedTriangle(x, a, b, c, w, k, q);
+        return touches; // the closest point is admissible: it is the answer
       }
-      else
-      {
-        d2 = G::ClosestPointOnTriangle(x, a, b, c, q);
-      }
-      return d2 < limit * limit;
+      // Admissible half-space (q - x).(p - x) <= r^2 cos(theta), written as w.q <= k.
+      const double w[3] = { -r * n[0], -r * n[1], -r * n[2] };
+      const double k = G::Dot(w, x) + r * r * cosMinAngle;
+      return G::ClosestPointOnClippedTriangle(x, a, b, c, w, k, q) < limit * limit;
     };
     // The triangle reaches into the ball only below the cap's plane. A smaller
     // ball lowers that plane, so it is looked at again at the end, unless its
     // box lies outside the cone where blockers can ever be.
-    auto inCap = [&]() {
-      const double limit = radius - slack;
-      if (!capped || !(limit > 0.0))
+    auto inCap = [&](bool touches) {
+      if (!capped || !touches)
       {
         return false;
       }
@@ -484,12 +482,7 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
         box.Hi[k] = std::max({ a[k], b[k], c[k] });
       }
       const double h = HeightAbove(box, p, n);
-      if (!(h > 0.0) || h < coneSin * std::sqrt(BoxDistance2(box, p)))
-      {
-        return false;
-      }
-      double any[3];
-      return G::ClosestPointOnTriangle(centre, a, b, c, any) < limit * limit;
+      return h > 0.0 && h >= coneSin * std::sqrt(BoxDistance2(box, p));
     };
     auto accept = [&](double r, const double q[3]) {
       radius = r;
@@ -505,11 +498,12 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
       return false;
     }
     double q[3];
+    bool touches;
     for (int step = 0; step < StepsBeforeBisection; ++step)
     {
-      if (!blocks(radius, q))
+      if (!blocks(radius, q, touches))
       {
-        return inCap();
+        return inCap(touches);
       }
       double u[3];
       G::Sub(q, p, u);
@@ -518,13 +512,13 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
       TangentCandidates(p, n, a, b, c, lift, radius, slack, next, q);
       if (!(next < radius))
       {
-        return inCap(); // no progress left at double precision
+        return inCap(touches); // no progress left at double precision
       }
       accept(next, q);
     }
-    if (!blocks(radius, q))
+    if (!blocks(radius, q, touches))
     {
-      return inCap();
+      return inCap(touches);
     }
     // Still blocking: the ball is converging (linearly) onto the point where the
     // triangle crosses the cap's cone. For one triangle the blocked radii form an
@@ -533,7 +527,7 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
     for (int i = 0; i < 80 && hi - lo > 4.0 * std::numeric_limits<double>::epsilon() * hi; ++i)
     {
       const double mid = 0.5 * (lo + hi);
-      if (blocks(mid, q))
+      if (blocks(mid, q, touches))
       {
         hi = mid;
         std::copy(q, q + 3, hiPoint);
@@ -544,7 +538,8 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
       }
     }
     accept(lo, hiPoint);
-    return inCap();
+    blocks(radius, q, touches);
+    return inCap(touches);
   };
 
   // Depth first, nearer child first; a node is dropped as soon as it cannot
@@ -560,7 +555,7 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
     {
       return true;
     }
-    return coneSin > 0.0 && h < coneSin * std::sqrt(BoxDistance2(node, p));
+    return coneSin > 0.0 && h * h < coneSin * coneSin * BoxDistance2(node, p);
   };
   auto traverse = [&](std::int32_t root, const std::int32_t skip[2]) {
     scratch.Stack.push_back(root);
@@ -584,10 +579,19 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
         }
         continue;
       }
+      // Push the farther child first; a child whose box misses the ball is not pushed.
+      const double r2 = radius * radius;
       const double dl = BoxDistance2(this->Nodes[node.Start], centre);
       const double dr = BoxDistance2(this->Nodes[node.Start + 1], centre);
-      scratch.Stack.push_back(dl <= dr ? node.Start + 1 : node.Start);
-      scratch.Stack.push_back(dl <= dr ? node.Start : node.Start + 1);
+      const std::int32_t nearer = dl <= dr ? node.Start : node.Start + 1;
+      if (std::max(dl, dr) < r2)
+      {
+        scratch.Stack.push_back(dl <= dr ? node.Start + 1 : node.Start);
+      }
+      if (std::min(dl, dr) < r2)
+      {
+        scratch.Stack.push_back(nearer);
+      }
     }
   };
   // First the small subtrees around the far hit and around p: on smooth meshes
