@@ -222,9 +222,43 @@ bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh)
     }
     order[t] = static_cast<std::int32_t>(t);
   }
-  this->Nodes.reserve(static_cast<size_t>(2 * nt / LeafSize * 2 + 1));
+  // Top levels first, then the subtrees below them in parallel, appended in order.
+  const std::int32_t grain = std::max<std::int32_t>(4096, static_cast<std::int32_t>(nt / 64));
+  std::vector<Subtree> subtrees;
+  this->Nodes.reserve(static_cast<size_t>(nt));
   this->Nodes.emplace_back();
-  this->BuildNode(0, 0, static_cast<std::int32_t>(nt), order, centroids, boxes, mesh);
+  this->BuildNode(this->Nodes, 0, 0, static_cast<std::int32_t>(nt), order, centroids, boxes, mesh,
+    &subtrees, grain);
+  std::vector<std::vector<Node>> parts(subtrees.size());
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::int64_t i = 0; i < static_cast<std::int64_t>(subtrees.size()); ++i)
+  {
+    parts[i].emplace_back();
+    this->BuildNode(parts[i], 0, subtrees[i].Begin, subtrees[i].End, order, centroids, boxes, mesh,
+      nullptr, 0);
+  }
+  for (size_t i = 0; i < subtrees.size(); ++i)
+  {
+    // Local node 0 takes the reserved slot; the others are appended.
+    const std::int32_t offset = static_cast<std::int32_t>(this->Nodes.size()) - 1;
+    auto global = [&](std::int32_t local) { return local == 0 ? subtrees[i].Node : offset + local; };
+    for (size_t j = 0; j < parts[i].size(); ++j)
+    {
+      Node node = parts[i][j];
+      if (node.Count == 0)
+      {
+        node.Start = global(node.Start); // children are consecutive locally and globally
+      }
+      if (j == 0)
+      {
+        this->Nodes[subtrees[i].Node] = node;
+      }
+      else
+      {
+        this->Nodes.push_back(node);
+      }
+    }
+  }
 
   this->Vertices.resize(9 * static_cast<size_t>(nt));
   this->TriangleIds.resize(nt);
@@ -261,10 +295,16 @@ bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh)
   return true;
 }
 
-void vtkMedialTriangleBVH::BuildNode(std::int32_t nodeIndex, std::int32_t begin, std::int32_t end,
-  std::vector<std::int32_t>& order, const std::vector<double>& centroids,
-  const std::vector<double>& boxes, const vtkMedialTriangleMesh& mesh)
+void vtkMedialTriangleBVH::BuildNode(std::vector<Node>& nodes, std::int32_t nodeIndex,
+  std::int32_t begin, std::int32_t end, std::vector<std::int32_t>& order,
+  const std::vector<double>& centroids, const std::vector<double>& boxes,
+  const vtkMedialTriangleMesh& mesh, std::vector<Subtree>* later, std::int32_t grain) const
 {
+  if (later && end - begin <= grain)
+  {
+    later->push_back({ nodeIndex, begin, end });
+    return;
+  }
   // Bounds: the box of the triangles and of their centroids, and the area vector sum.
   Node node{};
   double cLo[3], cHi[3], area[3] = { 0, 0, 0 };
@@ -318,7 +358,7 @@ void vtkMedialTriangleBVH::BuildNode(std::int32_t nodeIndex, std::int32_t begin,
   node.Count = count;
   if (count <= LeafSize)
   {
-    this->Nodes[nodeIndex] = node;
+    nodes[nodeIndex] = node;
     return;
   }
 
@@ -417,14 +457,14 @@ void vtkMedialTriangleBVH::BuildNode(std::int32_t nodeIndex, std::int32_t begin,
         return ca < cb || (ca == cb && a < b);
       });
   }
-  const std::int32_t left = static_cast<std::int32_t>(this->Nodes.size());
-  this->Nodes.emplace_back();
-  this->Nodes.emplace_back();
+  const std::int32_t left = static_cast<std::int32_t>(nodes.size());
+  nodes.emplace_back();
+  nodes.emplace_back();
   node.Start = left;
   node.Count = 0;
-  this->Nodes[nodeIndex] = node;
-  this->BuildNode(left, begin, mid, order, centroids, boxes, mesh);
-  this->BuildNode(left + 1, mid, end, order, centroids, boxes, mesh);
+  nodes[nodeIndex] = node;
+  this->BuildNode(nodes, left, begin, mid, order, centroids, boxes, mesh, later, grain);
+  this->BuildNode(nodes, left + 1, mid, end, order, centroids, boxes, mesh, later, grain);
 }
 
 void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[3],

@@ -15,7 +15,9 @@
  *    along the patch's mean normal does not, so every node also keeps one.
  *
  * Build: top-down binned SAH (16 bins on the widest centroid axis), leaves of at
- * most 4 triangles, children stored next to each other. Each node has its box
+ * most 4 triangles, children stored next to each other. The top levels are built
+ * first; the subtrees below them are built in parallel (OpenMP) and appended in a
+ * fixed order, so the tree and its numbering do not depend on the thread count. Each node has its box
  * and a slab [SlabLo, SlabHi] of m.x over its vertices, m the normalised sum of
  * its triangles' area vectors. Triangle vertices are copied in leaf order so a
  * leaf is read contiguously. The tree depends only on the mesh: deterministic.
@@ -90,9 +92,17 @@ public:
   };
 
 private:
-  void BuildNode(std::int32_t node, std::int32_t begin, std::int32_t end,
+  struct Subtree
+  {
+    std::int32_t Node, Begin, End;
+  };
+  // Builds the subtree of triangles order[begin, end) into nodes[node]. With
+  // `later`, ranges of at most `grain` triangles are only recorded there, to be
+  // built in parallel.
+  void BuildNode(std::vector<Node>& nodes, std::int32_t node, std::int32_t begin, std::int32_t end,
     std::vector<std::int32_t>& order, const std::vector<double>& centroids,
-    const std::vector<double>& boxes, const vtkMedialTriangleMesh& mesh);
+    const std::vector<double>& boxes, const vtkMedialTriangleMesh& mesh,
+    std::vector<Subtree>* later, std::int32_t grain) const;
 
   std::vector<Node> Nodes;
   std::vector<double> Vertices;       // 9 per triangle, leaf order
