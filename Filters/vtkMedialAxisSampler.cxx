@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialAxisSampler.h"
 
-#include "vtkMedialGeometry.h"
+#include "vtkMedialBallSolver.h"
 #include "vtkMedialPolygon.h"
 #include "vtkMedialRandom.h"
 #include "vtkMedialSampleRecord.h"
@@ -33,161 +33,7 @@ vtkStandardNewMacro(vtkMedialAxisSampler);
 
 namespace
 {
-namespace G = vtkMedialGeometry;
-
 using SampleResult = vtkMedialSampleRecord;
-
-struct BallParameters
-{
-  int Method;
-  double Tolerance; // absolute
-  double CosMinAngle;
-  int MaximumIterations;
-};
-
-// Draws sample `index` on the surface; the vertex order of the triangle does not
-// matter (vertices are taken in id order), so re-wound input gives the same point.
-void DrawSurfacePoint(const vtkMedialTriangleMesh& mesh, vtkTypeUInt64 seed, vtkIdType index,
-  vtkIdType& triangle, double p[3])
-{
-  vtkMedialSampleRandom random(seed, static_cast<std::uint64_t>(index));
-  triangle = mesh.PickTriangleByArea(random.Uniform());
-  vtkIdType v[3] = { mesh.GetTriangle(triangle)[0], mesh.GetTriangle(triangle)[1],
-    mesh.GetTriangle(triangle)[2] };
-  std::sort(v, v + 3);
-  // Uniform on the triangle: sqrt warping of two uniforms.
-  const double s = std::sqrt(random.Uniform());
-  const double t = random.Uniform();
-  const double wa = 1.0 - s, wb = s * (1.0 - t), wc = s * t;
-  const double* a = mesh.GetPoint(v[0]);
-  const double* b = mesh.GetPoint(v[1]);
-  const double* c = mesh.GetPoint(v[2]);
-  for (int k = 0; k < 3; ++k)
-  {
-    p[k] = wa * a[k] + wb * b[k] + wc * c[k];
-  }
-}
-
-// Finds the maximal admissible ball tangent at p (on `triangle`) along the inward normal.
-void SolveBall(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& mesh,
-  const BallParameters& param, vtkIdType triangle, const double p[3], SampleResult& out)
-{
-  out.Valid = false;
-  out.Capped = false;
-  out.Iterations = 0;
-  out.SourceCell = mesh.SourceCellIds[triangle];
-  std::copy(p, p + 3, out.Surface);
-  const double* outward = mesh.GetNormal(triangle);
-  const double n[3] = { -outward[0], -outward[1], -outward[2] };
-
-  vtkMedialSurfaceQuery::RayHit hit;
-  if (!query.Intersect(p, n, 1e-9 * mesh.Diagonal, HUGE_VAL, triangle, hit))
-  {
-    return; // escaped through a hole
-  }
-  if (G::Dot(mesh.GetNormal(hit.Triangle), n) <= 0.0)
-  {
-    return; // hit a face from outside: the ray left through a hole
-  }
-  double q[3];
-  G::AddScaled(p, hit.Distance, n, q);
-
-  vtkMedialSurfaceQuery::ContactFilter filter;
-  filter.OwnTriangle = triangle;
-  std::copy(p, p + 3, filter.SamplePoint);
-  filter.CosMinAngle = param.CosMinAngle;
-
-  double centre[3];
-  double radius = 0.5 * hit.Distance;
-  bool haveContact = false;
-  vtkMedialSurfaceQuery::ClosestHit closest;
-
-  if (param.Method == vtkMedialAxisSampler::ONE_PASS)
-  {
-    vtkMedialSurfaceQuery::TangentBall ball;
-    ball.Radius = radius;
-    std::copy(q, q + 3, ball.Contact);
-    ball.ContactTriangle = hit.Triangle;
-    query.MaximalTangentBall(p, n, filter, ball);
-    out.Iterations = 1 + ball.Steps;
-    out.Capped = ball.Capped;
-    G::AddScaled(p, ball.Radius, n, out.Centre);
-    out.Radius = ball.Radius;
-    std::copy(ball.Contact, ball.Contact + 3, out.Contact);
-    out.Angle = G::AngleDegrees(out.Centre, p, ball.Contact);
-    out.Valid = true;
-    return;
-  }
-  if (param.Method == vtkMedialAxisSampler::SHRINKING_BALL)
-  {
-    for (;;)
-    {
-      G::AddScaled(p, radius, n, centre);
-      if (out.Iterations >= param.MaximumIterations)
-      {
-        out.Capped = true;
-        break;
-      }
-      ++out.Iterations;
-      if (!query.ClosestPoint(centre, radius - query.GetSlack(), closest, &filter))
-      {
-        break; // empty: maximal, touching the previous blocker
-      }
-      double pq[3];
-      G::Sub(closest.Point, p, pq);
-      const double along = G::Dot(n, pq);
-      if (!(along > 0.0))
-      {
-        break; // flat region: the blocker lies on the tangent plane
-      }
-      const double next = G::Dot(pq, pq) / (2.0 * along);
-      if (!(next < radius))
-      {
-        break; // no progress left at double precision
-      }
-      radius = next;
-      haveContact = true;
-    }
-  }
-  else
-  {
-    G::AddScaled(p, radius, n, centre);
-    ++out.Iterations;
-    if (!query.ContainsBall(centre, radius, &filter))
-    {
-      double lo = 0.0, hi = radius;
-      while (hi - lo > param.Tolerance)
-      {
-        const double mid = 0.5 * (lo + hi);
-        G::AddScaled(p, mid, n, centre);
-        ++out.Iterations;
-        if (query.ContainsBall(centre, mid, &filter))
-        {
-          lo = mid;
-        }
-        else
-        {
-          hi = mid;
-        }
-      }
-      radius = lo;
-      G::AddScaled(p, radius, n, centre);
-    }
-  }
-
-  // Second touching point: the closest blocking point, just beyond the empty ball.
-  const double reach = radius + 2.0 * param.Tolerance + 4.0 * query.GetSlack();
-  if (!query.ClosestPoint(centre, reach, closest, &filter) &&
-    !(haveContact && query.ClosestPoint(centre, radius * (1.0 + 1e-9) + reach, closest, &filter)))
-  {
-    std::copy(q, q + 3, closest.Point);
-  }
-  std::copy(centre, centre + 3, out.Centre);
-  out.Radius = radius;
-  std::copy(closest.Point, closest.Point + 3, out.Contact);
-  out.Angle = G::AngleDegrees(centre, p, closest.Point);
-  out.Valid = true;
-}
 }
 
 vtkMedialAxisSampler::vtkMedialAxisSampler() = default;
@@ -304,7 +150,7 @@ int vtkMedialAxisSampler::RequestData(
     return 0;
   }
 
-  BallParameters param;
+  vtkMedialBallParameters param;
   param.Method = this->Method;
   param.Tolerance = this->Tolerance * mesh.Diagonal;
   param.CosMinAngle = this->MinimumSeparationAngle > 0.0
@@ -333,7 +179,7 @@ int vtkMedialAxisSampler::RequestData(
 #pragma omp parallel for num_threads(threads) schedule(static)
   for (vtkIdType i = 0; i < count; ++i)
   {
-    DrawSurfacePoint(mesh, this->RandomSeed, first + i, triangles[i], results[i].Surface);
+    vtkMedialDrawSurfacePoint(mesh, this->RandomSeed, first + i, triangles[i], results[i].Surface);
     order[i] = i;
   }
   const std::vector<std::int32_t>& rank = query.GetLeafRanks();
@@ -351,7 +197,7 @@ int vtkMedialAxisSampler::RequestData(
     {
       const vtkIdType i = order[k];
       const double p[3] = { results[i].Surface[0], results[i].Surface[1], results[i].Surface[2] };
-      SolveBall(query, mesh, param, triangles[i], p, results[i]);
+      vtkMedialSolveBall(query, mesh, param, triangles[i], p, results[i]);
     }
     this->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
   }
