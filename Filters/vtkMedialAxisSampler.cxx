@@ -2,6 +2,7 @@
 #include "vtkMedialAxisSampler.h"
 
 #include "vtkMedialBallSolver.h"
+#include "vtkMedialIterativeSampling.h"
 #include "vtkMedialPolygon.h"
 #include "vtkMedialRandom.h"
 #include "vtkMedialSampleRecord.h"
@@ -9,6 +10,7 @@
 #include "vtkMedialTriangleMesh.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
@@ -25,6 +27,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <memory>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -48,6 +51,21 @@ const char* vtkMedialAxisSampler::GetMethodName(int method)
       return "shrinking-ball";
     case ONE_PASS:
       return "one-pass";
+    default:
+      return "unknown";
+  }
+}
+
+const char* vtkMedialAxisSampler::GetSamplingStrategyName(int strategy)
+{
+  switch (strategy)
+  {
+    case RANDOM:
+      return "random";
+    case CLOSEST_NEIGHBOR:
+      return "closest-neighbor";
+    case FACE_DISTANCE:
+      return "face-distance";
     default:
       return "unknown";
   }
@@ -81,10 +99,19 @@ int vtkMedialAxisSampler::RequestData(
   this->MeanIterations = 0.0;
   this->BoundaryEdges = 0;
   this->NumberOfTriangles = 0;
+  this->EvaluatedSamples = 0;
+  this->SeedSamples = 0;
+  this->CoverageReached = false;
+  this->MaxCoverageGap = -1.0;
 
   // Planar polygons or closed polylines: the 2D mode (vtkMedialAxisSampler2D.cxx).
   if (vtkMedialPolygon::LooksPlanarLoops(input))
   {
+    if (this->SamplingStrategy != RANDOM)
+    {
+      vtkWarningMacro(<< "SamplingStrategy " << GetSamplingStrategyName(this->SamplingStrategy)
+                      << " is for 3D surfaces; planar input is sampled at random.");
+    }
     return this->RequestData2D(input, outInfo, output);
   }
 
@@ -123,6 +150,10 @@ int vtkMedialAxisSampler::RequestData(
   const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
     ? std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
     : 1;
+  if (this->SamplingStrategy != RANDOM)
+  {
+    return this->RequestDataIterative(mesh, query, piece, output);
+  }
   const vtkIdType total = this->NumberOfSamples;
   const vtkIdType first = total * piece / pieces;
   const vtkIdType last = total * (piece + 1) / pieces;
@@ -150,20 +181,27 @@ int vtkMedialAxisSampler::RequestData(
     return 0;
   }
 
-  vtkMedialBallParameters param;
-  param.Method = this->Method;
-  param.Tolerance = this->Tolerance * mesh.Diagonal;
-  param.CosMinAngle = this->MinimumSeparationAngle > 0.0
-    ? std::cos(this->MinimumSeparationAngle * 3.14159265358979323846 / 180.0)
-    : 1.0;
-  param.MaximumIterations = this->MaximumIterations;
+  const vtkMedialBallParameters param = this->MakeBallParameters(mesh.Diagonal);
   const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+
+  // Optional coverage stop: checked after fixed blocks of 1024 samples, so the
+  // stopping point does not depend on the thread count.
+  const double coverageTolerance = this->CoverageTolerance * mesh.Diagonal;
+  std::unique_ptr<vtkMedialCoverage> coverage;
+  if (this->CoverageTolerance > 0.0)
+  {
+    coverage.reset(new vtkMedialCoverage(mesh));
+  }
+  vtkIdType used = count;
 
   // Blocks keep UpdateProgress and the abort check on the calling thread; small
   // enough that an abort is honoured within a fraction of a second.
   // Draw every sample first, then solve them in the BVH's leaf order: samples
   // close on the surface touch the same nodes, so the caches stay warm. Each
   // result still goes to its own index, so the order cannot change the output.
+  // With a coverage stop the order is sorted within each block only, so that the
+  // blocks stay prefixes of the sample sequence.
+  const vtkIdType block = coverage ? 1024 : 256 * threads;
   std::vector<vtkIdType> triangles;
   std::vector<vtkIdType> order;
   try
@@ -183,12 +221,16 @@ int vtkMedialAxisSampler::RequestData(
     order[i] = i;
   }
   const std::vector<std::int32_t>& rank = query.GetLeafRanks();
-  std::sort(order.begin(), order.end(), [&](vtkIdType a, vtkIdType b) {
+  auto leafOrder = [&](vtkIdType a, vtkIdType b) {
     const std::int32_t ra = rank[triangles[a]], rb = rank[triangles[b]];
     return ra < rb || (ra == rb && a < b);
-  });
+  };
+  const vtkIdType sortSpan = coverage ? block : count;
+  for (vtkIdType begin = 0; begin < count; begin += sortSpan)
+  {
+    std::sort(order.begin() + begin, order.begin() + std::min(count, begin + sortSpan), leafOrder);
+  }
 
-  const vtkIdType block = 256 * threads;
   for (vtkIdType begin = 0; begin < count && !this->GetAbortExecute(); begin += block)
   {
     const vtkIdType end = std::min(count, begin + block);
@@ -200,13 +242,45 @@ int vtkMedialAxisSampler::RequestData(
       vtkMedialSolveBall(query, mesh, param, triangles[i], p, results[i]);
     }
     this->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
+    if (coverage)
+    {
+      if (begin == 0)
+      {
+        coverage->Initialize(std::vector<SampleResult>(results.begin(), results.begin() + end));
+      }
+      else
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          if (results[i].Valid)
+          {
+            coverage->AddBall(results[i].Centre, results[i].Radius, nullptr);
+          }
+        }
+      }
+      const double gap = coverage->MaxGap();
+      this->MaxCoverageGap = gap / mesh.Diagonal;
+      this->CoverageReached = gap <= coverageTolerance;
+      if (this->CoverageReached)
+      {
+        used = end;
+        break;
+      }
+    }
   }
   if (this->GetAbortExecute())
   {
     return 1; // aborted: leave the output empty
   }
+  results.resize(static_cast<size_t>(used));
+  this->EvaluatedSamples = used;
 
-  this->WriteSamples(output, count, results);
+  this->WriteSamples(output, used, results);
+  if (coverage)
+  {
+    output->GetFieldData()->GetArray("RequestedSamples")->SetTuple1(0, static_cast<double>(count));
+    this->WriteCoverage(output);
+  }
 
   if (mesh.BoundaryEdges > 0)
   {
@@ -215,6 +289,128 @@ int vtkMedialAxisSampler::RequestData(
                     << " samples were discarded because their ray escaped through a hole.");
   }
   return 1;
+}
+
+vtkMedialBallParameters vtkMedialAxisSampler::MakeBallParameters(double diagonal) const
+{
+  vtkMedialBallParameters param;
+  param.Method = this->Method;
+  param.Tolerance = this->Tolerance * diagonal;
+  param.CosMinAngle = this->MinimumSeparationAngle > 0.0
+    ? std::cos(this->MinimumSeparationAngle * 3.14159265358979323846 / 180.0)
+    : 1.0;
+  param.MaximumIterations = this->MaximumIterations;
+  return param;
+}
+
+int vtkMedialAxisSampler::RequestDataIterative(
+  const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int piece, vtkPolyData* output)
+{
+  vtkMedialIterativeSettings settings;
+  settings.Strategy = this->SamplingStrategy == CLOSEST_NEIGHBOR
+    ? vtkMedialIterativeSettings::CLOSEST_NEIGHBOR
+    : vtkMedialIterativeSettings::FACE_DISTANCE;
+  // The run is sequential by nature: piece 0 holds all of it.
+  settings.Budget = piece == 0 ? this->NumberOfSamples : 0;
+  settings.SeedFraction = this->SeedFraction;
+  settings.CoverageTolerance = this->CoverageTolerance * mesh.Diagonal;
+  settings.Seed = this->RandomSeed;
+  settings.Threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  settings.Ball = this->MakeBallParameters(mesh.Diagonal);
+  const double bytesPerSample = 2.0 * sizeof(vtkMedialSampleRecord) + 12 * sizeof(double) + 8 * sizeof(vtkIdType);
+  const double needed = bytesPerSample * static_cast<double>(settings.Budget);
+  const double available = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
+  if (available > 0 && needed > 0.8 * available)
+  {
+    vtkErrorMacro(<< "NumberOfSamples " << settings.Budget << " needs about " << needed / (1 << 30)
+                  << " GiB, more than this machine's memory allows (" << available / (1 << 30)
+                  << " GiB); use fewer samples.");
+    return 0;
+  }
+
+  vtkMedialIterativeResult result;
+  try
+  {
+    vtkMedialRunIterativeSampling(mesh, query, settings,
+      [this](double fraction) {
+        this->UpdateProgress(std::min(1.0, fraction));
+        return this->GetAbortExecute() != 0;
+      },
+      result);
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro(<< "Out of memory while sampling " << settings.Budget << " samples.");
+    return 0;
+  }
+  if (result.Aborted || this->GetAbortExecute())
+  {
+    return 1; // aborted: leave the output empty
+  }
+  const vtkIdType evaluated = static_cast<vtkIdType>(result.Records.size());
+  this->EvaluatedSamples = evaluated;
+  this->SeedSamples = result.Seeds;
+  this->CoverageReached = result.CoverageReached;
+  this->MaxCoverageGap = result.MaxGap / mesh.Diagonal;
+  this->WriteSamples(output, evaluated, result.Records);
+  // RequestedSamples is the budget; the samples used are EvaluatedSamples.
+  output->GetFieldData()->GetArray("RequestedSamples")->SetTuple1(0, static_cast<double>(settings.Budget));
+  vtkIdType validSeeds = 0;
+  for (vtkIdType i = 0; i < result.Seeds; ++i)
+  {
+    validSeeds += result.Records[i].Valid ? 1 : 0;
+  }
+  auto addField = [output](const char* name, double value) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    a->InsertNextValue(value);
+    output->GetFieldData()->AddArray(a);
+  };
+  addField("EvaluatedSamples", static_cast<double>(evaluated));
+  addField("SeedSamples", static_cast<double>(validSeeds)); // the first output points
+  this->WriteCoverage(output);
+
+  if (settings.Strategy == vtkMedialIterativeSettings::CLOSEST_NEIGHBOR)
+  {
+    // Record index -> output point id (invalid records are not output, nor linked).
+    std::vector<vtkIdType> pointId(result.Records.size(), -1);
+    vtkIdType k = 0;
+    for (size_t i = 0; i < result.Records.size(); ++i)
+    {
+      pointId[i] = result.Records[i].Valid ? k++ : -1;
+    }
+    vtkNew<vtkCellArray> lines;
+    const vtkIdType links = static_cast<vtkIdType>(result.InitialLink.size());
+    lines->AllocateExact(links, 2 * links);
+    vtkNew<vtkIdTypeArray> initial;
+    initial->SetName("InitialLink");
+    initial->SetNumberOfTuples(output->GetNumberOfVerts() + links);
+    for (vtkIdType c = 0; c < output->GetNumberOfVerts(); ++c)
+    {
+      initial->SetValue(c, -1); // vertex cells
+    }
+    for (vtkIdType l = 0; l < links; ++l)
+    {
+      const vtkIdType ends[2] = { pointId[result.LinkEnds[2 * l]], pointId[result.LinkEnds[2 * l + 1]] };
+      lines->InsertNextCell(2, ends);
+      initial->SetValue(output->GetNumberOfVerts() + l, result.InitialLink[l]);
+    }
+    output->SetLines(lines);
+    output->GetCellData()->AddArray(initial);
+  }
+  return 1;
+}
+
+void vtkMedialAxisSampler::WriteCoverage(vtkPolyData* output)
+{
+  vtkNew<vtkDoubleArray> reached;
+  reached->SetName("CoverageReached");
+  reached->InsertNextValue(this->CoverageReached ? 1.0 : 0.0);
+  output->GetFieldData()->AddArray(reached);
+  vtkNew<vtkDoubleArray> gap;
+  gap->SetName("MaxCoverageGap"); // relative to the diagonal
+  gap->InsertNextValue(this->MaxCoverageGap);
+  output->GetFieldData()->AddArray(gap);
 }
 
 void vtkMedialAxisSampler::WriteSamples(
@@ -305,7 +501,14 @@ void vtkMedialAxisSampler::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "MaximumIterations: " << this->MaximumIterations << "\n";
+  os << indent << "SamplingStrategy: " << GetSamplingStrategyName(this->SamplingStrategy) << "\n";
+  os << indent << "CoverageTolerance: " << this->CoverageTolerance << "\n";
+  os << indent << "SeedFraction: " << this->SeedFraction << "\n";
   os << indent << "DiscardedSamples: " << this->DiscardedSamples << "\n";
   os << indent << "CappedSamples: " << this->CappedSamples << "\n";
   os << indent << "MeanIterations: " << this->MeanIterations << "\n";
+  os << indent << "EvaluatedSamples: " << this->EvaluatedSamples << "\n";
+  os << indent << "SeedSamples: " << this->SeedSamples << "\n";
+  os << indent << "CoverageReached: " << this->CoverageReached << "\n";
+  os << indent << "MaxCoverageGap: " << this->MaxCoverageGap << "\n";
 }

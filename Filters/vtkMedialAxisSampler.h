@@ -80,6 +80,9 @@
 #include <vector> // for std::vector
 
 struct vtkMedialSampleRecord;
+struct vtkMedialBallParameters;
+class vtkMedialSurfaceQuery;
+class vtkMedialTriangleMesh;
 
 class VTKMEDIALAXISFILTERS_EXPORT vtkMedialAxisSampler : public vtkPolyDataAlgorithm
 {
@@ -93,6 +96,13 @@ public:
     BISECTION = 0,
     SHRINKING_BALL = 1,
     ONE_PASS = 2
+  };
+
+  enum SamplingStrategies
+  {
+    RANDOM = 0,
+    CLOSEST_NEIGHBOR = 1,
+    FACE_DISTANCE = 2
   };
 
   ///@{
@@ -109,6 +119,46 @@ public:
   void SetMethodToShrinkingBall() { this->SetMethod(SHRINKING_BALL); }
   void SetMethodToOnePass() { this->SetMethod(ONE_PASS); }
   static const char* GetMethodName(int method);
+  ///@}
+
+  ///@{
+  /// Where the surface samples go (3D input; 2D input always uses RANDOM):
+  ///  - RANDOM (default): NumberOfSamples independent area-weighted random samples;
+  ///  - CLOSEST_NEIGHBOR: Poisson-disk seeds chained to their closest non-overlapping
+  ///    unlinked neighbour, the longest links split at the surface point between
+  ///    their ends until consecutive balls overlap; the links are output as lines;
+  ///  - FACE_DISTANCE: Poisson-disk seeds, then the face farthest from the union of
+  ///    balls is sampled next (a max-heap with lazy deletion).
+  /// The two iterative strategies stop at the budget (NumberOfSamples, seeds
+  /// included), when CoverageTolerance is reached, or when they run out of work. See
+  /// vtkMedialIterativeSampling.h for the details. They run in piece 0 only (other
+  /// pieces are empty) and are deterministic for a seed, whatever the thread count.
+  vtkSetClampMacro(SamplingStrategy, int, RANDOM, FACE_DISTANCE);
+  vtkGetMacro(SamplingStrategy, int);
+  void SetSamplingStrategyToRandom() { this->SetSamplingStrategy(RANDOM); }
+  void SetSamplingStrategyToClosestNeighbor() { this->SetSamplingStrategy(CLOSEST_NEIGHBOR); }
+  void SetSamplingStrategyToFaceDistance() { this->SetSamplingStrategy(FACE_DISTANCE); }
+  static const char* GetSamplingStrategyName(int strategy);
+  ///@}
+
+  ///@{
+  /// Coverage stopping tolerance, relative to the bounding-box diagonal (default 0:
+  /// off, the whole budget is used). The surface is covered when every face's three
+  /// vertices and centroid x satisfy min_i (|x - c_i| - r_i) <= tolerance, i.e. lie
+  /// within the tolerance of the union of balls. The iterative strategies check it
+  /// after every round of 64 samples; RANDOM (3D), when it is above 0, checks it
+  /// after every block of 1024 samples and stops there: its output is then a prefix
+  /// of the full run. With a tolerance above 0, the output's field data holds
+  /// CoverageReached and MaxCoverageGap (the iterative strategies always add them).
+  vtkSetClampMacro(CoverageTolerance, double, 0.0, 1.0);
+  vtkGetMacro(CoverageTolerance, double);
+  ///@}
+
+  ///@{
+  /// Share of NumberOfSamples spent on the Poisson-disk seeds of the iterative
+  /// strategies (default 0.25).
+  vtkSetClampMacro(SeedFraction, double, 0.001, 1.0);
+  vtkGetMacro(SeedFraction, double);
   ///@}
 
   ///@{
@@ -149,6 +199,14 @@ public:
   vtkGetMacro(MeanIterations, double);
   vtkGetMacro(BoundaryEdges, vtkIdType);
   vtkGetMacro(NumberOfTriangles, vtkIdType);
+  /// Samples whose ball was solved (the budget used; seeds included).
+  vtkGetMacro(EvaluatedSamples, vtkIdType);
+  /// Poisson-disk seeds among them (iterative strategies).
+  vtkGetMacro(SeedSamples, vtkIdType);
+  /// Coverage figures, when measured (see CoverageTolerance); the gap is relative
+  /// to the diagonal, -1 when not measured.
+  vtkGetMacro(CoverageReached, bool);
+  vtkGetMacro(MaxCoverageGap, double);
   ///@}
 
 protected:
@@ -165,6 +223,13 @@ protected:
   // sets DiscardedSamples, CappedSamples and MeanIterations. Shared by 2D and 3D.
   void WriteSamples(
     vtkPolyData* output, vtkIdType requested, const std::vector<vtkMedialSampleRecord>& records);
+  // The CLOSEST_NEIGHBOR and FACE_DISTANCE strategies (vtkMedialIterativeSampling).
+  int RequestDataIterative(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
+    int piece, vtkPolyData* output);
+  // Bisection / shrinking-ball settings in absolute units.
+  vtkMedialBallParameters MakeBallParameters(double diagonal) const;
+  // Adds CoverageReached and MaxCoverageGap to the output's field data.
+  void WriteCoverage(vtkPolyData* output);
 
   vtkIdType NumberOfSamples = 10000;
   int Method = ONE_PASS;
@@ -173,12 +238,19 @@ protected:
   vtkTypeUInt64 RandomSeed = 1;
   int NumberOfThreads = 0;
   int MaximumIterations = 100;
+  int SamplingStrategy = RANDOM;
+  double CoverageTolerance = 0.0;
+  double SeedFraction = 0.25;
 
   vtkIdType DiscardedSamples = 0;
   vtkIdType CappedSamples = 0;
   double MeanIterations = 0.0;
   vtkIdType BoundaryEdges = 0;
   vtkIdType NumberOfTriangles = 0;
+  vtkIdType EvaluatedSamples = 0;
+  vtkIdType SeedSamples = 0;
+  bool CoverageReached = false;
+  double MaxCoverageGap = -1.0;
 
 private:
   vtkMedialAxisSampler(const vtkMedialAxisSampler&) = delete;

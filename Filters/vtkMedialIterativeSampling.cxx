@@ -1,0 +1,874 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The iterative sampling strategies and the coverage measure; see the header for the
+// algorithms. Everything here runs on the calling thread except the ball solves.
+#include "vtkMedialIterativeSampling.h"
+
+#include "vtkMedialBallSolver.h"
+#include "vtkMedialGeometry.h"
+#include "vtkMedialRandom.h"
+#include "vtkMedialSurfaceQuery.h"
+#include "vtkMedialTriangleMesh.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <queue>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace
+{
+namespace G = vtkMedialGeometry;
+
+// Distinct random streams for the seeds' darts and the face samples, so that they
+// never repeat the Random strategy's stream (seed, i).
+constexpr std::uint64_t DartStream = 0x5EEDDA27C0FFEE01ull;
+constexpr std::uint64_t FaceStream = 0xFACE5A3B1E0D0C02ull;
+
+double Distance(const double a[3], const double b[3])
+{
+  double d[3];
+  G::Sub(a, b, d);
+  return std::sqrt(G::Dot(d, d));
+}
+
+// A static uniform grid of points (CSR), for sphere range queries.
+class PointGrid
+{
+public:
+  void Build(const std::vector<double>& xyz, const std::vector<char>& use, const double bounds[6],
+    double cellSize)
+  {
+    const size_t n = xyz.size() / 3;
+    this->Size = cellSize;
+    size_t total = 1;
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Origin[k] = bounds[2 * k];
+      this->Dims[k] = std::max(1, static_cast<int>((bounds[2 * k + 1] - bounds[2 * k]) / cellSize) + 1);
+      total *= static_cast<size_t>(this->Dims[k]);
+    }
+    this->Start.assign(total + 1, 0);
+    std::vector<size_t> cellOf(n, 0);
+    for (size_t i = 0; i < n; ++i)
+    {
+      if (use.empty() || use[i])
+      {
+        cellOf[i] = this->CellIndex(&xyz[3 * i]);
+        ++this->Start[cellOf[i] + 1];
+      }
+    }
+    for (size_t c = 0; c < total; ++c)
+    {
+      this->Start[c + 1] += this->Start[c];
+    }
+    this->Items.resize(this->Start[total]);
+    std::vector<size_t> fill(this->Start.begin(), this->Start.end() - 1);
+    for (size_t i = 0; i < n; ++i)
+    {
+      if (use.empty() || use[i])
+      {
+        this->Items[fill[cellOf[i]]++] = static_cast<vtkIdType>(i);
+      }
+    }
+  }
+
+  int Coordinate(double x, int k) const
+  {
+    const double t = (x - this->Origin[k]) / this->Size;
+    if (!(t > 0.0))
+    {
+      return 0;
+    }
+    return std::min(this->Dims[k] - 1, static_cast<int>(std::min(t, 1e9)));
+  }
+  size_t CellIndex(const double x[3]) const
+  {
+    return (static_cast<size_t>(this->Coordinate(x[2], 2)) * this->Dims[1] + this->Coordinate(x[1], 1)) *
+      this->Dims[0] +
+      this->Coordinate(x[0], 0);
+  }
+
+  /// Calls f(item) for the items of every cell that comes within `radius` of c.
+  template <class F>
+  void ForEachNear(const double c[3], double radius, F&& f) const
+  {
+    int lo[3], hi[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = this->Coordinate(c[k] - radius, k);
+      hi[k] = this->Coordinate(c[k] + radius, k);
+    }
+    const double r2 = radius * radius;
+    for (int z = lo[2]; z <= hi[2]; ++z)
+    {
+      const double dz = this->AxisGap(c[2], z, 2);
+      for (int y = lo[1]; y <= hi[1]; ++y)
+      {
+        const double dy = this->AxisGap(c[1], y, 1);
+        if (dz * dz + dy * dy > r2)
+        {
+          continue;
+        }
+        const size_t row = (static_cast<size_t>(z) * this->Dims[1] + y) * this->Dims[0];
+        for (int x = lo[0]; x <= hi[0]; ++x)
+        {
+          const double dx = this->AxisGap(c[0], x, 0);
+          if (dz * dz + dy * dy + dx * dx > r2)
+          {
+            continue;
+          }
+          for (size_t s = this->Start[row + x]; s < this->Start[row + x + 1]; ++s)
+          {
+            f(this->Items[s]);
+          }
+        }
+      }
+    }
+  }
+
+  /// Calls f(item) for the cells in the cube of Chebyshev radius `ring` around c's cell.
+  template <class F>
+  void ForEachInCube(const double c[3], int ring, F&& f) const
+  {
+    int lo[3], hi[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const int m = this->Coordinate(c[k], k);
+      lo[k] = std::max(0, m - ring);
+      hi[k] = std::min(this->Dims[k] - 1, m + ring);
+    }
+    for (int z = lo[2]; z <= hi[2]; ++z)
+    {
+      for (int y = lo[1]; y <= hi[1]; ++y)
+      {
+        const size_t row = (static_cast<size_t>(z) * this->Dims[1] + y) * this->Dims[0];
+        for (size_t s = this->Start[row + lo[0]]; s < this->Start[row + hi[0] + 1]; ++s)
+        {
+          f(this->Items[s]);
+        }
+      }
+    }
+  }
+
+  int MaxDim() const { return std::max(this->Dims[0], std::max(this->Dims[1], this->Dims[2])); }
+
+private:
+  // Distance along axis k from x to cell slab i (0 inside; the boundary slabs are open).
+  double AxisGap(double x, int i, int k) const
+  {
+    const double a = this->Origin[k] + i * this->Size;
+    const double b = a + this->Size;
+    if (x < a && i > 0)
+    {
+      return a - x;
+    }
+    if (x > b && i < this->Dims[k] - 1)
+    {
+      return x - b;
+    }
+    return 0.0;
+  }
+
+  double Origin[3] = { 0, 0, 0 };
+  double Size = 1.0;
+  int Dims[3] = { 1, 1, 1 };
+  std::vector<size_t> Start;
+  std::vector<vtkIdType> Items;
+};
+
+// Exact-bits set of surface points: no two samples may share one.
+struct PointKeyHash
+{
+  size_t operator()(const std::array<std::uint64_t, 3>& k) const
+  {
+    std::uint64_t h = k[0] * 0x9E3779B97F4A7C15ull;
+    h ^= k[1] + 0x632BE59BD9B4E019ull + (h << 6) + (h >> 2);
+    h ^= k[2] + 0x85157AF5ull + (h << 6) + (h >> 2);
+    return static_cast<size_t>(h);
+  }
+};
+class SurfacePointSet
+{
+public:
+  /// False when p was already in the set.
+  bool Insert(const double p[3])
+  {
+    std::array<std::uint64_t, 3> key;
+    std::memcpy(key.data(), p, sizeof(double) * 3);
+    return this->Keys.insert(key).second;
+  }
+
+private:
+  std::unordered_set<std::array<std::uint64_t, 3>, PointKeyHash> Keys;
+};
+
+// Solves the balls of one round in parallel, each into its own slot.
+void SolveRound(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& mesh,
+  const vtkMedialIterativeSettings& s, const std::vector<vtkIdType>& triangles,
+  const std::vector<double>& points, std::vector<vtkMedialSampleRecord>& out)
+{
+  const vtkIdType n = static_cast<vtkIdType>(triangles.size());
+  out.resize(triangles.size());
+#pragma omp parallel for num_threads(s.Threads) schedule(dynamic, 1)
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    vtkMedialSolveBall(query, mesh, s.Ball, triangles[i], &points[3 * i], out[i]);
+  }
+}
+
+// Poisson-disk seeds by dart throwing (see the header); returns their surface points.
+void ThrowDarts(const vtkMedialTriangleMesh& mesh, const vtkMedialIterativeSettings& s,
+  vtkIdType wanted, std::vector<vtkIdType>& triangles, std::vector<double>& points)
+{
+  triangles.clear();
+  points.clear();
+  if (wanted <= 0 || mesh.TotalArea <= 0.0)
+  {
+    return;
+  }
+  const double rho = std::sqrt(0.6 * mesh.TotalArea / static_cast<double>(wanted));
+  std::unordered_map<std::uint64_t, std::vector<vtkIdType>> hash;
+  auto cellKey = [&](long long i, long long j, long long k) {
+    return (static_cast<std::uint64_t>(i & 0x1FFFFF) << 42) |
+      (static_cast<std::uint64_t>(j & 0x1FFFFF) << 21) | static_cast<std::uint64_t>(k & 0x1FFFFF);
+  };
+  auto cellOf = [&](const double p[3], long long ijk[3]) {
+    for (int a = 0; a < 3; ++a)
+    {
+      ijk[a] = static_cast<long long>(std::floor((p[a] - mesh.Bounds[2 * a]) / rho));
+    }
+  };
+  const vtkIdType maximumDarts = 30 * wanted;
+  for (vtkIdType dart = 0; dart < maximumDarts && static_cast<vtkIdType>(triangles.size()) < wanted; ++dart)
+  {
+    vtkIdType t;
+    double p[3];
+    vtkMedialDrawSurfacePoint(mesh, s.Seed ^ DartStream, dart, t, p);
+    long long ijk[3];
+    cellOf(p, ijk);
+    bool free = true;
+    for (int dz = -1; dz <= 1 && free; ++dz)
+    {
+      for (int dy = -1; dy <= 1 && free; ++dy)
+      {
+        for (int dx = -1; dx <= 1 && free; ++dx)
+        {
+          auto it = hash.find(cellKey(ijk[0] + dx, ijk[1] + dy, ijk[2] + dz));
+          if (it == hash.end())
+          {
+            continue;
+          }
+          for (vtkIdType other : it->second)
+          {
+            if (Distance(p, &points[3 * other]) < rho)
+            {
+              free = false;
+              break;
+            }
+          }
+        }
+      }
+    }
+    if (free)
+    {
+      hash[cellKey(ijk[0], ijk[1], ijk[2])].push_back(static_cast<vtkIdType>(triangles.size()));
+      triangles.push_back(t);
+      points.insert(points.end(), p, p + 3);
+    }
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+struct vtkMedialCoverage::Internals
+{
+  const vtkMedialTriangleMesh* Mesh = nullptr;
+  vtkIdType NumberOfVertices = 0;
+  std::vector<double> Points;      // vertices, then one centroid per face
+  std::vector<char> Used;          // vertices referenced by a face; centroids always
+  std::vector<double> Gap;         // per point
+  std::vector<vtkIdType> FaceStart; // vertex -> faces (CSR)
+  std::vector<vtkIdType> FaceList;
+  std::vector<unsigned> Stamp; // per face, dedupes `touched`
+  unsigned CurrentStamp = 0;
+  PointGrid Grid;
+  double Bound = HUGE_VAL; // upper bound of every gap
+
+  template <class F>
+  void ForEachFaceOf(vtkIdType point, F&& f) const
+  {
+    if (point >= this->NumberOfVertices)
+    {
+      f(point - this->NumberOfVertices);
+      return;
+    }
+    for (vtkIdType s = this->FaceStart[point]; s < this->FaceStart[point + 1]; ++s)
+    {
+      f(this->FaceList[s]);
+    }
+  }
+};
+
+vtkMedialCoverage::vtkMedialCoverage(const vtkMedialTriangleMesh& mesh)
+  : Impl(new Internals)
+{
+  Internals& m = *this->Impl;
+  m.Mesh = &mesh;
+  const vtkIdType nv = static_cast<vtkIdType>(mesh.Points.size() / 3);
+  const vtkIdType nf = mesh.GetNumberOfTriangles();
+  m.NumberOfVertices = nv;
+  m.Points.resize(3 * static_cast<size_t>(nv + nf));
+  std::copy(mesh.Points.begin(), mesh.Points.end(), m.Points.begin());
+  m.Used.assign(static_cast<size_t>(nv + nf), 0);
+  m.FaceStart.assign(static_cast<size_t>(nv + 1), 0);
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    const vtkIdType* t = mesh.GetTriangle(f);
+    double* c = &m.Points[3 * static_cast<size_t>(nv + f)];
+    for (int k = 0; k < 3; ++k)
+    {
+      c[k] = (mesh.GetPoint(t[0])[k] + mesh.GetPoint(t[1])[k] + mesh.GetPoint(t[2])[k]) / 3.0;
+      m.Used[t[k]] = 1;
+      ++m.FaceStart[t[k] + 1];
+    }
+    m.Used[nv + f] = 1;
+  }
+  for (vtkIdType v = 0; v < nv; ++v)
+  {
+    m.FaceStart[v + 1] += m.FaceStart[v];
+  }
+  m.FaceList.resize(static_cast<size_t>(m.FaceStart[nv]));
+  std::vector<vtkIdType> fill(m.FaceStart.begin(), m.FaceStart.end() - 1);
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      m.FaceList[fill[mesh.GetTriangle(f)[k]]++] = f;
+    }
+  }
+  // Unreferenced vertices never count: their gap stays at -infinity.
+  m.Gap.assign(m.Used.size(), HUGE_VAL);
+  vtkIdType used = 0;
+  for (size_t i = 0; i < m.Used.size(); ++i)
+  {
+    used += m.Used[i] ? 1 : 0;
+    if (!m.Used[i])
+    {
+      m.Gap[i] = -HUGE_VAL;
+    }
+  }
+  m.Stamp.assign(static_cast<size_t>(nf), 0);
+  // About 8 points per occupied cell, at most 2^22 cells.
+  double size = std::sqrt(8.0 * std::max(mesh.TotalArea, 1e-300) / std::max<vtkIdType>(used, 1));
+  size = std::max(size, 1e-9 * mesh.Diagonal);
+  for (;;)
+  {
+    double cells = 1.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      cells *= std::floor((mesh.Bounds[2 * k + 1] - mesh.Bounds[2 * k]) / size) + 1.0;
+    }
+    if (cells <= 4194304.0 || !(size > 0.0))
+    {
+      break;
+    }
+    size *= 1.25;
+  }
+  m.Grid.Build(m.Points, m.Used, mesh.Bounds, size);
+}
+
+vtkMedialCoverage::~vtkMedialCoverage() = default;
+
+void vtkMedialCoverage::Initialize(const std::vector<vtkMedialSampleRecord>& records)
+{
+  Internals& m = *this->Impl;
+  std::vector<double> seeds;
+  for (const vtkMedialSampleRecord& r : records)
+  {
+    if (r.Valid)
+    {
+      seeds.insert(seeds.end(), r.Surface, r.Surface + 3);
+    }
+  }
+  const size_t n = seeds.size() / 3;
+  if (n > 0)
+  {
+    // Start value: distance to a nearby seed's surface point (an upper bound of the gap).
+    PointGrid seedGrid;
+    const double spacing = std::max(std::sqrt(m.Mesh->TotalArea / n), 1e-9 * m.Mesh->Diagonal);
+    double size = spacing;
+    while ((std::floor((m.Mesh->Bounds[1] - m.Mesh->Bounds[0]) / size) + 1) *
+        (std::floor((m.Mesh->Bounds[3] - m.Mesh->Bounds[2]) / size) + 1) *
+        (std::floor((m.Mesh->Bounds[5] - m.Mesh->Bounds[4]) / size) + 1) >
+      4194304.0)
+    {
+      size *= 1.25;
+    }
+    seedGrid.Build(seeds, std::vector<char>(), m.Mesh->Bounds, size);
+    const vtkIdType count = static_cast<vtkIdType>(m.Points.size() / 3);
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      if (!m.Used[i])
+      {
+        continue;
+      }
+      const double* x = &m.Points[3 * i];
+      double best = HUGE_VAL;
+      for (int ring = 1; best == HUGE_VAL && ring <= seedGrid.MaxDim(); ring *= 2)
+      {
+        seedGrid.ForEachInCube(x, ring, [&](vtkIdType s) { best = std::min(best, Distance(x, &seeds[3 * s])); });
+      }
+      m.Gap[i] = std::min(m.Gap[i], best);
+    }
+  }
+  this->MaxGap();
+  for (const vtkMedialSampleRecord& r : records)
+  {
+    if (r.Valid)
+    {
+      this->AddBall(r.Centre, r.Radius, nullptr);
+    }
+  }
+}
+
+void vtkMedialCoverage::AddBall(const double c[3], double r, std::vector<vtkIdType>* touched)
+{
+  Internals& m = *this->Impl;
+  ++m.CurrentStamp;
+  const double reach = r + std::min(m.Bound, 2.0 * m.Mesh->Diagonal);
+  m.Grid.ForEachNear(c, reach, [&](vtkIdType i) {
+    const double g = Distance(&m.Points[3 * i], c) - r;
+    if (g < m.Gap[i])
+    {
+      m.Gap[i] = g;
+      if (touched)
+      {
+        m.ForEachFaceOf(i, [&](vtkIdType f) {
+          if (m.Stamp[f] != m.CurrentStamp)
+          {
+            m.Stamp[f] = m.CurrentStamp;
+            touched->push_back(f);
+          }
+        });
+      }
+    }
+  });
+}
+
+double vtkMedialCoverage::FaceGap(vtkIdType face) const
+{
+  const Internals& m = *this->Impl;
+  const vtkIdType* t = m.Mesh->GetTriangle(face);
+  return std::max(std::max(m.Gap[t[0]], m.Gap[t[1]]), std::max(m.Gap[t[2]], m.Gap[m.NumberOfVertices + face]));
+}
+
+void vtkMedialCoverage::WorstPoint(vtkIdType face, double x[3]) const
+{
+  const Internals& m = *this->Impl;
+  const vtkIdType* t = m.Mesh->GetTriangle(face);
+  vtkIdType best = m.NumberOfVertices + face;
+  for (int k = 0; k < 3; ++k)
+  {
+    if (m.Gap[t[k]] > m.Gap[best])
+    {
+      best = t[k];
+    }
+  }
+  std::copy(&m.Points[3 * best], &m.Points[3 * best] + 3, x);
+}
+
+double vtkMedialCoverage::MaxGap()
+{
+  Internals& m = *this->Impl;
+  double worst = -HUGE_VAL;
+  for (double g : m.Gap)
+  {
+    worst = std::max(worst, g);
+  }
+  m.Bound = std::max(worst, 0.0);
+  return worst;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+struct Runner
+{
+  const vtkMedialTriangleMesh& Mesh;
+  const vtkMedialSurfaceQuery& Query;
+  const vtkMedialIterativeSettings& S;
+  const std::function<bool(double)>& Progress;
+  vtkMedialIterativeResult& R;
+  vtkMedialCoverage Coverage;
+  SurfacePointSet Taken;
+
+  Runner(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
+    const vtkMedialIterativeSettings& s, const std::function<bool(double)>& progress,
+    vtkMedialIterativeResult& r)
+    : Mesh(mesh)
+    , Query(query)
+    , S(s)
+    , Progress(progress)
+    , R(r)
+    , Coverage(mesh)
+  {
+  }
+
+  vtkIdType Count() const { return static_cast<vtkIdType>(this->R.Records.size()); }
+
+  // Checks coverage, reports progress; true when the run must stop.
+  bool EndOfRound()
+  {
+    this->R.MaxGap = this->Coverage.MaxGap();
+    this->R.CoverageReached = this->R.MaxGap <= this->S.CoverageTolerance;
+    if (this->Progress(static_cast<double>(this->Count()) / static_cast<double>(this->S.Budget)))
+    {
+      this->R.Aborted = true;
+      return true;
+    }
+    return this->S.CoverageTolerance > 0.0 && this->R.CoverageReached;
+  }
+
+  void Seed()
+  {
+    const vtkIdType wanted = std::min(this->S.Budget,
+      std::max<vtkIdType>(1, static_cast<vtkIdType>(std::llround(this->S.SeedFraction * this->S.Budget))));
+    std::vector<vtkIdType> triangles;
+    std::vector<double> points;
+    ThrowDarts(this->Mesh, this->S, wanted, triangles, points);
+    SolveRound(this->Query, this->Mesh, this->S, triangles, points, this->R.Records);
+    for (size_t i = 0; i < triangles.size(); ++i)
+    {
+      this->Taken.Insert(&points[3 * i]);
+    }
+    this->R.Seeds = this->Count();
+    this->Coverage.Initialize(this->R.Records);
+  }
+
+  void FaceDistance();
+  void ClosestNeighbor();
+};
+
+struct FaceEntry
+{
+  double Gap;
+  vtkIdType Face;
+  unsigned Version;
+  bool operator<(const FaceEntry& o) const // max-heap on Gap; ties: smaller face first
+  {
+    return this->Gap < o.Gap || (this->Gap == o.Gap && this->Face > o.Face);
+  }
+};
+
+void Runner::FaceDistance()
+{
+  const vtkIdType nf = this->Mesh.GetNumberOfTriangles();
+  const double tol = this->S.CoverageTolerance;
+  std::vector<unsigned> version(static_cast<size_t>(nf), 0);
+  std::vector<int> attempts(static_cast<size_t>(nf), 0);
+  std::vector<double> key(static_cast<size_t>(nf));
+  std::vector<unsigned> round(static_cast<size_t>(nf), 0); // round in which the face was pushed last
+  std::priority_queue<FaceEntry> heap;
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    key[f] = this->Coverage.FaceGap(f);
+    if (key[f] > tol)
+    {
+      heap.push({ key[f], f, 0 });
+    }
+  }
+  auto push = [&](vtkIdType f) {
+    ++version[f];
+    if (key[f] > tol && attempts[f] < this->S.MaximumFaceAttempts)
+    {
+      heap.push({ key[f], f, version[f] });
+    }
+  };
+  vtkIdType drawn = 0; // index of the face-sample stream
+  unsigned roundIndex = 0;
+  std::vector<vtkIdType> faces, triangles, touched;
+  std::vector<double> points;
+  std::vector<vtkMedialSampleRecord> solved;
+  if (this->EndOfRound())
+  {
+    return;
+  }
+  while (this->Count() < this->S.Budget && !heap.empty())
+  {
+    ++roundIndex;
+    faces.clear();
+    triangles.clear();
+    points.clear();
+    const vtkIdType room = std::min<vtkIdType>(this->S.RoundSize, this->S.Budget - this->Count());
+    while (static_cast<vtkIdType>(faces.size()) < room && !heap.empty())
+    {
+      const FaceEntry e = heap.top();
+      heap.pop();
+      if (e.Version != version[e.Face])
+      {
+        continue; // stale: the face's gap changed since
+      }
+      ++version[e.Face]; // consumed: no other live entry remains
+      faces.push_back(e.Face);
+      // A random point on the face, drawn toward its least covered point w.
+      vtkMedialSampleRandom random(this->S.Seed ^ FaceStream, static_cast<std::uint64_t>(drawn++));
+      const vtkIdType* t = this->Mesh.GetTriangle(e.Face);
+      const double s = std::sqrt(random.Uniform()), u = random.Uniform(), pull = random.Uniform();
+      const double wa = 1.0 - s, wb = s * (1.0 - u), wc = s * u;
+      double w[3], p[3];
+      this->Coverage.WorstPoint(e.Face, w);
+      for (int k = 0; k < 3; ++k)
+      {
+        const double q = wa * this->Mesh.GetPoint(t[0])[k] + wb * this->Mesh.GetPoint(t[1])[k] +
+          wc * this->Mesh.GetPoint(t[2])[k];
+        p[k] = w[k] + pull * (q - w[k]);
+      }
+      triangles.push_back(e.Face);
+      points.insert(points.end(), p, p + 3);
+    }
+    SolveRound(this->Query, this->Mesh, this->S, triangles, points, solved);
+    for (size_t j = 0; j < faces.size(); ++j)
+    {
+      const vtkIdType f = faces[j];
+      ++attempts[f];
+      if (this->Taken.Insert(&points[3 * j]))
+      {
+        this->R.Records.push_back(solved[j]);
+        if (solved[j].Valid)
+        {
+          touched.clear();
+          this->Coverage.AddBall(solved[j].Centre, solved[j].Radius, &touched);
+          for (vtkIdType g : touched)
+          {
+            const double now = this->Coverage.FaceGap(g);
+            if (now != key[g] || g == f)
+            {
+              key[g] = now;
+              round[g] = roundIndex;
+              push(g);
+            }
+          }
+        }
+      }
+      if (round[f] != roundIndex)
+      {
+        round[f] = roundIndex;
+        push(f); // not lowered by its own sample: try again, up to the attempt cap
+      }
+    }
+    if (this->EndOfRound())
+    {
+      return;
+    }
+  }
+}
+
+struct Segment
+{
+  vtkIdType A, B, Link;
+  vtkIdType Child[2];
+};
+struct SegmentEntry
+{
+  double Length;
+  vtkIdType Index;
+  bool operator<(const SegmentEntry& o) const // max-heap on length; ties: older first
+  {
+    return this->Length < o.Length || (this->Length == o.Length && this->Index > o.Index);
+  }
+};
+
+bool Overlap(const vtkMedialSampleRecord& a, const vtkMedialSampleRecord& b)
+{
+  return Distance(a.Centre, b.Centre) <= a.Radius + b.Radius;
+}
+
+void Runner::ClosestNeighbor()
+{
+  std::vector<vtkMedialSampleRecord>& rec = this->R.Records;
+  const vtkIdType seeds = this->R.Seeds;
+  // Step 1: chains of closest, unlinked, non-overlapping seeds.
+  std::vector<char> linked(static_cast<size_t>(seeds), 0), done(static_cast<size_t>(seeds), 0);
+  std::vector<Segment> segments;
+  vtkIdType current = -1, firstFree = 0;
+  for (;;)
+  {
+    if (current < 0)
+    {
+      while (firstFree < seeds && (!rec[firstFree].Valid || linked[firstFree] || done[firstFree]))
+      {
+        ++firstFree;
+      }
+      if (firstFree >= seeds)
+      {
+        break;
+      }
+      current = firstFree;
+    }
+    done[current] = 1;
+    vtkIdType best = -1;
+    double bestDistance = HUGE_VAL;
+    for (vtkIdType q = 0; q < seeds; ++q)
+    {
+      if (q == current || linked[q] || !rec[q].Valid || Overlap(rec[current], rec[q]))
+      {
+        continue;
+      }
+      const double d = Distance(rec[current].Centre, rec[q].Centre);
+      if (d < bestDistance)
+      {
+        bestDistance = d;
+        best = q;
+      }
+    }
+    if (best < 0)
+    {
+      current = -1; // the chain ends
+      continue;
+    }
+    const vtkIdType link = static_cast<vtkIdType>(segments.size());
+    segments.push_back({ current, best, link, { -1, -1 } });
+    linked[current] = linked[best] = 1;
+    current = best;
+  }
+  const vtkIdType initialLinks = static_cast<vtkIdType>(segments.size());
+
+  // Step 2: a max-heap of links by length.
+  std::priority_queue<SegmentEntry> heap;
+  const double shortest = 1e-9 * this->Mesh.Diagonal;
+  auto pushIfApart = [&](vtkIdType i) {
+    const Segment& g = segments[i];
+    if (!Overlap(rec[g.A], rec[g.B]) && Distance(rec[g.A].Surface, rec[g.B].Surface) > shortest)
+    {
+      heap.push({ Distance(rec[g.A].Centre, rec[g.B].Centre), i });
+    }
+  };
+  for (vtkIdType i = 0; i < initialLinks; ++i)
+  {
+    pushIfApart(i);
+  }
+
+  // Step 3: split the longest links at the surface point between their ends.
+  std::vector<vtkIdType> popped, triangles;
+  std::vector<double> points;
+  std::vector<vtkMedialSampleRecord> solved;
+  bool stop = this->EndOfRound();
+  while (!stop && this->Count() < this->S.Budget && !heap.empty())
+  {
+    popped.clear();
+    triangles.clear();
+    points.clear();
+    const vtkIdType room = std::min<vtkIdType>(this->S.RoundSize, this->S.Budget - this->Count());
+    while (static_cast<vtkIdType>(popped.size()) < room && !heap.empty())
+    {
+      const vtkIdType i = heap.top().Index;
+      heap.pop();
+      const Segment& g = segments[i];
+      double mid[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        mid[k] = 0.5 * (rec[g.A].Surface[k] + rec[g.B].Surface[k]);
+      }
+      vtkMedialSurfaceQuery::ClosestHit hit;
+      const double bound = Distance(mid, rec[g.A].Surface) * (1.0 + 1e-9) + shortest + this->Query.GetSlack();
+      if (!this->Query.ClosestPoint(mid, bound, hit))
+      {
+        continue; // cannot happen on a surface through A; the link stays as it is
+      }
+      // Off the triangle's edges and vertices, where the closest point often lands:
+      // the ray from a point exactly on an edge can graze the neighbouring face (the
+      // BVH works in float). A shift of 1e-3 of the way to the centroid is far below
+      // the sampling density.
+      const vtkIdType* t = this->Mesh.GetTriangle(hit.Triangle);
+      for (int k = 0; k < 3; ++k)
+      {
+        const double centroid = (this->Mesh.GetPoint(t[0])[k] + this->Mesh.GetPoint(t[1])[k] +
+                                  this->Mesh.GetPoint(t[2])[k]) / 3.0;
+        hit.Point[k] += 1e-3 * (centroid - hit.Point[k]);
+      }
+      popped.push_back(i);
+      triangles.push_back(hit.Triangle);
+      points.insert(points.end(), hit.Point, hit.Point + 3);
+    }
+    SolveRound(this->Query, this->Mesh, this->S, triangles, points, solved);
+    for (size_t j = 0; j < popped.size(); ++j)
+    {
+      if (!this->Taken.Insert(&points[3 * j]))
+      {
+        continue; // projects onto an existing sample: the link stays as it is
+      }
+      const vtkIdType m = this->Count();
+      rec.push_back(solved[j]);
+      if (!solved[j].Valid)
+      {
+        continue;
+      }
+      this->Coverage.AddBall(solved[j].Centre, solved[j].Radius, nullptr);
+      const vtkIdType i = popped[j];
+      const Segment parent = segments[i];
+      const vtkIdType left = static_cast<vtkIdType>(segments.size());
+      segments.push_back({ parent.A, m, parent.Link, { -1, -1 } });
+      segments.push_back({ m, parent.B, parent.Link, { -1, -1 } });
+      segments[i].Child[0] = left;
+      segments[i].Child[1] = left + 1;
+      pushIfApart(left);
+      pushIfApart(left + 1);
+    }
+    stop = this->EndOfRound();
+  }
+
+  // The final links: the leaves of each initial link's split tree, in path order.
+  std::vector<vtkIdType> stack;
+  for (vtkIdType link = 0; link < initialLinks; ++link)
+  {
+    stack.assign(1, link);
+    while (!stack.empty())
+    {
+      const vtkIdType i = stack.back();
+      stack.pop_back();
+      if (segments[i].Child[0] < 0)
+      {
+        this->R.LinkEnds.push_back(segments[i].A);
+        this->R.LinkEnds.push_back(segments[i].B);
+        this->R.InitialLink.push_back(link);
+      }
+      else
+      {
+        stack.push_back(segments[i].Child[1]);
+        stack.push_back(segments[i].Child[0]);
+      }
+    }
+  }
+}
+}
+
+void vtkMedialRunIterativeSampling(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
+  const vtkMedialIterativeSettings& settings, const std::function<bool(double)>& progress,
+  vtkMedialIterativeResult& result)
+{
+  result = vtkMedialIterativeResult();
+  if (settings.Budget <= 0 || mesh.GetNumberOfTriangles() == 0)
+  {
+    return;
+  }
+  Runner runner(mesh, query, settings, progress, result);
+  runner.Seed();
+  if (settings.Strategy == vtkMedialIterativeSettings::CLOSEST_NEIGHBOR)
+  {
+    runner.ClosestNeighbor();
+  }
+  else
+  {
+    runner.FaceDistance();
+  }
+  if (!result.Aborted)
+  {
+    result.MaxGap = runner.Coverage.MaxGap();
+    result.CoverageReached = result.MaxGap <= settings.CoverageTolerance;
+  }
+}

@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file vtkMedialIterativeSampling.h
+ * @brief Internal: the iterative sampling strategies of vtkMedialAxisSampler (3D),
+ * and the coverage measure they share. Not installed.
+ *
+ * Coverage. The gap of a surface point x is g(x) = min_i (|x - c_i| - r_i), its
+ * distance to the union of the balls so far (negative inside a ball). A face is
+ * covered when g <= CoverageTolerance at its three vertices and its centroid; the
+ * face's gap is the largest of those four. vtkMedialCoverage keeps g at every vertex
+ * and centroid in a uniform grid, and lowers it ball by ball: a new ball (c, r) can
+ * only lower points with |x - c| < r + G, G being an upper bound of every gap, so
+ * only the grid cells within that distance are visited. It starts from the first
+ * balls (the seeds): g(x) <= |x - p| for the surface point p of any ball, so the
+ * distance to the nearest seed's surface point is a valid start value and G.
+ *
+ * Seeding (every strategy but Random). Poisson-disk dart throwing on the surface:
+ * candidates are area-weighted random surface points from the stream
+ * (seed ^ constant, k), accepted when no accepted seed lies within
+ * rho = sqrt(0.6 A / S) (A the surface area, S = SeedFraction * budget), found
+ * through a spatial hash of cell size rho. It stops at S seeds or 30 S candidates.
+ * The seeds touch every region of the surface, so regions without initial
+ * samples (the drawback of both strategies in the report) cannot occur.
+ *
+ * FACE_DISTANCE. A max-heap of (face gap, face, version) orders the faces; when a
+ * new ball lowers a face's gap, the face's version is bumped and a new entry is
+ * pushed; popped entries whose version is not current are stale and dropped (lazy
+ * deletion), so a face has at most one live entry and is never sampled twice for
+ * one entry. Each round pops up to RoundSize live faces, draws on each a random
+ * point from the stream (seed ^ constant, sample index), biased toward the face's
+ * worst point w (P = w + t (u - w), u uniform on the face, t uniform in [0, 1)),
+ * solves the balls in parallel and inserts them in index order. A face that stays
+ * uncovered after MaximumFaceAttempts samples (e.g. next to a hole) is given up.
+ *
+ * CLOSEST_NEIGHBOR. Step 1 chains the seeds: from the first unlinked seed, link to
+ * the closest seed that has no link yet and whose ball does not overlap the
+ * current one (|c_p - c_q| > r_p + r_q), move there and repeat; when no such seed
+ * exists the chain ends and the next one starts at the first seed without a link.
+ * Step 2 pushes every link in a max-heap keyed by its length |c_p - c_q|. Step 3
+ * pops up to RoundSize links per round; for each, the midpoint of the two surface
+ * points is projected to the closest surface point (vtkMedialSurfaceQuery) and its
+ * ball is solved (in parallel); in index order the link P-Q becomes P-M and M-Q,
+ * and each half whose balls still do not overlap is pushed again. A link whose
+ * midpoint projects onto an existing sample, or whose ball fails, stays as it is.
+ * The output keeps every final link as a line cell, grouped by the step-1 link
+ * they refine, in path order from P to Q.
+ *
+ * Stopping: the budget (NumberOfSamples, seeds included), an empty heap, or
+ * coverage (checked after every round when CoverageTolerance > 0).
+ *
+ * Determinism: every choice (seeds, popped entries, sample indices, insertion order)
+ * is made on one thread in a fixed order; only the ball solves of a round run in
+ * parallel, each into its own slot. The result does not depend on the thread count.
+ * No two samples share a surface point: exact duplicates are refused.
+ */
+#ifndef vtkMedialIterativeSampling_h
+#define vtkMedialIterativeSampling_h
+
+#include "vtkMedialBallSolver.h"
+#include "vtkMedialSampleRecord.h"
+#include "vtkType.h"
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+class vtkMedialSurfaceQuery;
+class vtkMedialTriangleMesh;
+
+/// Gap of the surface (vertices and face centroids) to a growing union of balls.
+class vtkMedialCoverage
+{
+public:
+  explicit vtkMedialCoverage(const vtkMedialTriangleMesh& mesh);
+  ~vtkMedialCoverage();
+  vtkMedialCoverage(const vtkMedialCoverage&) = delete;
+  vtkMedialCoverage& operator=(const vtkMedialCoverage&) = delete;
+
+  /// Starts from the valid records (their surface points bound the gaps), then adds their balls.
+  void Initialize(const std::vector<vtkMedialSampleRecord>& records);
+  /// Lowers the gaps with ball (c, r); appends the faces whose gap changed to `touched`
+  /// (each face once per call) unless `touched` is null.
+  void AddBall(const double c[3], double r, std::vector<vtkIdType>* touched);
+  /// Largest gap of the face's vertices and centroid.
+  double FaceGap(vtkIdType face) const;
+  /// The face's point (vertex or centroid) of largest gap.
+  void WorstPoint(vtkIdType face, double x[3]) const;
+  /// Largest gap over all faces (recomputed; also refreshes the internal bound).
+  double MaxGap();
+
+private:
+  struct Internals;
+  std::unique_ptr<Internals> Impl;
+};
+
+struct vtkMedialIterativeSettings
+{
+  enum Strategies
+  {
+    CLOSEST_NEIGHBOR = 1,
+    FACE_DISTANCE = 2
+  };
+  int Strategy = FACE_DISTANCE;
+  vtkIdType Budget = 0;           // total samples, seeds included
+  double SeedFraction = 0.25;     // of the budget, for the Poisson-disk seeds
+  double CoverageTolerance = 0.0; // absolute; 0: run to the budget
+  vtkTypeUInt64 Seed = 1;
+  int Threads = 1;
+  int RoundSize = 64;           // samples solved per round (fixed: not the thread count)
+  int MaximumFaceAttempts = 4;  // FACE_DISTANCE: samples per face before giving it up
+  vtkMedialBallParameters Ball;
+};
+
+struct vtkMedialIterativeResult
+{
+  std::vector<vtkMedialSampleRecord> Records; // in sample order; seeds first
+  vtkIdType Seeds = 0;                        // records that are seeds
+  /// CLOSEST_NEIGHBOR: final links as record index pairs, grouped by initial link.
+  std::vector<vtkIdType> LinkEnds;    // 2 per link
+  std::vector<vtkIdType> InitialLink; // 1 per link: the step-1 link it refines
+  bool CoverageReached = false;
+  double MaxGap = 0.0; // absolute
+  bool Aborted = false;
+};
+
+/// Runs a strategy. `progress(fraction)` is called on the calling thread between
+/// rounds and returns true to abort.
+void vtkMedialRunIterativeSampling(const vtkMedialTriangleMesh& mesh,
+  const vtkMedialSurfaceQuery& query, const vtkMedialIterativeSettings& settings,
+  const std::function<bool(double)>& progress, vtkMedialIterativeResult& result);
+
+#endif
