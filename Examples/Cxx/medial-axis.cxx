@@ -74,6 +74,7 @@ namespace
 {
 const char* Usage =
   "usage: medial-axis [INPUT] [-n N] [--method bisection|shrinking-ball|one-pass] [--seed S]\n"
+  "                   [--strategy random|closest-neighbor|face-distance] [--coverage E]\n"
   "                   [--threads T] [--tolerance E] [--min-angle DEG] [-o OUT.vtp]\n"
   "                   [--render OUT.png] [--stats] [--reconstruct OUT.vtp|.stl|.ply]\n"
   "                   [--resolution N] [--junctions OUT.vtp]\n"
@@ -83,6 +84,12 @@ const char* Usage =
   "               demo:rectangle, demo:frame (square with a square hole), demo:star (2D)\n"
   "  -n N         number of surface samples (default 10000)\n"
   "  --method M   one-pass (default, fastest), bisection (the report's) or shrinking-ball\n"
+  "  --strategy S where the samples go (3D): random (default), closest-neighbor (Poisson-disk\n"
+  "               seeds linked to their closest non-overlapping neighbour, links split until\n"
+  "               the balls overlap; -o then holds the links as lines) or face-distance\n"
+  "               (Poisson-disk seeds, then always the face farthest from the union of balls)\n"
+  "  --coverage E stop once every face's vertices and centroid are within E (relative to the\n"
+  "               bounding-box diagonal) of the union of balls, or at -n samples (default 0: off)\n"
   "  --seed S     random seed (default 1); output is identical for any thread count\n"
   "  --threads T  OpenMP threads, 0 = all cores (default 0)\n"
   "  --tolerance E  bisection tolerance relative to the bounding-box diagonal (default 1e-6)\n"
@@ -106,6 +113,8 @@ struct Options
   std::string Input;
   long long Samples = 10000;
   int Method = vtkMedialAxisSampler::ONE_PASS;
+  int Strategy = vtkMedialAxisSampler::RANDOM;
+  double Coverage = 0.0;
   unsigned long long Seed = 1;
   int Threads = 0;
   double Tolerance = 1e-6;
@@ -257,6 +266,30 @@ Options Parse(int argc, char* argv[])
       {
         Fail("unknown --method '" + m + "' (bisection, shrinking-ball, one-pass)");
       }
+    }
+    else if (a == "--strategy")
+    {
+      const std::string m = need(i);
+      if (m == "random")
+      {
+        o.Strategy = vtkMedialAxisSampler::RANDOM;
+      }
+      else if (m == "closest-neighbor")
+      {
+        o.Strategy = vtkMedialAxisSampler::CLOSEST_NEIGHBOR;
+      }
+      else if (m == "face-distance")
+      {
+        o.Strategy = vtkMedialAxisSampler::FACE_DISTANCE;
+      }
+      else
+      {
+        Fail("unknown --strategy '" + m + "' (random, closest-neighbor, face-distance)");
+      }
+    }
+    else if (a == "--coverage")
+    {
+      o.Coverage = number(i, 0, 1);
     }
     else if (a == "--seed")
     {
@@ -964,6 +997,8 @@ int main(int argc, char* argv[])
   sampler->SetInputData(surface);
   sampler->SetNumberOfSamples(static_cast<vtkIdType>(opt.Samples));
   sampler->SetMethod(opt.Method);
+  sampler->SetSamplingStrategy(opt.Strategy);
+  sampler->SetCoverageTolerance(opt.Coverage);
   sampler->SetRandomSeed(opt.Seed);
   sampler->SetNumberOfThreads(opt.Threads);
   sampler->SetTolerance(opt.Tolerance);
@@ -1070,7 +1105,17 @@ int main(int argc, char* argv[])
        << JsonString(vtkMedialAxisSampler::GetMethodName(opt.Method)) << ", \"threads\": " << threads
        << ", \"min_angle\": " << opt.MinAngle << ", \"tolerance\": " << opt.Tolerance
        << ", \"iterations_mean\": " << sampler->GetMeanIterations()
-       << ", \"capped\": " << sampler->GetCappedSamples() << ", \"seconds\": " << seconds
+       << ", \"capped\": " << sampler->GetCappedSamples()
+       << ", \"strategy\": "
+       << JsonString(vtkMedialAxisSampler::GetSamplingStrategyName(planar ? vtkMedialAxisSampler::RANDOM : opt.Strategy));
+    if (!planar && (opt.Strategy != vtkMedialAxisSampler::RANDOM || opt.Coverage > 0.0))
+    {
+      js << ", \"evaluated\": " << sampler->GetEvaluatedSamples() << ", \"seeds\": " << sampler->GetSeedSamples()
+         << ", \"links\": " << medial->GetNumberOfLines() << ", \"coverage\": " << opt.Coverage
+         << ", \"coverage_reached\": " << (sampler->GetCoverageReached() ? "true" : "false")
+         << ", \"max_coverage_gap\": " << sampler->GetMaxCoverageGap();
+    }
+    js << ", \"seconds\": " << seconds
        << ReconstructionStats(surface, reconstruction, reconstructionSeconds, sampler, opt);
     if (graph)
     {
