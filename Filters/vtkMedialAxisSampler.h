@@ -130,7 +130,9 @@ public:
   ///  - FACE_DISTANCE: Poisson-disk seeds, then the face farthest from the union of
   ///    balls is sampled next (a max-heap with lazy deletion).
   /// The two iterative strategies stop at the budget (NumberOfSamples, seeds
-  /// included), when CoverageTolerance is reached, or when they run out of work. See
+  /// included), when CoverageTolerance is reached, or when they run out of work
+  /// (CLOSEST_NEIGHBOR: every link's balls overlap; if a CoverageTolerance is set
+  /// and not reached yet, it then goes on with FACE_DISTANCE rounds). See
   /// vtkMedialIterativeSampling.h for the details. They run in piece 0 only (other
   /// pieces are empty) and are deterministic for a seed, whatever the thread count.
   vtkSetClampMacro(SamplingStrategy, int, RANDOM, FACE_DISTANCE);
@@ -156,7 +158,7 @@ public:
 
   ///@{
   /// Share of NumberOfSamples spent on the Poisson-disk seeds of the iterative
-  /// strategies (default 0.25).
+  /// strategies (default 0.25), at most one seed per triangle.
   vtkSetClampMacro(SeedFraction, double, 0.001, 1.0);
   vtkGetMacro(SeedFraction, double);
   ///@}

@@ -536,7 +536,8 @@ struct Runner
 
   void Seed()
   {
-    const vtkIdType wanted = std::min(this->S.Budget,
+    // SeedFraction of the budget, at most one per triangle (a coarse mesh is a simple shape).
+    const vtkIdType wanted = std::min(std::min(this->S.Budget, this->Mesh.GetNumberOfTriangles()),
       std::max<vtkIdType>(1, static_cast<vtkIdType>(std::llround(this->S.SeedFraction * this->S.Budget))));
     std::vector<vtkIdType> triangles;
     std::vector<double> points;
@@ -609,16 +610,18 @@ void Runner::FaceDistance()
     {
       const FaceEntry e = heap.top();
       heap.pop();
-      if (e.Version != version[e.Face])
+      if (e.Version != version[e.Face] || attempts[e.Face] >= this->S.MaximumFaceAttempts)
       {
-        continue; // stale: the face's gap changed since
+        continue; // stale (the face's gap changed since), or given up
       }
       ++version[e.Face]; // consumed: no other live entry remains
       faces.push_back(e.Face);
       // A random point on the face, drawn toward its least covered point w.
       vtkMedialSampleRandom random(this->S.Seed ^ FaceStream, static_cast<std::uint64_t>(drawn++));
       const vtkIdType* t = this->Mesh.GetTriangle(e.Face);
-      const double s = std::sqrt(random.Uniform()), u = random.Uniform(), pull = random.Uniform();
+      // Each failed attempt halves the neighbourhood of w that is sampled.
+      const double s = std::sqrt(random.Uniform()), u = random.Uniform(),
+                   pull = std::ldexp(random.Uniform(), -attempts[e.Face]);
       const double wa = 1.0 - s, wb = s * (1.0 - u), wc = s * u;
       double w[3], p[3];
       this->Coverage.WorstPoint(e.Face, w);
@@ -635,7 +638,7 @@ void Runner::FaceDistance()
     for (size_t j = 0; j < faces.size(); ++j)
     {
       const vtkIdType f = faces[j];
-      ++attempts[f];
+      const double before = key[f];
       if (this->Taken.Insert(&points[3 * j]))
       {
         this->R.Records.push_back(solved[j]);
@@ -646,7 +649,7 @@ void Runner::FaceDistance()
           for (vtkIdType g : touched)
           {
             const double now = this->Coverage.FaceGap(g);
-            if (now != key[g] || g == f)
+            if (now != key[g])
             {
               key[g] = now;
               round[g] = roundIndex;
@@ -655,10 +658,14 @@ void Runner::FaceDistance()
           }
         }
       }
-      if (round[f] != roundIndex)
+      if (key[f] == before)
       {
-        round[f] = roundIndex;
-        push(f); // not lowered by its own sample: try again, up to the attempt cap
+        ++attempts[f]; // its own sample did not lower it: try again, up to the cap
+        if (round[f] != roundIndex)
+        {
+          round[f] = roundIndex;
+          push(f);
+        }
       }
     }
     if (this->EndOfRound())
@@ -861,6 +868,12 @@ void vtkMedialRunIterativeSampling(const vtkMedialTriangleMesh& mesh, const vtkM
   if (settings.Strategy == vtkMedialIterativeSettings::CLOSEST_NEIGHBOR)
   {
     runner.ClosestNeighbor();
+    // Coverage asked for, links exhausted, budget left: finish with the faces.
+    if (!result.Aborted && settings.CoverageTolerance > 0.0 && !result.CoverageReached &&
+      runner.Count() < settings.Budget)
+    {
+      runner.FaceDistance();
+    }
   }
   else
   {

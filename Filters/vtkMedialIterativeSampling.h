@@ -17,7 +17,8 @@
  * Seeding (every strategy but Random). Poisson-disk dart throwing on the surface:
  * candidates are area-weighted random surface points from the stream
  * (seed ^ constant, k), accepted when no accepted seed lies within
- * rho = sqrt(0.6 A / S) (A the surface area, S = SeedFraction * budget), found
+ * rho = sqrt(0.6 A / S) (A the surface area, S = SeedFraction * budget, at most
+ * one per triangle), found
  * through a spatial hash of cell size rho. It stops at S seeds or 30 S candidates.
  * The seeds touch every region of the surface, so regions without initial
  * samples (the drawback of both strategies in the report) cannot occur.
@@ -28,9 +29,11 @@
  * deletion), so a face has at most one live entry and is never sampled twice for
  * one entry. Each round pops up to RoundSize live faces, draws on each a random
  * point from the stream (seed ^ constant, sample index), biased toward the face's
- * worst point w (P = w + t (u - w), u uniform on the face, t uniform in [0, 1)),
- * solves the balls in parallel and inserts them in index order. A face that stays
- * uncovered after MaximumFaceAttempts samples (e.g. next to a hole) is given up.
+ * worst point w (P = w + t (u - w), u uniform on the face, t uniform in
+ * [0, 2^-a), a the number of earlier samples of this face that failed to lower it),
+ * solves the balls in parallel and inserts them in index order. A face whose own
+ * samples fail to lower its gap MaximumFaceAttempts times (e.g. next to a hole, or
+ * a vertex no admissible ball can reach) is given up.
  *
  * CLOSEST_NEIGHBOR. Step 1 chains the seeds: from the first unlinked seed, link to
  * the closest seed that has no link yet and whose ball does not overlap the
@@ -46,7 +49,10 @@
  * they refine, in path order from P to Q.
  *
  * Stopping: the budget (NumberOfSamples, seeds included), an empty heap, or
- * coverage (checked after every round when CoverageTolerance > 0).
+ * coverage (checked after every round when CoverageTolerance > 0). When
+ * CLOSEST_NEIGHBOR runs out of links (all consecutive balls overlap) before the
+ * coverage asked for is reached, it finishes with FACE_DISTANCE rounds (those
+ * samples are not linked); with CoverageTolerance 0 it just stops there.
  *
  * Determinism: every choice (seeds, popped entries, sample indices, insertion order)
  * is made on one thread in a fixed order; only the ball solves of a round run in
@@ -107,7 +113,7 @@ struct vtkMedialIterativeSettings
   vtkTypeUInt64 Seed = 1;
   int Threads = 1;
   int RoundSize = 64;           // samples solved per round (fixed: not the thread count)
-  int MaximumFaceAttempts = 4;  // FACE_DISTANCE: samples per face before giving it up
+  int MaximumFaceAttempts = 8;  // FACE_DISTANCE: failed samples of a face before giving it up
   vtkMedialBallParameters Ball;
 };
 

@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Brute-force helpers of the sampling-strategy tests: the coverage gap of a surface
+// point to the union of the output balls, and bit-for-bit comparison of two outputs.
+#ifndef MedialStrategyTestUtilities_h
+#define MedialStrategyTestUtilities_h
+
+#include "MedialTestUtilities.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+
+#include <cstring>
+
+namespace medialtest
+{
+/// min_i (|x - c_i| - r_i) over every ball of `balls`, by brute force.
+inline double CoverageGap(vtkPolyData* balls, const double x[3])
+{
+  vtkDataArray* radius = balls->GetPointData()->GetArray("Radius");
+  double best = HUGE_VAL;
+  for (vtkIdType i = 0; i < balls->GetNumberOfPoints(); ++i)
+  {
+    double c[3];
+    balls->GetPoint(i, c);
+    const double d = std::sqrt((x[0] - c[0]) * (x[0] - c[0]) + (x[1] - c[1]) * (x[1] - c[1]) +
+      (x[2] - c[2]) * (x[2] - c[2]));
+    best = std::min(best, d - radius->GetTuple1(i));
+  }
+  return best;
+}
+
+/// Largest coverage gap over the vertices and centroids of a triangle surface.
+inline double MaxFaceGap(vtkPolyData* triangles, vtkPolyData* balls)
+{
+  double worst = -HUGE_VAL;
+  vtkIdType npts;
+  const vtkIdType* ids;
+  vtkCellArray* polys = triangles->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
+  {
+    double centroid[3] = { 0, 0, 0 };
+    for (vtkIdType k = 0; k < npts; ++k)
+    {
+      double p[3];
+      triangles->GetPoint(ids[k], p);
+      worst = std::max(worst, CoverageGap(balls, p));
+      for (int a = 0; a < 3; ++a)
+      {
+        centroid[a] += p[a] / npts;
+      }
+    }
+    worst = std::max(worst, CoverageGap(balls, centroid));
+  }
+  return worst;
+}
+
+/// Number of values that differ bit for bit (points, point arrays, lines); -1 when
+/// the shapes differ.
+inline long long BitDifferences(vtkPolyData* a, vtkPolyData* b)
+{
+  if (a->GetNumberOfPoints() != b->GetNumberOfPoints() || a->GetNumberOfLines() != b->GetNumberOfLines())
+  {
+    return -1;
+  }
+  long long diff = 0;
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    double x[3], y[3];
+    a->GetPoint(i, x);
+    b->GetPoint(i, y);
+    diff += std::memcmp(x, y, sizeof(x)) != 0;
+  }
+  for (const char* name : { "Radius", "SurfacePoint", "ContactPoint", "SeparationAngle", "SourceCellId" })
+  {
+    vtkDataArray* u = a->GetPointData()->GetArray(name);
+    vtkDataArray* v = b->GetPointData()->GetArray(name);
+    if (!u || !v)
+    {
+      return -1;
+    }
+    for (vtkIdType i = 0; i < u->GetNumberOfTuples(); ++i)
+    {
+      for (int c = 0; c < u->GetNumberOfComponents(); ++c)
+      {
+        const double s = u->GetComponent(i, c), t = v->GetComponent(i, c);
+        diff += std::memcmp(&s, &t, sizeof(double)) != 0;
+      }
+    }
+  }
+  vtkIdType na, nb;
+  const vtkIdType *ia, *ib;
+  vtkCellArray* la = a->GetLines();
+  vtkCellArray* lb = b->GetLines();
+  la->InitTraversal();
+  lb->InitTraversal();
+  while (la->GetNextCell(na, ia) && lb->GetNextCell(nb, ib))
+  {
+    diff += na != nb || ia[0] != ib[0] || ia[na - 1] != ib[nb - 1];
+  }
+  return diff;
+}
+}
+
+#endif
