@@ -10,6 +10,10 @@
  *  2. NumberOfSamples points P are drawn on the surface, each triangle with
  *     probability proportional to its area. Sample i uses its own random stream
  *     seeded by (RandomSeed, i): output is identical for any thread count.
+ *     That is the RANDOM SamplingStrategy; CLOSEST_NEIGHBOR and FACE_DISTANCE
+ *     choose the points iteratively from the balls found so far (see
+ *     SetSamplingStrategy and vtkMedialIterativeSampling.h), and every strategy
+ *     can stop early at a CoverageTolerance.
  *  3. From each P a ray along the inward normal n finds the far side Q. Every
  *     ball tangent at P has its centre P + r n; the one through Q has r = |PQ|/2,
  *     an upper bound.
@@ -57,7 +61,10 @@
  *  - ContactPoint (double x3, the closest blocking surface point at convergence:
  *    the second touching point), SeparationAngle (double, degrees, P-centre-contact),
  *  - SourceCellId (vtkIdType, the input cell that P lies on);
- * and field data RequestedSamples, DiscardedSamples, MeanIterations, CappedSamples.
+ * and field data RequestedSamples, DiscardedSamples, MeanIterations, CappedSamples
+ * (the iterative strategies add EvaluatedSamples, SeedSamples, CoverageReached and
+ * MaxCoverageGap; CLOSEST_NEIGHBOR adds the links as line cells with cell data
+ * InitialLink, -1 on the vertex cells).
  *
  * 2D mode: when the input is planar polygons or closed polylines (any plane; see
  * vtkMedialPolygon for what is accepted), samples are drawn on the edges with
