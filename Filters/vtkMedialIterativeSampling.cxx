@@ -703,8 +703,15 @@ void Runner::ClosestNeighbor()
   std::vector<char> linked(static_cast<size_t>(seeds), 0), done(static_cast<size_t>(seeds), 0);
   std::vector<Segment> segments;
   vtkIdType current = -1, firstFree = 0;
-  for (;;)
+  const double seedsDone = static_cast<double>(seeds) / static_cast<double>(this->S.Budget);
+  for (vtkIdType step = 1;; ++step)
   {
+    // Quadratic in the seeds: keep the abort check alive.
+    if (step % 256 == 0 && this->Progress(seedsDone))
+    {
+      this->R.Aborted = true;
+      return;
+    }
     if (current < 0)
     {
       while (firstFree < seeds && (!rec[firstFree].Valid || linked[firstFree] || done[firstFree]))
