@@ -695,6 +695,141 @@ bool Overlap(const vtkMedialSampleRecord& a, const vtkMedialSampleRecord& b)
   return Distance(a.Centre, b.Centre) <= a.Radius + b.Radius;
 }
 
+// The seeds' ball centres in a uniform grid, for the closest unlinked,
+// non-overlapping neighbour of step 1; linked seeds are removed as they go.
+class CentreGrid
+{
+public:
+  CentreGrid(const std::vector<vtkMedialSampleRecord>& rec, vtkIdType n)
+    : Rec(rec)
+  {
+    double lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+    vtkIdType valid = 0;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      if (rec[i].Valid)
+      {
+        ++valid;
+        for (int k = 0; k < 3; ++k)
+        {
+          lo[k] = std::min(lo[k], rec[i].Centre[k]);
+          hi[k] = std::max(hi[k], rec[i].Centre[k]);
+        }
+      }
+    }
+    if (valid == 0)
+    {
+      return;
+    }
+    // About one seed per cell along the diagonal's scale: cbrt(n) cells on the longest axis.
+    const double extent = std::max(hi[0] - lo[0], std::max(hi[1] - lo[1], hi[2] - lo[2]));
+    const int perAxis = std::max(1, std::min(256, static_cast<int>(std::cbrt(static_cast<double>(valid)))));
+    this->Size = extent > 0.0 ? extent / perAxis : 1.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Origin[k] = lo[k];
+      this->Dims[k] = std::max(1, std::min(perAxis, static_cast<int>((hi[k] - lo[k]) / this->Size) + 1));
+    }
+    this->Cells.resize(static_cast<size_t>(this->Dims[0]) * this->Dims[1] * this->Dims[2]);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      if (rec[i].Valid)
+      {
+        this->Cells[this->CellOf(rec[i].Centre)].push_back(i);
+      }
+    }
+  }
+
+  void Remove(vtkIdType i)
+  {
+    std::vector<vtkIdType>& cell = this->Cells[this->CellOf(this->Rec[i].Centre)];
+    cell.erase(std::find(cell.begin(), cell.end(), i));
+  }
+
+  /// The closest remaining centre to p's whose ball does not overlap p's (smaller
+  /// index on a tie), or -1. Searches rings of cells until no closer one can exist.
+  vtkIdType Closest(vtkIdType p) const
+  {
+    if (this->Cells.empty())
+    {
+      return -1;
+    }
+    const vtkMedialSampleRecord& a = this->Rec[p];
+    int c[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      c[k] = this->Coordinate(a.Centre[k], k);
+    }
+    const int maximum = std::max(this->Dims[0], std::max(this->Dims[1], this->Dims[2]));
+    vtkIdType best = -1;
+    double bestDistance = HUGE_VAL;
+    auto visit = [&](int x, int y, int z) {
+      if (x < 0 || y < 0 || z < 0 || x >= this->Dims[0] || y >= this->Dims[1] || z >= this->Dims[2])
+      {
+        return;
+      }
+      for (vtkIdType q : this->Cells[(static_cast<size_t>(z) * this->Dims[1] + y) * this->Dims[0] + x])
+      {
+        const double d = Distance(a.Centre, this->Rec[q].Centre);
+        if (q != p && d > a.Radius + this->Rec[q].Radius && (d < bestDistance || (d == bestDistance && q < best)))
+        {
+          bestDistance = d;
+          best = q;
+        }
+      }
+    };
+    for (int ring = 0; ring <= maximum; ++ring)
+    {
+      // Every point of ring `ring` is at least (ring - 1) cells away.
+      if (best >= 0 && bestDistance < (ring - 1) * this->Size)
+      {
+        break;
+      }
+      for (int z = c[2] - ring; z <= c[2] + ring; ++z)
+      {
+        for (int y = c[1] - ring; y <= c[1] + ring; ++y)
+        {
+          if (std::abs(z - c[2]) == ring || std::abs(y - c[1]) == ring)
+          {
+            for (int x = c[0] - ring; x <= c[0] + ring; ++x)
+            {
+              visit(x, y, z);
+            }
+          }
+          else
+          {
+            visit(c[0] - ring, y, z);
+            if (ring > 0)
+            {
+              visit(c[0] + ring, y, z);
+            }
+          }
+        }
+      }
+    }
+    return best;
+  }
+
+private:
+  int Coordinate(double x, int k) const
+  {
+    const double t = (x - this->Origin[k]) / this->Size;
+    return t > 0.0 ? std::min(this->Dims[k] - 1, static_cast<int>(std::min(t, 1e9))) : 0;
+  }
+  size_t CellOf(const double x[3]) const
+  {
+    return (static_cast<size_t>(this->Coordinate(x[2], 2)) * this->Dims[1] + this->Coordinate(x[1], 1)) *
+      this->Dims[0] +
+      this->Coordinate(x[0], 0);
+  }
+
+  const std::vector<vtkMedialSampleRecord>& Rec;
+  double Origin[3] = { 0, 0, 0 };
+  double Size = 1.0;
+  int Dims[3] = { 1, 1, 1 };
+  std::vector<std::vector<vtkIdType>> Cells;
+};
+
 void Runner::ClosestNeighbor()
 {
   std::vector<vtkMedialSampleRecord>& rec = this->R.Records;
@@ -703,10 +838,11 @@ void Runner::ClosestNeighbor()
   std::vector<char> linked(static_cast<size_t>(seeds), 0), done(static_cast<size_t>(seeds), 0);
   std::vector<Segment> segments;
   vtkIdType current = -1, firstFree = 0;
+  CentreGrid grid(rec, seeds);
   const double seedsDone = static_cast<double>(seeds) / static_cast<double>(this->S.Budget);
   for (vtkIdType step = 1;; ++step)
   {
-    // Quadratic in the seeds: keep the abort check alive.
+    // Late chains may search far: keep the abort check alive.
     if (step % 256 == 0 && this->Progress(seedsDone))
     {
       this->R.Aborted = true;
@@ -725,21 +861,7 @@ void Runner::ClosestNeighbor()
       current = firstFree;
     }
     done[current] = 1;
-    vtkIdType best = -1;
-    double bestDistance = HUGE_VAL;
-    for (vtkIdType q = 0; q < seeds; ++q)
-    {
-      if (q == current || linked[q] || !rec[q].Valid || Overlap(rec[current], rec[q]))
-      {
-        continue;
-      }
-      const double d = Distance(rec[current].Centre, rec[q].Centre);
-      if (d < bestDistance)
-      {
-        bestDistance = d;
-        best = q;
-      }
-    }
+    const vtkIdType best = grid.Closest(current);
     if (best < 0)
     {
       current = -1; // the chain ends
@@ -747,6 +869,11 @@ void Runner::ClosestNeighbor()
     }
     const vtkIdType link = static_cast<vtkIdType>(segments.size());
     segments.push_back({ current, best, link, { -1, -1 } });
+    if (!linked[current])
+    {
+      grid.Remove(current); // a chain start; a continued chain's point left with its first link
+    }
+    grid.Remove(best);
     linked[current] = linked[best] = 1;
     current = best;
   }
