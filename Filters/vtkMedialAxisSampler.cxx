@@ -233,6 +233,10 @@ int vtkMedialAxisSampler::RequestData(
   }
   this->BoundaryEdges = mesh.BoundaryEdges;
   this->NumberOfTriangles = mesh.GetNumberOfTriangles();
+  if (mesh.DuplicateTriangles > 0)
+  {
+    vtkWarningMacro(<< "Input has " << mesh.DuplicateTriangles << " duplicate triangles; they were ignored.");
+  }
   if (mesh.NonManifoldEdges > 0)
   {
     vtkWarningMacro(<< "Input has " << mesh.NonManifoldEdges
