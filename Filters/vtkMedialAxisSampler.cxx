@@ -320,7 +320,16 @@ int vtkMedialAxisSampler::RequestData(
     return 1; // aborted: leave the output empty
   }
 
-  this->WriteSamples(output, count, results);
+  try
+  {
+    this->WriteSamples(output, count, results);
+  }
+  catch (const std::bad_alloc&) // the memory check above does not see ulimit -v
+  {
+    output->Initialize();
+    vtkErrorMacro(<< "Cannot allocate memory for the output of " << count << " samples.");
+    return 0;
+  }
 
   if (mesh.BoundaryEdges > 0)
   {
