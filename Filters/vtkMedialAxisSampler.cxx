@@ -124,6 +124,10 @@ int vtkMedialAxisSampler::RequestData(
   }
   this->BoundaryEdges = mesh.BoundaryEdges;
   this->NumberOfTriangles = mesh.GetNumberOfTriangles();
+  if (mesh.DuplicateTriangles > 0)
+  {
+    vtkWarningMacro(<< "Input has " << mesh.DuplicateTriangles << " duplicate triangles; they were ignored.");
+  }
   if (mesh.NonManifoldEdges > 0)
   {
     vtkWarningMacro(<< "Input has " << mesh.NonManifoldEdges
@@ -275,7 +279,16 @@ int vtkMedialAxisSampler::RequestData(
   results.resize(static_cast<size_t>(used));
   this->EvaluatedSamples = used;
 
-  this->WriteSamples(output, used, results);
+  try
+  {
+    this->WriteSamples(output, used, results);
+  }
+  catch (const std::bad_alloc&) // the memory check above does not see ulimit -v
+  {
+    output->Initialize();
+    vtkErrorMacro(<< "Cannot allocate memory for the output of " << used << " samples.");
+    return 0;
+  }
   if (coverage)
   {
     output->GetFieldData()->GetArray("RequestedSamples")->SetTuple1(0, static_cast<double>(count));

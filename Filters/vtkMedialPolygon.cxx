@@ -129,6 +129,20 @@ bool vtkMedialPolygon::LooksPlanarLoops(vtkPolyData* input)
       n[1] += (p[2] - q[2]) * (p[0] + q[0]);
       n[2] += (p[0] - q[0]) * (p[1] + q[1]);
     }
+    // A loop whose signed area cancels (a symmetric bow tie) has no Newell normal:
+    // take the first corner that is not straight instead.
+    for (vtkIdType i = 0; i + 2 < npts && n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0; ++i)
+    {
+      double p[3], q[3], r[3];
+      input->GetPoint(ids[i], p);
+      input->GetPoint(ids[i + 1], q);
+      input->GetPoint(ids[i + 2], r);
+      const double u[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
+      const double v[3] = { r[0] - p[0], r[1] - p[1], r[2] - p[2] };
+      n[0] = u[1] * v[2] - u[2] * v[1];
+      n[1] = u[2] * v[0] - u[0] * v[2];
+      n[2] = u[0] * v[1] - u[1] * v[0];
+    }
     break; // the first polygon's plane
   }
   const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);

@@ -14,6 +14,7 @@
 #include "vtkTriangleFilter.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <queue>
@@ -33,6 +34,45 @@ struct EdgeUse
     return Lo != o.Lo ? Lo < o.Lo : (Hi != o.Hi ? Hi < o.Hi : Triangle < o.Triangle);
   }
 };
+}
+
+// A triangle with the same three vertices as an earlier one (either orientation) would
+// make each of its edges non-manifold and block every ray leaving it: keep the first.
+void vtkMedialTriangleMesh::DropDuplicateTriangles()
+{
+  const size_t nt = this->SourceCellIds.size();
+  std::vector<std::array<vtkIdType, 4>> keys(nt); // sorted vertices, then the triangle
+  for (size_t t = 0; t < nt; ++t)
+  {
+    const vtkIdType* v = &this->Triangles[3 * t];
+    keys[t] = { v[0], v[1], v[2], static_cast<vtkIdType>(t) };
+    std::sort(keys[t].begin(), keys[t].begin() + 3);
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<char> duplicate(nt, 0);
+  for (size_t i = 1; i < nt; ++i)
+  {
+    if (std::equal(keys[i].begin(), keys[i].begin() + 3, keys[i - 1].begin()))
+    {
+      duplicate[keys[i][3]] = 1;
+      ++this->DuplicateTriangles;
+    }
+  }
+  if (this->DuplicateTriangles == 0)
+  {
+    return;
+  }
+  size_t kept = 0;
+  for (size_t t = 0; t < nt; ++t)
+  {
+    if (!duplicate[t])
+    {
+      std::copy_n(&this->Triangles[3 * t], 3, &this->Triangles[3 * kept]);
+      this->SourceCellIds[kept++] = this->SourceCellIds[t];
+    }
+  }
+  this->Triangles.resize(3 * kept);
+  this->SourceCellIds.resize(kept);
 }
 
 bool vtkMedialTriangleMesh::Build(vtkPolyData* input, std::string& error)
@@ -112,6 +152,7 @@ bool vtkMedialTriangleMesh::Build(vtkPolyData* input, std::string& error)
     this->Triangles.insert(this->Triangles.end(), pts, pts + 3);
     this->SourceCellIds.push_back(sourceIds ? sourceIds->GetValue(firstPoly + cellId) : cellId);
   }
+  this->DropDuplicateTriangles();
   const vtkIdType nt = static_cast<vtkIdType>(this->SourceCellIds.size());
   if (nt == 0)
   {

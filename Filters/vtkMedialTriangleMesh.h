@@ -58,8 +58,12 @@ public:
   vtkIdType NonManifoldEdges = 0;
   vtkIdType NonOrientableComponents = 0;
   vtkIdType DegenerateTriangles = 0;
+  vtkIdType DuplicateTriangles = 0; // same three vertices as an earlier triangle: dropped
   vtkIdType Components = 0;
   vtkIdType FlippedComponents = 0;
+
+private:
+  void DropDuplicateTriangles();
 };
 
 #endif

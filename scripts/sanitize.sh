@@ -22,7 +22,7 @@ leak:libfontconfig
 leak:libtbb
 SUPP
 cd build-asan
-renders="Render|^cli-render$"
+renders="Render|^cli-render"
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions=$(pwd)/lsan.supp:print_suppressions=0 \
   xvfb-run -a -s "-screen 0 1280x1024x24" ctest --output-on-failure -j2 -E "$renders" "$@"

@@ -128,6 +128,21 @@ struct Options
 };
 
 volatile std::sig_atomic_t Interrupted = 0;
+// Set while the sampler runs its blocks and checks for an abort after each one.
+volatile std::sig_atomic_t AbortWatched = 0;
+
+// Ctrl-C: inside the sampler's blocks, ask it to abort (the progress observer does);
+// anywhere else (reading, preparation, writing) nothing would notice, so leave at once.
+void OnInterrupt(int)
+{
+  Interrupted = 1;
+  if (!AbortWatched)
+  {
+    const char message[] = "medial-axis: interrupted\n";
+    [[maybe_unused]] const ssize_t written = write(STDERR_FILENO, message, sizeof(message) - 1);
+    _exit(130);
+  }
+}
 
 [[noreturn]] void Fail(const std::string& reason)
 {
@@ -684,6 +699,10 @@ double FitPlane(vtkPolyData* pd, double centre[3], double normal[3])
       centre[k] += p[k] / n;
     }
   }
+  if (!std::isfinite(centre[0] + centre[1] + centre[2]))
+  {
+    return HUGE_VAL; // NaN or infinite coordinates: not a plane (the sampler says why)
+  }
   double cov[3][3] = {}, row0[3], row1[3], row2[3];
   for (vtkIdType i = 0; i < n; ++i)
   {
@@ -918,6 +937,7 @@ std::string JsonString(const std::string& s)
 int main(int argc, char* argv[])
 {
   const Options opt = Parse(argc, argv);
+  std::signal(SIGINT, OnInterrupt);
   vtkNew<MessageSink> sinkWindow;
   vtkOutputWindow::SetInstance(sinkWindow);
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // the sink prints instead
@@ -1033,10 +1053,14 @@ int main(int argc, char* argv[])
     sampler->AddObserver(vtkCommand::ProgressEvent, progressCommand);
   }
 
-  // Ctrl-C: ask the sampler to abort at its next block, then exit with 130.
-  std::signal(SIGINT, [](int) { Interrupted = 1; });
+  // Ctrl-C while sampling: abort at the next block, then exit with 130 (OnInterrupt).
   vtkNew<vtkCallbackCommand> interruptCommand;
-  interruptCommand->SetCallback([](vtkObject* caller, unsigned long, void*, void*) {
+  interruptCommand->SetCallback([](vtkObject* caller, unsigned long, void*, void* data) {
+    // The pipeline reports 0 before RequestData starts; blocks report more than 0.
+    if (*static_cast<double*>(data) > 0.0)
+    {
+      AbortWatched = 1;
+    }
     if (Interrupted)
     {
       static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
@@ -1045,6 +1069,7 @@ int main(int argc, char* argv[])
   sampler->AddObserver(vtkCommand::ProgressEvent, interruptCommand);
 
   sampler->Update();
+  AbortWatched = 0;
   if (Interrupted)
   {
     std::cerr << (progress.Shown ? "\n" : "") << "medial-axis: interrupted\n";

@@ -1,19 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Bad input gets a clear error and an empty output, never a crash: empty input,
-// NaN coordinates, lines only, zero area. Degenerate triangles mixed into a good
-// mesh are tolerated. Zero samples give an empty output without error.
+// Bad input built in memory gets a clear error and an empty output, never a crash:
+// empty input, zero area, a triangle on one point. The cases read from files (NaN and
+// Inf coordinates, lines only, degenerate and duplicate triangles, zero samples, ...)
+// are rows of Testing/BadInput/cases.tsv.
 #include "MedialTestUtilities.h"
 
 #include "vtkCellArray.h"
 #include "vtkMedialAxisSampler.h"
-#include "vtkMedialShapeSource.h"
 #include "vtkPoints.h"
 
 #include "vtkExecutive.h"
 #include <array>
 #include <cstdlib>
-#include <functional>
-#include <limits>
 
 using namespace medialtest;
 
@@ -49,19 +47,6 @@ int TestMedialSamplerBadInput(int, char*[])
   };
   std::vector<Case> cases;
   cases.push_back({ "empty", vtkSmartPointer<vtkPolyData>::New(), "no points" });
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  cases.push_back({ "NaN", Triangles({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, nan, 0 }, { 0, 0, 1 } },
-                             { { 0, 1, 2 }, { 0, 1, 3 } }),
-    "NaN" });
-  cases.push_back({ "infinite", Triangles({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, HUGE_VAL, 0 } }, { { 0, 1, 2 } }), "NaN or infinite" });
-  {
-    auto lines = Triangles({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, {});
-    vtkNew<vtkCellArray> l;
-    const vtkIdType seg[2] = { 0, 1 };
-    l->InsertNextCell(2, seg);
-    lines->SetLines(l);
-    cases.push_back({ "lines only", lines, "no polygons" });
-  }
   cases.push_back({ "zero area", Triangles({ { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 }, { 3, 0, 0 } },
                                    { { 0, 1, 2 }, { 1, 2, 3 } }),
     "no area" });
@@ -85,35 +70,5 @@ int TestMedialSamplerBadInput(int, char*[])
     MEDIAL_CHECK(sampler->GetOutput()->GetNumberOfPoints() == 0, "%s: output not empty", c.Name);
   }
 
-  // Degenerate triangles inside a good closed mesh: tolerated, never sampled.
-  vtkNew<vtkMedialShapeSource> sphere;
-  sphere->SetShapeToSphere();
-  sphere->SetResolution(3);
-  sphere->Update();
-  vtkNew<vtkPolyData> withDegenerate;
-  withDegenerate->DeepCopy(sphere->GetOutput());
-  const vtkIdType sliver[3] = { 0, 0, 1 }, collinear[3] = { 0, 1, 1 };
-  withDegenerate->GetPolys()->InsertNextCell(3, sliver);
-  withDegenerate->GetPolys()->InsertNextCell(3, collinear);
-  {
-    EventLog log;
-    vtkNew<vtkMedialAxisSampler> sampler;
-    log.Watch(sampler);
-    sampler->SetInputData(withDegenerate);
-    sampler->SetNumberOfSamples(500);
-    sampler->Update();
-    std::printf("degenerate triangles: %d errors, %lld points\n", log.Errors,
-      static_cast<long long>(sampler->GetOutput()->GetNumberOfPoints()));
-    MEDIAL_CHECK(log.Errors == 0 && sampler->GetOutput()->GetNumberOfPoints() == 500, "degenerate case");
-  }
-  {
-    EventLog log;
-    vtkNew<vtkMedialAxisSampler> sampler;
-    log.Watch(sampler);
-    sampler->SetInputData(sphere->GetOutput());
-    sampler->SetNumberOfSamples(0);
-    sampler->Update();
-    MEDIAL_CHECK(log.Errors == 0 && sampler->GetOutput()->GetNumberOfPoints() == 0, "zero samples");
-  }
   return EXIT_SUCCESS;
 }
