@@ -22,41 +22,61 @@ constexpr std::int32_t SlabMaximumTriangles = 1 << 14;
 // Seed subtrees: this many levels above the leaf, about 2^levels leaves.
 constexpr int SeedLevels = 4;
 
-double BoxDistance2(const Node& node, const double x[3])
+template <class T>
+double BoxDistance2(const T lo[3], const T hi[3], const double x[3])
 {
   double d2 = 0.0;
   for (int k = 0; k < 3; ++k)
   {
-    const double d = std::max({ node.Lo[k] - x[k], 0.0, x[k] - node.Hi[k] });
+    const double d = std::max({ static_cast<double>(lo[k]) - x[k], 0.0, x[k] - static_cast<double>(hi[k]) });
     d2 += d * d;
   }
   return d2;
 }
+double BoxDistance2(const Node& node, const double x[3])
+{
+  return BoxDistance2(node.Lo, node.Hi, x);
+}
 
-// The node cannot reach into the ball (centre, radius): its box or its slab misses it.
+// The node cannot reach into the ball (centre, radius), both relative to the
+// origin: its box or its slab misses it.
 bool MissesBall(const Node& node, const double centre[3], double radius)
 {
   if (BoxDistance2(node, centre) >= radius * radius)
   {
     return true;
   }
-  if (node.Axis[0] != 0.0 || node.Axis[1] != 0.0 || node.Axis[2] != 0.0)
+  if (node.Axis[0] != 0.0f || node.Axis[1] != 0.0f || node.Axis[2] != 0.0f)
   {
-    const double m = G::Dot(node.Axis, centre);
+    const double m = node.Axis[0] * centre[0] + static_cast<double>(node.Axis[1]) * centre[1] +
+      static_cast<double>(node.Axis[2]) * centre[2];
     return m - radius >= node.SlabHi || m + radius <= node.SlabLo;
   }
   return false;
 }
 
-// Largest value of n.(q - p) over the node's box.
-double HeightAbove(const Node& node, const double p[3], const double n[3])
+// Largest value of n.(q - p) over the box.
+template <class T>
+double HeightAbove(const T lo[3], const T hi[3], const double p[3], const double n[3])
 {
   double h = 0.0;
   for (int k = 0; k < 3; ++k)
   {
-    h += n[k] * (0.5 * (node.Lo[k] + node.Hi[k]) - p[k]) + std::fabs(n[k]) * 0.5 * (node.Hi[k] - node.Lo[k]);
+    h += n[k] * ((n[k] > 0.0 ? static_cast<double>(hi[k]) : static_cast<double>(lo[k])) - p[k]);
   }
   return h;
+}
+
+// Single precision bounds that still hold: `pad` (far above the double rounding
+// of the subtraction that produced v, far below a float step at the mesh's size)
+// and one float step beyond the nearest float.
+float Down(double v, double pad)
+{
+  return std::nextafter(static_cast<float>(v - pad), -HUGE_VALF);
+}
+float Up(double v, double pad)
+{
+  return std::nextafter(static_cast<float>(v + pad), HUGE_VALF);
 }
 
 /**
@@ -208,6 +228,13 @@ bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh)
   {
     return false;
   }
+  double extent = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    this->Origin[k] = 0.5 * (mesh.Bounds[2 * k] + mesh.Bounds[2 * k + 1]);
+    extent = std::max({ extent, std::fabs(mesh.Bounds[2 * k]), std::fabs(mesh.Bounds[2 * k + 1]) });
+  }
+  this->RoundingPad = 1e-14 * extent;
   std::vector<double> centroids(3 * nt), boxes(6 * nt);
   std::vector<std::int32_t> order(nt);
   for (vtkIdType t = 0; t < nt; ++t)
@@ -307,19 +334,19 @@ void vtkMedialTriangleBVH::BuildNode(std::vector<Node>& nodes, std::int32_t node
   }
   // Bounds: the box of the triangles and of their centroids, and the area vector sum.
   Node node{};
-  double cLo[3], cHi[3], area[3] = { 0, 0, 0 };
+  double lo[3], hi[3], cLo[3], cHi[3], area[3] = { 0, 0, 0 };
   for (int k = 0; k < 3; ++k)
   {
-    node.Lo[k] = cLo[k] = HUGE_VAL;
-    node.Hi[k] = cHi[k] = -HUGE_VAL;
+    lo[k] = cLo[k] = HUGE_VAL;
+    hi[k] = cHi[k] = -HUGE_VAL;
   }
   for (std::int32_t i = begin; i < end; ++i)
   {
     const std::int32_t t = order[i];
     for (int k = 0; k < 3; ++k)
     {
-      node.Lo[k] = std::min(node.Lo[k], boxes[6 * t + k]);
-      node.Hi[k] = std::max(node.Hi[k], boxes[6 * t + 3 + k]);
+      lo[k] = std::min(lo[k], boxes[6 * t + k]);
+      hi[k] = std::max(hi[k], boxes[6 * t + 3 + k]);
       cLo[k] = std::min(cLo[k], centroids[3 * t + k]);
       cHi[k] = std::max(cHi[k], centroids[3 * t + k]);
       area[k] += mesh.Areas[t] * mesh.GetNormal(t)[k];
@@ -335,22 +362,33 @@ void vtkMedialTriangleBVH::BuildNode(std::vector<Node>& nodes, std::int32_t node
   // Large nodes are never culled by a slab (their boxes decide), so they skip it.
   if (end - begin <= SlabMaximumTriangles && areaNorm > 0.25 * totalArea && areaNorm > 0.0)
   {
+    // The slab is measured along the axis as stored (float), so it bounds exactly that.
+    double axis[3];
     for (int k = 0; k < 3; ++k)
     {
-      node.Axis[k] = area[k] / areaNorm;
+      node.Axis[k] = static_cast<float>(area[k] / areaNorm);
+      axis[k] = node.Axis[k];
     }
-    node.SlabLo = HUGE_VAL;
-    node.SlabHi = -HUGE_VAL;
+    double slabLo = HUGE_VAL, slabHi = -HUGE_VAL;
     for (std::int32_t i = begin; i < end; ++i)
     {
       const vtkIdType* v = mesh.GetTriangle(order[i]);
       for (int j = 0; j < 3; ++j)
       {
-        const double m = G::Dot(node.Axis, mesh.GetPoint(v[j]));
-        node.SlabLo = std::min(node.SlabLo, m);
-        node.SlabHi = std::max(node.SlabHi, m);
+        double x[3];
+        G::Sub(mesh.GetPoint(v[j]), this->Origin, x);
+        const double m = G::Dot(axis, x);
+        slabLo = std::min(slabLo, m);
+        slabHi = std::max(slabHi, m);
       }
     }
+    node.SlabLo = Down(slabLo, this->RoundingPad);
+    node.SlabHi = Up(slabHi, this->RoundingPad);
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    node.Lo[k] = Down(lo[k] - this->Origin[k], this->RoundingPad);
+    node.Hi[k] = Up(hi[k] - this->Origin[k], this->RoundingPad);
   }
 
   const std::int32_t count = end - begin;
@@ -476,6 +514,10 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
   double radius = result.Radius;
   double centre[3];
   G::AddScaled(p, radius, n, centre);
+  // The same two points relative to the origin, for the node bounds.
+  double pRel[3], centreRel[3];
+  G::Sub(p, this->Origin, pRel);
+  G::AddScaled(pRel, radius, n, centreRel);
   Scratch& scratch = ThreadScratch();
 
   // Shrinks the ball on triangle `slot` until it no longer blocks. Returns true
@@ -515,18 +557,19 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
       {
         return false;
       }
-      Node box;
+      double lo[3], hi[3];
       for (int k = 0; k < 3; ++k)
       {
-        box.Lo[k] = std::min({ a[k], b[k], c[k] });
-        box.Hi[k] = std::max({ a[k], b[k], c[k] });
+        lo[k] = std::min({ a[k], b[k], c[k] });
+        hi[k] = std::max({ a[k], b[k], c[k] });
       }
-      const double h = HeightAbove(box, p, n);
-      return h > 0.0 && h >= coneSin * std::sqrt(BoxDistance2(box, p));
+      const double h = HeightAbove(lo, hi, p, n);
+      return h > 0.0 && h * h >= coneSin * coneSin * BoxDistance2(lo, hi, p);
     };
     auto accept = [&](double r, const double q[3]) {
       radius = r;
       G::AddScaled(p, radius, n, centre);
+      G::AddScaled(pRel, radius, n, centreRel);
       std::copy(q, q + 3, result.Contact);
       result.ContactTriangle = this->TriangleIds[slot];
       ++result.Steps;
@@ -585,17 +628,17 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
   // Depth first, nearer child first; a node is dropped as soon as it cannot
   // block the current ball (tested again when popped: the ball keeps shrinking).
   auto culled = [&](const Node& node) {
-    if (MissesBall(node, centre, radius))
+    if (MissesBall(node, centreRel, radius))
     {
       return true;
     }
     // Only points with n.(q - p) > sin(theta / 2) |q - p| can ever block.
-    const double h = HeightAbove(node, p, n);
+    const double h = HeightAbove(node.Lo, node.Hi, pRel, n);
     if (!(h > 0.0))
     {
       return true;
     }
-    return coneSin > 0.0 && h * h < coneSin * coneSin * BoxDistance2(node, p);
+    return coneSin > 0.0 && h * h < coneSin * coneSin * BoxDistance2(node, pRel);
   };
   auto traverse = [&](std::int32_t root, const std::int32_t skip[2]) {
     scratch.Stack.push_back(root);
@@ -621,8 +664,8 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
       }
       // Push the farther child first; a child whose box misses the ball is not pushed.
       const double r2 = radius * radius;
-      const double dl = BoxDistance2(this->Nodes[node.Start], centre);
-      const double dr = BoxDistance2(this->Nodes[node.Start + 1], centre);
+      const double dl = BoxDistance2(this->Nodes[node.Start], centreRel);
+      const double dr = BoxDistance2(this->Nodes[node.Start + 1], centreRel);
       const std::int32_t nearer = dl <= dr ? node.Start : node.Start + 1;
       if (std::max(dl, dr) < r2)
       {
@@ -681,13 +724,15 @@ bool vtkMedialTriangleBVH::ClosestPoint(const double x[3], double upperBound,
   }
   double best2 = upperBound * upperBound;
   triangle = -1;
+  double xRel[3]; // x relative to the origin, for the node bounds
+  G::Sub(x, this->Origin, xRel);
   Scratch& scratch = ThreadScratch();
   scratch.Stack.push_back(0);
   while (!scratch.Stack.empty())
   {
     const Node& node = this->Nodes[scratch.Stack.back()];
     scratch.Stack.pop_back();
-    if (MissesBall(node, x, std::sqrt(best2)))
+    if (MissesBall(node, xRel, std::sqrt(best2)))
     {
       continue;
     }
@@ -712,8 +757,8 @@ bool vtkMedialTriangleBVH::ClosestPoint(const double x[3], double upperBound,
       }
       continue;
     }
-    const double dl = BoxDistance2(this->Nodes[node.Start], x);
-    const double dr = BoxDistance2(this->Nodes[node.Start + 1], x);
+    const double dl = BoxDistance2(this->Nodes[node.Start], xRel);
+    const double dr = BoxDistance2(this->Nodes[node.Start + 1], xRel);
     scratch.Stack.push_back(dl <= dr ? node.Start + 1 : node.Start);
     scratch.Stack.push_back(dl <= dr ? node.Start : node.Start + 1);
   }
@@ -732,20 +777,22 @@ bool vtkMedialTriangleBVH::ContainsBall(const double x[3], double radius, vtkIdT
     k = G::Dot(w, x) + G::Dot(w, w) * cosMinAngle;
   }
   const double limit2 = radius * radius;
+  double xRel[3]; // x relative to the origin, for the node bounds
+  G::Sub(x, this->Origin, xRel);
   Scratch& scratch = ThreadScratch();
   scratch.Stack.push_back(0);
   while (!scratch.Stack.empty())
   {
     const Node& node = this->Nodes[scratch.Stack.back()];
     scratch.Stack.pop_back();
-    if (MissesBall(node, x, radius))
+    if (MissesBall(node, xRel, radius))
     {
       continue;
     }
     if (capped)
     {
       // The whole box on the cap's side of the plane w.q = k: nothing there counts.
-      double lowest = -k;
+      double lowest = G::Dot(w, this->Origin) - k; // w.q - k at the box's lowest corner
       for (int d = 0; d < 3; ++d)
       {
         lowest += w[d] * (w[d] > 0.0 ? node.Lo[d] : node.Hi[d]);
@@ -774,8 +821,8 @@ bool vtkMedialTriangleBVH::ContainsBall(const double x[3], double radius, vtkIdT
       }
       continue;
     }
-    const double dl = BoxDistance2(this->Nodes[node.Start], x);
-    const double dr = BoxDistance2(this->Nodes[node.Start + 1], x);
+    const double dl = BoxDistance2(this->Nodes[node.Start], xRel);
+    const double dr = BoxDistance2(this->Nodes[node.Start + 1], xRel);
     scratch.Stack.push_back(dl <= dr ? node.Start + 1 : node.Start);
     scratch.Stack.push_back(dl <= dr ? node.Start : node.Start + 1);
   }

@@ -22,8 +22,9 @@
  * its triangles' area vectors. Triangle vertices are copied in leaf order so a
  * leaf is read contiguously. The tree depends only on the mesh: deterministic.
  *
- * Every decision is made in double precision on the mesh's own coordinates
- * (boxes and slabs are exact bounds of them). Queries are const and keep their
+ * Every decision is made in double precision on the mesh's own coordinates.
+ * Node bounds are stored in single precision relative to the bounding-box
+ * centre and rounded outward, so they only ever cull what cannot block. Queries are const and keep their
  * scratch space per thread, so any number of threads may query after Build().
  */
 #ifndef vtkMedialTriangleBVH_h
@@ -82,11 +83,13 @@ public:
   const std::vector<std::int32_t>& GetLeafRanks() const { return this->LeafRank; }
   vtkIdType GetNumberOfNodes() const { return static_cast<vtkIdType>(this->Nodes.size()); }
 
-  struct Node
+  // 64 bytes: one cache line. Single precision, relative to Origin, rounded outward,
+  // so every bound still holds for the mesh's double coordinates.
+  struct alignas(64) Node
   {
-    double Lo[3], Hi[3]; // axis-aligned box
-    double Axis[3];      // slab normal, unit; zero when the normals cancel out
-    double SlabLo, SlabHi;
+    float Lo[3], Hi[3]; // axis-aligned box
+    float Axis[3];      // slab normal, about unit; zero when the normals cancel out
+    float SlabLo, SlabHi; // range of Axis.(x - Origin) over the node's vertices
     std::int32_t Start; // leaf: first triangle in leaf order; inner: left child (right is Start + 1)
     std::int32_t Count; // leaf: number of triangles; inner: 0
   };
@@ -105,6 +108,8 @@ private:
     std::vector<Subtree>* later, std::int32_t grain) const;
 
   std::vector<Node> Nodes;
+  double Origin[3] = { 0, 0, 0 };     // the bounding-box centre: node bounds are relative to it
+  double RoundingPad = 0.0;           // absolute padding of the float bounds
   std::vector<double> Vertices;       // 9 per triangle, leaf order
   std::vector<double> Planes;         // 4 per triangle, leaf order: unit normal, offset
   std::vector<vtkIdType> TriangleIds; // mesh triangle of each leaf-order slot
