@@ -550,22 +550,9 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
       return G::ClosestPointOnClippedTriangle(x, a, b, c, w, k, q) < limit * limit;
     };
     // The triangle reaches into the ball only below the cap's plane. A smaller
-    // ball lowers that plane, so it is looked at again at the end, unless its
-    // box lies outside the cone where blockers can ever be.
-    auto inCap = [&](bool touches) {
-      if (!capped || !touches)
-      {
-        return false;
-      }
-      double lo[3], hi[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        lo[k] = std::min({ a[k], b[k], c[k] });
-        hi[k] = std::max({ a[k], b[k], c[k] });
-      }
-      const double h = HeightAbove(lo, hi, p, n);
-      return h > 0.0 && h * h >= coneSin * coneSin * BoxDistance2(lo, hi, p);
-    };
+    // ball lowers that plane, so it is looked at again at the end (it is inside
+    // the cone, or it would not have got this far).
+    auto inCap = [&](bool touches) { return capped && touches; };
     auto accept = [&](double r, const double q[3]) {
       radius = r;
       G::AddScaled(p, radius, n, centre);
@@ -579,6 +566,21 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
     if (std::fabs(G::Dot(plane, centre) - plane[3]) >= radius)
     {
       return false;
+    }
+    // Outside the cone where blockers can lie (its box shows it): it never
+    // blocks, at any radius. This drops the cap's triangles around p.
+    {
+      double lo[3], hi[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        lo[k] = std::min({ a[k], b[k], c[k] });
+        hi[k] = std::max({ a[k], b[k], c[k] });
+      }
+      const double h = HeightAbove(lo, hi, p, n);
+      if (!(h > 0.0) || h * h < coneSin * coneSin * BoxDistance2(lo, hi, p))
+      {
+        return false;
+      }
     }
     double q[3];
     bool touches;
