@@ -41,9 +41,11 @@ void vtkMedialDrawSurfacePoint(const vtkMedialTriangleMesh& mesh, vtkTypeUInt64 
 
 // Finds the maximal admissible ball tangent at p (on `triangle`) along the inward normal.
 void vtkMedialSolveBall(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& mesh,
-  const vtkMedialBallParameters& param, vtkIdType triangle, const double p[3], vtkMedialSampleRecord& out)
+  const vtkMedialBallParameters& param, vtkIdType triangle, const double p[3], vtkMedialSampleRecord& out,
+  vtkIdType hintTriangle)
 {
   out.Valid = false;
+  out.ContactTriangle = -1;
   out.Capped = false;
   out.Iterations = 0;
   out.SourceCell = mesh.SourceCellIds[triangle];
@@ -79,9 +81,11 @@ void vtkMedialSolveBall(const vtkMedialSurfaceQuery& query, const vtkMedialTrian
     ball.Radius = radius;
     std::copy(q, q + 3, ball.Contact);
     ball.ContactTriangle = hit.Triangle;
+    ball.HintTriangle = hintTriangle;
     query.MaximalTangentBall(p, n, filter, ball);
     out.Iterations = 1 + ball.Steps;
     out.Capped = ball.Capped;
+    out.ContactTriangle = ball.ContactTriangle;
     G::AddScaled(p, ball.Radius, n, out.Centre);
     out.Radius = ball.Radius;
     std::copy(ball.Contact, ball.Contact + 3, out.Contact);

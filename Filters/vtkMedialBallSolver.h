@@ -35,8 +35,11 @@ void vtkMedialDrawSurfacePoint(const vtkMedialTriangleMesh& mesh, vtkTypeUInt64 
 
 /// Maximal admissible ball tangent at p (lying on `triangle`). out.Valid is false when
 /// the inward ray escapes through a hole.
+/// `hintTriangle`: a triangle where the contact is likely (e.g. a neighbouring
+/// sample's contact); it changes how fast ONE_PASS finds the ball, and the ball only
+/// within the query's 1e-12 slack.
 void vtkMedialSolveBall(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& mesh,
   const vtkMedialBallParameters& param, vtkIdType triangle, const double p[3],
-  vtkMedialSampleRecord& out);
+  vtkMedialSampleRecord& out, vtkIdType hintTriangle = -1);
 
 #endif

@@ -18,6 +18,7 @@ struct vtkMedialSampleRecord
   double Contact[3]; // the second touching point
   double Angle;      // P-centre-contact, degrees
   vtkIdType SourceCell;
+  vtkIdType ContactTriangle; // mesh triangle of Contact (ONE_PASS), else -1
   int Iterations;
   bool Valid; // false: discarded (ray escaped, degenerate start)
   bool Capped;

@@ -642,14 +642,14 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
     }
     return coneSin > 0.0 && h * h < coneSin * coneSin * BoxDistance2(node, pRel);
   };
-  auto traverse = [&](std::int32_t root, const std::int32_t skip[2]) {
+  auto traverse = [&](std::int32_t root, const std::int32_t skip[3]) {
     scratch.Stack.push_back(root);
     while (!scratch.Stack.empty())
     {
       const std::int32_t index = scratch.Stack.back();
       scratch.Stack.pop_back();
       const Node& node = this->Nodes[index];
-      if (index == skip[0] || index == skip[1] || culled(node))
+      if (index == skip[0] || index == skip[1] || index == skip[2] || culled(node))
       {
         continue;
       }
@@ -682,10 +682,10 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
   // First the small subtrees around the far hit and around p: on smooth meshes
   // the final contacts are usually there, and a ball that is small early culls
   // most of the rest of the tree. Then the whole tree, without those subtrees.
-  std::int32_t seeds[2] = { -1, -1 };
-  const vtkIdType seedTriangles[2] = { result.ContactTriangle, ownTriangle };
-  const std::int32_t none[2] = { -1, -1 };
-  for (int i = 0; i < 2; ++i)
+  std::int32_t seeds[3] = { -1, -1, -1 };
+  const vtkIdType seedTriangles[3] = { result.HintTriangle, result.ContactTriangle, ownTriangle };
+  const std::int32_t none[3] = { -1, -1, -1 };
+  for (int i = 0; i < 3; ++i)
   {
     if (seedTriangles[i] >= 0)
     {

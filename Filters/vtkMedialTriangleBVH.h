@@ -46,6 +46,7 @@ public:
     double Radius = 0.0;
     double Contact[3] = { 0, 0, 0 }; // the surface point that stopped the ball
     vtkIdType ContactTriangle = -1;
+    vtkIdType HintTriangle = -1; // in: where the contact is likely; changes the speed only
     int Steps = 0;       // radius updates
     bool Capped = false; // a triangle needed more than the per-triangle step cap
   };
