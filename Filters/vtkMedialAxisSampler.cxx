@@ -115,10 +115,16 @@ int vtkMedialAxisSampler::RequestData(
     return this->RequestData2D(input, outInfo, output);
   }
 
+  // Preparation takes seconds on big meshes: the abort flag is polled between stages.
+  auto aborted = [this]() { return this->GetAbortExecute() != 0; };
   vtkMedialTriangleMesh mesh;
   std::string error;
-  if (!mesh.Build(input, error))
+  if (!mesh.Build(input, error, aborted))
   {
+    if (aborted())
+    {
+      return 1; // aborted: leave the output empty
+    }
     vtkErrorMacro(<< "Cannot sample the medial axis: " << error << ".");
     return 0;
   }
@@ -140,8 +146,12 @@ int vtkMedialAxisSampler::RequestData(
   }
 
   vtkMedialSurfaceQuery query;
-  if (!query.Build(&mesh, error))
+  if (!query.Build(&mesh, error, aborted))
   {
+    if (aborted())
+    {
+      return 1;
+    }
     vtkErrorMacro(<< "Cannot build the surface queries: " << error << ".");
     return 0;
   }

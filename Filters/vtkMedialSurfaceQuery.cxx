@@ -136,7 +136,8 @@ vtkMedialSurfaceQuery::~vtkMedialSurfaceQuery()
   delete this->Impl;
 }
 
-bool vtkMedialSurfaceQuery::Build(const vtkMedialTriangleMesh* mesh, std::string& error)
+bool vtkMedialSurfaceQuery::Build(
+  const vtkMedialTriangleMesh* mesh, std::string& error, const std::function<bool()>& aborted)
 {
   this->Impl->Release();
   this->Mesh = mesh;
@@ -201,10 +202,10 @@ bool vtkMedialSurfaceQuery::Build(const vtkMedialTriangleMesh* mesh, std::string
     error = "Embree failed to build the BVH";
     return false;
   }
-  if (!this->Tree.Build(*mesh))
+  if ((aborted && aborted()) || !this->Tree.Build(*mesh, aborted))
   {
     this->Impl->Release();
-    error = "cannot build the tangent-ball tree";
+    error = aborted && aborted() ? "aborted" : "cannot build the tangent-ball tree";
     return false;
   }
   return true;

@@ -34,6 +34,7 @@
 #include "vtkMedialTriangleBVH.h"
 #include "vtkType.h"
 
+#include <functional>
 #include <string>
 
 class vtkMedialTriangleMesh;
@@ -71,8 +72,10 @@ public:
   vtkMedialSurfaceQuery(const vtkMedialSurfaceQuery&) = delete;
   vtkMedialSurfaceQuery& operator=(const vtkMedialSurfaceQuery&) = delete;
 
-  /// Builds the BVH. The mesh must outlive this object. Returns false with a reason.
-  bool Build(const vtkMedialTriangleMesh* mesh, std::string& error);
+  /// Builds the BVHs. The mesh must outlive this object. Returns false with a reason
+  /// ("aborted" when `aborted`, polled between stages, returns true).
+  bool Build(const vtkMedialTriangleMesh* mesh, std::string& error,
+    const std::function<bool()>& aborted = {});
 
   /// First hit of the ray origin + t * direction (unit), t in (tMin, tMax), skipping `ignoreTriangle`.
   bool Intersect(const double origin[3], const double direction[3], double tMin, double tMax,

@@ -5,8 +5,11 @@
 #include "vtkMedialTriangleMesh.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
+
+#include <omp.h>
 
 namespace
 {
@@ -220,7 +223,7 @@ Scratch& ThreadScratch()
 }
 }
 
-bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh)
+bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh, const std::function<bool()>& aborted)
 {
   const vtkIdType nt = mesh.GetNumberOfTriangles();
   this->Nodes.clear();
@@ -257,12 +260,24 @@ bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh)
   this->BuildNode(this->Nodes, 0, 0, static_cast<std::int32_t>(nt), order, centroids, boxes, mesh,
     &subtrees, grain);
   std::vector<std::vector<Node>> parts(subtrees.size());
+  std::atomic<bool> stop{ false };
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::int64_t i = 0; i < static_cast<std::int64_t>(subtrees.size()); ++i)
   {
+    // Polled on the calling thread only: the callback need not be thread-safe.
+    if (stop || (aborted && omp_get_thread_num() == 0 && aborted()))
+    {
+      stop = true;
+      continue;
+    }
     parts[i].emplace_back();
     this->BuildNode(parts[i], 0, subtrees[i].Begin, subtrees[i].End, order, centroids, boxes, mesh,
       nullptr, 0);
+  }
+  if (stop)
+  {
+    this->Nodes.clear();
+    return false;
   }
   for (size_t i = 0; i < subtrees.size(); ++i)
   {

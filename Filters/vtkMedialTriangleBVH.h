@@ -34,6 +34,7 @@
 #include "vtkType.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 class vtkMedialTriangleMesh;
@@ -51,8 +52,9 @@ public:
     bool Capped = false; // a triangle needed more than the per-triangle step cap
   };
 
-  /// Builds the tree. Returns false when the mesh is empty or too large.
-  bool Build(const vtkMedialTriangleMesh& mesh);
+  /// Builds the tree. Returns false when the mesh is empty or too large, or when
+  /// `aborted` (polled between subtrees) returns true.
+  bool Build(const vtkMedialTriangleMesh& mesh, const std::function<bool()>& aborted = {});
 
   /**
    * Largest ball tangent at p with centre p + r n (n the unit inward normal),

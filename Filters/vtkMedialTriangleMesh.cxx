@@ -75,8 +75,17 @@ void vtkMedialTriangleMesh::DropDuplicateTriangles()
   this->SourceCellIds.resize(kept);
 }
 
-bool vtkMedialTriangleMesh::Build(vtkPolyData* input, std::string& error)
+bool vtkMedialTriangleMesh::Build(
+  vtkPolyData* input, std::string& error, const std::function<bool()>& aborted)
 {
+  auto stop = [&]() {
+    if (aborted && aborted())
+    {
+      error = "aborted";
+      return true;
+    }
+    return false;
+  };
   *this = vtkMedialTriangleMesh();
   if (!input || input->GetNumberOfPoints() == 0 || input->GetNumberOfCells() == 0)
   {
@@ -124,6 +133,10 @@ bool vtkMedialTriangleMesh::Build(vtkPolyData* input, std::string& error)
   merge->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
   merge->Update();
   vtkPolyData* tri = merge->GetOutput();
+  if (stop())
+  {
+    return false;
+  }
 
   const vtkIdType np = tri->GetNumberOfPoints();
   this->Points.resize(3 * np);
@@ -172,7 +185,15 @@ bool vtkMedialTriangleMesh::Build(vtkPolyData* input, std::string& error)
       uses.push_back({ std::min(a, b), std::max(a, b), t, a < b });
     }
   }
+  if (stop())
+  {
+    return false;
+  }
   std::sort(uses.begin(), uses.end());
+  if (stop())
+  {
+    return false;
+  }
   // Manifold adjacency: up to 3 neighbours per triangle, with "same direction" flags.
   std::vector<vtkIdType> neighbour(3 * nt, -1);
   std::vector<char> sameDirection(3 * nt, 0);
@@ -256,6 +277,11 @@ bool vtkMedialTriangleMesh::Build(vtkPolyData* input, std::string& error)
     {
       applyFlip(t);
     }
+  }
+
+  if (stop())
+  {
+    return false;
   }
 
   // Signed volume per component, about the box centre for accuracy.

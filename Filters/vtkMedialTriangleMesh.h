@@ -24,6 +24,7 @@
 #include "vtkMedialAxisFiltersModule.h" // for export macro
 #include "vtkType.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,7 +34,9 @@ class VTKMEDIALAXISFILTERS_EXPORT vtkMedialTriangleMesh
 {
 public:
   /// Returns false and fills `error` with a one-line reason on unusable input.
-  bool Build(vtkPolyData* input, std::string& error);
+  /// `aborted`, when given, is polled between stages; true stops the build
+  /// (false, error "aborted") so that a caller's abort is honoured promptly.
+  bool Build(vtkPolyData* input, std::string& error, const std::function<bool()>& aborted = {});
 
   vtkIdType GetNumberOfTriangles() const { return static_cast<vtkIdType>(this->Areas.size()); }
   const double* GetPoint(vtkIdType i) const { return &this->Points[3 * i]; }
