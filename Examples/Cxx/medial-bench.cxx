@@ -279,7 +279,7 @@ int main(int argc, char* argv[])
   sphere->Update();
   double itSphere;
   vtkIdType cappedSphere;
-  const double sphereMicro = RunSampler(sphere->GetOutput(), defaultMethod, 2, 300, itSphere, cappedSphere);
+  const double sphereMicro = RunSampler(sphere->GetOutput(), defaultMethod, 2, 5000, itSphere, cappedSphere);
   const double rss = PeakRssMiB();
 
   if (json)
