@@ -728,10 +728,11 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
   result.Radius = radius;
 }
 
-bool vtkMedialTriangleBVH::ClosestPoint(const double x[3], double upperBound,
-  vtkIdType ownTriangle, const double samplePoint[3], double cosMinAngle, double point[3],
-  double& distance, vtkIdType& triangle) const
+template <class Visit>
+void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTriangle,
+  const double samplePoint[3], double cosMinAngle, double& reach2, Visit visit) const
 {
+  // Admissible part of a triangle: (q - x).(s - x) <= |s - x|^2 cos(theta), as w.q <= k.
   const bool capped = cosMinAngle < 1.0 && samplePoint;
   double w[3] = { 0, 0, 0 }, k = 0.0;
   if (capped)
@@ -739,8 +740,6 @@ bool vtkMedialTriangleBVH::ClosestPoint(const double x[3], double upperBound,
     G::Sub(samplePoint, x, w);
     k = G::Dot(w, x) + G::Dot(w, w) * cosMinAngle;
   }
-  double best2 = upperBound * upperBound;
-  triangle = -1;
   double xRel[3]; // x relative to the origin, for the node bounds
   G::Sub(x, this->Origin, xRel);
   Scratch& scratch = ThreadScratch();
@@ -749,60 +748,7 @@ bool vtkMedialTriangleBVH::ClosestPoint(const double x[3], double upperBound,
   {
     const Node& node = this->Nodes[scratch.Stack.back()];
     scratch.Stack.pop_back();
-    if (MissesBall(node, xRel, std::sqrt(best2)))
-    {
-      continue;
-    }
-    if (node.Count > 0)
-    {
-      for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
-      {
-        if (this->TriangleIds[slot] == ownTriangle)
-        {
-          continue;
-        }
-        const double* a = &this->Vertices[9 * slot];
-        double q[3];
-        const double d2 = capped ? G::ClosestPointOnClippedTriangle(x, a, a + 3, a + 6, w, k, q)
-                                 : G::ClosestPointOnTriangle(x, a, a + 3, a + 6, q);
-        if (d2 < best2)
-        {
-          best2 = d2;
-          std::copy(q, q + 3, point);
-          triangle = this->TriangleIds[slot];
-        }
-      }
-      continue;
-    }
-    const double dl = BoxDistance2(this->Nodes[node.Start], xRel);
-    const double dr = BoxDistance2(this->Nodes[node.Start + 1], xRel);
-    scratch.Stack.push_back(dl <= dr ? node.Start + 1 : node.Start);
-    scratch.Stack.push_back(dl <= dr ? node.Start : node.Start + 1);
-  }
-  distance = std::sqrt(best2);
-  return triangle >= 0;
-}
-
-bool vtkMedialTriangleBVH::ContainsBall(const double x[3], double radius, vtkIdType ownTriangle,
-  const double samplePoint[3], double cosMinAngle) const
-{
-  const bool capped = cosMinAngle < 1.0 && samplePoint;
-  double w[3] = { 0, 0, 0 }, k = 0.0;
-  if (capped)
-  {
-    G::Sub(samplePoint, x, w);
-    k = G::Dot(w, x) + G::Dot(w, w) * cosMinAngle;
-  }
-  const double limit2 = radius * radius;
-  double xRel[3]; // x relative to the origin, for the node bounds
-  G::Sub(x, this->Origin, xRel);
-  Scratch& scratch = ThreadScratch();
-  scratch.Stack.push_back(0);
-  while (!scratch.Stack.empty())
-  {
-    const Node& node = this->Nodes[scratch.Stack.back()];
-    scratch.Stack.pop_back();
-    if (MissesBall(node, xRel, radius))
+    if (MissesBall(node, xRel, std::sqrt(reach2)))
     {
       continue;
     }
@@ -831,9 +777,10 @@ bool vtkMedialTriangleBVH::ContainsBall(const double x[3], double radius, vtkIdT
         double q[3];
         const double d2 = capped ? G::ClosestPointOnClippedTriangle(x, a, a + 3, a + 6, w, k, q)
                                  : G::ClosestPointOnTriangle(x, a, a + 3, a + 6, q);
-        if (d2 < limit2)
+        if (!visit(d2, q, this->TriangleIds[slot]))
         {
-          return false;
+          scratch.Stack.clear();
+          return;
         }
       }
       continue;
@@ -843,5 +790,37 @@ bool vtkMedialTriangleBVH::ContainsBall(const double x[3], double radius, vtkIdT
     scratch.Stack.push_back(dl <= dr ? node.Start + 1 : node.Start);
     scratch.Stack.push_back(dl <= dr ? node.Start : node.Start + 1);
   }
-  return true;
+}
+
+bool vtkMedialTriangleBVH::ClosestPoint(const double x[3], double upperBound,
+  vtkIdType ownTriangle, const double samplePoint[3], double cosMinAngle, double point[3],
+  double& distance, vtkIdType& triangle) const
+{
+  double best2 = upperBound * upperBound;
+  triangle = -1;
+  this->VisitAdmissible(x, ownTriangle, samplePoint, cosMinAngle, best2,
+    [&](double d2, const double q[3], vtkIdType t) {
+      if (d2 < best2)
+      {
+        best2 = d2; // also shrinks the traversal's reach
+        std::copy(q, q + 3, point);
+        triangle = t;
+      }
+      return true;
+    });
+  distance = std::sqrt(best2);
+  return triangle >= 0;
+}
+
+bool vtkMedialTriangleBVH::ContainsBall(const double x[3], double radius, vtkIdType ownTriangle,
+  const double samplePoint[3], double cosMinAngle) const
+{
+  double reach2 = radius * radius;
+  bool empty = true;
+  this->VisitAdmissible(x, ownTriangle, samplePoint, cosMinAngle, reach2,
+    [&](double d2, const double*, vtkIdType) {
+      empty = !(d2 < reach2);
+      return empty; // stop at the first point inside
+    });
+  return empty;
 }

@@ -110,6 +110,14 @@ private:
     const std::vector<double>& boxes, const vtkMedialTriangleMesh& mesh,
     std::vector<Subtree>* later, std::int32_t grain) const;
 
+  // Depth first, nearer child first, over the triangles other than ownTriangle
+  // whose admissible part may lie within sqrt(reach2) of x. visit(d2, q, triangle)
+  // gets each one's closest admissible point q and returns false to stop; it may
+  // lower reach2 to narrow the search. Used by ClosestPoint and ContainsBall.
+  template <class Visit>
+  void VisitAdmissible(const double x[3], vtkIdType ownTriangle, const double samplePoint[3],
+    double cosMinAngle, double& reach2, Visit visit) const;
+
   std::vector<Node> Nodes;
   double Origin[3] = { 0, 0, 0 };     // the bounding-box centre: node bounds are relative to it
   double RoundingPad = 0.0;           // absolute padding of the float bounds

@@ -9,7 +9,6 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 
-#include <cstring>
 
 namespace medialtest
 {
@@ -54,51 +53,6 @@ inline double MaxFaceGap(vtkPolyData* triangles, vtkPolyData* balls)
   return worst;
 }
 
-/// Number of values that differ bit for bit (points, point arrays, lines); -1 when
-/// the shapes differ.
-inline long long BitDifferences(vtkPolyData* a, vtkPolyData* b)
-{
-  if (a->GetNumberOfPoints() != b->GetNumberOfPoints() || a->GetNumberOfLines() != b->GetNumberOfLines())
-  {
-    return -1;
-  }
-  long long diff = 0;
-  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
-  {
-    double x[3], y[3];
-    a->GetPoint(i, x);
-    b->GetPoint(i, y);
-    diff += std::memcmp(x, y, sizeof(x)) != 0;
-  }
-  for (const char* name : { "Radius", "SurfacePoint", "ContactPoint", "SeparationAngle", "SourceCellId" })
-  {
-    vtkDataArray* u = a->GetPointData()->GetArray(name);
-    vtkDataArray* v = b->GetPointData()->GetArray(name);
-    if (!u || !v)
-    {
-      return -1;
-    }
-    for (vtkIdType i = 0; i < u->GetNumberOfTuples(); ++i)
-    {
-      for (int c = 0; c < u->GetNumberOfComponents(); ++c)
-      {
-        const double s = u->GetComponent(i, c), t = v->GetComponent(i, c);
-        diff += std::memcmp(&s, &t, sizeof(double)) != 0;
-      }
-    }
-  }
-  vtkIdType na, nb;
-  const vtkIdType *ia, *ib;
-  vtkCellArray* la = a->GetLines();
-  vtkCellArray* lb = b->GetLines();
-  la->InitTraversal();
-  lb->InitTraversal();
-  while (la->GetNextCell(na, ia) && lb->GetNextCell(nb, ib))
-  {
-    diff += na != nb || ia[0] != ib[0] || ia[na - 1] != ib[nb - 1];
-  }
-  return diff;
-}
 }
 
 #endif

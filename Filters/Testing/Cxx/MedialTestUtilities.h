@@ -6,15 +6,19 @@
 
 #include "MedialTestSupport.h"
 
+#include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkNew.h"
+#include "vtkPLYReader.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <sys/stat.h>
 #include <vector>
@@ -43,6 +47,67 @@ inline std::string SharedMesh(const char* name)
   const std::string path = std::string(MEDIALAXIS_SHARED_MESH_DIR) + "/" + name;
   struct stat st;
   return stat(path.c_str(), &st) == 0 ? path : std::string();
+}
+
+/// Number of values that differ bit for bit (points, point arrays, lines); -1 when
+/// the shapes differ.
+inline long long BitDifferences(vtkPolyData* a, vtkPolyData* b)
+{
+  if (a->GetNumberOfPoints() != b->GetNumberOfPoints() || a->GetNumberOfLines() != b->GetNumberOfLines())
+  {
+    return -1;
+  }
+  long long diff = 0;
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    double x[3], y[3];
+    a->GetPoint(i, x);
+    b->GetPoint(i, y);
+    diff += std::memcmp(x, y, sizeof(x)) != 0;
+  }
+  for (const char* name : { "Radius", "SurfacePoint", "ContactPoint", "SeparationAngle", "SourceCellId" })
+  {
+    vtkDataArray* u = a->GetPointData()->GetArray(name);
+    vtkDataArray* v = b->GetPointData()->GetArray(name);
+    if (!u || !v)
+    {
+      return -1;
+    }
+    for (vtkIdType i = 0; i < u->GetNumberOfTuples(); ++i)
+    {
+      for (int c = 0; c < u->GetNumberOfComponents(); ++c)
+      {
+        const double s = u->GetComponent(i, c), t = v->GetComponent(i, c);
+        diff += std::memcmp(&s, &t, sizeof(double)) != 0;
+      }
+    }
+  }
+  vtkIdType na, nb;
+  const vtkIdType *ia, *ib;
+  vtkCellArray* la = a->GetLines();
+  vtkCellArray* lb = b->GetLines();
+  la->InitTraversal();
+  lb->InitTraversal();
+  while (la->GetNextCell(na, ia) && lb->GetNextCell(nb, ib))
+  {
+    diff += na != nb || ia[0] != ib[0] || ia[na - 1] != ib[nb - 1];
+  }
+  return diff;
+}
+
+/// A shared PLY mesh (e.g. "horse.ply"), or null with a "skipped" line when ../shared is absent.
+inline vtkSmartPointer<vtkPolyData> ReadSharedPLY(const char* name)
+{
+  const std::string path = SharedMesh(name);
+  if (path.empty())
+  {
+    std::printf("shared meshes absent: %s part skipped\n", name);
+    return nullptr;
+  }
+  vtkNew<vtkPLYReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  return reader->GetOutput();
 }
 
 inline double Median(std::vector<double> v)

@@ -6,7 +6,6 @@
 
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialShapeSource.h"
-#include "vtkPLYReader.h"
 
 #include <cstdlib>
 
@@ -14,13 +13,13 @@ using namespace medialtest;
 
 namespace
 {
-int CheckAgreement(vtkAlgorithmOutput* surface, const char* label, double diagonal)
+int CheckAgreement(vtkPolyData* surface, const char* label, double diagonal)
 {
   vtkNew<vtkMedialAxisSampler> defaults;
   for (double theta : { 0.0, defaults->GetMinimumSeparationAngle() })
   {
     vtkNew<vtkMedialAxisSampler> reference;
-    reference->SetInputConnection(surface);
+    reference->SetInputData(surface);
     reference->SetNumberOfSamples(4000);
     reference->SetRandomSeed(11);
     reference->SetMinimumSeparationAngle(theta);
@@ -29,7 +28,7 @@ int CheckAgreement(vtkAlgorithmOutput* surface, const char* label, double diagon
     for (int method = vtkMedialAxisSampler::BISECTION + 1; method <= vtkMedialAxisSampler::ONE_PASS; ++method)
     {
       vtkNew<vtkMedialAxisSampler> other;
-      other->SetInputConnection(surface);
+      other->SetInputData(surface);
       other->SetNumberOfSamples(4000);
       other->SetRandomSeed(11);
       other->SetMinimumSeparationAngle(theta);
@@ -58,18 +57,10 @@ int TestMedialSamplerMethodAgreement(int, char*[])
 {
   vtkNew<vtkMedialShapeSource> jack;
   jack->Update();
-  if (CheckAgreement(jack->GetOutputPort(), "demo shape", Diagonal(jack->GetOutput())) != EXIT_SUCCESS)
+  if (CheckAgreement(jack->GetOutput(), "demo shape", Diagonal(jack->GetOutput())) != EXIT_SUCCESS)
   {
     return EXIT_FAILURE;
   }
-  const std::string horse = SharedMesh("horse.ply");
-  if (horse.empty())
-  {
-    std::printf("shared meshes absent: horse part skipped\n");
-    return EXIT_SUCCESS;
-  }
-  vtkNew<vtkPLYReader> reader;
-  reader->SetFileName(horse.c_str());
-  reader->Update();
-  return CheckAgreement(reader->GetOutputPort(), "horse", Diagonal(reader->GetOutput()));
+  vtkSmartPointer<vtkPolyData> horse = ReadSharedPLY("horse.ply");
+  return horse ? CheckAgreement(horse, "horse", Diagonal(horse)) : EXIT_SUCCESS;
 }

@@ -14,7 +14,6 @@
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialGeometry.h"
 #include "vtkMedialShapeSource.h"
-#include "vtkPLYReader.h"
 #include "vtkPoints.h"
 #include "vtkTriangleFilter.h"
 
@@ -159,14 +158,6 @@ int TestMedialSamplerOnePassBruteForce(int, char*[])
   {
     return EXIT_FAILURE;
   }
-  const std::string horse = SharedMesh("horse.ply");
-  if (horse.empty())
-  {
-    std::printf("shared meshes absent: horse part skipped\n");
-    return EXIT_SUCCESS;
-  }
-  vtkNew<vtkPLYReader> reader;
-  reader->SetFileName(horse.c_str());
-  reader->Update();
-  return Check(reader->GetOutput(), "horse", 300);
+  vtkSmartPointer<vtkPolyData> horse = ReadSharedPLY("horse.ply");
+  return horse ? Check(horse, "horse", 300) : EXIT_SUCCESS;
 }
