@@ -324,6 +324,13 @@ int vtkMedialAxisSampler::RequestData(
                     << this->DiscardedSamples << " of " << count
                     << " samples were discarded because their ray escaped through a hole.");
   }
+  else if (this->DiscardedSamples > 0)
+  {
+    // Closed, yet a ray left the solid: a folded-over or self-intersecting patch.
+    vtkWarningMacro(<< this->DiscardedSamples << " of " << count
+                    << " samples were discarded: their inward ray met the surface from outside "
+                       "(folded-over or self-intersecting triangles?).");
+  }
   return 1;
 }
 

@@ -16,6 +16,7 @@
 
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialJunctionFilter.h"
+#include "vtkMath.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkOFFReader.h"
 
@@ -163,6 +164,36 @@ vtkSmartPointer<vtkPolyData> Scaled(vtkPolyData* pd, double scale)
   return out;
 }
 
+// A closed, consistently wound box whose top-centre vertex is pulled down through
+// the bottom: a folded-over, self-intersecting spike.
+vtkSmartPointer<vtkPolyData> FoldedBox()
+{
+  vtkNew<vtkMedialShapeSource> box;
+  box->SetShapeToBox();
+  box->SetResolution(8);
+  box->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->DeepCopy(box->GetOutput());
+  double bounds[6];
+  out->GetBounds(bounds);
+  const double top[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), bounds[5] };
+  vtkIdType nearest = 0;
+  double best = HUGE_VAL;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    out->GetPoint(i, x);
+    const double d = vtkMath::Distance2BetweenPoints(x, top);
+    if (d < best)
+    {
+      best = d;
+      nearest = i;
+    }
+  }
+  out->GetPoints()->SetPoint(nearest, top[0], top[1], bounds[4] - 0.5 * (bounds[5] - bounds[4]));
+  return out;
+}
+
 // Two unit boxes touching along one edge: 4 triangles meet there.
 vtkSmartPointer<vtkPolyData> BoxesSharingAnEdge()
 {
@@ -257,6 +288,7 @@ int Generate(const std::string& dir)
     return z <= 0.8;
   }));
   ok &= WriteVtp(dir + "/non-manifold.vtp", BoxesSharingAnEdge());
+  ok &= WriteVtp(dir + "/folded.vtp", FoldedBox());
   {
     // Every triangle twice.
     auto doubled = EditTriangles(sphere, [](vtkIdType, std::vector<vtkIdType>&) { return true; });
