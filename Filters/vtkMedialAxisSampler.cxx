@@ -235,15 +235,38 @@ int vtkMedialAxisSampler::RequestData(
     vtkMedialDrawSurfacePoint(mesh, this->RandomSeed, first + i, triangles[i], results[i].Surface);
     order[i] = i;
   }
-  const std::vector<std::int32_t>& rank = query.GetLeafRanks();
-  auto leafOrder = [&](vtkIdType a, vtkIdType b) {
-    const std::int32_t ra = rank[triangles[a]], rb = rank[triangles[b]];
-    return ra < rb || (ra == rb && a < b);
-  };
-  const vtkIdType sortSpan = coverage ? block : count;
-  for (vtkIdType begin = 0; begin < count; begin += sortSpan)
+  if (this->GetAbortExecute())
   {
-    std::sort(order.begin() + begin, order.begin() + std::min(count, begin + sortSpan), leafOrder);
+    return 1;
+  }
+  const std::vector<std::int32_t>& rank = query.GetLeafRanks();
+  if (coverage)
+  {
+    auto leafOrder = [&](vtkIdType a, vtkIdType b) {
+      const std::int32_t ra = rank[triangles[a]], rb = rank[triangles[b]];
+      return ra < rb || (ra == rb && a < b);
+    };
+    for (vtkIdType begin = 0; begin < count; begin += block)
+    {
+      std::sort(order.begin() + begin, order.begin() + std::min(count, begin + block), leafOrder);
+    }
+  }
+  else
+  {
+    // Counting sort by leaf rank: linear, and stable, so ties keep index order.
+    std::vector<vtkIdType> next(rank.size() + 1, 0);
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      ++next[rank[triangles[i]] + 1];
+    }
+    for (size_t r = 1; r < next.size(); ++r)
+    {
+      next[r] += next[r - 1];
+    }
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      order[next[rank[triangles[i]]]++] = i;
+    }
   }
 
   for (vtkIdType begin = 0; begin < count && !this->GetAbortExecute(); begin += block)
