@@ -80,6 +80,29 @@ for threads in (1, 2):
 check(np.array_equal(first, vtk_to_numpy(sampler.GetOutput().GetPointData().GetArray("Radius"))),
       "1 and 2 threads give identical radii")
 
+# The methods and the sampling strategies from Python: one-pass (the default) agrees
+# with bisection, and face-distance reaches a coverage tolerance with links-free output.
+bisection = medialaxis.vtkMedialAxisSampler()
+bisection.SetInputConnection(reader.GetOutputPort())
+bisection.SetNumberOfSamples(3000)
+bisection.SetRandomSeed(5)
+bisection.SetMethodToBisection()
+bisection.Update()
+check(sampler.GetMethod() == medialaxis.vtkMedialAxisSampler.ONE_PASS, "one-pass is the default method")
+diagonal = medial.GetLength()
+agree = np.mean(np.abs(vtk_to_numpy(bisection.GetOutput().GetPointData().GetArray("Radius")) - first) <= 1e-5 * diagonal)
+check(agree >= 0.995, f"one-pass agrees with bisection within 1e-5 of the diagonal on {100 * agree:.2f}% of samples")
+covered = medialaxis.vtkMedialAxisSampler()
+covered.SetInputConnection(reader.GetOutputPort())
+covered.SetSamplingStrategyToFaceDistance()
+covered.SetCoverageTolerance(0.01)
+covered.SetNumberOfSamples(20000)
+covered.Update()
+covered_field = covered.GetOutput().GetFieldData()
+check(covered_field.GetArray("CoverageReached").GetValue(0) == 1,
+      f"face-distance reaches 1% coverage with {covered.GetOutput().GetNumberOfPoints()} balls "
+      f"(gap {covered_field.GetArray('MaxCoverageGap').GetValue(0):.4f})")
+
 # One rendered image against its baseline.
 demo = medialaxis.vtkMedialShapeSource()
 demo_sampler = medialaxis.vtkMedialAxisSampler()
