@@ -30,18 +30,14 @@ struct MedialMesh
   std::vector<vtkIdType> Faces; // 3 per face
 };
 
-class MedialMeshParser
+class MedialMeshParser : public medialreaders::RecordParser
 {
 public:
-  std::string Error;
-  vtkIdType ErrorLine = 0; // 0: the error is not about a line
-
   bool Parse(const std::string& path, MedialMesh& mesh)
   {
-    std::string why;
-    if (!this->Lines.Open(path, why))
+    if (!this->Open(path))
     {
-      return this->Fail(0, why);
+      return false;
     }
     if (!this->Lines.NextRecord())
     {
@@ -115,14 +111,6 @@ public:
   }
 
 private:
-  bool Fail(const std::string& message) { return this->Fail(this->Lines.GetLineNumber(), message); }
-  bool Fail(vtkIdType line, const std::string& message)
-  {
-    this->ErrorLine = line;
-    this->Error = message;
-    return false;
-  }
-
   // Moves to record k (0-based) of the `count` records of this kind.
   bool Expect(const char* kind, vtkIdType k, vtkIdType count)
   {
@@ -169,7 +157,6 @@ private:
     return true;
   }
 
-  medialreaders::TextLines Lines;
 };
 }
 
@@ -197,15 +184,7 @@ int vtkMedialMeshReader::RequestData(
   MedialMeshParser parser;
   if (!parser.Parse(this->FileName, mesh))
   {
-    if (parser.ErrorLine > 0)
-    {
-      vtkErrorMacro("Cannot read medial mesh '" << this->FileName << "', line "
-                                                << parser.ErrorLine << ": " << parser.Error);
-    }
-    else
-    {
-      vtkErrorMacro("Cannot read medial mesh '" << this->FileName << "': " << parser.Error);
-    }
+    vtkErrorMacro(<< parser.Describe("medial mesh", this->FileName));
     return 0;
   }
 

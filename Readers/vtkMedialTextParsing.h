@@ -192,6 +192,43 @@ inline bool ParseIndex(std::string_view token, vtkIdType limit, vtkIdType& value
   return true;
 }
 
+/// Base of the readers' parsers: the line reader, and the first error with its line.
+class RecordParser
+{
+public:
+  std::string Error;
+  vtkIdType ErrorLine = 0; // 0: the error is not about a line
+
+  /// "Cannot read WHAT 'FILE', line N: ERROR" (without ", line N" when ErrorLine is 0).
+  std::string Describe(const char* what, const char* fileName) const
+  {
+    std::string text = std::string("Cannot read ") + what + " '" + fileName + "'";
+    if (this->ErrorLine > 0)
+    {
+      text += ", line " + std::to_string(this->ErrorLine);
+    }
+    return text + ": " + this->Error;
+  }
+
+protected:
+  /// Opens the file; false with the reason as the error.
+  bool Open(const std::string& path)
+  {
+    std::string why;
+    return this->Lines.Open(path, why) || this->Fail(0, why);
+  }
+  /// Records an error at the current line; always false.
+  bool Fail(const std::string& message) { return this->Fail(this->Lines.GetLineNumber(), message); }
+  bool Fail(vtkIdType line, const std::string& message)
+  {
+    this->ErrorLine = line;
+    this->Error = message;
+    return false;
+  }
+
+  TextLines Lines;
+};
+
 /// Quotes a token for an error message, shortened so binary junk stays readable.
 inline std::string Quote(std::string_view token)
 {

@@ -43,18 +43,14 @@ bool IsKeyword(std::string_view token)
     (token.size() >= 3 && token.substr(token.size() - 3) == "OFF");
 }
 
-class OFFParser
+class OFFParser : public medialreaders::RecordParser
 {
 public:
-  std::string Error;
-  vtkIdType ErrorLine = 0; // 0: the error is not about a line
-
   bool Parse(const std::string& path, PolygonMesh& mesh)
   {
-    std::string why;
-    if (!this->Lines.Open(path, why))
+    if (!this->Open(path))
     {
-      return this->Fail(0, why);
+      return false;
     }
     if (!this->Lines.NextRecord())
     {
@@ -185,14 +181,6 @@ public:
   }
 
 private:
-  bool Fail(const std::string& message) { return this->Fail(this->Lines.GetLineNumber(), message); }
-  bool Fail(vtkIdType line, const std::string& message)
-  {
-    this->ErrorLine = line;
-    this->Error = message;
-    return false;
-  }
-
   bool ParseKeyword()
   {
     const auto& tokens = this->Lines.GetTokens();
@@ -217,7 +205,6 @@ private:
     return this->Fail("not an OFF file: expected the 'OFF' header, found " + Quote(tokens[0]));
   }
 
-  medialreaders::TextLines Lines;
   std::string Variant = "OFF";
   bool HasColours = false;
   bool HasNormals = false;
@@ -248,15 +235,7 @@ int vtkOFFReader::RequestData(
   OFFParser parser;
   if (!parser.Parse(this->FileName, mesh))
   {
-    if (parser.ErrorLine > 0)
-    {
-      vtkErrorMacro("Cannot read OFF file '" << this->FileName << "', line " << parser.ErrorLine
-                                             << ": " << parser.Error);
-    }
-    else
-    {
-      vtkErrorMacro("Cannot read OFF file '" << this->FileName << "': " << parser.Error);
-    }
+    vtkErrorMacro(<< parser.Describe("OFF file", this->FileName));
     return 0;
   }
 
