@@ -53,30 +53,19 @@ void CheckCells(vtkCellArray* cells, vtkIdType size, vtkIdType numberOfPoints)
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-  const std::string& path = fuzzinput::TempFile(".ma");
-  if (!fuzzinput::WriteFile(path, data, size))
-  {
-    return 0;
-  }
   vtkNew<vtkMedialMeshReader> reader;
-  reader->SetFileName(path.c_str());
-  const int ok = reader->GetExecutive()->Update();
-  vtkPolyData* mesh = reader->GetOutput();
-  if (!ok)
+  vtkPolyData* mesh = fuzzinput::Read(reader.Get(), ".ma", data, size);
+  if (!mesh)
   {
-    fuzzinput::Require(mesh->GetNumberOfPoints() == 0 && mesh->GetNumberOfCells() == 0,
-      "empty output after an error");
     return 0;
   }
   const vtkIdType n = mesh->GetNumberOfPoints();
   vtkDataArray* radius = mesh->GetPointData()->GetArray("Radius");
   fuzzinput::Require(radius && radius->GetNumberOfTuples() == n, "a Radius per point");
+  fuzzinput::RequireFinitePoints(mesh);
   for (vtkIdType i = 0; i < n; ++i)
   {
-    double p[3];
-    mesh->GetPoint(i, p);
     const double r = radius->GetComponent(i, 0);
-    fuzzinput::Require(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]), "finite point");
     fuzzinput::Require(std::isfinite(r) && r >= 0.0, "finite non-negative radius");
   }
   CheckCells(mesh->GetLines(), 2, n);

@@ -5,37 +5,20 @@
 #include "FuzzInput.h"
 
 #include "vtkCellArray.h"
-#include "vtkExecutive.h"
 #include "vtkNew.h"
 #include "vtkOFFReader.h"
 #include "vtkPolyData.h"
 
-#include <cmath>
-
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-  const std::string& path = fuzzinput::TempFile(".off");
-  if (!fuzzinput::WriteFile(path, data, size))
-  {
-    return 0;
-  }
   vtkNew<vtkOFFReader> reader;
-  reader->SetFileName(path.c_str());
-  const int ok = reader->GetExecutive()->Update();
-  vtkPolyData* mesh = reader->GetOutput();
-  if (!ok)
+  vtkPolyData* mesh = fuzzinput::Read(reader.Get(), ".off", data, size);
+  if (!mesh)
   {
-    fuzzinput::Require(mesh->GetNumberOfPoints() == 0 && mesh->GetNumberOfCells() == 0,
-      "empty output after an error");
     return 0;
   }
   const vtkIdType n = mesh->GetNumberOfPoints();
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double p[3];
-    mesh->GetPoint(i, p);
-    fuzzinput::Require(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]), "finite point");
-  }
+  fuzzinput::RequireFinitePoints(mesh);
   fuzzinput::Require(mesh->GetNumberOfCells() == mesh->GetNumberOfPolys(), "polygons only");
   vtkIdType count = 0;
   const vtkIdType* ids = nullptr;
