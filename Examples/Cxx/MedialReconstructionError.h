@@ -38,16 +38,10 @@ struct ReconstructionError
   double MeanRel() const { return std::max(ToOriginal.Mean, ToReconstruction.Mean); }
 };
 
-/// Vertex-to-surface distances from `from` to `to`, divided by `scale`.
-inline DirectionalError VertexToSurface(vtkPolyData* from, vtkPolyData* to, double scale, int threads)
+/// Distance from every point of `points` to the surface `to`, computed in parallel.
+inline std::vector<double> DistancesToSurface(vtkPolyData* points, vtkPolyData* to, int threads)
 {
-  DirectionalError e;
-  const vtkIdType n = from->GetNumberOfPoints();
-  if (n == 0 || to->GetNumberOfCells() == 0)
-  {
-    e.Max = e.Mean = HUGE_VAL;
-    return e;
-  }
+  const vtkIdType n = points->GetNumberOfPoints();
   vtkNew<vtkStaticCellLocator> locator;
   locator->SetDataSet(to);
   locator->BuildLocator();
@@ -62,13 +56,26 @@ inline DirectionalError VertexToSurface(vtkPolyData* from, vtkPolyData* to, doub
       double p[3], closest[3], d2 = 0.0;
       vtkIdType cellId = -1;
       int subId = 0;
-      from->GetPoint(i, p);
+      points->GetPoint(i, p);
       locator->FindClosestPoint(p, closest, cell, cellId, subId, d2);
       distance[i] = std::sqrt(d2);
     }
   }
+  return distance;
+}
+
+/// Vertex-to-surface distances from `from` to `to`, divided by `scale`.
+inline DirectionalError VertexToSurface(vtkPolyData* from, vtkPolyData* to, double scale, int threads)
+{
+  DirectionalError e;
+  const vtkIdType n = from->GetNumberOfPoints();
+  if (n == 0 || to->GetNumberOfCells() == 0)
+  {
+    e.Max = e.Mean = HUGE_VAL;
+    return e;
+  }
   double sum = 0.0;
-  for (double d : distance) // fixed order: the mean does not depend on the threads
+  for (double d : DistancesToSurface(from, to, threads)) // fixed order: the mean does not depend on the threads
   {
     e.Max = std::max(e.Max, d);
     sum += d;
@@ -89,29 +96,11 @@ inline double BallProtrusion(vtkPolyData* balls, vtkPolyData* surface, double sc
   {
     return 0.0;
   }
-  vtkNew<vtkStaticCellLocator> locator;
-  locator->SetDataSet(surface);
-  locator->BuildLocator();
-  surface->BuildCells();
-  std::vector<double> excess(static_cast<size_t>(n));
-#pragma omp parallel num_threads(threads)
-  {
-    vtkNew<vtkGenericCell> cell;
-#pragma omp for schedule(dynamic, 1024)
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      double c[3], closest[3], d2 = 0.0;
-      vtkIdType cellId = -1;
-      int subId = 0;
-      balls->GetPoint(i, c);
-      locator->FindClosestPoint(c, closest, cell, cellId, subId, d2);
-      excess[i] = radius->GetTuple1(i) - std::sqrt(d2);
-    }
-  }
+  const std::vector<double> distance = DistancesToSurface(balls, surface, threads);
   double worst = 0.0;
-  for (double e : excess)
+  for (vtkIdType i = 0; i < n; ++i)
   {
-    worst = std::max(worst, e);
+    worst = std::max(worst, radius->GetTuple1(i) - distance[i]);
   }
   return worst / scale;
 }
