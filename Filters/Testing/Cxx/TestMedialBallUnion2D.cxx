@@ -70,26 +70,6 @@ double DistanceToUnionBoundary(const std::vector<Disk>& disks, double x, double 
   return best;
 }
 
-double PointSegmentDistance(const double p[3], const double a[3], const double b[3])
-{
-  double ab[3], ap[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    ab[k] = b[k] - a[k];
-    ap[k] = p[k] - a[k];
-  }
-  const double len2 = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];
-  double t = len2 > 0 ? (ap[0] * ab[0] + ap[1] * ab[1] + ap[2] * ab[2]) / len2 : 0.0;
-  t = std::min(1.0, std::max(0.0, t));
-  double d2 = 0;
-  for (int k = 0; k < 3; ++k)
-  {
-    const double d = ap[k] - t * ab[k];
-    d2 += d * d;
-  }
-  return std::sqrt(d2);
-}
-
 int CheckPlane(const double origin[3], const double u[3], const double v[3], const char* name)
 {
   // Three overlapping disks (no hole between them) and one on its own: two closed curves.

@@ -21,26 +21,6 @@ using namespace medialtest;
 
 namespace
 {
-double SegmentDistance(const double p[3], const double a[3], const double b[3])
-{
-  double ab[3], ap[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    ab[k] = b[k] - a[k];
-    ap[k] = p[k] - a[k];
-  }
-  const double len2 = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];
-  double t = len2 > 0 ? (ap[0] * ab[0] + ap[1] * ab[1] + ap[2] * ab[2]) / len2 : 0.0;
-  t = std::max(0.0, std::min(1.0, t));
-  double d2 = 0.0;
-  for (int k = 0; k < 3; ++k)
-  {
-    const double d = a[k] + t * ab[k] - p[k];
-    d2 += d * d;
-  }
-  return std::sqrt(d2);
-}
-
 // Distance from p to the cells (lines or polygon loops) of pd.
 double DistanceToCells(vtkPolyData* pd, const double p[3], bool closed)
 {
@@ -55,7 +35,7 @@ double DistanceToCells(vtkPolyData* pd, const double p[3], bool closed)
       double a[3], b[3];
       pd->GetPoint(ids[i], a);
       pd->GetPoint(ids[(i + 1) % npts], b);
-      best = std::min(best, SegmentDistance(p, a, b));
+      best = std::min(best, PointSegmentDistance(p, a, b));
     }
   }
   return best;
