@@ -4,6 +4,7 @@
 // vtkMedialSurfaceQuery), so the 3D path in vtkMedialAxisSampler.cxx is untouched.
 #include "vtkMedialAxisSampler.h"
 
+#include "vtkMedialGeometry.h"
 #include "vtkMedialPolygon.h"
 #include "vtkMedialSampleRecord.h"
 #include "vtkMedialRandom.h"
@@ -123,23 +124,13 @@ void Solve2D(const vtkMedialPolygon& poly, int method, double tolerance, double 
     const auto first = MakeFilter(edge, p, c, r, cosMinAngle);
     if (!poly.ContainsBall(c, r, &first))
     {
-      double lo = 0.0, hi = r;
-      while (hi - lo > tolerance)
-      {
-        const double mid = 0.5 * (lo + hi);
-        const double m[2] = { p[0] + mid * n[0], p[1] + mid * n[1] };
-        const auto filter = MakeFilter(edge, p, m, mid, cosMinAngle);
-        ++out.Iterations;
-        if (poly.ContainsBall(m, mid, &filter))
-        {
-          lo = mid;
-        }
-        else
-        {
-          hi = mid;
-        }
-      }
-      r = lo;
+      r = vtkMedialGeometry::BisectLargestEmpty(0.0, r, tolerance,
+        [&](double mid) {
+          const double m[2] = { p[0] + mid * n[0], p[1] + mid * n[1] };
+          const auto filter = MakeFilter(edge, p, m, mid, cosMinAngle);
+          return poly.ContainsBall(m, mid, &filter);
+        },
+        out.Iterations);
     }
     c[0] = p[0] + r * n[0];
     c[1] = p[1] + r * n[1];

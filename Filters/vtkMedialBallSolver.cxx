@@ -130,22 +130,12 @@ void vtkMedialSolveBall(const vtkMedialSurfaceQuery& query, const vtkMedialTrian
     ++out.Iterations;
     if (!query.ContainsBall(centre, radius, &filter))
     {
-      double lo = 0.0, hi = radius;
-      while (hi - lo > param.Tolerance)
-      {
-        const double mid = 0.5 * (lo + hi);
-        G::AddScaled(p, mid, n, centre);
-        ++out.Iterations;
-        if (query.ContainsBall(centre, mid, &filter))
-        {
-          lo = mid;
-        }
-        else
-        {
-          hi = mid;
-        }
-      }
-      radius = lo;
+      radius = G::BisectLargestEmpty(0.0, radius, param.Tolerance,
+        [&](double r) {
+          G::AddScaled(p, r, n, centre);
+          return query.ContainsBall(centre, r, &filter);
+        },
+        out.Iterations);
       G::AddScaled(p, radius, n, centre);
     }
   }

@@ -7,7 +7,7 @@
  * the same on a triangle clipped by a half-space (used to ignore contacts in
  * the cap around a sample point), and vector helpers. Internal header; not
  * installed. Every decisive inside/outside comparison goes through here, in
- * double precision.
+ * double precision. Also the bisection shared by the 2D and 3D samplers.
  */
 #ifndef vtkMedialGeometry_h
 #define vtkMedialGeometry_h
@@ -188,6 +188,29 @@ inline double ClosestPointOnClippedTriangle(const double p[3], const double a[3]
     }
   }
   return best;
+}
+/**
+ * The report's bisection: given empty(lo) and not empty(hi), halves [lo, hi] until
+ * it is at most `tolerance` wide and returns the lower end, an empty radius.
+ * `evaluations` is increased by the number of calls to empty(r).
+ */
+template <class Empty>
+double BisectLargestEmpty(double lo, double hi, double tolerance, Empty empty, int& evaluations)
+{
+  while (hi - lo > tolerance)
+  {
+    const double mid = 0.5 * (lo + hi);
+    ++evaluations;
+    if (empty(mid))
+    {
+      lo = mid;
+    }
+    else
+    {
+      hi = mid;
+    }
+  }
+  return lo;
 }
 } // namespace vtkMedialGeometry
 
