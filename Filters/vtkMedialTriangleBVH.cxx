@@ -349,7 +349,7 @@ void vtkMedialTriangleBVH::BuildNode(std::vector<Node>& nodes, std::int32_t node
   }
   // Bounds: the box of the triangles and of their centroids, and the area vector sum.
   Node node{};
-  double lo[3], hi[3], cLo[3], cHi[3], area[3] = { 0, 0, 0 };
+  double lo[3], hi[3], cLo[3], cHi[3], area[3] = { 0, 0, 0 }, totalArea = 0.0;
   for (int k = 0; k < 3; ++k)
   {
     lo[k] = cLo[k] = HUGE_VAL;
@@ -358,6 +358,7 @@ void vtkMedialTriangleBVH::BuildNode(std::vector<Node>& nodes, std::int32_t node
   for (std::int32_t i = begin; i < end; ++i)
   {
     const std::int32_t t = order[i];
+    totalArea += mesh.Areas[t];
     for (int k = 0; k < 3; ++k)
     {
       lo[k] = std::min(lo[k], boxes[6 * t + k]);
@@ -369,11 +370,6 @@ void vtkMedialTriangleBVH::BuildNode(std::vector<Node>& nodes, std::int32_t node
   }
   // The slab along the mean normal; skipped when the normals (nearly) cancel out.
   const double areaNorm = std::sqrt(G::Dot(area, area));
-  double totalArea = 0.0;
-  for (std::int32_t i = begin; i < end; ++i)
-  {
-    totalArea += mesh.Areas[order[i]];
-  }
   // Large nodes are never culled by a slab (their boxes decide), so they skip it.
   if (end - begin <= SlabMaximumTriangles && areaNorm > 0.25 * totalArea && areaNorm > 0.0)
   {
