@@ -1,16 +1,20 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Helpers shared by the reader tests: a temporary folder and file writing (error capture
+// Helpers shared by the reader tests: a temporary folder and file writing, cells as id
+// lists (error capture
 // and MEDIAL_CHECK come from Testing/Cxx/MedialTestSupport.h).
 #ifndef ReaderTestUtilities_h
 #define ReaderTestUtilities_h
 
 #include "MedialTestSupport.h"
 
+#include "vtkCellArray.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace readertest
 {
@@ -48,6 +52,20 @@ public:
 
 /// Error capture shared with the other modules' tests.
 using medialtest::EventLog;
+
+/// The cells of a cell array as lists of point ids, for exact comparisons.
+using Cells = std::vector<std::vector<vtkIdType>>;
+inline Cells CellsOf(vtkCellArray* cells)
+{
+  Cells out;
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  for (cells->InitTraversal(); cells->GetNextCell(n, ids);)
+  {
+    out.emplace_back(ids, ids + n);
+  }
+  return out;
+}
 }
 
 #endif

@@ -27,20 +27,6 @@ using namespace readertest;
 
 namespace
 {
-using Cells = std::vector<std::vector<vtkIdType>>;
-
-Cells CellsOf(vtkCellArray* cells)
-{
-  Cells out;
-  vtkIdType n = 0;
-  const vtkIdType* ids = nullptr;
-  for (cells->InitTraversal(); cells->GetNextCell(n, ids);)
-  {
-    out.emplace_back(ids, ids + n);
-  }
-  return out;
-}
-
 bool SameBits(double a, double b)
 {
   return std::memcmp(&a, &b, sizeof(double)) == 0;

@@ -16,8 +16,6 @@ using namespace readertest;
 
 namespace
 {
-using Cells = std::vector<std::vector<vtkIdType>>;
-
 struct Case
 {
   const char* Name;
@@ -74,18 +72,6 @@ std::vector<Case> Cases()
       "OFF\n2 0 0\n1 2 3\n-4 -5 -6\n", { 1, 2, 3, -4, -5, -6 }, {} },
     { "empty mesh", "OFF\n0 0 0\n", {}, {} },
   };
-}
-
-Cells CellsOf(vtkCellArray* cells)
-{
-  Cells out;
-  vtkIdType n = 0;
-  const vtkIdType* ids = nullptr;
-  for (cells->InitTraversal(); cells->GetNextCell(n, ids);)
-  {
-    out.emplace_back(ids, ids + n);
-  }
-  return out;
 }
 }
 
