@@ -1,15 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Image regression: the demo shape (translucent) and its medial points coloured by radius.
+#include "MedialRenderTestUtilities.h"
+
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkLookupTable.h"
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkNew.h"
-#include "vtkDataArray.h"
-#include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
@@ -23,27 +21,8 @@ int TestMedialDemoRender(int argc, char* argv[])
   sampler->SetNumberOfSamples(6000);
   sampler->SetRandomSeed(3);
   sampler->Update();
-  double range[2];
-  sampler->GetOutput()->GetPointData()->GetArray("Radius")->GetRange(range);
-
-  vtkNew<vtkPolyDataMapper> surfaceMapper;
-  surfaceMapper->SetInputConnection(jack->GetOutputPort());
-  surfaceMapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> surface;
-  surface->SetMapper(surfaceMapper);
-  surface->GetProperty()->SetColor(0.8, 0.82, 0.86);
-  surface->GetProperty()->SetOpacity(0.2);
-
-  vtkNew<vtkLookupTable> lut;
-  lut->SetHueRange(0.667, 0.0);
-  lut->SetTableRange(range);
-  lut->Build();
-  vtkNew<vtkPolyDataMapper> medialMapper;
-  medialMapper->SetInputConnection(sampler->GetOutputPort());
-  medialMapper->SetLookupTable(lut);
-  medialMapper->SetScalarRange(range);
-  vtkNew<vtkActor> medial;
-  medial->SetMapper(medialMapper);
+  vtkSmartPointer<vtkActor> surface = medialtest::TranslucentSurface(jack->GetOutputPort());
+  vtkSmartPointer<vtkActor> medial = medialtest::RadiusColoured(sampler->GetOutput());
   medial->GetProperty()->SetPointSize(4);
   medial->GetProperty()->RenderPointsAsSpheresOn();
 

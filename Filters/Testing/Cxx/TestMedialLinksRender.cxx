@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Image regression: the ClosestNeighbor links of spot.obj (from ../shared; skipped
 // when absent) over the translucent surface, lines and points coloured by radius.
+#include "MedialRenderTestUtilities.h"
 #include "MedialTestUtilities.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkLookupTable.h"
 #include "vtkMedialAxisSampler.h"
 #include "vtkOBJReader.h"
-#include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
@@ -39,29 +38,8 @@ int TestMedialLinksRender(int argc, char* argv[])
     std::printf("FAILED: too few links\n");
     return EXIT_FAILURE;
   }
-  double range[2];
-  links->GetPointData()->GetArray("Radius")->GetRange(range);
-
-  vtkNew<vtkPolyDataMapper> surfaceMapper;
-  surfaceMapper->SetInputConnection(reader->GetOutputPort());
-  surfaceMapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> surface;
-  surface->SetMapper(surfaceMapper);
-  surface->GetProperty()->SetColor(0.8, 0.82, 0.86);
-  surface->GetProperty()->SetOpacity(0.2);
-
-  vtkNew<vtkLookupTable> lut;
-  lut->SetHueRange(0.667, 0.0);
-  lut->SetTableRange(range);
-  lut->Build();
-  vtkNew<vtkPolyDataMapper> medialMapper;
-  medialMapper->SetInputData(links);
-  medialMapper->SetLookupTable(lut);
-  medialMapper->SetScalarRange(range);
-  medialMapper->SetScalarModeToUsePointFieldData();
-  medialMapper->SelectColorArray("Radius");
-  vtkNew<vtkActor> medial;
-  medial->SetMapper(medialMapper);
+  vtkSmartPointer<vtkActor> surface = medialtest::TranslucentSurface(reader->GetOutputPort());
+  vtkSmartPointer<vtkActor> medial = medialtest::RadiusColoured(links);
   medial->GetProperty()->SetPointSize(3);
   medial->GetProperty()->SetLineWidth(1.5);
 
