@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialMeshReader.h"
+#include "vtkMedialArrayNames.h"
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -193,7 +194,7 @@ int vtkMedialMeshReader::RequestData(
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(nv);
   vtkNew<vtkDoubleArray> radius;
-  radius->SetName("Radius");
+  radius->SetName(vtkMedialArrayNames::Radius);
   radius->SetNumberOfTuples(nv);
   for (vtkIdType i = 0; i < nv; ++i)
   {
@@ -214,7 +215,7 @@ int vtkMedialMeshReader::RequestData(
   }
   output->SetPoints(points);
   output->GetPointData()->AddArray(radius);
-  output->GetPointData()->SetActiveScalars("Radius"); // colours by radius, like the sampler
+  output->GetPointData()->SetActiveScalars(vtkMedialArrayNames::Radius); // colours by radius, like the sampler
   output->SetLines(lines);
   output->SetPolys(triangles);
   return 1;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialMeshWriter.h"
+#include "vtkMedialArrayNames.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
@@ -102,7 +103,7 @@ void vtkMedialMeshWriter::WriteData()
   {
     return reject("no polydata input");
   }
-  vtkDataArray* radius = input->GetPointData()->GetArray("Radius");
+  vtkDataArray* radius = input->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
   if (!radius)
   {
     return reject("the input has no point-data array 'Radius'");

@@ -9,6 +9,7 @@
 #ifndef MedialReconstructionError_h
 #define MedialReconstructionError_h
 
+#include "vtkMedialArrayNames.h"
 #include "vtkGenericCell.h"
 #include "vtkDataArray.h"
 #include "vtkNew.h"
@@ -90,7 +91,7 @@ inline DirectionalError VertexToSurface(vtkPolyData* from, vtkPolyData* to, doub
 /// assumed inside. The union can leave the surface by exactly this much.
 inline double BallProtrusion(vtkPolyData* balls, vtkPolyData* surface, double scale, int threads)
 {
-  vtkDataArray* radius = balls->GetPointData()->GetArray("Radius");
+  vtkDataArray* radius = balls->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
   const vtkIdType n = balls->GetNumberOfPoints();
   if (!radius || n == 0)
   {

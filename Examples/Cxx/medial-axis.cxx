@@ -7,6 +7,7 @@
 // medial graph, a picture and a JSON line of figures. Only wiring lives here;
 // every algorithm is in a filter.
 
+#include "vtkMedialArrayNames.h"
 #include "MedialReconstructionError.h"
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialBallUnion.h"
@@ -572,7 +573,7 @@ void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, 
   surfaceActor->GetProperty()->SetOpacity(0.22);
 
   double range[2] = { 0.0, 1.0 };
-  if (auto* r = medial->GetPointData()->GetArray("Radius"))
+  if (auto* r = medial->GetPointData()->GetArray(vtkMedialArrayNames::Radius))
   {
     if (r->GetNumberOfTuples() > 0)
     {
@@ -587,7 +588,7 @@ void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, 
   medialMapper->SetInputData(medial);
   medialMapper->SetLookupTable(lut);
   medialMapper->SetScalarModeToUsePointFieldData();
-  medialMapper->SelectColorArray("Radius");
+  medialMapper->SelectColorArray(vtkMedialArrayNames::Radius);
   medialMapper->SetScalarRange(range);
   medialMapper->ScalarVisibilityOn();
   vtkNew<vtkActor> medialActor;
@@ -597,7 +598,7 @@ void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, 
 
   vtkNew<vtkScalarBarActor> bar;
   bar->SetLookupTable(lut);
-  bar->SetTitle("Radius");
+  bar->SetTitle(vtkMedialArrayNames::Radius);
   bar->SetNumberOfLabels(5);
   bar->SetWidth(0.09);
   bar->SetHeight(0.6);
@@ -772,7 +773,7 @@ vtkSmartPointer<vtkPolyData> RunJunctions(vtkPolyData* polygon, int threads, Mes
 vtkSmartPointer<vtkActor> NodeActor(vtkPolyData* graph, int type, double size, const double rgb[3])
 {
   vtkNew<vtkPoints> pts;
-  auto* types = graph->GetPointData()->GetArray("MedialPointType");
+  auto* types = graph->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
   for (vtkIdType i = 0; types && i < graph->GetNumberOfPoints(); ++i)
   {
     if (static_cast<int>(types->GetTuple1(i)) == type)
@@ -847,7 +848,7 @@ void Render2D(vtkPolyData* polygon, vtkPolyData* graph, const std::string& path,
   vtkNew<vtkPolyDataMapper> arcMapper;
   arcMapper->SetInputData(graph);
   arcMapper->SetScalarModeToUseCellFieldData();
-  arcMapper->SelectColorArray("ArcType");
+  arcMapper->SelectColorArray(vtkMedialArrayNames::ArcType);
   arcMapper->SetLookupTable(arcColours);
   arcMapper->SetScalarRange(0, 1);
   arcMapper->ScalarVisibilityOn();
@@ -858,8 +859,8 @@ void Render2D(vtkPolyData* polygon, vtkPolyData* graph, const std::string& path,
 
   // Maximal disks of the (up to) six largest junctions.
   std::vector<std::pair<double, vtkIdType>> junctions;
-  auto* types = graph->GetPointData()->GetArray("MedialPointType");
-  auto* radius = graph->GetPointData()->GetArray("Radius");
+  auto* types = graph->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
+  auto* radius = graph->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
   for (vtkIdType i = 0; types && i < graph->GetNumberOfPoints(); ++i)
   {
     if (static_cast<int>(types->GetTuple1(i)) == vtkMedialJunctionFilter::JUNCTION_POINT)
@@ -1145,7 +1146,7 @@ int main(int argc, char* argv[])
     if (graph)
     {
       vtkIdType junctions = 0, ends = 0;
-      auto* types = graph->GetPointData()->GetArray("MedialPointType");
+      auto* types = graph->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
       for (vtkIdType i = 0; i < graph->GetNumberOfPoints(); ++i)
       {
         const int t = static_cast<int>(types->GetTuple1(i));

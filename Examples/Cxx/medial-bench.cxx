@@ -9,6 +9,7 @@
 // the "limit" (one ray plus one bounded closest-point query per sample), peak RSS,
 // and a 327k-triangle sphere as the worst case. Prints a table, or one JSON object
 // with --json. Not a test: it checks nothing.
+#include "vtkMedialArrayNames.h"
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialRandom.h"
 #include "vtkMedialShapeSource.h"
@@ -216,7 +217,7 @@ int main(int argc, char* argv[])
   probe->Update();
   vtkPolyData* medial = probe->GetOutput();
   const int probes = static_cast<int>(medial->GetNumberOfPoints());
-  vtkDataArray* probeRadius = medial->GetPointData()->GetArray("Radius");
+  vtkDataArray* probeRadius = medial->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
   // Point queries from the medial centres, on each engine: bounded closest point,
   // and contains-ball just inside ("yes", must see every candidate) and just
   // outside ("no", may stop at the first blocker) the medial radius.

@@ -12,6 +12,7 @@
 //       update succeeded, 1 when one failed. --same-as checks that the radii, divided by
 //       S and relative to the diagonal, equal those of REF's run (within 1e-6);
 //       --cli-output checks the command-line program's .vtp against REF's run the same way.
+#include "vtkMedialArrayNames.h"
 #include "MedialTestSupport.h"
 
 #include "vtkMedialAxisSampler.h"
@@ -446,7 +447,7 @@ bool RunSampler(const std::string& path, vtkIdType samples, SamplerRun& run, boo
   }
   if (print)
   {
-    vtkDataArray* discarded = run.Output->GetFieldData()->GetArray("DiscardedSamples");
+    vtkDataArray* discarded = run.Output->GetFieldData()->GetArray(vtkMedialArrayNames::DiscardedSamples);
     std::printf("sampler: update %s, %d error(s), %d warning(s), %lld points, %g discarded\n",
       ok ? "ok" : "failed", log.Errors, log.Warnings, static_cast<long long>(run.Output->GetNumberOfPoints()),
       discarded ? discarded->GetComponent(0, 0) : 0.0);
@@ -458,8 +459,8 @@ bool RunSampler(const std::string& path, vtkIdType samples, SamplerRun& run, boo
 // Largest |r_b / scale - r_a| relative to a's diagonal, or -1 when the counts differ.
 double RadiusDifference(const SamplerRun& a, vtkPolyData* b, double scale)
 {
-  vtkDataArray* ra = a.Output->GetPointData()->GetArray("Radius");
-  vtkDataArray* rb = b->GetPointData()->GetArray("Radius");
+  vtkDataArray* ra = a.Output->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
+  vtkDataArray* rb = b->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
   if (!ra || !rb || ra->GetNumberOfTuples() != rb->GetNumberOfTuples())
   {
     return -1.0;

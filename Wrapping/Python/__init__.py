@@ -1,3 +1,6 @@
 """medialaxis: medial axis transform filters, readers and writers for VTK pipelines."""
-from .vtkMedialAxisFilters import *  # noqa: F401,F403
+from .vtkMedialAxisSampling import *  # noqa: F401,F403
+from .vtkMedialAxisPlanar import *  # noqa: F401,F403
+from .vtkMedialAxisReconstruction import *  # noqa: F401,F403
+from .vtkMedialAxisSources import *  # noqa: F401,F403
 from .vtkMedialAxisReaders import *  # noqa: F401,F403

@@ -81,7 +81,7 @@
 #ifndef vtkMedialAxisSampler_h
 #define vtkMedialAxisSampler_h
 
-#include "vtkMedialAxisFiltersModule.h" // for export macro
+#include "vtkMedialAxisSamplingModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <vector> // for std::vector
@@ -91,7 +91,7 @@ struct vtkMedialBallParameters;
 class vtkMedialSurfaceQuery;
 class vtkMedialTriangleMesh;
 
-class VTKMEDIALAXISFILTERS_EXPORT vtkMedialAxisSampler : public vtkPolyDataAlgorithm
+class VTKMEDIALAXISSAMPLING_EXPORT vtkMedialAxisSampler : public vtkPolyDataAlgorithm
 {
 public:
   static vtkMedialAxisSampler* New();

@@ -30,7 +30,6 @@
 #ifndef vtkMedialSurfaceQuery_h
 #define vtkMedialSurfaceQuery_h
 
-#include "vtkMedialAxisFiltersModule.h" // for export macro
 #include "vtkMedialTriangleBVH.h"
 #include "vtkType.h"
 
@@ -39,7 +38,7 @@
 
 class vtkMedialTriangleMesh;
 
-class VTKMEDIALAXISFILTERS_EXPORT vtkMedialSurfaceQuery
+class vtkMedialSurfaceQuery
 {
 public:
   struct ContactFilter

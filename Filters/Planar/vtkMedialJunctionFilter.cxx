@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialJunctionFilter.h"
+#include "vtkMedialArrayNames.h"
 
 #include "vtkMedialPolygon.h"
 
@@ -1022,11 +1023,11 @@ int vtkMedialJunctionFilter::RequestData(
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkDoubleArray> radius;
-  radius->SetName("Radius");
+  radius->SetName(vtkMedialArrayNames::Radius);
   vtkNew<vtkIntArray> type;
-  type->SetName("MedialPointType");
+  type->SetName(vtkMedialArrayNames::MedialPointType);
   vtkNew<vtkIntArray> governors;
-  governors->SetName("GovernorCount");
+  governors->SetName(vtkMedialArrayNames::GovernorCount);
   auto addPoint = [&](const double c[2], double r, int t, int g) {
     double x[3];
     poly.To3D(c, x);
@@ -1061,7 +1062,7 @@ int vtkMedialJunctionFilter::RequestData(
   }
   vtkNew<vtkCellArray> lines;
   vtkNew<vtkIntArray> arcType;
-  arcType->SetName("ArcType");
+  arcType->SetName(vtkMedialArrayNames::ArcType);
   const int E = poly.GetNumberOfEdges();
   for (const Arc& arc : arcs)
   {
@@ -1101,7 +1102,7 @@ int vtkMedialJunctionFilter::RequestData(
   output->SetPoints(points);
   output->SetLines(lines);
   output->GetPointData()->AddArray(radius);
-  output->GetPointData()->SetActiveScalars("Radius");
+  output->GetPointData()->SetActiveScalars(vtkMedialArrayNames::Radius);
   output->GetPointData()->AddArray(type);
   output->GetPointData()->AddArray(governors);
   output->GetCellData()->AddArray(arcType);

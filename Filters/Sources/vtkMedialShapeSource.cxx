@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialShapeSource.h"
+#include "vtkMedialArrayNames.h"
 
 #include "vtkCellArray.h"
 #include "vtkFlyingEdges3D.h"
@@ -324,7 +325,7 @@ void MakeJack(vtkPolyData* out, int resolution)
   grid->SetOrigin(lo[0], lo[1], lo[2]);
   grid->SetSpacing(h, h, h);
   vtkNew<vtkFloatArray> field;
-  field->SetName("Distance");
+  field->SetName(vtkMedialArrayNames::Distance);
   field->SetNumberOfTuples(static_cast<vtkIdType>(dims[0]) * dims[1] * dims[2]);
   vtkIdType id = 0;
   for (int k = 0; k < dims[2]; ++k)

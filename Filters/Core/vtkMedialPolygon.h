@@ -34,7 +34,6 @@
 #ifndef vtkMedialPolygon_h
 #define vtkMedialPolygon_h
 
-#include "vtkMedialAxisFiltersModule.h" // for export macro
 #include "vtkType.h"
 
 #include <algorithm>
@@ -43,7 +42,7 @@
 
 class vtkPolyData;
 
-class VTKMEDIALAXISFILTERS_EXPORT vtkMedialPolygon
+class vtkMedialPolygon
 {
 public:
   struct Edge

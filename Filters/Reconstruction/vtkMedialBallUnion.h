@@ -63,12 +63,12 @@
 #ifndef vtkMedialBallUnion_h
 #define vtkMedialBallUnion_h
 
-#include "vtkMedialAxisFiltersModule.h" // for export macro
+#include "vtkMedialAxisReconstructionModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
 class vtkImageData;
 
-class VTKMEDIALAXISFILTERS_EXPORT vtkMedialBallUnion : public vtkPolyDataAlgorithm
+class VTKMEDIALAXISRECONSTRUCTION_EXPORT vtkMedialBallUnion : public vtkPolyDataAlgorithm
 {
 public:
   static vtkMedialBallUnion* New();

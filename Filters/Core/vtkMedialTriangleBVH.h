@@ -30,7 +30,6 @@
 #ifndef vtkMedialTriangleBVH_h
 #define vtkMedialTriangleBVH_h
 
-#include "vtkMedialAxisFiltersModule.h" // for export macro
 #include "vtkType.h"
 
 #include <cstdint>
@@ -39,7 +38,7 @@
 
 class vtkMedialTriangleMesh;
 
-class VTKMEDIALAXISFILTERS_EXPORT vtkMedialTriangleBVH
+class vtkMedialTriangleBVH
 {
 public:
   struct TangentBall

@@ -21,7 +21,6 @@
 #ifndef vtkMedialTriangleMesh_h
 #define vtkMedialTriangleMesh_h
 
-#include "vtkMedialAxisFiltersModule.h" // for export macro
 #include "vtkType.h"
 
 #include <functional>
@@ -30,7 +29,7 @@
 
 class vtkPolyData;
 
-class VTKMEDIALAXISFILTERS_EXPORT vtkMedialTriangleMesh
+class vtkMedialTriangleMesh
 {
 public:
   /// Returns false and fills `error` with a one-line reason on unusable input.

@@ -46,10 +46,10 @@
 #ifndef vtkMedialJunctionFilter_h
 #define vtkMedialJunctionFilter_h
 
-#include "vtkMedialAxisFiltersModule.h" // for export macro
+#include "vtkMedialAxisPlanarModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class VTKMEDIALAXISFILTERS_EXPORT vtkMedialJunctionFilter : public vtkPolyDataAlgorithm
+class VTKMEDIALAXISPLANAR_EXPORT vtkMedialJunctionFilter : public vtkPolyDataAlgorithm
 {
 public:
   static vtkMedialJunctionFilter* New();

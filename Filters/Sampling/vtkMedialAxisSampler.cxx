@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialArrayNames.h"
 
 #include "vtkMedialBallSolver.h"
 #include "vtkMedialIterativeSampling.h"
@@ -337,7 +338,7 @@ int vtkMedialAxisSampler::RequestData(
   }
   if (coverage)
   {
-    output->GetFieldData()->GetArray("RequestedSamples")->SetTuple1(0, static_cast<double>(count));
+    output->GetFieldData()->GetArray(vtkMedialArrayNames::RequestedSamples)->SetTuple1(0, static_cast<double>(count));
     this->WriteCoverage(output);
   }
 
@@ -420,7 +421,7 @@ int vtkMedialAxisSampler::RequestDataIterative(
   this->MaxCoverageGap = result.MaxGap / mesh.Diagonal;
   this->WriteSamples(output, evaluated, result.Records);
   // RequestedSamples is the budget; the samples used are EvaluatedSamples.
-  output->GetFieldData()->GetArray("RequestedSamples")->SetTuple1(0, static_cast<double>(settings.Budget));
+  output->GetFieldData()->GetArray(vtkMedialArrayNames::RequestedSamples)->SetTuple1(0, static_cast<double>(settings.Budget));
   vtkIdType validSeeds = 0;
   for (vtkIdType i = 0; i < result.Seeds; ++i)
   {
@@ -432,8 +433,8 @@ int vtkMedialAxisSampler::RequestDataIterative(
     a->InsertNextValue(value);
     output->GetFieldData()->AddArray(a);
   };
-  addField("EvaluatedSamples", static_cast<double>(evaluated));
-  addField("SeedSamples", static_cast<double>(validSeeds)); // the first output points
+  addField(vtkMedialArrayNames::EvaluatedSamples, static_cast<double>(evaluated));
+  addField(vtkMedialArrayNames::SeedSamples, static_cast<double>(validSeeds)); // the first output points
   this->WriteCoverage(output);
 
   if (settings.Strategy == vtkMedialIterativeSettings::CLOSEST_NEIGHBOR)
@@ -449,7 +450,7 @@ int vtkMedialAxisSampler::RequestDataIterative(
     const vtkIdType links = static_cast<vtkIdType>(result.InitialLink.size());
     lines->AllocateExact(links, 2 * links);
     vtkNew<vtkIdTypeArray> initial;
-    initial->SetName("InitialLink");
+    initial->SetName(vtkMedialArrayNames::InitialLink);
     initial->SetNumberOfTuples(output->GetNumberOfVerts() + links);
     for (vtkIdType c = 0; c < output->GetNumberOfVerts(); ++c)
     {
@@ -470,11 +471,11 @@ int vtkMedialAxisSampler::RequestDataIterative(
 void vtkMedialAxisSampler::WriteCoverage(vtkPolyData* output)
 {
   vtkNew<vtkDoubleArray> reached;
-  reached->SetName("CoverageReached");
+  reached->SetName(vtkMedialArrayNames::CoverageReached);
   reached->InsertNextValue(this->CoverageReached ? 1.0 : 0.0);
   output->GetFieldData()->AddArray(reached);
   vtkNew<vtkDoubleArray> gap;
-  gap->SetName("MaxCoverageGap"); // relative to the diagonal
+  gap->SetName(vtkMedialArrayNames::MaxCoverageGap); // relative to the diagonal
   gap->InsertNextValue(this->MaxCoverageGap);
   output->GetFieldData()->AddArray(gap);
 }
@@ -503,12 +504,12 @@ void vtkMedialAxisSampler::WriteSamples(
     a->SetNumberOfTuples(accepted);
     return a;
   };
-  auto radius = makeArray("Radius", 1);
-  auto surface = makeArray("SurfacePoint", 3);
-  auto contact = makeArray("ContactPoint", 3);
-  auto angle = makeArray("SeparationAngle", 1);
+  auto radius = makeArray(vtkMedialArrayNames::Radius, 1);
+  auto surface = makeArray(vtkMedialArrayNames::SurfacePoint, 3);
+  auto contact = makeArray(vtkMedialArrayNames::ContactPoint, 3);
+  auto angle = makeArray(vtkMedialArrayNames::SeparationAngle, 1);
   vtkNew<vtkIdTypeArray> cells;
-  cells->SetName("SourceCellId");
+  cells->SetName(vtkMedialArrayNames::SourceCellId);
   cells->SetNumberOfTuples(accepted);
   vtkNew<vtkIdTypeArray> connectivity;
   connectivity->SetNumberOfTuples(accepted);
@@ -539,7 +540,7 @@ void vtkMedialAxisSampler::WriteSamples(
   output->SetPoints(points);
   output->SetVerts(verts);
   output->GetPointData()->AddArray(radius);
-  output->GetPointData()->SetActiveScalars("Radius");
+  output->GetPointData()->SetActiveScalars(vtkMedialArrayNames::Radius);
   output->GetPointData()->AddArray(surface);
   output->GetPointData()->AddArray(contact);
   output->GetPointData()->AddArray(angle);
@@ -551,10 +552,10 @@ void vtkMedialAxisSampler::WriteSamples(
     a->InsertNextValue(value);
     output->GetFieldData()->AddArray(a);
   };
-  addField("RequestedSamples", static_cast<double>(requested));
-  addField("DiscardedSamples", static_cast<double>(this->DiscardedSamples));
-  addField("MeanIterations", this->MeanIterations);
-  addField("CappedSamples", static_cast<double>(this->CappedSamples));
+  addField(vtkMedialArrayNames::RequestedSamples, static_cast<double>(requested));
+  addField(vtkMedialArrayNames::DiscardedSamples, static_cast<double>(this->DiscardedSamples));
+  addField(vtkMedialArrayNames::MeanIterations, this->MeanIterations);
+  addField(vtkMedialArrayNames::CappedSamples, static_cast<double>(this->CappedSamples));
 }
 
 void vtkMedialAxisSampler::PrintSelf(ostream& os, vtkIndent indent)

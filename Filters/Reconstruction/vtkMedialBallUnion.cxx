@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialBallUnion.h"
+#include "vtkMedialArrayNames.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -535,7 +536,7 @@ int vtkMedialBallUnion::RequestData(
     vtkErrorMacro(<< "Cannot build the union of balls: the input has no points.");
     return 0;
   }
-  vtkDataArray* radii = input->GetPointData()->GetArray("Radius");
+  vtkDataArray* radii = input->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
   if (!radii)
   {
     vtkErrorMacro(<< "Cannot build the union of balls: the input has no point-data array "
@@ -764,7 +765,7 @@ int vtkMedialBallUnion::RequestData(
   }
 
   vtkNew<vtkDoubleArray> field;
-  field->SetName("Distance");
+  field->SetName(vtkMedialArrayNames::Distance);
   field->SetNumberOfTuples(voxels);
   double* values = field->GetPointer(0);
   const vtkIdType sliceSize = static_cast<vtkIdType>(grid.Dims[0]) * grid.Dims[1];

@@ -32,10 +32,10 @@
 #ifndef vtkMedialShapeSource_h
 #define vtkMedialShapeSource_h
 
-#include "vtkMedialAxisFiltersModule.h" // for export macro
+#include "vtkMedialAxisSourcesModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class VTKMEDIALAXISFILTERS_EXPORT vtkMedialShapeSource : public vtkPolyDataAlgorithm
+class VTKMEDIALAXISSOURCES_EXPORT vtkMedialShapeSource : public vtkPolyDataAlgorithm
 {
 public:
   static vtkMedialShapeSource* New();

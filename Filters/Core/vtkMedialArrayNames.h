@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file vtkMedialArrayNames.h
+ * @brief The names of every array the medialaxis filters read or write.
+ *
+ * These names are a stable contract: tests, scripts, the ParaView plugin and users'
+ * pipelines look arrays up by them. Use the constants instead of string literals.
+ *
+ * Point data of medial balls (vtkMedialAxisSampler and the structure filters):
+ *  - Radius (double): ball radius;
+ *  - SurfacePoint (double x3): the surface sample P the ball is tangent at;
+ *  - ContactPoint (double x3): the second touching point;
+ *  - SeparationAngle (double, degrees): the angle P-centre-contact;
+ *  - SourceCellId (vtkIdType): the input cell that P lies on;
+ *  - GovernorCount (int): surface regions (2D: edges and reflex vertices) the ball touches;
+ *  - MedialPointType (int): in 2D 0 end, 1 regular, 2 junction;
+ *    in 3D 0 rim, 1 sheet, 2 seam, 3 junction.
+ *
+ * Cell data of the 2D medial graph: ArcType (0 linear, 1 parabolic), PolygonId.
+ * Cell data of the sampler's links: InitialLink.
+ *
+ * Point data on a surface (thickness): Thickness, MedialRadius, MedialCentre, RayThickness.
+ *
+ * Field data: RequestedSamples, DiscardedSamples, MeanIterations, CappedSamples,
+ * EvaluatedSamples, SeedSamples, CoverageReached, MaxCoverageGap.
+ *
+ * The distance field of a reconstruction (vtkMedialBallUnion output 1): Distance.
+ */
+#ifndef vtkMedialArrayNames_h
+#define vtkMedialArrayNames_h
+
+namespace vtkMedialArrayNames
+{
+// Medial balls.
+constexpr const char* Radius = "Radius";
+constexpr const char* SurfacePoint = "SurfacePoint";
+constexpr const char* ContactPoint = "ContactPoint";
+constexpr const char* SeparationAngle = "SeparationAngle";
+constexpr const char* SourceCellId = "SourceCellId";
+constexpr const char* GovernorCount = "GovernorCount";
+constexpr const char* MedialPointType = "MedialPointType";
+
+// Cells of the 2D medial graph and of the sampler's links.
+constexpr const char* ArcType = "ArcType";
+constexpr const char* PolygonId = "PolygonId";
+constexpr const char* InitialLink = "InitialLink";
+
+// Thickness on the input surface.
+constexpr const char* Thickness = "Thickness";
+constexpr const char* MedialRadius = "MedialRadius";
+constexpr const char* MedialCentre = "MedialCentre";
+constexpr const char* RayThickness = "RayThickness";
+
+// Field data of the sampler.
+constexpr const char* RequestedSamples = "RequestedSamples";
+constexpr const char* DiscardedSamples = "DiscardedSamples";
+constexpr const char* MeanIterations = "MeanIterations";
+constexpr const char* CappedSamples = "CappedSamples";
+constexpr const char* EvaluatedSamples = "EvaluatedSamples";
+constexpr const char* SeedSamples = "SeedSamples";
+constexpr const char* CoverageReached = "CoverageReached";
+constexpr const char* MaxCoverageGap = "MaxCoverageGap";
+
+// The reconstruction's field image.
+constexpr const char* Distance = "Distance";
+}
+
+#endif
