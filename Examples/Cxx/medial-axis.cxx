@@ -1020,7 +1020,7 @@ int main(int argc, char* argv[])
   sampler->SetMethod(opt.Method);
   sampler->SetSamplingStrategy(opt.Strategy);
   sampler->SetCoverageTolerance(opt.Coverage);
-  sampler->SetRandomSeed(opt.Seed);
+  sampler->SetRandomSeed(static_cast<vtkTypeInt64>(opt.Seed)); // at most 9e15 (Parse)
   sampler->SetNumberOfThreads(opt.Threads);
   sampler->SetTolerance(opt.Tolerance);
   sampler->SetMinimumSeparationAngle(opt.MinAngle);

@@ -2,6 +2,7 @@
 #include "vtkMedialJunctionFilter.h"
 #include "vtkMedialArrayNames.h"
 
+#include "vtkMedialPieces.h"
 #include "vtkMedialPolygon.h"
 
 #include "vtkCellArray.h"
@@ -832,6 +833,14 @@ int vtkMedialJunctionFilter::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
+int vtkMedialJunctionFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // The graph needs every loop of the polygon, whatever piece is requested.
+  vtkMedialPieces::RequestWholeInput(inputVector[0]->GetInformationObject(0));
+  return 1;
+}
+
 int vtkMedialJunctionFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -841,6 +850,10 @@ int vtkMedialJunctionFilter::RequestData(
   this->NumberOfEndPoints = 0;
   this->NumberOfSamples = 0;
   this->UnresolvedIntervals = 0;
+  if (!vtkMedialPieces::FromRequest(outputVector->GetInformationObject(0)).IsFirst())
+  {
+    return 1; // piece 0 holds the whole graph
+  }
 
   vtkMedialPolygon poly;
   std::string error;

@@ -41,6 +41,10 @@
  *
  * Output is identical for any thread count.
  *
+ * Pieces (see vtkMedialPieces.h): the graph needs the whole polygon, and it is cheap:
+ * the filter requests the whole input and computes the graph in piece 0; the other
+ * pieces are empty.
+ *
  * @sa vtkMedialAxisSampler
  */
 #ifndef vtkMedialJunctionFilter_h
@@ -69,7 +73,7 @@ public:
   };
 
   ///@{
-  /// Boundary samples per bounding-box diagonal of boundary length (default 20).
+  /// Boundary samples per bounding-box diagonal of boundary length (default 100).
   vtkSetClampMacro(SamplesPerUnitLength, double, 0.0, 1e9);
   vtkGetMacro(SamplesPerUnitLength, double);
   ///@}
@@ -112,6 +116,7 @@ protected:
   ~vtkMedialJunctionFilter() override = default;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double SamplesPerUnitLength = 100.0;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialBallUnion.h"
 #include "vtkMedialArrayNames.h"
+#include "vtkMedialPieces.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -509,13 +510,15 @@ int vtkMedialBallUnion::RequestInformation(
 }
 
 int vtkMedialBallUnion::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  // Every ball can reach every part of the union: always ask for all of them.
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  // Every ball can reach every part of the union: all of them are needed. With one
+  // process per piece each keeps its own piece and RequestData gathers them;
+  // otherwise every piece asks for all of the input (vtkMedialPieces.h).
+  if (!vtkMedialPieces::FromRequest(outputVector->GetInformationObject(0)).IsDistributed())
+  {
+    vtkMedialPieces::RequestWholeInput(inputVector[0]->GetInformationObject(0));
+  }
   return 1;
 }
 
@@ -528,6 +531,27 @@ int vtkMedialBallUnion::RequestData(
   vtkImageData* image = vtkImageData::GetData(outputVector, 1);
   this->OutputDimension = 0;
   this->VoxelSize = 0.0;
+
+  // 0. Pieces: process 0 builds the whole union from every process's balls; the
+  // other pieces stay empty.
+  const vtkMedialPieces pieces = vtkMedialPieces::FromRequest(outputVector->GetInformationObject(0));
+  vtkSmartPointer<vtkPolyData> gathered;
+  if (pieces.IsDistributed())
+  {
+    std::string error;
+    vtkDataArray* local = input ? input->GetPointData()->GetArray(vtkMedialArrayNames::Radius) : nullptr;
+    gathered = pieces.GatherToFirst(input, local, vtkMedialArrayNames::Radius, error);
+    if (!error.empty())
+    {
+      vtkErrorMacro(<< "Cannot build the union of balls: " << error << ".");
+      return 0;
+    }
+    input = gathered;
+  }
+  if (!pieces.IsFirst())
+  {
+    return 1;
+  }
 
   // 1. Validation.
   const vtkIdType count = input ? input->GetNumberOfPoints() : 0;

@@ -4,6 +4,7 @@
 
 #include "vtkMedialBallSolver.h"
 #include "vtkMedialIterativeSampling.h"
+#include "vtkMedialPieces.h"
 #include "vtkMedialPolygon.h"
 #include "vtkMedialRandom.h"
 #include "vtkMedialSampleRecord.h"
@@ -21,7 +22,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <omp.h>
 #include <unistd.h>
@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <atomic>
 #include <memory>
+#include <numeric>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -38,6 +39,67 @@ vtkStandardNewMacro(vtkMedialAxisSampler);
 namespace
 {
 using SampleResult = vtkMedialSampleRecord;
+
+// Consecutive samples in leaf order that run on one thread, each hinted with the
+// previous one's contact. Chains start at multiples of HintChain whatever the thread
+// count and the piece, so the output depends on neither. (A hint changes the
+// visiting order only: the ball is the same up to the 1e-12 slack, which can decide
+// nearly flat contacts either way.)
+constexpr vtkIdType HintChain = 8;
+
+// Stable counting sort of items by leaf rank: ties keep index order.
+std::vector<vtkIdType> SortByLeaf(const std::vector<std::int32_t>& leafOfItem, size_t leaves)
+{
+  std::vector<vtkIdType> next(leaves + 1, 0);
+  for (std::int32_t leaf : leafOfItem)
+  {
+    ++next[leaf + 1];
+  }
+  for (size_t r = 1; r < next.size(); ++r)
+  {
+    next[r] += next[r - 1];
+  }
+  std::vector<vtkIdType> order(leafOfItem.size());
+  for (size_t i = 0; i < leafOfItem.size(); ++i)
+  {
+    order[next[leafOfItem[i]]++] = static_cast<vtkIdType>(i);
+  }
+  return order;
+}
+
+// The samples one piece solves, and in which order. All `total` samples are put in
+// the leaf order of their triangles (drawing a triangle is cheap next to solving a
+// ball), and the piece takes a contiguous run of that order cut at multiples of
+// HintChain: every piece forms the same hint chains as a one-piece run, so the union
+// of the pieces is that run bit for bit. Index: the piece's sample indices, in
+// increasing order (the output order); Order: positions in Index, in leaf order.
+void SelectPieceSamples(const vtkMedialTriangleMesh& mesh, const std::vector<std::int32_t>& leafRank,
+  std::uint64_t seed, vtkIdType total, const vtkMedialPieces& pieces, int threads,
+  std::vector<vtkIdType>& index, std::vector<vtkIdType>& order)
+{
+  std::vector<vtkIdType> leafOrder;
+  {
+    std::vector<std::int32_t> leafOfSample(static_cast<size_t>(total));
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (vtkIdType i = 0; i < total; ++i)
+    {
+      leafOfSample[i] = leafRank[vtkMedialPickSampleTriangle(mesh, seed, i)];
+    }
+    leafOrder = SortByLeaf(leafOfSample, leafRank.size()); // ranks are below the triangle count
+  }
+  vtkIdType firstChain = 0;
+  vtkIdType chains = 0;
+  pieces.GetShare((total + HintChain - 1) / HintChain, firstChain, chains);
+  const vtkIdType begin = std::min(total, firstChain * HintChain);
+  const vtkIdType end = std::min(total, (firstChain + chains) * HintChain);
+  index.assign(leafOrder.begin() + begin, leafOrder.begin() + end);
+  std::sort(index.begin(), index.end());
+  order.resize(index.size());
+  for (vtkIdType k = begin; k < end; ++k)
+  {
+    order[k - begin] = std::lower_bound(index.begin(), index.end(), leafOrder[k]) - index.begin();
+  }
+}
 }
 
 vtkMedialAxisSampler::vtkMedialAxisSampler() = default;
@@ -82,10 +144,7 @@ int vtkMedialAxisSampler::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // Rays need the whole surface whatever piece is requested downstream.
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  vtkMedialPieces::RequestWholeInput(inputVector[0]->GetInformationObject(0));
   return 1;
 }
 
@@ -114,6 +173,15 @@ int vtkMedialAxisSampler::RequestData(
                       << " is for 3D surfaces; planar input is sampled at random.");
     }
     return this->RequestData2D(input, outInfo, output);
+  }
+
+  // The iterative strategies and a coverage stop are sequential: piece 0 runs them
+  // whole and the other pieces skip even the preparation (vtkMedialPieces.h).
+  const vtkMedialPieces pieces = vtkMedialPieces::FromRequest(outInfo);
+  const bool sequential = this->SamplingStrategy != RANDOM || this->CoverageTolerance > 0.0;
+  if (sequential && !pieces.IsFirst())
+  {
+    return 1;
   }
 
   // Preparation takes seconds on big meshes: the abort flag is polled between stages.
@@ -157,45 +225,31 @@ int vtkMedialAxisSampler::RequestData(
     return 0;
   }
 
-  // This piece's share of the samples; sample indices stay global so that the
-  // union of all pieces equals a single-piece run.
-  const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    : 0;
-  const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
-    ? std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
-    : 1;
   if (this->SamplingStrategy != RANDOM)
   {
-    return this->RequestDataIterative(mesh, query, piece, output);
+    return this->RequestDataIterative(mesh, query, output);
   }
+  // This piece's share of the samples (at most total / pieces, rounded up to whole
+  // hint chains); sample indices stay global so that the union of all pieces equals
+  // a single-piece run.
   const vtkIdType total = this->NumberOfSamples;
-  const vtkIdType first = total * piece / pieces;
-  const vtkIdType last = total * (piece + 1) / pieces;
-  const vtkIdType count = last - first;
+  const vtkIdType share = sequential ? total
+    : std::min(total, ((total + HintChain - 1) / HintChain + pieces.NumberOfPieces - 1) /
+        pieces.NumberOfPieces * HintChain);
 
-  // Refuse up front what cannot fit: the per-sample results plus the output arrays.
+  // Refuse up front what cannot fit: the per-sample results plus the output arrays,
+  // and the leaf order of all samples.
   const double bytesPerSample = sizeof(SampleResult) + 12 * sizeof(double) + 3 * sizeof(vtkIdType);
-  const double needed = bytesPerSample * static_cast<double>(count);
+  const double needed = bytesPerSample * static_cast<double>(share) +
+    (sizeof(vtkIdType) + sizeof(std::int32_t)) * static_cast<double>(total);
   const double available = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
   if (available > 0 && needed > 0.8 * available)
   {
-    vtkErrorMacro(<< "NumberOfSamples " << count << " needs about " << needed / (1 << 30)
+    vtkErrorMacro(<< "NumberOfSamples " << share << " needs about " << needed / (1 << 30)
                   << " GiB, more than this machine's memory allows (" << available / (1 << 30)
                   << " GiB); use fewer samples or several pieces.");
     return 0;
   }
-  std::vector<SampleResult> results;
-  try
-  {
-    results.resize(static_cast<size_t>(count));
-  }
-  catch (const std::bad_alloc&)
-  {
-    vtkErrorMacro(<< "Cannot allocate memory for " << count << " samples.");
-    return 0;
-  }
-
   const vtkMedialBallParameters param = this->MakeBallParameters(mesh.Diagonal);
   const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
 
@@ -207,42 +261,55 @@ int vtkMedialAxisSampler::RequestData(
   {
     coverage.reset(new vtkMedialCoverage(mesh));
   }
-  vtkIdType used = count;
 
   // Draw every sample first, then solve them in the BVH's leaf order: samples
   // close on the surface touch the same nodes, so the caches stay warm. Each
   // result still goes to its own index, so the order cannot change the output.
-  // With a coverage stop the order is sorted within each block only, so that the
-  // blocks stay prefixes of the sample sequence.
+  // With a coverage stop (one piece) the order is sorted within each block only, so
+  // that the blocks stay prefixes of the sample sequence.
   // Blocks keep UpdateProgress and the abort check on the calling thread: long
   // enough that threads rarely wait at the block's end, short enough (about
   // 30 ms on a 1.5M-triangle mesh) that an abort is honoured at once.
   const vtkIdType block = coverage ? 1024 : 1024 * threads;
+  const std::uint64_t seed = static_cast<std::uint64_t>(this->RandomSeed);
+  const std::vector<std::int32_t>& rank = query.GetLeafRanks();
+  std::vector<SampleResult> results;
+  std::vector<vtkIdType> index; // the sample index of each result
   std::vector<vtkIdType> triangles;
   std::vector<vtkIdType> order;
   try
   {
-    triangles.resize(static_cast<size_t>(count));
-    order.resize(static_cast<size_t>(count));
+    if (coverage)
+    {
+      index.resize(static_cast<size_t>(total));
+      std::iota(index.begin(), index.end(), 0);
+    }
+    else
+    {
+      SelectPieceSamples(mesh, rank, seed, total, pieces, threads, index, order);
+    }
+    results.resize(index.size());
+    triangles.resize(index.size());
   }
   catch (const std::bad_alloc&)
   {
-    vtkErrorMacro(<< "Cannot allocate memory for " << count << " samples.");
+    vtkErrorMacro(<< "Cannot allocate memory for " << share << " samples.");
     return 0;
   }
+  const vtkIdType count = static_cast<vtkIdType>(index.size());
+  vtkIdType used = count;
 #pragma omp parallel for num_threads(threads) schedule(static)
   for (vtkIdType i = 0; i < count; ++i)
   {
-    vtkMedialDrawSurfacePoint(mesh, this->RandomSeed, first + i, triangles[i], results[i].Surface);
-    order[i] = i;
+    vtkMedialDrawSurfacePoint(mesh, seed, index[i], triangles[i], results[i].Surface);
   }
   if (this->GetAbortExecute())
   {
     return 1;
   }
-  const std::vector<std::int32_t>& rank = query.GetLeafRanks();
   if (coverage)
   {
+    order = index;
     auto leafOrder = [&](vtkIdType a, vtkIdType b) {
       const std::int32_t ra = rank[triangles[a]], rb = rank[triangles[b]];
       return ra < rb || (ra == rb && a < b);
@@ -252,39 +319,17 @@ int vtkMedialAxisSampler::RequestData(
       std::sort(order.begin() + begin, order.begin() + std::min(count, begin + block), leafOrder);
     }
   }
-  else
-  {
-    // Counting sort by leaf rank: linear, and stable, so ties keep index order.
-    std::vector<vtkIdType> next(rank.size() + 1, 0);
-    for (vtkIdType i = 0; i < count; ++i)
-    {
-      ++next[rank[triangles[i]] + 1];
-    }
-    for (size_t r = 1; r < next.size(); ++r)
-    {
-      next[r] += next[r - 1];
-    }
-    for (vtkIdType i = 0; i < count; ++i)
-    {
-      order[next[rank[triangles[i]]]++] = i;
-    }
-  }
 
   for (vtkIdType begin = 0; begin < count && !this->GetAbortExecute(); begin += block)
   {
     const vtkIdType end = std::min(count, begin + block);
-    // Groups of Chain consecutive samples (in leaf order) run on one thread, each
-    // hinted with the previous one's contact. Groups start at multiples of Chain
-    // whatever the thread count, so the output does not depend on it. (A hint
-    // changes the visiting order only: the ball is the same up to the 1e-12
-    // slack, which can decide nearly flat contacts either way.)
-    constexpr vtkIdType Chain = 8;
-    const vtkIdType groups = (end - begin + Chain - 1) / Chain;
+    // Hint chains of HintChain samples in leaf order (blocks are whole chains).
+    const vtkIdType groups = (end - begin + HintChain - 1) / HintChain;
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
     for (vtkIdType g = 0; g < groups; ++g)
     {
-      const vtkIdType first = begin + g * Chain;
-      for (vtkIdType k = first; k < std::min(end, first + Chain); ++k)
+      const vtkIdType first = begin + g * HintChain;
+      for (vtkIdType k = first; k < std::min(end, first + HintChain); ++k)
       {
         const vtkIdType i = order[k];
         const vtkIdType hint = k > first ? results[order[k - 1]].ContactTriangle : -1;
@@ -371,17 +416,16 @@ vtkMedialBallParameters vtkMedialAxisSampler::MakeBallParameters(double diagonal
 }
 
 int vtkMedialAxisSampler::RequestDataIterative(
-  const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int piece, vtkPolyData* output)
+  const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, vtkPolyData* output)
 {
   vtkMedialIterativeSettings settings;
   settings.Strategy = this->SamplingStrategy == CLOSEST_NEIGHBOR
     ? vtkMedialIterativeSettings::CLOSEST_NEIGHBOR
     : vtkMedialIterativeSettings::FACE_DISTANCE;
-  // The run is sequential by nature: piece 0 holds all of it.
-  settings.Budget = piece == 0 ? this->NumberOfSamples : 0;
+  settings.Budget = this->NumberOfSamples; // sequential: runs in piece 0 only (RequestData)
   settings.SeedFraction = this->SeedFraction;
   settings.CoverageTolerance = this->CoverageTolerance * mesh.Diagonal;
-  settings.Seed = this->RandomSeed;
+  settings.Seed = static_cast<std::uint64_t>(this->RandomSeed);
   settings.Threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
   settings.Ball = this->MakeBallParameters(mesh.Diagonal);
   const double bytesPerSample = 2.0 * sizeof(vtkMedialSampleRecord) + 12 * sizeof(double) + 8 * sizeof(vtkIdType);

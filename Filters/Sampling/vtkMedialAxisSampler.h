@@ -73,8 +73,13 @@
  * same separation-angle cap, on an exact 2D edge grid instead of Embree. Output
  * arrays are the same; SourceCellId is the input polygon or polyline cell.
  *
- * Pieces: the filter always requests the whole input (rays need the whole surface)
- * and splits the samples among output pieces.
+ * Pieces (see vtkMedialPieces.h): every piece requests the whole input (rays need the
+ * whole surface) and, with RANDOM, solves its share of the sample indices: the union
+ * of the pieces is exactly the one-piece output, for any number of pieces (MPI ranks
+ * under pvbatch), which is what makes the sampler scale. The iterative strategies
+ * and a CoverageTolerance above 0 are sequential (each ball depends on the previous
+ * ones): piece 0 computes them whole, the other pieces are empty and skip the
+ * preparation.
  *
  * @sa vtkMedialShapeSource
  */
@@ -184,9 +189,10 @@ public:
   ///@}
 
   ///@{
-  /// Seed of the per-sample random streams (default 1).
-  vtkSetMacro(RandomSeed, vtkTypeUInt64);
-  vtkGetMacro(RandomSeed, vtkTypeUInt64);
+  /// Seed of the per-sample random streams (default 1). Signed, because ParaView's
+  /// client-server wrapping cannot pass an unsigned 64-bit argument.
+  vtkSetClampMacro(RandomSeed, vtkTypeInt64, 0, VTK_TYPE_INT64_MAX);
+  vtkGetMacro(RandomSeed, vtkTypeInt64);
   ///@}
 
   ///@{
@@ -233,8 +239,8 @@ protected:
   void WriteSamples(
     vtkPolyData* output, vtkIdType requested, const std::vector<vtkMedialSampleRecord>& records);
   // The CLOSEST_NEIGHBOR and FACE_DISTANCE strategies (vtkMedialIterativeSampling).
-  int RequestDataIterative(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
-    int piece, vtkPolyData* output);
+  int RequestDataIterative(
+    const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, vtkPolyData* output);
   // Bisection / shrinking-ball settings in absolute units.
   vtkMedialBallParameters MakeBallParameters(double diagonal) const;
   // Adds CoverageReached and MaxCoverageGap to the output's field data.
@@ -244,7 +250,7 @@ protected:
   int Method = ONE_PASS;
   double Tolerance = 1e-6;
   double MinimumSeparationAngle = 45.0;
-  vtkTypeUInt64 RandomSeed = 1;
+  vtkTypeInt64 RandomSeed = 1;
   int NumberOfThreads = 0;
   int MaximumIterations = 100;
   int SamplingStrategy = RANDOM;

@@ -5,6 +5,7 @@
 #include "vtkMedialAxisSampler.h"
 
 #include "vtkMedialGeometry.h"
+#include "vtkMedialPieces.h"
 #include "vtkMedialPolygon.h"
 #include "vtkMedialSampleRecord.h"
 #include "vtkMedialRandom.h"
@@ -17,7 +18,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <omp.h>
 
@@ -169,15 +169,10 @@ int vtkMedialAxisSampler::RequestData2D(vtkPolyData* input, vtkInformation* outI
   this->NumberOfTriangles = 0;
   this->BoundaryEdges = 0;
 
-  const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    : 0;
-  const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
-    ? std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
-    : 1;
   const vtkIdType total = this->NumberOfSamples;
-  const vtkIdType first = total * piece / pieces;
-  const vtkIdType count = total * (piece + 1) / pieces - first;
+  vtkIdType first = 0;
+  vtkIdType count = total;
+  vtkMedialPieces::FromRequest(outInfo).GetShare(total, first, count);
 
   // Edges are drawn with probability proportional to their length.
   std::vector<double> cumulative(static_cast<size_t>(poly.GetNumberOfEdges()));
@@ -209,7 +204,7 @@ int vtkMedialAxisSampler::RequestData2D(vtkPolyData* input, vtkInformation* outI
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 64)
     for (vtkIdType i = begin; i < end; ++i)
     {
-      vtkMedialSampleRandom random(this->RandomSeed, static_cast<std::uint64_t>(first + i));
+      vtkMedialSampleRandom random(static_cast<std::uint64_t>(this->RandomSeed), static_cast<std::uint64_t>(first + i));
       const double pick = random.Uniform() * length;
       const int e = static_cast<int>(
         std::min<size_t>(cumulative.size() - 1,

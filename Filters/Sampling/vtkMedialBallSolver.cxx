@@ -16,13 +16,19 @@ namespace
 namespace G = vtkMedialGeometry;
 }
 
+vtkIdType vtkMedialPickSampleTriangle(const vtkMedialTriangleMesh& mesh, vtkTypeUInt64 seed, vtkIdType index)
+{
+  vtkMedialSampleRandom random(seed, static_cast<std::uint64_t>(index));
+  return mesh.PickTriangleByArea(random.Uniform());
+}
+
 // Draws sample `index` on the surface; the vertex order of the triangle does not
 // matter (vertices are taken in id order), so re-wound input gives the same point.
 void vtkMedialDrawSurfacePoint(const vtkMedialTriangleMesh& mesh, vtkTypeUInt64 seed, vtkIdType index,
   vtkIdType& triangle, double p[3])
 {
   vtkMedialSampleRandom random(seed, static_cast<std::uint64_t>(index));
-  triangle = mesh.PickTriangleByArea(random.Uniform());
+  triangle = mesh.PickTriangleByArea(random.Uniform()); // the first draw: see vtkMedialPickSampleTriangle
   vtkIdType v[3] = { mesh.GetTriangle(triangle)[0], mesh.GetTriangle(triangle)[1],
     mesh.GetTriangle(triangle)[2] };
   std::sort(v, v + 3);

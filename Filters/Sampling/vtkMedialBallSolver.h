@@ -29,6 +29,9 @@ struct vtkMedialBallParameters
   int MaximumIterations;  // shrinking-ball cap
 };
 
+/// Triangle of sample `index` (the one vtkMedialDrawSurfacePoint picks), without the point.
+vtkIdType vtkMedialPickSampleTriangle(const vtkMedialTriangleMesh& mesh, vtkTypeUInt64 seed, vtkIdType index);
+
 /// Surface point of sample `index`: a triangle picked by area, a uniform point on it.
 void vtkMedialDrawSurfacePoint(const vtkMedialTriangleMesh& mesh, vtkTypeUInt64 seed,
   vtkIdType index, vtkIdType& triangle, double p[3]);
