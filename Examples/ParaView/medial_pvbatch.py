@@ -79,11 +79,12 @@ def main():
         Input=surface, NumberOfSamples=args.samples, NumberOfThreads=args.threads,
         RandomSeed=args.seed)
     sampler.UpdatePipeline()
+    # Rank 0: reading the whole mesh, the preparation, and its share of the samples.
     times["sample_rank0"] = time.perf_counter() - start
 
     mark = time.perf_counter()
     balls = servermanager.Fetch(sampler)  # every rank's piece, appended on rank 0
-    times["gather"] = time.perf_counter() - mark
+    times["gather"] = time.perf_counter() - mark  # waits for the slowest rank, then gathers
     times["sample_and_gather"] = time.perf_counter() - start
     write(balls, args.output)
     print("medial_pvbatch: %d balls from %d rank(s) -> %s"
