@@ -10,17 +10,15 @@
 #include "vtkMedialArrayNames.h"
 #include "MedialReconstructionError.h"
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialFileReader.h"
 #include "vtkMedialBallUnion.h"
 #include "vtkMedialJunctionFilter.h"
 #include "vtkMedialShapeSource.h"
-#include "vtkOFFReader.h"
 
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
-#include "vtkDataSetSurfaceFilter.h"
-#include "vtkDataSetReader.h"
 #include "vtkFieldData.h"
 #include "vtkDataArray.h"
 #include "vtkLogger.h"
@@ -33,10 +31,8 @@
 #include "vtkRegularPolygonSource.h"
 #include "vtkSphereSource.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
-#include "vtkPLYReader.h"
 #include "vtkPLYWriter.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkPNGWriter.h"
@@ -46,13 +42,11 @@
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkSTLReader.h"
 #include "vtkSTLWriter.h"
 #include "vtkScalarBarActor.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextProperty.h"
 #include "vtkWindowToImageFilter.h"
-#include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
 
 #include <omp.h>
@@ -365,10 +359,7 @@ Options Parse(int argc, char* argv[])
 
 std::string Extension(const std::string& path)
 {
-  const size_t dot = path.find_last_of('.');
-  std::string e = dot == std::string::npos ? "" : path.substr(dot);
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
-  return e;
+  return vtkMedialFileReader::GetExtension(path.c_str());
 }
 
 // Fails unless `path` can be created as a file.
@@ -387,14 +378,6 @@ void CheckWritable(const std::string& path, const char* what)
   }
 }
 
-template <class Reader>
-vtkSmartPointer<vtkAlgorithm> FileReader(const std::string& path)
-{
-  auto reader = vtkSmartPointer<Reader>::New();
-  reader->SetFileName(path.c_str());
-  return reader;
-}
-
 vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, MessageSink& sink)
 {
   struct stat st;
@@ -410,49 +393,17 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, MessageSink& s
   {
     Fail("input '" + path + "' is empty");
   }
-  const std::string ext = Extension(path);
-  vtkSmartPointer<vtkAlgorithm> reader, legacy;
-  if (ext == ".vtp")
-  {
-    reader = FileReader<vtkXMLPolyDataReader>(path);
-  }
-  else if (ext == ".vtk")
-  {
-    // Any legacy dataset; its surface is extracted.
-    legacy = FileReader<vtkDataSetReader>(path); // kept alive: the connection does not own it
-    auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
-    surface->SetInputConnection(legacy->GetOutputPort());
-    reader = surface;
-  }
-  else if (ext == ".ply")
-  {
-    reader = FileReader<vtkPLYReader>(path);
-  }
-  else if (ext == ".stl")
-  {
-    reader = FileReader<vtkSTLReader>(path);
-  }
-  else if (ext == ".obj")
-  {
-    reader = FileReader<vtkOBJReader>(path);
-  }
-  else if (ext == ".off")
-  {
-    reader = FileReader<vtkOFFReader>(path);
-  }
-  else
-  {
-    Fail("unsupported input extension '" + ext + "' (.vtp .vtk .ply .stl .obj .off)");
-  }
+  vtkNew<vtkMedialFileReader> reader;
+  reader->SetFileName(path.c_str());
   reader->Update();
   if (!sink.LastError.empty())
   {
     Fail("cannot read '" + path + "': " + sink.LastError);
   }
-  vtkPolyData* data = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (!data || data->GetNumberOfPoints() == 0)
+  vtkPolyData* data = reader->GetOutput();
+  if (data->GetNumberOfPoints() == 0)
   {
-    Fail("cannot read '" + path + "': no points (empty or not a " + ext + " file)");
+    Fail("cannot read '" + path + "': no points (empty or not a " + Extension(path) + " file)");
   }
   auto copy = vtkSmartPointer<vtkPolyData>::New();
   copy->ShallowCopy(data);
