@@ -8,11 +8,11 @@
 // every algorithm is in a filter.
 
 #include "vtkMedialArrayNames.h"
-#include "MedialReconstructionError.h"
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialFileReader.h"
 #include "vtkMedialBallUnion.h"
 #include "vtkMedialJunctionFilter.h"
+#include "vtkMedialReconstructionError.h"
 #include "vtkMedialShapeSource.h"
 
 #include "vtkActor.h"
@@ -579,9 +579,9 @@ void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, 
   WritePng(window, path, sink);
 }
 
-// JSON members for --reconstruct; the Hausdorff figures only for a closed input.
+// JSON members for --reconstruct; the error figures only for a closed input.
 std::string ReconstructionStats(vtkPolyData* surface, vtkPolyData* reconstruction, double seconds,
-  vtkMedialAxisSampler* sampler, const Options& opt)
+  vtkMedialAxisSampler* sampler, const Options& opt, MessageSink& sink)
 {
   if (!reconstruction)
   {
@@ -590,12 +590,21 @@ std::string ReconstructionStats(vtkPolyData* surface, vtkPolyData* reconstructio
   std::ostringstream js;
   js.precision(6);
   js << ", \"reconstruction_seconds\": " << seconds << ", \"resolution\": " << opt.Resolution;
-  if (sampler->GetBoundaryEdges() == 0)
+  if (sampler->GetBoundaryEdges() == 0 && reconstruction->GetNumberOfCells() > 0)
   {
-    const int threads = opt.Threads > 0 ? opt.Threads : omp_get_num_procs();
-    const medialbench::ReconstructionError e =
-      medialbench::MeasureReconstruction(surface, reconstruction, threads);
-    js << ", \"hausdorff_max_rel\": " << e.MaxRel() << ", \"hausdorff_mean_rel\": " << e.MeanRel();
+    vtkNew<vtkMedialReconstructionError> error;
+    error->SetOriginalData(surface);
+    error->SetReconstructionData(reconstruction);
+    error->SetNumberOfThreads(opt.Threads);
+    error->Update();
+    if (!sink.LastError.empty())
+    {
+      Fail(sink.LastError);
+    }
+    js << ", \"hausdorff_max_rel\": " << error->GetVertexHausdorff()
+       << ", \"hausdorff_mean_rel\": " << error->GetVertexMeanHausdorff()
+       << ", \"hausdorff_area_max_rel\": " << error->GetAreaHausdorff()
+       << ", \"hausdorff_area_mean_rel\": " << error->GetAreaMeanHausdorff();
   }
   return js.str();
 }
@@ -1093,7 +1102,7 @@ int main(int argc, char* argv[])
          << ", \"max_coverage_gap\": " << sampler->GetMaxCoverageGap();
     }
     js << ", \"seconds\": " << seconds
-       << ReconstructionStats(surface, reconstruction, reconstructionSeconds, sampler, opt);
+       << ReconstructionStats(surface, reconstruction, reconstructionSeconds, sampler, opt, sink);
     if (graph)
     {
       vtkIdType junctions = 0, ends = 0;
