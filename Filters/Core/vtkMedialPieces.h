@@ -10,7 +10,8 @@
  *    rays of the sampler need the whole surface) and computes its share of the work;
  *    the union of the pieces equals a one-piece run (vtkMedialAxisSampler, RANDOM).
  *  - First piece: the result needs all of the input and the work is sequential
- *    (the 2D medial graph, the iterative sampling strategies, a coverage stop). The
+ *    (the 2D medial graph, the iterative sampling strategies, a coverage stop, the
+ *    measures vtkMedialReconstructionError and vtkMedialBallProtrusion). The
  *    filter asks for the whole input and computes in piece 0; the other pieces stay
  *    empty and skip all work.
  *  - Gather: the result needs all of the input, which upstream pieces hold apart
@@ -32,6 +33,7 @@
 
 class vtkDataArray;
 class vtkInformation;
+class vtkInformationVector;
 class vtkMultiProcessController;
 class vtkPointSet;
 class vtkPolyData;
@@ -44,6 +46,8 @@ public:
 
   /// Asks an input for all of its data: piece 0 of 1, no ghost levels.
   static void RequestWholeInput(vtkInformation* inInfo);
+  /// The same for the first connection of input ports 0 .. numberOfPorts - 1.
+  static void RequestWholeInputs(vtkInformationVector** inputVector, int numberOfPorts);
 
   int Piece = 0;
   int NumberOfPieces = 1;

@@ -3,6 +3,7 @@
 
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialBoundaryDistance.h"
+#include "vtkMedialPieces.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -40,7 +41,8 @@ int vtkMedialBallProtrusion::FillInputPortInformation(int, vtkInformation* info)
 int vtkMedialBallProtrusion::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  vtkMedialBoundaryDistance::RequestWholeInputs(inputVector, 2);
+  // Distances need entire shapes, whatever piece is requested downstream.
+  vtkMedialPieces::RequestWholeInputs(inputVector, 2);
   return 1;
 }
 
@@ -51,6 +53,11 @@ int vtkMedialBallProtrusion::RequestData(
   vtkPolyData* surface = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* balls = vtkPolyData::GetData(inputVector[1], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!vtkMedialPieces::FromRequest(outputVector->GetInformationObject(0)).IsFirst())
+  {
+    this->MaxProtrusion = 0.0;
+    return 1; // piece 0 measures every ball
+  }
   if (!surface || !balls)
   {
     vtkErrorMacro("Cannot measure the protrusion: both inputs are required (port 0 the surface, port 1 the balls).");

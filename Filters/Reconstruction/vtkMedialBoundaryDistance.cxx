@@ -9,13 +9,10 @@
 
 #include "vtkCellArray.h"
 #include "vtkGenericCell.h"
-#include "vtkInformation.h"
-#include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStaticCellLocator.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <omp.h>
 
@@ -238,15 +235,3 @@ bool vtkMedialBoundaryDistance::IsPlanar(vtkPolyData* shape)
   return vtkMedialPolygon::LooksPlanarLoops(shape);
 }
 
-void vtkMedialBoundaryDistance::RequestWholeInputs(vtkInformationVector** inputVector, int numberOfPorts)
-{
-  for (int port = 0; port < numberOfPorts; ++port)
-  {
-    if (vtkInformation* info = inputVector[port]->GetInformationObject(0))
-    {
-      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-    }
-  }
-}

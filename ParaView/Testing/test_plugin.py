@@ -1,5 +1,6 @@
 """pvpython smoke test of the MedialAxis plugin: it loads, every proxy works, the file types
-are registered, and sampler -> reconstruction runs on the demo shape.
+are registered, the radius array selection reaches the filter, and sampler ->
+reconstruction runs on the demo shape.
 
 Usage: pvpython test_plugin.py MedialAxis.so SCRATCH_DIR
 Prints one line per check and "FAIL ..." (exit 1) on the first failure.
@@ -8,7 +9,7 @@ import os
 import sys
 
 from paraview import servermanager
-from paraview.simple import LoadPlugin, OpenDataFile, SaveData
+from paraview.simple import Calculator, LoadPlugin, OpenDataFile, SaveData
 
 plugin, scratch = sys.argv[1], sys.argv[2]
 os.makedirs(scratch, exist_ok=True)
@@ -24,7 +25,8 @@ def check(condition, message):
 LoadPlugin(plugin, remote=False, ns=globals())
 check(all(name in globals() for name in (
     "MedialAxisSampler", "MedialJunctionFilter", "MedialBallUnion", "MedialShapeSource",
-    "MedialMeshReader", "MedialOFFReader")), "the plugin defines every proxy")
+    "MedialReconstructionError", "MedialBallProtrusion", "MedialMeshReader",
+    "MedialOFFReader")), "the plugin defines every proxy")
 
 # Sampler -> reconstruction on the demo shape.
 demo = MedialShapeSource()  # noqa: F821 (defined by the plugin)
@@ -36,6 +38,28 @@ check(balls.GetNumberOfPoints() == 3000 and balls.GetPointData().GetArray("Radiu
 union = MedialBallUnion(Input=sampler, SampleDimensions=[64, 64, 64])  # noqa: F821
 rebuilt = servermanager.Fetch(union)
 check(rebuilt.GetNumberOfCells() > 1000, "reconstruction: %d triangles" % rebuilt.GetNumberOfCells())
+
+# The measures: the reconstruction's error against the demo shape, and the balls'
+# protrusion with the radius array chosen in the array selection (a renamed copy of
+# Radius gives the same figure; another array gives another one).
+error = MedialReconstructionError(Original=demo, Reconstruction=union,  # noqa: F821
+                                  NumberOfAreaSamples=2000)
+measured = servermanager.Fetch(error)
+hausdorff = measured.GetFieldData().GetArray("VertexMaxError")
+check(hausdorff is not None and 0 < max(hausdorff.GetTuple2(0)) < 0.05,
+      "reconstruction error: vertex Hausdorff %s of the diagonal"
+      % (hausdorff.GetTuple2(0) if hausdorff else None,))
+renamed = Calculator(Input=sampler, ResultArrayName="R2", Function="Radius")  # noqa: F821
+protrusion = MedialBallProtrusion(Surface=demo, Balls=sampler)  # noqa: F821
+by_radius = servermanager.Fetch(protrusion).GetFieldData().GetArray("MaxProtrusion").GetValue(0)
+protrusion.Balls = renamed
+protrusion.Radius = ["POINTS", "R2"]
+by_copy = servermanager.Fetch(protrusion).GetFieldData().GetArray("MaxProtrusion").GetValue(0)
+protrusion.Radius = ["POINTS", "SeparationAngle"]
+by_angle = servermanager.Fetch(protrusion).GetFieldData().GetArray("MaxProtrusion").GetValue(0)
+check(by_radius == by_copy and by_angle != by_radius,
+      "protrusion: radius array selection (Radius %g, copy %g, SeparationAngle %g)"
+      % (by_radius, by_copy, by_angle))
 
 # Enumerations take their labels; the values reach the filter.
 sampler.Method = "Bisection"
