@@ -4,6 +4,7 @@
 
 #include "vtkMedialBallSolver.h"
 #include "vtkMedialIterativeSampling.h"
+#include "vtkMedialPlane.h"
 #include "vtkMedialPolygon.h"
 #include "vtkMedialRandom.h"
 #include "vtkMedialSampleRecord.h"
@@ -41,6 +42,16 @@ using SampleResult = vtkMedialSampleRecord;
 }
 
 vtkMedialAxisSampler::vtkMedialAxisSampler() = default;
+
+bool vtkMedialAxisSampler::IsPlanarInput(vtkPolyData* input)
+{
+  return vtkMedialPlane::IsPlanarLoops(input);
+}
+
+bool vtkMedialAxisSampler::IsPlanarInput(vtkPolyData* input, double centre[3], double normal[3])
+{
+  return vtkMedialPlane::IsPlanarLoops(input, centre, normal);
+}
 
 const char* vtkMedialAxisSampler::GetMethodName(int method)
 {
@@ -106,7 +117,7 @@ int vtkMedialAxisSampler::RequestData(
   this->MaxCoverageGap = -1.0;
 
   // Planar polygons or closed polylines: the 2D mode (vtkMedialAxisSampler2D.cxx).
-  if (vtkMedialPolygon::LooksPlanarLoops(input))
+  if (IsPlanarInput(input))
   {
     if (this->SamplingStrategy != RANDOM)
     {

@@ -202,6 +202,17 @@ public:
   ///@}
 
   ///@{
+  /// True when `input` is sampled in the 2D mode (see above), which is also the input
+  /// of vtkMedialJunctionFilter: polygons only, whose points all lie within 1e-6 of
+  /// the bounding-box diagonal from their least-squares plane, or polylines only, of
+  /// which one is closed or which come in 3 or more pieces (they must then chain into
+  /// coplanar loops, or the sampler reports why not). The second form also gives
+  /// that plane: the points' centroid and unit normal.
+  static bool IsPlanarInput(vtkPolyData* input);
+  static bool IsPlanarInput(vtkPolyData* input, double centre[3], double normal[3]);
+  ///@}
+
+  ///@{
   /// Figures from the last execution.
   vtkGetMacro(DiscardedSamples, vtkIdType);
   vtkGetMacro(CappedSamples, vtkIdType);
