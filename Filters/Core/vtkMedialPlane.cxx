@@ -75,5 +75,7 @@ bool vtkMedialPlane::IsPlanarLoops(vtkPolyData* input, double centre[3], double 
   input->GetBounds(bounds);
   const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
     (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) + (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
-  return MaxDistance(n, point, c, plane) <= 1e-6 * diagonal;
+  const double line[3] = { axes[0][0], axes[1][0], axes[2][0] };
+  return MaxDistance(n, point, c, plane) <= 1e-6 * diagonal &&
+    MaxDistanceFromLine(n, point, c, line) > 1e-6 * diagonal;
 }

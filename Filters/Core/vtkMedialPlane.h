@@ -80,6 +80,23 @@ double MaxDistance(vtkIdType n, PointOf&& point, const double origin[3], const d
   return worst;
 }
 
+/// Largest distance of points 0 .. n - 1 from the line through `origin` along the
+/// unit `direction`.
+template <class PointOf>
+double MaxDistanceFromLine(vtkIdType n, PointOf&& point, const double origin[3], const double direction[3])
+{
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    point(i, p);
+    const double d[3] = { p[0] - origin[0], p[1] - origin[1], p[2] - origin[2] };
+    const double along = d[0] * direction[0] + d[1] * direction[1] + d[2] * direction[2];
+    worst = std::max(worst, std::sqrt(std::max(0.0, d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - along * along)));
+  }
+  return worst;
+}
+
 /// Newell normal of the closed loop of points 0 .. n - 1 (twice its vector area, not
 /// normalised): it points to the side from which the loop turns counter-clockwise.
 template <class PointOf>
@@ -137,7 +154,8 @@ inline int LeastAxis(const double normal[3])
 ///  - polylines only (no polygons, no strips), of which one is closed or which come
 ///    in 3 or more pieces (they may chain into loops); or
 ///  - polygons only (no lines, no strips), whose points all lie within 1e-6 of the
-///    bounding-box diagonal from their least-squares plane (a closed surface never does).
+///    bounding-box diagonal from their least-squares plane (a closed surface never
+///    does) but not all within that of one line (collinear points bound no area).
 /// At least 3 points. vtkMedialPolygon::Build then validates the loops. When
 /// `centre` and `normal` are given they receive that plane (for polylines too).
 bool IsPlanarLoops(vtkPolyData* input, double centre[3] = nullptr, double normal[3] = nullptr);

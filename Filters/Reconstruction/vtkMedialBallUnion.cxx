@@ -274,13 +274,7 @@ int FitPlane(const std::vector<Ball>& balls, double tolerance, PlaneFrame& frame
     normal[k] = vecs[k][2];
   }
   // Largest distance from the best line and from the best plane.
-  double fromLine = 0.0;
-  for (const Ball& b : balls)
-  {
-    const double d[3] = { b.C[0] - centroid[0], b.C[1] - centroid[1], b.C[2] - centroid[2] };
-    const double along = vtkMath::Dot(d, axis);
-    fromLine = std::max(fromLine, std::sqrt(std::max(0.0, vtkMath::Dot(d, d) - along * along)));
-  }
+  const double fromLine = vtkMedialPlane::MaxDistanceFromLine(n, centreOf, centroid, axis);
   const double fromPlane = vtkMedialPlane::MaxDistance(n, centreOf, centroid, normal);
   int rank = 3;
   if (fromPlane <= tolerance)
