@@ -64,72 +64,44 @@ void ForEachCell(vtkCellArray* cells, Visit&& visit)
     visit(n, ids);
   }
 }
-}
 
-vtkMedialMeshWriter::vtkMedialMeshWriter() = default;
+using EdgeList = std::vector<std::array<vtkIdType, 2>>;
+using FaceList = std::vector<std::array<vtkIdType, 3>>;
 
-vtkMedialMeshWriter::~vtkMedialMeshWriter()
+// Why the points and their radii cannot be written, or an empty string.
+std::string CheckPoints(vtkPolyData* input, vtkDataArray* radius)
 {
-  this->SetFileName(nullptr);
-}
-
-vtkPolyData* vtkMedialMeshWriter::GetInput()
-{
-  return vtkPolyData::SafeDownCast(this->Superclass::GetInput());
-}
-
-int vtkMedialMeshWriter::FillInputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  return 1;
-}
-
-void vtkMedialMeshWriter::WriteData()
-{
-  this->SetErrorCode(vtkErrorCode::NoError);
-  vtkPolyData* input = this->GetInput();
-  if (!this->FileName || !*this->FileName)
-  {
-    vtkErrorMacro("No FileName set.");
-    this->SetErrorCode(vtkErrorCode::NoFileNameError);
-    return;
-  }
-  auto reject = [this](const std::string& why) {
-    vtkErrorMacro("Cannot write medial mesh '" << this->FileName << "': " << why
-                                               << "; nothing written.");
-    this->SetErrorCode(vtkErrorCode::UnknownError);
-  };
-  if (!input)
-  {
-    return reject("no polydata input");
-  }
-  vtkDataArray* radius = input->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
   if (!radius)
   {
-    return reject("the input has no point-data array 'Radius'");
+    return "the input has no point-data array 'Radius'";
   }
   if (radius->GetNumberOfComponents() != 1)
   {
-    return reject("the 'Radius' array has " + std::to_string(radius->GetNumberOfComponents()) +
-      " components, expected 1");
+    return "the 'Radius' array has " + std::to_string(radius->GetNumberOfComponents()) + " components, expected 1";
   }
-  const vtkIdType nv = input->GetNumberOfPoints();
-
-  // Validate everything and gather the records before the file is touched.
-  for (vtkIdType i = 0; i < nv; ++i)
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
   {
     double p[3];
     input->GetPoint(i, p);
     const double r = radius->GetComponent(i, 0);
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]) || !std::isfinite(r))
     {
-      return reject("point " + std::to_string(i) + " has a NaN or infinite coordinate or radius");
+      return "point " + std::to_string(i) + " has a NaN or infinite coordinate or radius";
     }
     if (r < 0.0)
     {
-      return reject("point " + std::to_string(i) + " has a negative radius");
+      return "point " + std::to_string(i) + " has a negative radius";
     }
   }
+  return std::string();
+}
+
+// The cells as edges (a polyline gives its segments) and triangles (polygons are
+// triangulated, strips split). `skipped` counts cells with too few points. False
+// when a cell refers to a point id outside the points.
+bool GatherCells(vtkPolyData* input, EdgeList& edges, FaceList& faces, vtkIdType& skipped)
+{
+  const vtkIdType nv = input->GetNumberOfPoints();
   bool badIndex = false;
   auto inRange = [&](vtkIdType n, const vtkIdType* ids) {
     for (vtkIdType k = 0; k < n; ++k)
@@ -138,9 +110,7 @@ void vtkMedialMeshWriter::WriteData()
     }
     return !badIndex;
   };
-
-  vtkIdType skipped = 0;
-  std::vector<std::array<vtkIdType, 2>> edges;
+  skipped = 0;
   ForEachCell(input->GetLines(), [&](vtkIdType n, const vtkIdType* ids) {
     if (!inRange(n, ids))
     {
@@ -152,8 +122,6 @@ void vtkMedialMeshWriter::WriteData()
       edges.push_back({ ids[k], ids[k + 1] });
     }
   });
-
-  std::vector<std::array<vtkIdType, 3>> faces;
   vtkNew<vtkPolygon> polygon;
   vtkNew<vtkIdList> triangleIds;
   vtkNew<vtkPoints> trianglePoints;
@@ -174,13 +142,11 @@ void vtkMedialMeshWriter::WriteData()
     }
     polygon->Initialize(static_cast<int>(n), ids, input->GetPoints());
     triangleIds->Reset();
-    if (polygon->Triangulate(0, triangleIds, trianglePoints) &&
-      triangleIds->GetNumberOfIds() == 3 * (n - 2))
+    if (polygon->Triangulate(0, triangleIds, trianglePoints) && triangleIds->GetNumberOfIds() == 3 * (n - 2))
     {
       for (vtkIdType k = 0; k < triangleIds->GetNumberOfIds(); k += 3)
       {
-        faces.push_back(
-          { triangleIds->GetId(k), triangleIds->GetId(k + 1), triangleIds->GetId(k + 2) });
+        faces.push_back({ triangleIds->GetId(k), triangleIds->GetId(k + 1), triangleIds->GetId(k + 2) });
       }
     }
     else // degenerate polygon: a fan keeps every vertex and the face count
@@ -191,7 +157,6 @@ void vtkMedialMeshWriter::WriteData()
       }
     }
   });
-
   vtkNew<vtkCellArray> stripTriangles;
   ForEachCell(input->GetStrips(), [&](vtkIdType n, const vtkIdType* ids) {
     if (inRange(n, ids) && n >= 3)
@@ -200,26 +165,16 @@ void vtkMedialMeshWriter::WriteData()
     }
     skipped += n < 3 ? 1 : 0;
   });
-  ForEachCell(stripTriangles, [&](vtkIdType, const vtkIdType* ids) {
-    faces.push_back({ ids[0], ids[1], ids[2] });
-  });
+  ForEachCell(stripTriangles, [&](vtkIdType, const vtkIdType* ids) { faces.push_back({ ids[0], ids[1], ids[2] }); });
+  return !badIndex;
+}
 
-  if (badIndex)
-  {
-    return reject("a cell refers to a point id outside [0, " + std::to_string(nv) + ")");
-  }
-  if (skipped > 0)
-  {
-    vtkWarningMacro("Skipped " << skipped << " line(s) or polygon(s) with too few points.");
-  }
-
-  std::ofstream file(this->FileName, std::ios::out | std::ios::binary | std::ios::trunc);
-  if (!file)
-  {
-    vtkErrorMacro("Cannot open '" << this->FileName << "' for writing.");
-    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
-    return;
-  }
+// The .ma text: a header line, then one line per vertex, edge and face, written in
+// chunks so that the whole file need not fit in memory twice.
+void WriteText(std::ofstream& file, vtkPolyData* input, vtkDataArray* radius, const EdgeList& edges,
+  const FaceList& faces)
+{
+  const vtkIdType nv = input->GetNumberOfPoints();
   std::string text;
   AppendNumber(text, nv);
   text += ' ';
@@ -227,7 +182,6 @@ void vtkMedialMeshWriter::WriteData()
   text += ' ';
   AppendNumber(text, static_cast<vtkIdType>(faces.size()));
   text += '\n';
-  // Written in chunks: the whole file need not fit in memory twice.
   auto flush = [&]() {
     if (text.size() > (1 << 20))
     {
@@ -269,6 +223,72 @@ void vtkMedialMeshWriter::WriteData()
     flush();
   }
   file.write(text.data(), static_cast<std::streamsize>(text.size()));
+}
+}
+
+vtkMedialMeshWriter::vtkMedialMeshWriter() = default;
+
+vtkMedialMeshWriter::~vtkMedialMeshWriter()
+{
+  this->SetFileName(nullptr);
+}
+
+vtkPolyData* vtkMedialMeshWriter::GetInput()
+{
+  return vtkPolyData::SafeDownCast(this->Superclass::GetInput());
+}
+
+int vtkMedialMeshWriter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+void vtkMedialMeshWriter::WriteData()
+{
+  this->SetErrorCode(vtkErrorCode::NoError);
+  vtkPolyData* input = this->GetInput();
+  if (!this->FileName || !*this->FileName)
+  {
+    vtkErrorMacro("No FileName set.");
+    this->SetErrorCode(vtkErrorCode::NoFileNameError);
+    return;
+  }
+  auto reject = [this](const std::string& why) {
+    vtkErrorMacro("Cannot write medial mesh '" << this->FileName << "': " << why << "; nothing written.");
+    this->SetErrorCode(vtkErrorCode::UnknownError);
+  };
+  if (!input)
+  {
+    return reject("no polydata input");
+  }
+  // Validate everything and gather the records before the file is touched.
+  vtkDataArray* radius = input->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
+  const std::string problem = CheckPoints(input, radius);
+  if (!problem.empty())
+  {
+    return reject(problem);
+  }
+  EdgeList edges;
+  FaceList faces;
+  vtkIdType skipped = 0;
+  if (!GatherCells(input, edges, faces, skipped))
+  {
+    return reject("a cell refers to a point id outside [0, " + std::to_string(input->GetNumberOfPoints()) + ")");
+  }
+  if (skipped > 0)
+  {
+    vtkWarningMacro("Skipped " << skipped << " line(s) or polygon(s) with too few points.");
+  }
+
+  std::ofstream file(this->FileName, std::ios::out | std::ios::binary | std::ios::trunc);
+  if (!file)
+  {
+    vtkErrorMacro("Cannot open '" << this->FileName << "' for writing.");
+    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
+    return;
+  }
+  WriteText(file, input, radius, edges, faces);
   file.close();
   if (!file)
   {
