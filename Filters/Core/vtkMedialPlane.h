@@ -65,9 +65,9 @@ void FitPoints(vtkIdType n, PointOf&& point, double centroid[3], double values[3
   vtkMath::Jacobi(rows, values, vectors);
 }
 
-/// Largest distance of points 0 .. n - 1 from the plane through `origin` with unit `normal`.
-template <class PointOf>
-double MaxDistance(vtkIdType n, PointOf&& point, const double origin[3], const double normal[3])
+/// Largest measure(d) over points 0 .. n - 1, d being the point less `origin`.
+template <class PointOf, class Measure>
+double MaxOffset(vtkIdType n, PointOf&& point, const double origin[3], Measure&& measure)
 {
   double worst = 0.0;
   for (vtkIdType i = 0; i < n; ++i)
@@ -75,9 +75,17 @@ double MaxDistance(vtkIdType n, PointOf&& point, const double origin[3], const d
     double p[3];
     point(i, p);
     const double d[3] = { p[0] - origin[0], p[1] - origin[1], p[2] - origin[2] };
-    worst = std::max(worst, std::fabs(d[0] * normal[0] + d[1] * normal[1] + d[2] * normal[2]));
+    worst = std::max(worst, measure(d));
   }
   return worst;
+}
+
+/// Largest distance of points 0 .. n - 1 from the plane through `origin` with unit `normal`.
+template <class PointOf>
+double MaxDistance(vtkIdType n, PointOf&& point, const double origin[3], const double normal[3])
+{
+  return MaxOffset(n, point, origin,
+    [normal](const double d[3]) { return std::fabs(d[0] * normal[0] + d[1] * normal[1] + d[2] * normal[2]); });
 }
 
 /// Largest distance of points 0 .. n - 1 from the line through `origin` along the
@@ -85,16 +93,10 @@ double MaxDistance(vtkIdType n, PointOf&& point, const double origin[3], const d
 template <class PointOf>
 double MaxDistanceFromLine(vtkIdType n, PointOf&& point, const double origin[3], const double direction[3])
 {
-  double worst = 0.0;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double p[3];
-    point(i, p);
-    const double d[3] = { p[0] - origin[0], p[1] - origin[1], p[2] - origin[2] };
+  return MaxOffset(n, point, origin, [direction](const double d[3]) {
     const double along = d[0] * direction[0] + d[1] * direction[1] + d[2] * direction[2];
-    worst = std::max(worst, std::sqrt(std::max(0.0, d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - along * along)));
-  }
-  return worst;
+    return std::sqrt(std::max(0.0, d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - along * along));
+  });
 }
 
 /// Newell normal of the closed loop of points 0 .. n - 1 (twice its vector area, not

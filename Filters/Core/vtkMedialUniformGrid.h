@@ -243,17 +243,10 @@ public:
   template <class F>
   void ForEachCellInBox(const int lo[3], const int hi[3], F&& f) const
   {
-    int ijk[3];
-    for (ijk[2] = std::max(0, lo[2]); ijk[2] <= std::min(this->Dims[2] - 1, hi[2]); ++ijk[2])
-    {
-      for (ijk[1] = std::max(0, lo[1]); ijk[1] <= std::min(this->Dims[1] - 1, hi[1]); ++ijk[1])
-      {
-        for (ijk[0] = std::max(0, lo[0]); ijk[0] <= std::min(this->Dims[0] - 1, hi[0]); ++ijk[0])
-        {
-          f(static_cast<const int*>(ijk), this->CellId(ijk[0], ijk[1], ijk[2]));
-        }
-      }
-    }
+    this->VisitBox(lo, hi, [&](const int* ijk, vtkIdType cell) {
+      f(ijk, cell);
+      return true;
+    });
   }
 
   /// f(item) for the items of the cells of a box (see ForEachCellInBox).
@@ -263,29 +256,17 @@ public:
     this->ForEachCellInBox(lo, hi, [&](const int*, vtkIdType cell) { this->ForEachItemInCell(cell, f); });
   }
 
-  /// True when pred(item) holds for an item of the box's cells; stops at the first.
+  /// True when pred(item) holds for an item of the box's cells; stops after the
+  /// first cell that has one.
   template <class Pred>
   bool AnyItemInBox(const int lo[3], const int hi[3], Pred&& pred) const
   {
-    int ijk[3];
-    for (ijk[2] = std::max(0, lo[2]); ijk[2] <= std::min(this->Dims[2] - 1, hi[2]); ++ijk[2])
-    {
-      for (ijk[1] = std::max(0, lo[1]); ijk[1] <= std::min(this->Dims[1] - 1, hi[1]); ++ijk[1])
-      {
-        for (ijk[0] = std::max(0, lo[0]); ijk[0] <= std::min(this->Dims[0] - 1, hi[0]); ++ijk[0])
-        {
-          bool found = false;
-          this->ForEachItemInCell(this->CellId(ijk[0], ijk[1], ijk[2]), [&](vtkIdType item) {
-            found = found || pred(item);
-          });
-          if (found)
-          {
-            return true;
-          }
-        }
-      }
-    }
-    return false;
+    bool found = false;
+    this->VisitBox(lo, hi, [&](const int*, vtkIdType cell) {
+      this->ForEachItemInCell(cell, [&](vtkIdType item) { found = found || pred(item); });
+      return !found;
+    });
+    return found;
   }
 
   /// f(item) for the items of every cell that comes within `radius` of c (the
@@ -407,6 +388,26 @@ public:
   }
 
 private:
+  // f(ijk, cell) over the clipped box, z, then y, then x, until f returns false.
+  template <class F>
+  void VisitBox(const int lo[3], const int hi[3], F&& f) const
+  {
+    int ijk[3];
+    for (ijk[2] = std::max(0, lo[2]); ijk[2] <= std::min(this->Dims[2] - 1, hi[2]); ++ijk[2])
+    {
+      for (ijk[1] = std::max(0, lo[1]); ijk[1] <= std::min(this->Dims[1] - 1, hi[1]); ++ijk[1])
+      {
+        for (ijk[0] = std::max(0, lo[0]); ijk[0] <= std::min(this->Dims[0] - 1, hi[0]); ++ijk[0])
+        {
+          if (!f(static_cast<const int*>(ijk), this->CellId(ijk[0], ijk[1], ijk[2])))
+          {
+            return;
+          }
+        }
+      }
+    }
+  }
+
   void Clear()
   {
     this->NumberOfItems = 0;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialBallUnion.h"
 #include "vtkMedialArrayNames.h"
+#include "vtkMedialPipeline.h"
 #include "vtkMedialPlane.h"
 #include "vtkMedialUniformGrid.h"
 
@@ -950,10 +951,7 @@ int vtkMedialBallUnion::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // Every ball can reach every part of the union: always ask for all of them.
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  vtkMedialRequestWholeInput(inputVector);
   return 1;
 }
 

@@ -2,6 +2,7 @@
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialAxisSamplerInternals.h"
 #include "vtkMedialArrayNames.h"
+#include "vtkMedialPipeline.h"
 
 #include "vtkMedialBallSolver.h"
 #include "vtkMedialIterativeSampling.h"
@@ -89,10 +90,7 @@ int vtkMedialAxisSampler::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // Rays need the whole surface whatever piece is requested downstream.
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  vtkMedialRequestWholeInput(inputVector);
   return 1;
 }
 

@@ -5,13 +5,11 @@
 // polyline, a mixture of lines and polygons, strips and NaN coordinates are not. The
 // sampler takes the mode it announces. In 2D, ONE_PASS and SHRINKING_BALL are one
 // method (documented): their outputs are bit-identical.
-#include "MedialPolygonTestUtilities.h"
+#include "MedialSampler2DTestUtilities.h"
 #include "MedialTestUtilities.h"
 
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialShapeSource.h"
-#include "vtkTransform.h"
-#include "vtkTransformPolyDataFilter.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -19,46 +17,19 @@
 
 using namespace medialtest;
 
-namespace
-{
-vtkSmartPointer<vtkPolyData> Lines(const std::vector<std::vector<std::array<double, 3>>>& pieces)
-{
-  auto pd = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> pts;
-  vtkNew<vtkCellArray> lines;
-  for (const auto& piece : pieces)
-  {
-    std::vector<vtkIdType> ids;
-    for (const auto& p : piece)
-    {
-      ids.push_back(pts->InsertNextPoint(p.data()));
-    }
-    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-  }
-  pd->SetPoints(pts);
-  pd->SetLines(lines);
-  return pd;
-}
-}
-
 int TestMedialSamplerPlanarity(int, char*[])
 {
   // A frame with a hole, rotated into a tilted plane: its normal is R (0, 0, 1).
   vtkNew<vtkTransform> tilt;
-  tilt->Translate(1, 2, -3);
-  tilt->RotateWXYZ(50, 0.3, 1, 0.2);
-  vtkNew<vtkTransformPolyDataFilter> tilted;
-  tilted->SetTransform(tilt);
-  tilted->SetInputData(MakePolygon({ Rectangle(0, 0, 4, 4), Rectangle(1, 1.5, 2.5, 3) }));
-  tilted->Update();
+  auto tiltedFrame = TiltedFrame(tilt);
   double expectedNormal[3] = { 0, 0, 1 };
   tilt->TransformNormal(expectedNormal, expectedNormal);
   double centre[3], normal[3];
-  MEDIAL_CHECK(vtkMedialAxisSampler::IsPlanarInput(tilted->GetOutput(), centre, normal), "tilted frame not planar");
+  MEDIAL_CHECK(vtkMedialAxisSampler::IsPlanarInput(tiltedFrame, centre, normal), "tilted frame not planar");
   const double alignment = std::fabs(vtkMath::Dot(normal, expectedNormal));
   MEDIAL_CHECK(alignment > 1.0 - 1e-12, "tilted frame: normal off by %.3g", 1.0 - alignment);
   double onPlane[3];
-  tilted->GetOutput()->GetPoint(0, onPlane);
+  tiltedFrame->GetPoint(0, onPlane);
   const double offset = (onPlane[0] - centre[0]) * normal[0] + (onPlane[1] - centre[1]) * normal[1] +
     (onPlane[2] - centre[2]) * normal[2];
   MEDIAL_CHECK(std::fabs(offset) < 1e-12, "tilted frame: centre %.3g off the plane", offset);
@@ -68,7 +39,7 @@ int TestMedialSamplerPlanarity(int, char*[])
   box->Update();
   auto collinear = MakePolygon({ { { 0, 0 }, { 1, 0 }, { 2, 0 } } });
   auto mixed = MakePolygon({ Rectangle(0, 0, 1, 1) });
-  mixed->SetLines(Lines({ { { 0, 0, 0 }, { 1, 1, 0 } } })->GetLines());
+  mixed->SetLines(MakePolylines({ { { 0, 0, 0 }, { 1, 1, 0 } } })->GetLines());
   auto nan = MakePolygon({ Rectangle(0, 0, 1, 1) });
   nan->GetPoints()->SetPoint(2, std::numeric_limits<double>::quiet_NaN(), 0, 0);
   vtkNew<vtkCellArray> strip;
@@ -84,13 +55,13 @@ int TestMedialSamplerPlanarity(int, char*[])
     bool Planar;
   };
   const Case cases[] = {
-    { "tilted frame", tilted->GetOutput(), true },
+    { "tilted frame", tiltedFrame, true },
     { "closed polyline", MakePolygon({ Rectangle(0, 0, 2, 1) }, true), true },
-    { "three open pieces", Lines({ { { 0, 0, 0 }, { 1, 0, 0 } }, { { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 0 }, { 0, 0, 0 } } }),
+    { "three open pieces", MakePolylines({ { { 0, 0, 0 }, { 1, 0, 0 } }, { { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 0 }, { 0, 0, 0 } } }),
       true },
     { "box surface", box->GetOutput(), false },
     { "collinear polygon", collinear, false },
-    { "one open polyline", Lines({ { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 1 } } }), false },
+    { "one open polyline", MakePolylines({ { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 1 } } }), false },
     { "lines and polygons", mixed, false },
     { "triangle strip", withStrip, false },
     { "NaN coordinate", nan, false },
@@ -118,7 +89,7 @@ int TestMedialSamplerPlanarity(int, char*[])
   for (int i = 0; i < 2; ++i)
   {
     vtkNew<vtkMedialAxisSampler> sampler;
-    sampler->SetInputData(tilted->GetOutput());
+    sampler->SetInputData(tiltedFrame);
     sampler->SetNumberOfSamples(500);
     sampler->SetMethod(methods[i]);
     sampler->Update();
