@@ -202,25 +202,24 @@ void WriteText(std::ofstream& file, vtkPolyData* input, vtkDataArray* radius, co
     text += '\n';
     flush();
   }
-  for (const auto& e : edges)
-  {
-    text += "e ";
-    AppendNumber(text, e[0]);
-    text += ' ';
-    AppendNumber(text, e[1]);
+  // A record line: the tag, then the ids.
+  auto appendIds = [&](char tag, const vtkIdType* ids, int count) {
+    text += tag;
+    for (int k = 0; k < count; ++k)
+    {
+      text += ' ';
+      AppendNumber(text, ids[k]);
+    }
     text += '\n';
     flush();
+  };
+  for (const auto& e : edges)
+  {
+    appendIds('e', e.data(), 2);
   }
   for (const auto& f : faces)
   {
-    text += "f ";
-    AppendNumber(text, f[0]);
-    text += ' ';
-    AppendNumber(text, f[1]);
-    text += ' ';
-    AppendNumber(text, f[2]);
-    text += '\n';
-    flush();
+    appendIds('f', f.data(), 3);
   }
   file.write(text.data(), static_cast<std::streamsize>(text.size()));
 }

@@ -738,6 +738,26 @@ public:
     return it;
   }
 
+  // Appends the first disk tangent to governors f that Accept takes between stations
+  // a and b, as an event; false when there is none.
+  bool AddEventOf(const int f[3], const Station& a, const Station& b, std::vector<Item>& items) const
+  {
+    Disk d[2];
+    const int n = this->SolveTriple(f, d);
+    for (int i = 0; i < n; ++i)
+    {
+      if (this->Accept(d[i], f, a, b))
+      {
+        Item it;
+        it.IsEvent = true;
+        it.Ev = this->MakeEvent(d[i]);
+        items.push_back(it);
+        return true;
+      }
+    }
+    return false;
+  }
+
   // Appends the items strictly between samples a and b, in walk order.
   void FindEvents(const Sample& a, const Sample& b, int depth, std::vector<Item>& items, int& unresolved) const
   {
@@ -750,18 +770,9 @@ public:
     if (u.size() == 3)
     {
       const int f[3] = { u[0], u[1], u[2] };
-      Disk d[2];
-      const int n = this->SolveTriple(f, d);
-      for (int i = 0; i < n; ++i)
+      if (this->AddEventOf(f, a.After, b.Before, items))
       {
-        if (this->Accept(d[i], f, a.After, b.Before))
-        {
-          Item it;
-          it.IsEvent = true;
-          it.Ev = this->MakeEvent(d[i]);
-          items.push_back(it);
-          return;
-        }
+        return;
       }
     }
     Station mid;
@@ -776,18 +787,9 @@ public:
           for (size_t k = j + 1; k < u.size(); ++k)
           {
             const int f[3] = { u[i], u[j], u[k] };
-            Disk d[2];
-            const int n = this->SolveTriple(f, d);
-            for (int q = 0; q < n; ++q)
+            if (this->AddEventOf(f, a.After, b.Before, items))
             {
-              if (this->Accept(d[q], f, a.After, b.Before))
-              {
-                Item it;
-                it.IsEvent = true;
-                it.Ev = this->MakeEvent(d[q]);
-                items.push_back(it);
-                return;
-              }
+              return;
             }
           }
         }
