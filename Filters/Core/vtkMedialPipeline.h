@@ -11,15 +11,20 @@
 #include "vtkInformationVector.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
-/// Asks for the whole of input 0 (one piece, no ghost levels) whatever piece is
-/// requested downstream: every part of a surface or of a set of balls can reach
-/// every part of the output.
-inline void vtkMedialRequestWholeInput(vtkInformationVector** inputVector)
+/// Asks for the whole of inputs 0 .. numberOfPorts - 1 (one piece, no ghost levels)
+/// whatever piece is requested downstream: every part of a surface or of a set of
+/// balls can reach every part of the output.
+inline void vtkMedialRequestWholeInput(vtkInformationVector** inputVector, int numberOfPorts = 1)
 {
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  for (int port = 0; port < numberOfPorts; ++port)
+  {
+    if (vtkInformation* inInfo = inputVector[port]->GetInformationObject(0))
+    {
+      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+    }
+  }
 }
 
 #endif
