@@ -4,7 +4,6 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkInformation.h"
-#include "vtkInformationVector.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -35,25 +34,6 @@ vtkMedialPieces vtkMedialPieces::FromRequest(vtkInformation* outInfo)
     pieces.Controller = controller;
   }
   return pieces;
-}
-
-void vtkMedialPieces::RequestWholeInput(vtkInformation* inInfo)
-{
-  using SDDP = vtkStreamingDemandDrivenPipeline;
-  inInfo->Set(SDDP::UPDATE_PIECE_NUMBER(), 0);
-  inInfo->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), 1);
-  inInfo->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-}
-
-void vtkMedialPieces::RequestWholeInputs(vtkInformationVector** inputVector, int numberOfPorts)
-{
-  for (int port = 0; port < numberOfPorts; ++port)
-  {
-    if (vtkInformation* info = inputVector[port]->GetInformationObject(0))
-    {
-      RequestWholeInput(info);
-    }
-  }
 }
 
 vtkSmartPointer<vtkPolyData> vtkMedialPieces::GatherToFirst(

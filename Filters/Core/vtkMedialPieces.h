@@ -6,7 +6,8 @@
  *
  * Every filter is in one of three cases; each class header says which in its
  * "Pieces:" paragraph.
- *  - Split: the filter asks every piece for its whole input (RequestWholeInput: the
+ *  - Split: the filter asks every piece for its whole input (vtkMedialRequestWholeInput
+ *    in vtkMedialPipeline.h: the
  *    rays of the sampler need the whole surface) and computes its share of the work;
  *    the union of the pieces equals a one-piece run (vtkMedialAxisSampler, RANDOM).
  *  - First piece: the result needs all of the input and the work is sequential
@@ -33,7 +34,6 @@
 
 class vtkDataArray;
 class vtkInformation;
-class vtkInformationVector;
 class vtkMultiProcessController;
 class vtkPointSet;
 class vtkPolyData;
@@ -44,10 +44,6 @@ public:
   /// The piece requested on an output port's information (0 of 1 when none is).
   static vtkMedialPieces FromRequest(vtkInformation* outInfo);
 
-  /// Asks an input for all of its data: piece 0 of 1, no ghost levels.
-  static void RequestWholeInput(vtkInformation* inInfo);
-  /// The same for the first connection of input ports 0 .. numberOfPorts - 1.
-  static void RequestWholeInputs(vtkInformationVector** inputVector, int numberOfPorts);
 
   int Piece = 0;
   int NumberOfPieces = 1;

@@ -4,6 +4,7 @@
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialBoundaryDistance.h"
 #include "vtkMedialPieces.h"
+#include "vtkMedialPipeline.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -42,7 +43,7 @@ int vtkMedialBallProtrusion::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // Distances need entire shapes, whatever piece is requested downstream.
-  vtkMedialPieces::RequestWholeInputs(inputVector, 2);
+  vtkMedialRequestWholeInput(inputVector, 2);
   return 1;
 }
 

@@ -2,6 +2,7 @@
 #include "vtkMedialBoundaryDistance.h"
 
 #include "vtkMedialGeometry.h"
+#include "vtkMedialPlane.h"
 #include "vtkMedialPolygon.h"
 #include "vtkMedialRandom.h"
 #include "vtkMedialSurfaceQuery.h"
@@ -232,6 +233,6 @@ vtkSmartPointer<vtkPoints> vtkMedialBoundaryDistance::SamplePoints(
 
 bool vtkMedialBoundaryDistance::IsPlanar(vtkPolyData* shape)
 {
-  return vtkMedialPolygon::LooksPlanarLoops(shape);
+  return vtkMedialPlane::IsPlanarLoops(shape);
 }
 

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialAxisSamplerInternals.h"
 #include "vtkMedialArrayNames.h"
+#include "vtkMedialPieces.h"
+#include "vtkMedialPipeline.h"
 
 #include "vtkMedialBallSolver.h"
 #include "vtkMedialIterativeSampling.h"
-#include "vtkMedialPieces.h"
+#include "vtkMedialPlane.h"
 #include "vtkMedialPolygon.h"
 #include "vtkMedialRandom.h"
 #include "vtkMedialSampleRecord.h"
@@ -38,71 +41,25 @@ vtkStandardNewMacro(vtkMedialAxisSampler);
 
 namespace
 {
-using SampleResult = vtkMedialSampleRecord;
-
 // Consecutive samples in leaf order that run on one thread, each hinted with the
 // previous one's contact. Chains start at multiples of HintChain whatever the thread
 // count and the piece, so the output depends on neither. (A hint changes the
 // visiting order only: the ball is the same up to the 1e-12 slack, which can decide
 // nearly flat contacts either way.)
 constexpr vtkIdType HintChain = 8;
-
-// Stable counting sort of items by leaf rank: ties keep index order.
-std::vector<vtkIdType> SortByLeaf(const std::vector<std::int32_t>& leafOfItem, size_t leaves)
-{
-  std::vector<vtkIdType> next(leaves + 1, 0);
-  for (std::int32_t leaf : leafOfItem)
-  {
-    ++next[leaf + 1];
-  }
-  for (size_t r = 1; r < next.size(); ++r)
-  {
-    next[r] += next[r - 1];
-  }
-  std::vector<vtkIdType> order(leafOfItem.size());
-  for (size_t i = 0; i < leafOfItem.size(); ++i)
-  {
-    order[next[leafOfItem[i]]++] = static_cast<vtkIdType>(i);
-  }
-  return order;
-}
-
-// The samples one piece solves, and in which order. All `total` samples are put in
-// the leaf order of their triangles (drawing a triangle is cheap next to solving a
-// ball), and the piece takes a contiguous run of that order cut at multiples of
-// HintChain: every piece forms the same hint chains as a one-piece run, so the union
-// of the pieces is that run bit for bit. Index: the piece's sample indices, in
-// increasing order (the output order); Order: positions in Index, in leaf order.
-void SelectPieceSamples(const vtkMedialTriangleMesh& mesh, const std::vector<std::int32_t>& leafRank,
-  std::uint64_t seed, vtkIdType total, const vtkMedialPieces& pieces, int threads,
-  std::vector<vtkIdType>& index, std::vector<vtkIdType>& order)
-{
-  std::vector<vtkIdType> leafOrder;
-  {
-    std::vector<std::int32_t> leafOfSample(static_cast<size_t>(total));
-#pragma omp parallel for num_threads(threads) schedule(static)
-    for (vtkIdType i = 0; i < total; ++i)
-    {
-      leafOfSample[i] = leafRank[vtkMedialPickSampleTriangle(mesh, seed, i)];
-    }
-    leafOrder = SortByLeaf(leafOfSample, leafRank.size()); // ranks are below the triangle count
-  }
-  vtkIdType firstChain = 0;
-  vtkIdType chains = 0;
-  pieces.GetShare((total + HintChain - 1) / HintChain, firstChain, chains);
-  const vtkIdType begin = std::min(total, firstChain * HintChain);
-  const vtkIdType end = std::min(total, (firstChain + chains) * HintChain);
-  index.assign(leafOrder.begin() + begin, leafOrder.begin() + end);
-  std::sort(index.begin(), index.end());
-  order.resize(index.size());
-  for (vtkIdType k = begin; k < end; ++k)
-  {
-    order[k - begin] = std::lower_bound(index.begin(), index.end(), leafOrder[k]) - index.begin();
-  }
-}
 }
 
 vtkMedialAxisSampler::vtkMedialAxisSampler() = default;
+
+bool vtkMedialAxisSampler::IsPlanarInput(vtkPolyData* input)
+{
+  return vtkMedialPlane::IsPlanarLoops(input);
+}
+
+bool vtkMedialAxisSampler::IsPlanarInput(vtkPolyData* input, double centre[3], double normal[3])
+{
+  return vtkMedialPlane::IsPlanarLoops(input, centre, normal);
+}
 
 const char* vtkMedialAxisSampler::GetMethodName(int method)
 {
@@ -144,7 +101,7 @@ int vtkMedialAxisSampler::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // Rays need the whole surface whatever piece is requested downstream.
-  vtkMedialPieces::RequestWholeInput(inputVector[0]->GetInformationObject(0));
+  vtkMedialRequestWholeInput(inputVector);
   return 1;
 }
 
@@ -163,164 +120,295 @@ int vtkMedialAxisSampler::RequestData(
   this->SeedSamples = 0;
   this->CoverageReached = false;
   this->MaxCoverageGap = -1.0;
+  // Pieces (vtkMedialPieces.h): RANDOM splits the samples; the iterative strategies
+  // and a coverage stop are sequential, so piece 0 runs them whole and the other
+  // pieces skip even the preparation.
+  const vtkMedialPieces pieces = vtkMedialPieces::FromRequest(outInfo);
+  vtkInternals passes(this);
 
   // Planar polygons or closed polylines: the 2D mode (vtkMedialAxisSampler2D.cxx).
-  if (vtkMedialPolygon::LooksPlanarLoops(input))
+  if (IsPlanarInput(input))
   {
     if (this->SamplingStrategy != RANDOM)
     {
       vtkWarningMacro(<< "SamplingStrategy " << GetSamplingStrategyName(this->SamplingStrategy)
                       << " is for 3D surfaces; planar input is sampled at random.");
     }
-    return this->RequestData2D(input, outInfo, output);
+    return passes.Sample2D(input, pieces, output);
   }
-
-  // The iterative strategies and a coverage stop are sequential: piece 0 runs them
-  // whole and the other pieces skip even the preparation (vtkMedialPieces.h).
-  const vtkMedialPieces pieces = vtkMedialPieces::FromRequest(outInfo);
-  const bool sequential = this->SamplingStrategy != RANDOM || this->CoverageTolerance > 0.0;
-  if (sequential && !pieces.IsFirst())
+  if ((this->SamplingStrategy != RANDOM || this->CoverageTolerance > 0.0) && !pieces.IsFirst())
   {
     return 1;
   }
 
-  // Preparation takes seconds on big meshes: the abort flag is polled between stages.
-  auto aborted = [this]() { return this->GetAbortExecute() != 0; };
   vtkMedialTriangleMesh mesh;
+  vtkMedialSurfaceQuery query;
+  int status = 0;
+  if (!passes.PrepareSurface(input, mesh, query, status))
+  {
+    return status;
+  }
+  if (this->SamplingStrategy != RANDOM)
+  {
+    return passes.SampleIterative(mesh, query, output);
+  }
+  return passes.SampleRandom(mesh, query, pieces, output);
+}
+
+//------------------------------------------------------------------------------
+bool vtkMedialAxisSampler::vtkInternals::PrepareSurface(
+  vtkPolyData* input, vtkMedialTriangleMesh& mesh, vtkMedialSurfaceQuery& query, int& status)
+{
+  vtkMedialAxisSampler* self = this->Self;
+  // Preparation takes seconds on big meshes: the abort flag is polled between stages.
+  auto aborted = [self]() { return self->GetAbortExecute() != 0; };
   std::string error;
   if (!mesh.Build(input, error, aborted))
   {
-    if (aborted())
+    status = aborted() ? 1 : 0; // aborted: leave the output empty
+    if (!aborted())
     {
-      return 1; // aborted: leave the output empty
+      vtkErrorWithObjectMacro(self, << "Cannot sample the medial axis: " << error << ".");
     }
-    vtkErrorMacro(<< "Cannot sample the medial axis: " << error << ".");
-    return 0;
+    return false;
   }
-  this->BoundaryEdges = mesh.BoundaryEdges;
-  this->NumberOfTriangles = mesh.GetNumberOfTriangles();
+  self->BoundaryEdges = mesh.BoundaryEdges;
+  self->NumberOfTriangles = mesh.GetNumberOfTriangles();
   if (mesh.DuplicateTriangles > 0)
   {
-    vtkWarningMacro(<< "Input has " << mesh.DuplicateTriangles << " duplicate triangles; they were ignored.");
+    vtkWarningWithObjectMacro(
+      self, << "Input has " << mesh.DuplicateTriangles << " duplicate triangles; they were ignored.");
   }
   if (mesh.NonManifoldEdges > 0)
   {
-    vtkWarningMacro(<< "Input has " << mesh.NonManifoldEdges
-                    << " non-manifold edges; inside and outside may be ambiguous there.");
+    vtkWarningWithObjectMacro(self, << "Input has " << mesh.NonManifoldEdges
+                                    << " non-manifold edges; inside and outside may be ambiguous there.");
   }
   if (mesh.NonOrientableComponents > 0)
   {
-    vtkWarningMacro(<< mesh.NonOrientableComponents
-                    << " component(s) cannot be oriented consistently (non-orientable surface).");
+    vtkWarningWithObjectMacro(self, << mesh.NonOrientableComponents
+                                    << " component(s) cannot be oriented consistently (non-orientable surface).");
   }
-
-  vtkMedialSurfaceQuery query;
   if (!query.Build(&mesh, error, aborted))
   {
-    if (aborted())
+    status = aborted() ? 1 : 0;
+    if (!aborted())
     {
-      return 1;
+      vtkErrorWithObjectMacro(self, << "Cannot build the surface queries: " << error << ".");
     }
-    vtkErrorMacro(<< "Cannot build the surface queries: " << error << ".");
-    return 0;
+    return false;
   }
+  return true;
+}
 
-  if (this->SamplingStrategy != RANDOM)
-  {
-    return this->RequestDataIterative(mesh, query, output);
-  }
-  // This piece's share of the samples (at most total / pieces, rounded up to whole
-  // hint chains); sample indices stay global so that the union of all pieces equals
-  // a single-piece run.
-  const vtkIdType total = this->NumberOfSamples;
-  const vtkIdType share = sequential ? total
-    : std::min(total, ((total + HintChain - 1) / HintChain + pieces.NumberOfPieces - 1) /
-        pieces.NumberOfPieces * HintChain);
-
-  // Refuse up front what cannot fit: the per-sample results plus the output arrays,
-  // and the leaf order of all samples.
-  const double bytesPerSample = sizeof(SampleResult) + 12 * sizeof(double) + 3 * sizeof(vtkIdType);
-  const double needed = bytesPerSample * static_cast<double>(share) +
-    (sizeof(vtkIdType) + sizeof(std::int32_t)) * static_cast<double>(total);
+bool vtkMedialAxisSampler::vtkInternals::CheckMemory(vtkIdType count, double bytesPerSample, const char* advice) const
+{
+  const double needed = bytesPerSample * static_cast<double>(count);
   const double available = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
   if (available > 0 && needed > 0.8 * available)
   {
-    vtkErrorMacro(<< "NumberOfSamples " << share << " needs about " << needed / (1 << 30)
-                  << " GiB, more than this machine's memory allows (" << available / (1 << 30)
-                  << " GiB); use fewer samples or several pieces.");
+    vtkErrorWithObjectMacro(this->Self, << "NumberOfSamples " << count << " needs about " << needed / (1 << 30)
+                                        << " GiB, more than this machine's memory allows ("
+                                        << available / (1 << 30) << " GiB); " << advice << ".");
+    return false;
+  }
+  return true;
+}
+
+void vtkMedialAxisSampler::vtkInternals::ReportAllocationFailure(vtkIdType count) const
+{
+  vtkErrorWithObjectMacro(this->Self, << "Cannot allocate memory for " << count << " samples.");
+}
+
+int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh& mesh,
+  const vtkMedialSurfaceQuery& query, const vtkMedialPieces& pieces, vtkPolyData* output)
+{
+  vtkMedialAxisSampler* self = this->Self;
+  const vtkIdType total = self->NumberOfSamples;
+  // This piece's share, at most total / pieces rounded up to whole hint chains; sample
+  // indices stay global so that the union of the pieces is a one-piece run.
+  const vtkIdType share = self->CoverageTolerance > 0.0 ? total
+    : std::min(total, ((total + HintChain - 1) / HintChain + pieces.NumberOfPieces - 1) /
+        pieces.NumberOfPieces * HintChain);
+  // The per-sample results plus the output arrays, and the leaf order of all samples.
+  const double bytesPerSample = sizeof(vtkMedialSampleRecord) + 12 * sizeof(double) + 3 * sizeof(vtkIdType) +
+    2.0 * sizeof(vtkIdType) * static_cast<double>(total) / std::max<vtkIdType>(share, 1);
+  if (!this->CheckMemory(share, bytesPerSample, "use fewer samples or several pieces"))
+  {
     return 0;
   }
-  const vtkMedialBallParameters param = this->MakeBallParameters(mesh.Diagonal);
-  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
-
+  const int threads = self->NumberOfThreads > 0 ? self->NumberOfThreads : omp_get_num_procs();
   // Optional coverage stop: checked after fixed blocks of 1024 samples, so the
   // stopping point does not depend on the thread count.
-  const double coverageTolerance = this->CoverageTolerance * mesh.Diagonal;
   std::unique_ptr<vtkMedialCoverage> coverage;
-  if (this->CoverageTolerance > 0.0)
+  if (self->CoverageTolerance > 0.0)
   {
     coverage.reset(new vtkMedialCoverage(mesh));
   }
-
+  std::vector<vtkIdType> index, order;
+  try
+  {
+    this->SelectSamples(mesh, query, pieces, coverage != nullptr, threads, index, order);
+  }
+  catch (const std::bad_alloc&)
+  {
+    this->ReportAllocationFailure(share);
+    return 0;
+  }
+  const vtkIdType count = static_cast<vtkIdType>(index.size());
+  std::vector<vtkMedialSampleRecord> results;
+  std::vector<vtkIdType> triangles;
+  if (!this->Allocate(count, results, triangles))
+  {
+    return 0;
+  }
   // Draw every sample first, then solve them in the BVH's leaf order: samples
   // close on the surface touch the same nodes, so the caches stay warm. Each
   // result still goes to its own index, so the order cannot change the output.
-  // With a coverage stop (one piece) the order is sorted within each block only, so
-  // that the blocks stay prefixes of the sample sequence.
+  // With a coverage stop the order is sorted within each block only, so that the
+  // blocks stay prefixes of the sample sequence.
   // Blocks keep UpdateProgress and the abort check on the calling thread: long
   // enough that threads rarely wait at the block's end, short enough (about
   // 30 ms on a 1.5M-triangle mesh) that an abort is honoured at once.
   const vtkIdType block = coverage ? 1024 : 1024 * threads;
-  const std::uint64_t seed = static_cast<std::uint64_t>(this->RandomSeed);
-  const std::vector<std::int32_t>& rank = query.GetLeafRanks();
-  std::vector<SampleResult> results;
-  std::vector<vtkIdType> index; // the sample index of each result
-  std::vector<vtkIdType> triangles;
-  std::vector<vtkIdType> order;
-  try
-  {
-    if (coverage)
-    {
-      index.resize(static_cast<size_t>(total));
-      std::iota(index.begin(), index.end(), 0);
-    }
-    else
-    {
-      SelectPieceSamples(mesh, rank, seed, total, pieces, threads, index, order);
-    }
-    results.resize(index.size());
-    triangles.resize(index.size());
-  }
-  catch (const std::bad_alloc&)
-  {
-    vtkErrorMacro(<< "Cannot allocate memory for " << share << " samples.");
-    return 0;
-  }
-  const vtkIdType count = static_cast<vtkIdType>(index.size());
-  vtkIdType used = count;
-#pragma omp parallel for num_threads(threads) schedule(static)
-  for (vtkIdType i = 0; i < count; ++i)
-  {
-    vtkMedialDrawSurfacePoint(mesh, seed, index[i], triangles[i], results[i].Surface);
-  }
-  if (this->GetAbortExecute())
+  this->DrawSamples(mesh, index, threads, triangles, results);
+  if (self->GetAbortExecute())
   {
     return 1;
   }
   if (coverage)
   {
-    order = index;
+    SortByLeaf(query, triangles, block, order);
+  }
+  const vtkIdType used =
+    this->SolveBlocks(mesh, query, threads, block, triangles, order, results, coverage.get());
+  if (self->GetAbortExecute())
+  {
+    return 1; // aborted: leave the output empty
+  }
+  results.resize(static_cast<size_t>(used));
+  self->EvaluatedSamples = used;
+
+  try
+  {
+    this->WriteSamples(output, used, results);
+  }
+  catch (const std::bad_alloc&) // the memory check above does not see ulimit -v
+  {
+    output->Initialize();
+    vtkErrorWithObjectMacro(self, << "Cannot allocate memory for the output of " << used << " samples.");
+    return 0;
+  }
+  if (coverage)
+  {
+    output->GetFieldData()->GetArray(vtkMedialArrayNames::RequestedSamples)->SetTuple1(0, static_cast<double>(count));
+    this->WriteCoverage(output);
+  }
+  this->WarnDiscarded(mesh, count);
+  return 1;
+}
+
+void vtkMedialAxisSampler::vtkInternals::SelectSamples(const vtkMedialTriangleMesh& mesh,
+  const vtkMedialSurfaceQuery& query, const vtkMedialPieces& pieces, bool coverage, int threads,
+  std::vector<vtkIdType>& index, std::vector<vtkIdType>& order) const
+{
+  const vtkIdType total = this->Self->NumberOfSamples;
+  if (coverage)
+  {
+    index.resize(static_cast<size_t>(total));
+    std::iota(index.begin(), index.end(), 0);
+    order.resize(index.size()); // set by SortByLeaf once the triangles are drawn
+    return;
+  }
+  // All samples in the leaf order of their triangles (a triangle pick is cheap next to
+  // a ball); the piece takes a contiguous run of that order cut at multiples of
+  // HintChain, so every piece forms the same hint chains as a one-piece run and the
+  // union of the pieces is that run bit for bit.
+  std::vector<vtkIdType> leafOrder;
+  {
+    const std::uint64_t seed = static_cast<std::uint64_t>(this->Self->RandomSeed);
+    std::vector<vtkIdType> allTriangles(static_cast<size_t>(total));
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (vtkIdType i = 0; i < total; ++i)
+    {
+      allTriangles[i] = vtkMedialPickSampleTriangle(mesh, seed, i);
+    }
+    leafOrder.resize(allTriangles.size());
+    SortByLeaf(query, allTriangles, 0, leafOrder);
+  }
+  vtkIdType firstChain = 0;
+  vtkIdType chains = 0;
+  pieces.GetShare((total + HintChain - 1) / HintChain, firstChain, chains);
+  const vtkIdType begin = std::min(total, firstChain * HintChain);
+  const vtkIdType end = std::min(total, (firstChain + chains) * HintChain);
+  index.assign(leafOrder.begin() + begin, leafOrder.begin() + end);
+  std::sort(index.begin(), index.end()); // the output keeps sample order
+  order.resize(index.size());
+  for (vtkIdType k = begin; k < end; ++k)
+  {
+    order[k - begin] = std::lower_bound(index.begin(), index.end(), leafOrder[k]) - index.begin();
+  }
+}
+
+void vtkMedialAxisSampler::vtkInternals::DrawSamples(const vtkMedialTriangleMesh& mesh,
+  const std::vector<vtkIdType>& index, int threads, std::vector<vtkIdType>& triangles,
+  std::vector<vtkMedialSampleRecord>& results) const
+{
+  const vtkIdType count = static_cast<vtkIdType>(results.size());
+  const std::uint64_t seed = static_cast<std::uint64_t>(this->Self->RandomSeed);
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    vtkMedialDrawSurfacePoint(mesh, seed, index[i], triangles[i], results[i].Surface);
+  }
+}
+
+void vtkMedialAxisSampler::vtkInternals::SortByLeaf(const vtkMedialSurfaceQuery& query,
+  const std::vector<vtkIdType>& triangles, vtkIdType block, std::vector<vtkIdType>& order)
+{
+  const vtkIdType count = static_cast<vtkIdType>(triangles.size());
+  const std::vector<std::int32_t>& rank = query.GetLeafRanks();
+  if (block > 0)
+  {
     auto leafOrder = [&](vtkIdType a, vtkIdType b) {
       const std::int32_t ra = rank[triangles[a]], rb = rank[triangles[b]];
       return ra < rb || (ra == rb && a < b);
     };
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      order[i] = i;
+    }
     for (vtkIdType begin = 0; begin < count; begin += block)
     {
       std::sort(order.begin() + begin, order.begin() + std::min(count, begin + block), leafOrder);
     }
+    return;
   }
+  // Counting sort by leaf rank: linear, and stable, so ties keep index order.
+  std::vector<vtkIdType> next(rank.size() + 1, 0);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    ++next[rank[triangles[i]] + 1];
+  }
+  for (size_t r = 1; r < next.size(); ++r)
+  {
+    next[r] += next[r - 1];
+  }
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    order[next[rank[triangles[i]]]++] = i;
+  }
+}
 
-  for (vtkIdType begin = 0; begin < count && !this->GetAbortExecute(); begin += block)
+vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangleMesh& mesh,
+  const vtkMedialSurfaceQuery& query, int threads, vtkIdType block, const std::vector<vtkIdType>& triangles,
+  const std::vector<vtkIdType>& order, std::vector<vtkMedialSampleRecord>& results, vtkMedialCoverage* coverage)
+{
+  vtkMedialAxisSampler* self = this->Self;
+  const vtkMedialBallParameters param = this->MakeBallParameters(mesh.Diagonal);
+  const double coverageTolerance = self->CoverageTolerance * mesh.Diagonal;
+  const vtkIdType count = static_cast<vtkIdType>(results.size());
+  for (vtkIdType begin = 0; begin < count && !self->GetAbortExecute(); begin += block)
   {
     const vtkIdType end = std::min(count, begin + block);
     // Hint chains of HintChain samples in leaf order (blocks are whole chains).
@@ -337,105 +425,82 @@ int vtkMedialAxisSampler::RequestData(
         vtkMedialSolveBall(query, mesh, param, triangles[i], p, results[i], hint);
       }
     }
-    this->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
-    if (coverage)
+    self->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
+    if (!coverage)
     {
-      if (begin == 0)
+      continue;
+    }
+    if (begin == 0)
+    {
+      coverage->Initialize(std::vector<vtkMedialSampleRecord>(results.begin(), results.begin() + end));
+    }
+    else
+    {
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        coverage->Initialize(std::vector<SampleResult>(results.begin(), results.begin() + end));
-      }
-      else
-      {
-        for (vtkIdType i = begin; i < end; ++i)
+        if (results[i].Valid)
         {
-          if (results[i].Valid)
-          {
-            coverage->AddBall(results[i].Centre, results[i].Radius, nullptr);
-          }
+          coverage->AddBall(results[i].Centre, results[i].Radius, nullptr);
         }
       }
-      const double gap = coverage->MaxGap();
-      this->MaxCoverageGap = gap / mesh.Diagonal;
-      this->CoverageReached = gap <= coverageTolerance;
-      if (this->CoverageReached)
-      {
-        used = end;
-        break;
-      }
+    }
+    const double gap = coverage->MaxGap();
+    self->MaxCoverageGap = gap / mesh.Diagonal;
+    self->CoverageReached = gap <= coverageTolerance;
+    if (self->CoverageReached)
+    {
+      return end;
     }
   }
-  if (this->GetAbortExecute())
-  {
-    return 1; // aborted: leave the output empty
-  }
-  results.resize(static_cast<size_t>(used));
-  this->EvaluatedSamples = used;
-
-  try
-  {
-    this->WriteSamples(output, used, results);
-  }
-  catch (const std::bad_alloc&) // the memory check above does not see ulimit -v
-  {
-    output->Initialize();
-    vtkErrorMacro(<< "Cannot allocate memory for the output of " << used << " samples.");
-    return 0;
-  }
-  if (coverage)
-  {
-    output->GetFieldData()->GetArray(vtkMedialArrayNames::RequestedSamples)->SetTuple1(0, static_cast<double>(count));
-    this->WriteCoverage(output);
-  }
-
-  if (mesh.BoundaryEdges > 0)
-  {
-    vtkWarningMacro(<< "Input surface is open (" << mesh.BoundaryEdges << " boundary edges): "
-                    << this->DiscardedSamples << " of " << count
-                    << " samples were discarded because their ray escaped through a hole.");
-  }
-  else if (this->DiscardedSamples > 0)
-  {
-    // Closed, yet a ray left the solid: a folded-over or self-intersecting patch.
-    vtkWarningMacro(<< this->DiscardedSamples << " of " << count
-                    << " samples were discarded: their inward ray met the surface from outside "
-                       "(folded-over or self-intersecting triangles?).");
-  }
-  return 1;
+  return count;
 }
 
-vtkMedialBallParameters vtkMedialAxisSampler::MakeBallParameters(double diagonal) const
+void vtkMedialAxisSampler::vtkInternals::WarnDiscarded(const vtkMedialTriangleMesh& mesh, vtkIdType count) const
+{
+  vtkMedialAxisSampler* self = this->Self;
+  if (mesh.BoundaryEdges > 0)
+  {
+    vtkWarningWithObjectMacro(self, << "Input surface is open (" << mesh.BoundaryEdges << " boundary edges): "
+                                    << self->DiscardedSamples << " of " << count
+                                    << " samples were discarded because their ray escaped through a hole.");
+  }
+  else if (self->DiscardedSamples > 0)
+  {
+    // Closed, yet a ray left the solid: a folded-over or self-intersecting patch.
+    vtkWarningWithObjectMacro(self, << self->DiscardedSamples << " of " << count
+                                    << " samples were discarded: their inward ray met the surface from outside "
+                                       "(folded-over or self-intersecting triangles?).");
+  }
+}
+
+vtkMedialBallParameters vtkMedialAxisSampler::vtkInternals::MakeBallParameters(double diagonal) const
 {
   vtkMedialBallParameters param;
-  param.Method = this->Method;
-  param.Tolerance = this->Tolerance * diagonal;
-  param.CosMinAngle = this->MinimumSeparationAngle > 0.0
-    ? std::cos(this->MinimumSeparationAngle * 3.14159265358979323846 / 180.0)
+  param.Method = this->Self->Method;
+  param.Tolerance = this->Self->Tolerance * diagonal;
+  param.CosMinAngle = this->Self->MinimumSeparationAngle > 0.0
+    ? std::cos(this->Self->MinimumSeparationAngle * 3.14159265358979323846 / 180.0)
     : 1.0;
-  param.MaximumIterations = this->MaximumIterations;
+  param.MaximumIterations = this->Self->MaximumIterations;
   return param;
 }
 
-int vtkMedialAxisSampler::RequestDataIterative(
+int vtkMedialAxisSampler::vtkInternals::SampleIterative(
   const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, vtkPolyData* output)
 {
+  vtkMedialAxisSampler* self = this->Self;
   vtkMedialIterativeSettings settings;
-  settings.Strategy = this->SamplingStrategy == CLOSEST_NEIGHBOR
-    ? vtkMedialIterativeSettings::CLOSEST_NEIGHBOR
-    : vtkMedialIterativeSettings::FACE_DISTANCE;
-  settings.Budget = this->NumberOfSamples; // sequential: runs in piece 0 only (RequestData)
-  settings.SeedFraction = this->SeedFraction;
-  settings.CoverageTolerance = this->CoverageTolerance * mesh.Diagonal;
-  settings.Seed = static_cast<std::uint64_t>(this->RandomSeed);
-  settings.Threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  settings.Strategy = self->SamplingStrategy == CLOSEST_NEIGHBOR ? vtkMedialIterativeSettings::CLOSEST_NEIGHBOR
+                                                                 : vtkMedialIterativeSettings::FACE_DISTANCE;
+  settings.Budget = self->NumberOfSamples; // sequential: piece 0 only (RequestData)
+  settings.SeedFraction = self->SeedFraction;
+  settings.CoverageTolerance = self->CoverageTolerance * mesh.Diagonal;
+  settings.Seed = static_cast<std::uint64_t>(self->RandomSeed);
+  settings.Threads = self->NumberOfThreads > 0 ? self->NumberOfThreads : omp_get_num_procs();
   settings.Ball = this->MakeBallParameters(mesh.Diagonal);
-  const double bytesPerSample = 2.0 * sizeof(vtkMedialSampleRecord) + 12 * sizeof(double) + 8 * sizeof(vtkIdType);
-  const double needed = bytesPerSample * static_cast<double>(settings.Budget);
-  const double available = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
-  if (available > 0 && needed > 0.8 * available)
+  if (!this->CheckMemory(settings.Budget,
+        2.0 * sizeof(vtkMedialSampleRecord) + 12 * sizeof(double) + 8 * sizeof(vtkIdType), "use fewer samples"))
   {
-    vtkErrorMacro(<< "NumberOfSamples " << settings.Budget << " needs about " << needed / (1 << 30)
-                  << " GiB, more than this machine's memory allows (" << available / (1 << 30)
-                  << " GiB); use fewer samples.");
     return 0;
   }
 
@@ -443,26 +508,26 @@ int vtkMedialAxisSampler::RequestDataIterative(
   try
   {
     vtkMedialRunIterativeSampling(mesh, query, settings,
-      [this](double fraction) {
-        this->UpdateProgress(std::min(1.0, fraction));
-        return this->GetAbortExecute() != 0;
+      [self](double fraction) {
+        self->UpdateProgress(std::min(1.0, fraction));
+        return self->GetAbortExecute() != 0;
       },
       result);
   }
   catch (const std::bad_alloc&)
   {
-    vtkErrorMacro(<< "Out of memory while sampling " << settings.Budget << " samples.");
+    vtkErrorWithObjectMacro(self, << "Out of memory while sampling " << settings.Budget << " samples.");
     return 0;
   }
-  if (result.Aborted || this->GetAbortExecute())
+  if (result.Aborted || self->GetAbortExecute())
   {
     return 1; // aborted: leave the output empty
   }
   const vtkIdType evaluated = static_cast<vtkIdType>(result.Records.size());
-  this->EvaluatedSamples = evaluated;
-  this->SeedSamples = result.Seeds;
-  this->CoverageReached = result.CoverageReached;
-  this->MaxCoverageGap = result.MaxGap / mesh.Diagonal;
+  self->EvaluatedSamples = evaluated;
+  self->SeedSamples = result.Seeds;
+  self->CoverageReached = result.CoverageReached;
+  self->MaxCoverageGap = result.MaxGap / mesh.Diagonal;
   this->WriteSamples(output, evaluated, result.Records);
   // RequestedSamples is the budget; the samples used are EvaluatedSamples.
   output->GetFieldData()->GetArray(vtkMedialArrayNames::RequestedSamples)->SetTuple1(0, static_cast<double>(settings.Budget));
@@ -471,72 +536,75 @@ int vtkMedialAxisSampler::RequestDataIterative(
   {
     validSeeds += result.Records[i].Valid ? 1 : 0;
   }
-  auto addField = [output](const char* name, double value) {
-    vtkNew<vtkDoubleArray> a;
-    a->SetName(name);
-    a->InsertNextValue(value);
-    output->GetFieldData()->AddArray(a);
-  };
-  addField(vtkMedialArrayNames::EvaluatedSamples, static_cast<double>(evaluated));
-  addField(vtkMedialArrayNames::SeedSamples, static_cast<double>(validSeeds)); // the first output points
+  AddField(output, vtkMedialArrayNames::EvaluatedSamples, static_cast<double>(evaluated));
+  AddField(output, vtkMedialArrayNames::SeedSamples, static_cast<double>(validSeeds)); // the first output points
   this->WriteCoverage(output);
-
   if (settings.Strategy == vtkMedialIterativeSettings::CLOSEST_NEIGHBOR)
   {
-    // Record index -> output point id (invalid records are not output, nor linked).
-    std::vector<vtkIdType> pointId(result.Records.size(), -1);
-    vtkIdType k = 0;
-    for (size_t i = 0; i < result.Records.size(); ++i)
-    {
-      pointId[i] = result.Records[i].Valid ? k++ : -1;
-    }
-    vtkNew<vtkCellArray> lines;
-    const vtkIdType links = static_cast<vtkIdType>(result.InitialLink.size());
-    lines->AllocateExact(links, 2 * links);
-    vtkNew<vtkIdTypeArray> initial;
-    initial->SetName(vtkMedialArrayNames::InitialLink);
-    initial->SetNumberOfTuples(output->GetNumberOfVerts() + links);
-    for (vtkIdType c = 0; c < output->GetNumberOfVerts(); ++c)
-    {
-      initial->SetValue(c, -1); // vertex cells
-    }
-    for (vtkIdType l = 0; l < links; ++l)
-    {
-      const vtkIdType ends[2] = { pointId[result.LinkEnds[2 * l]], pointId[result.LinkEnds[2 * l + 1]] };
-      lines->InsertNextCell(2, ends);
-      initial->SetValue(output->GetNumberOfVerts() + l, result.InitialLink[l]);
-    }
-    output->SetLines(lines);
-    output->GetCellData()->AddArray(initial);
+    WriteLinks(output, result.Records, result.LinkEnds, result.InitialLink);
   }
   return 1;
 }
 
-void vtkMedialAxisSampler::WriteCoverage(vtkPolyData* output)
+void vtkMedialAxisSampler::vtkInternals::WriteLinks(vtkPolyData* output,
+  const std::vector<vtkMedialSampleRecord>& records, const std::vector<vtkIdType>& linkEnds,
+  const std::vector<vtkIdType>& initialLink)
 {
-  vtkNew<vtkDoubleArray> reached;
-  reached->SetName(vtkMedialArrayNames::CoverageReached);
-  reached->InsertNextValue(this->CoverageReached ? 1.0 : 0.0);
-  output->GetFieldData()->AddArray(reached);
-  vtkNew<vtkDoubleArray> gap;
-  gap->SetName(vtkMedialArrayNames::MaxCoverageGap); // relative to the diagonal
-  gap->InsertNextValue(this->MaxCoverageGap);
-  output->GetFieldData()->AddArray(gap);
+  // Record index -> output point id (invalid records are not output, nor linked).
+  std::vector<vtkIdType> pointId(records.size(), -1);
+  vtkIdType k = 0;
+  for (size_t i = 0; i < records.size(); ++i)
+  {
+    pointId[i] = records[i].Valid ? k++ : -1;
+  }
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType links = static_cast<vtkIdType>(initialLink.size());
+  lines->AllocateExact(links, 2 * links);
+  vtkNew<vtkIdTypeArray> initial;
+  initial->SetName(vtkMedialArrayNames::InitialLink);
+  initial->SetNumberOfTuples(output->GetNumberOfVerts() + links);
+  for (vtkIdType c = 0; c < output->GetNumberOfVerts(); ++c)
+  {
+    initial->SetValue(c, -1); // vertex cells
+  }
+  for (vtkIdType l = 0; l < links; ++l)
+  {
+    const vtkIdType ends[2] = { pointId[linkEnds[2 * l]], pointId[linkEnds[2 * l + 1]] };
+    lines->InsertNextCell(2, ends);
+    initial->SetValue(output->GetNumberOfVerts() + l, initialLink[l]);
+  }
+  output->SetLines(lines);
+  output->GetCellData()->AddArray(initial);
 }
 
-void vtkMedialAxisSampler::WriteSamples(
+void vtkMedialAxisSampler::vtkInternals::AddField(vtkPolyData* output, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  a->InsertNextValue(value);
+  output->GetFieldData()->AddArray(a);
+}
+
+void vtkMedialAxisSampler::vtkInternals::WriteCoverage(vtkPolyData* output) const
+{
+  AddField(output, vtkMedialArrayNames::CoverageReached, this->Self->CoverageReached ? 1.0 : 0.0);
+  AddField(output, vtkMedialArrayNames::MaxCoverageGap, this->Self->MaxCoverageGap); // relative to the diagonal
+}
+
+void vtkMedialAxisSampler::vtkInternals::WriteSamples(
   vtkPolyData* output, vtkIdType requested, const std::vector<vtkMedialSampleRecord>& records)
 {
+  vtkMedialAxisSampler* self = this->Self;
   vtkIdType accepted = 0;
   long long iterations = 0;
   for (const vtkMedialSampleRecord& r : records)
   {
     accepted += r.Valid ? 1 : 0;
     iterations += r.Iterations;
-    this->CappedSamples += r.Capped ? 1 : 0;
+    self->CappedSamples += r.Capped ? 1 : 0;
   }
-  this->DiscardedSamples = requested - accepted;
-  this->MeanIterations = requested > 0 ? static_cast<double>(iterations) / requested : 0.0;
+  self->DiscardedSamples = requested - accepted;
+  self->MeanIterations = requested > 0 ? static_cast<double>(iterations) / requested : 0.0;
 
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -589,17 +657,10 @@ void vtkMedialAxisSampler::WriteSamples(
   output->GetPointData()->AddArray(contact);
   output->GetPointData()->AddArray(angle);
   output->GetPointData()->AddArray(cells);
-
-  auto addField = [output](const char* name, double value) {
-    vtkNew<vtkDoubleArray> a;
-    a->SetName(name);
-    a->InsertNextValue(value);
-    output->GetFieldData()->AddArray(a);
-  };
-  addField(vtkMedialArrayNames::RequestedSamples, static_cast<double>(requested));
-  addField(vtkMedialArrayNames::DiscardedSamples, static_cast<double>(this->DiscardedSamples));
-  addField(vtkMedialArrayNames::MeanIterations, this->MeanIterations);
-  addField(vtkMedialArrayNames::CappedSamples, static_cast<double>(this->CappedSamples));
+  AddField(output, vtkMedialArrayNames::RequestedSamples, static_cast<double>(requested));
+  AddField(output, vtkMedialArrayNames::DiscardedSamples, static_cast<double>(self->DiscardedSamples));
+  AddField(output, vtkMedialArrayNames::MeanIterations, self->MeanIterations);
+  AddField(output, vtkMedialArrayNames::CappedSamples, static_cast<double>(self->CappedSamples));
 }
 
 void vtkMedialAxisSampler::PrintSelf(ostream& os, vtkIndent indent)
@@ -618,6 +679,8 @@ void vtkMedialAxisSampler::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DiscardedSamples: " << this->DiscardedSamples << "\n";
   os << indent << "CappedSamples: " << this->CappedSamples << "\n";
   os << indent << "MeanIterations: " << this->MeanIterations << "\n";
+  os << indent << "BoundaryEdges: " << this->BoundaryEdges << "\n";
+  os << indent << "NumberOfTriangles: " << this->NumberOfTriangles << "\n";
   os << indent << "EvaluatedSamples: " << this->EvaluatedSamples << "\n";
   os << indent << "SeedSamples: " << this->SeedSamples << "\n";
   os << indent << "CoverageReached: " << this->CoverageReached << "\n";
