@@ -38,6 +38,11 @@ check(balls.GetNumberOfPoints() == 3000 and balls.GetPointData().GetArray("Radiu
 union = MedialBallUnion(Input=sampler, SampleDimensions=[64, 64, 64])  # noqa: F821
 rebuilt = servermanager.Fetch(union)
 check(rebuilt.GetNumberOfCells() > 1000, "reconstruction: %d triangles" % rebuilt.GetNumberOfCells())
+doubled = Calculator(Input=sampler, ResultArrayName="R2", Function="2*Radius")  # noqa: F821
+union_doubled = MedialBallUnion(Input=doubled, SampleDimensions=[64, 64, 64], Radius=["POINTS", "R2"])  # noqa: F821
+bigger = servermanager.Fetch(union_doubled).GetBounds()
+check(bigger[1] - bigger[0] > rebuilt.GetBounds()[1] - rebuilt.GetBounds()[0],
+      "reconstruction: the Radius array selection reaches the filter (2 x Radius is wider)")
 
 # The measures: the reconstruction's error against the demo shape, and the balls'
 # protrusion with the radius array chosen in the array selection (a renamed copy of
