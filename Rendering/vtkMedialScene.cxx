@@ -26,6 +26,7 @@
 #include "vtkProperty.h"
 #include "vtkRegularPolygonSource.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderingOpenGLConfigure.h" // VTK_USE_X
 #include "vtkRenderer.h"
 #include "vtkScalarBarActor.h"
 #include "vtkSphereSource.h"
@@ -322,6 +323,15 @@ void vtkMedialScene::Frame(vtkRenderer* renderer, const double normal[3])
   }
   renderer->ResetCamera();
   camera->Zoom(this->Zoom > 0.0 ? this->Zoom : (this->Graph ? 1.3 : 1.6));
+}
+
+bool vtkMedialScene::NeedsDisplay()
+{
+#ifdef VTK_USE_X
+  return true;
+#else
+  return false;
+#endif
 }
 
 vtkRenderWindow* vtkMedialScene::Render()
