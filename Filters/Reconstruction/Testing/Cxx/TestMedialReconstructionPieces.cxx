@@ -4,7 +4,7 @@
 // for point for the union, the same figures for the measures) and pieces 1 and 2 are
 // empty: joining the pieces duplicates nothing. The MPI case, where the union gathers
 // the balls to process 0, is the pvbatch test of the ParaView build.
-#include "MedialTestUtilities.h"
+#include "MedialPieceTestUtilities.h"
 
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialBallProtrusion.h"
@@ -16,30 +16,6 @@
 
 using namespace medialtest;
 
-namespace
-{
-// Piece 0 of 3 against one piece (compared by `same`); pieces 1 and 2 must be empty.
-template <typename Same>
-int CheckFirstPiece(vtkPolyDataAlgorithm* filter, const char* what, Same same)
-{
-  filter->UpdatePiece(0, 1, 0);
-  vtkNew<vtkPolyData> whole;
-  whole->DeepCopy(filter->GetOutput());
-  MEDIAL_CHECK(whole->GetNumberOfPoints() > 100, "%s: only %lld points", what,
-    static_cast<long long>(whole->GetNumberOfPoints()));
-  filter->UpdatePiece(0, 3, 0);
-  MEDIAL_CHECK(same(whole, filter->GetOutput()), "%s: piece 0 of 3 differs from one piece", what);
-  for (int p : { 1, 2 })
-  {
-    filter->UpdatePiece(p, 3, 0);
-    MEDIAL_CHECK(filter->GetOutput()->GetNumberOfPoints() == 0, "%s: piece %d of 3 is not empty", what, p);
-  }
-  std::printf("%s: piece 0 of 3 is the whole output (%lld points); pieces 1 and 2 empty\n", what,
-    static_cast<long long>(whole->GetNumberOfPoints()));
-  return EXIT_SUCCESS;
-}
-}
-
 int TestMedialReconstructionPieces(int, char*[])
 {
   vtkNew<vtkMedialShapeSource> jack;
@@ -50,7 +26,7 @@ int TestMedialReconstructionPieces(int, char*[])
   vtkNew<vtkMedialBallUnion> union_;
   union_->SetInputConnection(sampler->GetOutputPort());
   union_->SetSampleDimensions(40, 40, 40);
-  if (CheckFirstPiece(union_, "union", [](vtkPolyData* a, vtkPolyData* b) {
+  if (CheckFirstPieceOnly(union_, "union", [](vtkPolyData* a, vtkPolyData* b) {
         return a->GetNumberOfPolys() == b->GetNumberOfPolys() && PointDifferences(a, b) == 0;
       }) != EXIT_SUCCESS)
   {
@@ -66,7 +42,7 @@ int TestMedialReconstructionPieces(int, char*[])
       return FieldValue(a, name) == FieldValue(b, name) && !std::isnan(FieldValue(a, name));
     };
   };
-  if (CheckFirstPiece(error, "reconstruction error", sameField("VertexMaxError")) != EXIT_SUCCESS)
+  if (CheckFirstPieceOnly(error, "reconstruction error", sameField("VertexMaxError")) != EXIT_SUCCESS)
   {
     return EXIT_FAILURE;
   }
@@ -74,7 +50,7 @@ int TestMedialReconstructionPieces(int, char*[])
   vtkNew<vtkMedialBallProtrusion> protrusion;
   protrusion->SetSurfaceConnection(jack->GetOutputPort());
   protrusion->SetBallsConnection(sampler->GetOutputPort());
-  if (CheckFirstPiece(protrusion, "protrusion", sameField("MaxProtrusion")) != EXIT_SUCCESS)
+  if (CheckFirstPieceOnly(protrusion, "protrusion", sameField("MaxProtrusion")) != EXIT_SUCCESS)
   {
     return EXIT_FAILURE;
   }
