@@ -40,11 +40,12 @@ if [ ! -x "$ROOT/usr/bin/pvpython" ]; then
 fi
 
 # 2. What the unpacked programs and the build use from the system: ParaView's own runtime
-# dependencies (most come with libvtk9-dev already), MPI's launcher and headers. tclsh, Python
-# extras of the web and plotting modules, and Qt's help and OpenGL modules (GUI only), are
-# left out unless --gui.
+# dependencies (most come with libvtk9-dev already), MPI's launcher and headers. tclsh, the
+# Python modules of ParaView's web server and plots (autobahn, twisted, matplotlib), and
+# Qt's help and OpenGL modules (GUI only) are left out unless --gui.
 deps=$(dpkg-deb -f "$DIR"/debs/paraview_*.deb Depends | tr ',' '\n' | sed -e 's/([^)]*)//g' -e 's/|.*//' -e 's/ //g' |
-  grep -v -e '^$' -e '^python3-' -e '^libqt5help5' -e '^libqt5opengl5' -e '^tclsh')
+  grep -v -e '^$' -e '^python3-matplotlib' -e '^python3-autobahn' -e '^python3-twisted' \
+    -e '^libqt5help5' -e '^libqt5opengl5' -e '^tclsh')
 [ "$GUI" -eq 1 ] && deps="$deps libqt5help5 libqt5opengl5 python3-matplotlib"
 missing=""
 for p in $deps openmpi-bin libopenmpi-dev; do
