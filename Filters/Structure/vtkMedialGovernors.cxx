@@ -1,0 +1,642 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkMedialGovernors.h"
+
+#include "vtkMedialGeometry.h"
+#include "vtkMedialSurfaceQuery.h"
+#include "vtkMedialTriangleMesh.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+#include <tuple>
+
+namespace
+{
+namespace G = vtkMedialGeometry;
+
+// Unit normals closer than this (|n1 x n2|) are one plane; unit directions, one line.
+constexpr double CoplanarSine = 1e-9;
+// c - q along the inward normal within this (1 - cos): the contact is the face's plane.
+constexpr double AlongNormal = 1e-12;
+// c - q perpendicular to a line within this (cosine): the contact is on the line.
+constexpr double AcrossLine = 1e-10;
+
+struct UnionFind
+{
+  std::vector<int> Parent;
+  void Reset(int n)
+  {
+    this->Parent.resize(static_cast<size_t>(n));
+    std::iota(this->Parent.begin(), this->Parent.end(), 0);
+  }
+  int Find(int i)
+  {
+    while (this->Parent[i] != i)
+    {
+      this->Parent[i] = this->Parent[this->Parent[i]];
+      i = this->Parent[i];
+    }
+    return i;
+  }
+  // The smaller root wins, so the result does not depend on the order of unions.
+  void Union(int a, int b)
+  {
+    a = this->Find(a);
+    b = this->Find(b);
+    if (a != b)
+    {
+      this->Parent[std::max(a, b)] = std::min(a, b);
+    }
+  }
+};
+
+// Dense ids 0, 1, ... for the roots, in the order of their first member.
+int DenseRoots(UnionFind& sets, int n, std::vector<int>& id)
+{
+  id.assign(static_cast<size_t>(n), -1);
+  std::vector<int> rootId(static_cast<size_t>(n), -1);
+  int count = 0;
+  for (int i = 0; i < n; ++i)
+  {
+    const int r = sets.Find(i);
+    if (rootId[r] < 0)
+    {
+      rootId[r] = count++;
+    }
+    id[i] = rootId[r];
+  }
+  return count;
+}
+
+bool Parallel(const double a[3], const double b[3])
+{
+  double x[3];
+  G::Cross(a, b, x);
+  return G::Dot(x, x) <= CoplanarSine * CoplanarSine;
+}
+
+// Per-thread scratch space of Classify.
+struct ClassifyScratch
+{
+  std::vector<vtkMedialSurfaceQuery::ClosestHit> Hits;
+  std::vector<std::tuple<vtkIdType, vtkIdType, int>> Keys; // (a, b, hit): a vertex (b = -1) or an edge
+  std::vector<int> Feature;   // per hit
+  std::vector<int> Component; // per hit: dense connected-region id
+  std::vector<int> Governor;  // per hit: dense governor id
+  std::vector<std::array<double, 3>> Direction;
+  std::vector<std::pair<std::array<long long, 3>, int>> Cells;
+  UnionFind Sets;
+};
+
+// With theta > 0: joins contacts (and the sample point P, index hits.size()) whose
+// directions from c are less than theta apart. Single linkage; a grid on the unit
+// directions with cells one chord wide keeps it linear in the number of contacts.
+void MergeCloserThan(const double c[3], const double* surfacePoint, double thetaDegrees,
+  const std::vector<vtkMedialSurfaceQuery::ClosestHit>& hits, ClassifyScratch& s)
+{
+  const double theta = thetaDegrees * (3.14159265358979323846 / 180.0);
+  const double cosTheta = std::cos(theta);
+  const int k = static_cast<int>(hits.size());
+  s.Direction.resize(static_cast<size_t>(k + 1));
+  std::vector<int>& used = s.Governor; // contacts with a direction (reused storage)
+  used.clear();
+  auto direction = [&](const double* x, int i) {
+    double d[3];
+    G::Sub(x, c, d);
+    const double len = std::sqrt(G::Dot(d, d));
+    if (len > 0.0)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        s.Direction[i][j] = d[j] / len;
+      }
+      used.push_back(i);
+    }
+  };
+  for (int i = 0; i < k; ++i)
+  {
+    direction(hits[i].Point, i);
+  }
+  if (surfacePoint)
+  {
+    direction(surfacePoint, k);
+  }
+  auto join = [&](int i, int j) {
+    if (G::Dot(s.Direction[i].data(), s.Direction[j].data()) > cosTheta)
+    {
+      s.Sets.Union(i, j);
+    }
+  };
+  const size_t n = used.size();
+  const double chord = 2.0 * std::sin(0.5 * theta);
+  if (n <= 48 || chord > 0.5)
+  {
+    for (size_t a = 0; a < n; ++a)
+    {
+      for (size_t b = a + 1; b < n; ++b)
+      {
+        join(used[a], used[b]);
+      }
+    }
+    return;
+  }
+  s.Cells.clear();
+  auto cellOf = [&](int i) {
+    std::array<long long, 3> key;
+    for (int j = 0; j < 3; ++j)
+    {
+      key[j] = static_cast<long long>(std::floor(s.Direction[i][j] / chord));
+    }
+    return key;
+  };
+  for (int i : used)
+  {
+    s.Cells.emplace_back(cellOf(i), i);
+  }
+  std::sort(s.Cells.begin(), s.Cells.end());
+  for (int i : used)
+  {
+    const auto key = cellOf(i);
+    for (long long dx = -1; dx <= 1; ++dx)
+    {
+      for (long long dy = -1; dy <= 1; ++dy)
+      {
+        for (long long dz = -1; dz <= 1; ++dz)
+        {
+          const std::pair<std::array<long long, 3>, int> lo({ key[0] + dx, key[1] + dy, key[2] + dz }, -1);
+          for (auto it = std::upper_bound(s.Cells.begin(), s.Cells.end(), lo);
+               it != s.Cells.end() && it->first == lo.first; ++it)
+          {
+            if (it->second > i)
+            {
+              join(i, it->second);
+            }
+          }
+        }
+      }
+    }
+  }
+}
+}
+
+bool vtkMedialGovernors::BallGovernors::AllSimple() const
+{
+  return std::find(this->Compound.begin(), this->Compound.end(), 1) == this->Compound.end();
+}
+
+bool vtkMedialGovernors::Build(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
+  const Settings& settings, std::string& error)
+{
+  this->Mesh = &mesh;
+  this->Query = &query;
+  this->Diagonal = mesh.Diagonal;
+  this->ContactTolerance = settings.Tolerance * mesh.Diagonal;
+  this->Theta = settings.MinimumSeparationAngle;
+  const vtkIdType nt = mesh.GetNumberOfTriangles();
+  const vtkIdType nv = static_cast<vtkIdType>(mesh.Points.size() / 3);
+  if (nt <= 0 || !(mesh.Diagonal > 0.0) || nt >= (1LL << 30) || nv >= (1LL << 30))
+  {
+    error = "the surface is empty, flat or too large";
+    return false;
+  }
+
+  // Edges: (min vertex, max vertex, triangle), sorted so each edge's triangles are adjacent.
+  std::vector<std::tuple<vtkIdType, vtkIdType, vtkIdType>> edges;
+  edges.reserve(static_cast<size_t>(3 * nt));
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    const vtkIdType* v = mesh.GetTriangle(t);
+    for (int j = 0; j < 3; ++j)
+    {
+      const vtkIdType a = v[j], b = v[(j + 1) % 3];
+      edges.emplace_back(std::min(a, b), std::max(a, b), t);
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+
+  // Planes: coplanar triangles joined across manifold edges.
+  UnionFind sets;
+  sets.Reset(static_cast<int>(nt));
+  auto sameEdge = [&](size_t i, size_t j) {
+    return std::get<0>(edges[i]) == std::get<0>(edges[j]) && std::get<1>(edges[i]) == std::get<1>(edges[j]);
+  };
+  auto coplanar = [&](vtkIdType s, vtkIdType t) {
+    return G::Dot(mesh.GetNormal(s), mesh.GetNormal(t)) > 0.0 && Parallel(mesh.GetNormal(s), mesh.GetNormal(t));
+  };
+  for (size_t i = 0; i + 1 < edges.size(); ++i)
+  {
+    const bool manifold = sameEdge(i, i + 1) && (i == 0 || !sameEdge(i - 1, i)) &&
+      (i + 2 >= edges.size() || !sameEdge(i + 1, i + 2));
+    if (manifold && coplanar(std::get<2>(edges[i]), std::get<2>(edges[i + 1])))
+    {
+      sets.Union(static_cast<int>(std::get<2>(edges[i])), static_cast<int>(std::get<2>(edges[i + 1])));
+    }
+  }
+  this->NumberOfPlanes = DenseRoots(sets, static_cast<int>(nt), this->TrianglePlane);
+  this->Features.assign(static_cast<size_t>(this->NumberOfPlanes), Feature());
+  {
+    std::vector<double> largest(static_cast<size_t>(this->NumberOfPlanes), -1.0);
+    for (vtkIdType t = 0; t < nt; ++t)
+    {
+      const int p = this->TrianglePlane[t];
+      if (mesh.Areas[t] > largest[p])
+      {
+        largest[p] = mesh.Areas[t];
+        Feature& f = this->Features[p];
+        f.Kind = PLANE;
+        std::copy(mesh.GetPoint(mesh.GetTriangle(t)[0]), mesh.GetPoint(mesh.GetTriangle(t)[0]) + 3, f.Point);
+        for (int k = 0; k < 3; ++k)
+        {
+          f.Direction[k] = -mesh.GetNormal(t)[k];
+        }
+      }
+    }
+  }
+
+  // Sharp edges: between two plane groups (or on a boundary).
+  this->SharpEdges.clear();
+  for (size_t i = 0; i < edges.size();)
+  {
+    size_t j = i + 1;
+    bool sharp = false;
+    while (j < edges.size() && sameEdge(i, j))
+    {
+      sharp = sharp || this->TrianglePlane[std::get<2>(edges[j])] != this->TrianglePlane[std::get<2>(edges[i])];
+      ++j;
+    }
+    if (sharp || j == i + 1)
+    {
+      this->SharpEdges.emplace_back(std::get<0>(edges[i]), std::get<1>(edges[i]));
+    }
+    i = j;
+  }
+  // Lines: collinear sharp edges joined at shared vertices.
+  const int ns = static_cast<int>(this->SharpEdges.size());
+  std::vector<std::array<double, 3>> direction(static_cast<size_t>(ns));
+  std::vector<std::pair<vtkIdType, int>> atVertex; // (vertex, sharp edge)
+  for (int e = 0; e < ns; ++e)
+  {
+    const double* a = mesh.GetPoint(this->SharpEdges[e].first);
+    const double* b = mesh.GetPoint(this->SharpEdges[e].second);
+    G::Sub(b, a, direction[e].data());
+    const double len = std::sqrt(G::Dot(direction[e].data(), direction[e].data()));
+    for (double& x : direction[e])
+    {
+      x = len > 0.0 ? x / len : 0.0;
+    }
+    atVertex.emplace_back(this->SharpEdges[e].first, e);
+    atVertex.emplace_back(this->SharpEdges[e].second, e);
+  }
+  std::sort(atVertex.begin(), atVertex.end());
+  sets.Reset(ns);
+  for (size_t i = 0; i < atVertex.size(); ++i)
+  {
+    for (size_t j = i + 1; j < atVertex.size() && atVertex[j].first == atVertex[i].first; ++j)
+    {
+      if (Parallel(direction[atVertex[i].second].data(), direction[atVertex[j].second].data()))
+      {
+        sets.Union(atVertex[i].second, atVertex[j].second);
+      }
+    }
+  }
+  this->NumberOfLines = DenseRoots(sets, ns, this->SharpEdgeLine);
+  this->Features.resize(static_cast<size_t>(this->NumberOfPlanes + this->NumberOfLines));
+  this->LinePlanes.assign(static_cast<size_t>(this->NumberOfLines), {});
+  {
+    std::vector<double> longest(static_cast<size_t>(this->NumberOfLines), -1.0);
+    for (int e = 0; e < ns; ++e)
+    {
+      const int l = this->SharpEdgeLine[e];
+      const double* a = mesh.GetPoint(this->SharpEdges[e].first);
+      const double len2 = G::Distance2(a, mesh.GetPoint(this->SharpEdges[e].second));
+      if (len2 > longest[l])
+      {
+        longest[l] = len2;
+        Feature& f = this->Features[this->NumberOfPlanes + l];
+        f.Kind = LINE;
+        std::copy(a, a + 3, f.Point);
+        std::copy(direction[e].begin(), direction[e].end(), f.Direction);
+      }
+    }
+  }
+  for (const auto& edge : edges)
+  {
+    const int l = this->LineOf(std::get<0>(edge), std::get<1>(edge));
+    if (l >= 0)
+    {
+      this->LinePlanes[l - this->NumberOfPlanes].push_back(this->TrianglePlane[std::get<2>(edge)]);
+    }
+  }
+  for (auto& planes : this->LinePlanes)
+  {
+    std::sort(planes.begin(), planes.end());
+    planes.erase(std::unique(planes.begin(), planes.end()), planes.end());
+  }
+
+  // Points: every vertex, with the planes and lines incident to it.
+  const int first = this->NumberOfPlanes + this->NumberOfLines;
+  this->Features.resize(static_cast<size_t>(first + nv));
+  std::vector<std::pair<vtkIdType, int>> incident;
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      incident.emplace_back(mesh.GetTriangle(t)[j], this->TrianglePlane[t]);
+    }
+  }
+  for (const auto& ve : atVertex)
+  {
+    incident.emplace_back(ve.first, this->NumberOfPlanes + this->SharpEdgeLine[ve.second]);
+  }
+  std::sort(incident.begin(), incident.end());
+  incident.erase(std::unique(incident.begin(), incident.end()), incident.end());
+  this->VertexOffsets.assign(static_cast<size_t>(nv + 1), 0);
+  this->VertexIncident.clear();
+  for (const auto& vi : incident)
+  {
+    ++this->VertexOffsets[vi.first + 1];
+    this->VertexIncident.push_back(vi.second);
+  }
+  std::partial_sum(this->VertexOffsets.begin(), this->VertexOffsets.end(), this->VertexOffsets.begin());
+  for (vtkIdType v = 0; v < nv; ++v)
+  {
+    Feature& f = this->Features[first + v];
+    f.Kind = POINT;
+    std::copy(mesh.GetPoint(v), mesh.GetPoint(v) + 3, f.Point);
+  }
+  return true;
+}
+
+int vtkMedialGovernors::LineOf(vtkIdType a, vtkIdType b) const
+{
+  const std::pair<vtkIdType, vtkIdType> key(std::min(a, b), std::max(a, b));
+  const auto it = std::lower_bound(this->SharpEdges.begin(), this->SharpEdges.end(), key);
+  if (it == this->SharpEdges.end() || *it != key)
+  {
+    return -1;
+  }
+  return this->NumberOfPlanes + this->SharpEdgeLine[it - this->SharpEdges.begin()];
+}
+
+bool vtkMedialGovernors::AreIncident(int a, int b) const
+{
+  if (this->Features[a].Kind > this->Features[b].Kind)
+  {
+    std::swap(a, b);
+  }
+  const int ka = this->Features[a].Kind, kb = this->Features[b].Kind;
+  if (ka == kb)
+  {
+    return false;
+  }
+  if (kb == LINE)
+  {
+    const auto& planes = this->LinePlanes[b - this->NumberOfPlanes];
+    return std::binary_search(planes.begin(), planes.end(), a);
+  }
+  const vtkIdType v = b - this->NumberOfPlanes - this->NumberOfLines;
+  return std::binary_search(this->VertexIncident.begin() + this->VertexOffsets[v],
+    this->VertexIncident.begin() + this->VertexOffsets[v + 1], a);
+}
+
+double vtkMedialGovernors::DistanceToFeature(int id, const double x[3]) const
+{
+  const Feature& f = this->Features[id];
+  double d[3];
+  G::Sub(x, f.Point, d);
+  if (f.Kind == PLANE)
+  {
+    return std::fabs(G::Dot(d, f.Direction));
+  }
+  if (f.Kind == LINE)
+  {
+    const double along = G::Dot(d, f.Direction);
+    return std::sqrt(std::max(0.0, G::Dot(d, d) - along * along));
+  }
+  return std::sqrt(G::Dot(d, d));
+}
+
+int vtkMedialGovernors::FeatureOfContact(
+  const double c[3], const double q[3], double distance, vtkIdType t) const
+{
+  const int plane = this->PlaneOf(t);
+  if (!(distance > 0.0))
+  {
+    return plane;
+  }
+  double w[3];
+  G::Sub(c, q, w);
+  for (double& x : w)
+  {
+    x /= distance;
+  }
+  if (-G::Dot(w, this->Mesh->GetNormal(t)) >= 1.0 - AlongNormal)
+  {
+    return plane;
+  }
+  const vtkIdType* v = this->Mesh->GetTriangle(t);
+  const double eps2 = 1e-24 * this->Diagonal * this->Diagonal;
+  for (int j = 0; j < 3; ++j)
+  {
+    if (G::Distance2(q, this->Mesh->GetPoint(v[j])) <= eps2)
+    {
+      // At a vertex: on a line through it when c - q is across that line.
+      for (vtkIdType i = this->VertexOffsets[v[j]]; i < this->VertexOffsets[v[j] + 1]; ++i)
+      {
+        const int f = this->VertexIncident[i];
+        if (this->Features[f].Kind == LINE && std::fabs(G::Dot(w, this->Features[f].Direction)) <= AcrossLine)
+        {
+          return f;
+        }
+      }
+      return this->NumberOfPlanes + this->NumberOfLines + static_cast<int>(v[j]);
+    }
+  }
+  for (int j = 0; j < 3; ++j)
+  {
+    const double* a = this->Mesh->GetPoint(v[j]);
+    const double* b = this->Mesh->GetPoint(v[(j + 1) % 3]);
+    if (G::SegmentDistance2(q, a, b) <= eps2)
+    {
+      const int line = this->LineOf(v[j], v[(j + 1) % 3]);
+      return line >= 0 ? line : plane;
+    }
+  }
+  return plane;
+}
+
+void vtkMedialGovernors::Classify(
+  const double centre[3], double radius, const double* surfacePoint, BallGovernors& out) const
+{
+  this->Classify(centre, radius, surfacePoint, this->ContactTolerance, this->Theta, out);
+}
+
+void vtkMedialGovernors::Classify(const double c[3], double radius, const double* surfacePoint,
+  double tolerance, double thetaDegrees, BallGovernors& out) const
+{
+  out.Features.clear();
+  out.Compound.clear();
+  out.ContactFeatures.clear();
+  out.NearestDistance = HUGE_VAL;
+  thread_local ClassifyScratch s;
+  const double reach = std::max(0.0, radius) + tolerance;
+  this->Query->TrianglesWithin(c, reach, s.Hits);
+  const int k = static_cast<int>(s.Hits.size());
+  if (k == 0)
+  {
+    return;
+  }
+  const auto& hits = s.Hits;
+  const double reach2 = reach * reach;
+
+  // 1. Connected regions: triangles sharing a vertex or an edge inside the band.
+  s.Sets.Reset(k + 1); // + the sample point P
+  s.Keys.clear();
+  for (int i = 0; i < k; ++i)
+  {
+    out.NearestDistance = std::min(out.NearestDistance, hits[i].Distance);
+    const vtkIdType* v = this->Mesh->GetTriangle(hits[i].Triangle);
+    for (int j = 0; j < 3; ++j)
+    {
+      const vtkIdType a = v[j], b = v[(j + 1) % 3];
+      if (G::Distance2(c, this->Mesh->GetPoint(a)) <= reach2)
+      {
+        s.Keys.emplace_back(a, -1, i);
+      }
+      if (G::SegmentDistance2(c, this->Mesh->GetPoint(a), this->Mesh->GetPoint(b)) <= reach2)
+      {
+        s.Keys.emplace_back(std::min(a, b), std::max(a, b), i);
+      }
+    }
+  }
+  std::sort(s.Keys.begin(), s.Keys.end());
+  for (size_t i = 1; i < s.Keys.size(); ++i)
+  {
+    if (std::get<0>(s.Keys[i]) == std::get<0>(s.Keys[i - 1]) && std::get<1>(s.Keys[i]) == std::get<1>(s.Keys[i - 1]))
+    {
+      s.Sets.Union(std::get<2>(s.Keys[i]), std::get<2>(s.Keys[i - 1]));
+    }
+  }
+
+  // 2. The feature of each region: that of its nearest contact, a plane before a
+  //    line before a point among contacts at the same distance.
+  s.Feature.resize(static_cast<size_t>(k));
+  for (int i = 0; i < k; ++i)
+  {
+    s.Feature[i] = this->FeatureOfContact(c, hits[i].Point, hits[i].Distance, hits[i].Triangle);
+  }
+  const double tie = 1e-12 * this->Diagonal;
+  auto better = [&](int i, int j) { // contact i describes a region better than j
+    const double di = hits[i].Distance, dj = hits[j].Distance;
+    if (std::fabs(di - dj) > tie + 1e-12 * std::min(di, dj))
+    {
+      return di < dj;
+    }
+    const int ki = this->Features[s.Feature[i]].Kind, kj = this->Features[s.Feature[j]].Kind;
+    return ki != kj ? ki < kj : s.Feature[i] < s.Feature[j];
+  };
+  std::vector<int>& best = s.Component; // per root: the best contact (reused storage)
+  best.assign(static_cast<size_t>(k), -1);
+  for (int i = 0; i < k; ++i)
+  {
+    int& b = best[s.Sets.Find(i)];
+    b = b < 0 || better(i, b) ? i : b;
+  }
+  for (int i = 0; i < k; ++i)
+  {
+    if (best[i] >= 0)
+    {
+      out.ContactFeatures.push_back(s.Feature[best[i]]);
+    }
+  }
+  std::sort(out.ContactFeatures.begin(), out.ContactFeatures.end());
+  out.ContactFeatures.erase(std::unique(out.ContactFeatures.begin(), out.ContactFeatures.end()), out.ContactFeatures.end());
+
+  // 3. Governors: regions with the same feature, and with theta > 0 contacts closer than theta.
+  std::vector<std::pair<int, int>> regionFeature; // (feature, root)
+  for (int i = 0; i < k; ++i)
+  {
+    if (best[i] >= 0)
+    {
+      regionFeature.emplace_back(s.Feature[best[i]], i);
+    }
+  }
+  std::sort(regionFeature.begin(), regionFeature.end());
+  for (size_t i = 1; i < regionFeature.size(); ++i)
+  {
+    if (regionFeature[i].first == regionFeature[i - 1].first)
+    {
+      s.Sets.Union(regionFeature[i].second, regionFeature[i - 1].second);
+    }
+  }
+  if (thetaDegrees > 0.0)
+  {
+    MergeCloserThan(c, surfacePoint, thetaDegrees, hits, s);
+  }
+
+  // 4. Each governor's feature (its best contact's) and whether every contact lies on it.
+  best.assign(static_cast<size_t>(k + 1), -1);
+  for (int i = 0; i < k; ++i)
+  {
+    int& b = best[s.Sets.Find(i)];
+    b = b < 0 || better(i, b) ? i : b;
+  }
+  std::vector<std::pair<int, unsigned char>> governors;
+  for (int root = 0; root <= k; ++root)
+  {
+    if (best[root] < 0)
+    {
+      continue;
+    }
+    const int f = s.Feature[best[root]];
+    bool simple = true;
+    for (int i = 0; i < k && simple; ++i)
+    {
+      simple = s.Sets.Find(i) != root || this->Explains(f, hits[i].Point, hits[i].Triangle, tolerance);
+    }
+    governors.emplace_back(f, simple ? 0 : 1);
+  }
+  std::sort(governors.begin(), governors.end());
+  for (const auto& g : governors)
+  {
+    out.Features.push_back(g.first);
+    out.Compound.push_back(g.second);
+  }
+}
+
+bool vtkMedialGovernors::Explains(int f, const double q[3], vtkIdType t, double tolerance) const
+{
+  const Feature& feature = this->Features[f];
+  if (feature.Kind == PLANE && this->PlaneOf(t) == f)
+  {
+    return true;
+  }
+  if (feature.Kind == LINE)
+  {
+    const auto& planes = this->LinePlanes[f - this->NumberOfPlanes];
+    if (std::binary_search(planes.begin(), planes.end(), this->PlaneOf(t)))
+    {
+      return true;
+    }
+  }
+  if (feature.Kind == POINT)
+  {
+    const vtkIdType v = f - this->NumberOfPlanes - this->NumberOfLines;
+    const vtkIdType* tv = this->Mesh->GetTriangle(t);
+    if (tv[0] == v || tv[1] == v || tv[2] == v)
+    {
+      return true;
+    }
+  }
+  return this->DistanceToFeature(f, q) <= tolerance;
+}
+
+int vtkMedialGovernors::PointType(int governorCount, double radius) const
+{
+  if (governorCount <= 1 || radius <= this->ContactTolerance)
+  {
+    return RIM;
+  }
+  return governorCount == 2 ? SHEET : (governorCount == 3 ? SEAM : JUNCTION);
+}

@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Polyhedra built in double precision for the 3D exactness tests: convex hulls of
+// points in general position and prisms over planar polygons.
+#ifndef MedialPolyhedronTestUtilities_h
+#define MedialPolyhedronTestUtilities_h
+
+#include "vtkCellArray.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <array>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace medialtest
+{
+// Incremental convex hull (points in general position), outward-wound triangles.
+inline vtkSmartPointer<vtkPolyData> ConvexHull(const std::vector<std::array<double, 3>>& x)
+{
+  using Face = std::array<int, 3>;
+  auto orient = [&x](int a, int b, int c, int d) {
+    double u[3], v[3], w[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      u[k] = x[b][k] - x[a][k];
+      v[k] = x[c][k] - x[a][k];
+      w[k] = x[d][k] - x[a][k];
+    }
+    return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+      u[2] * (v[0] * w[1] - v[1] * w[0]);
+  };
+  // Outward faces see the fourth vertex on their negative side.
+  std::vector<Face> faces;
+  for (Face f : { Face{ 0, 1, 2 }, Face{ 0, 1, 3 }, Face{ 0, 2, 3 }, Face{ 1, 2, 3 } })
+  {
+    const int other = 6 - f[0] - f[1] - f[2];
+    if (orient(f[0], f[1], f[2], other) > 0)
+    {
+      std::swap(f[1], f[2]);
+    }
+    faces.push_back(f);
+  }
+  for (int p = 4; p < static_cast<int>(x.size()); ++p)
+  {
+    std::vector<char> visible(faces.size());
+    bool any = false;
+    for (size_t f = 0; f < faces.size(); ++f)
+    {
+      visible[f] = orient(faces[f][0], faces[f][1], faces[f][2], p) > 1e-12;
+      any = any || visible[f];
+    }
+    if (!any)
+    {
+      continue;
+    }
+    // Horizon: directed edges of visible faces whose reverse is not on a visible face.
+    std::map<std::pair<int, int>, int> edges;
+    for (size_t f = 0; f < faces.size(); ++f)
+    {
+      if (visible[f])
+      {
+        for (int e = 0; e < 3; ++e)
+        {
+          edges[{ faces[f][e], faces[f][(e + 1) % 3] }] = 1;
+        }
+      }
+    }
+    std::vector<Face> next;
+    for (size_t f = 0; f < faces.size(); ++f)
+    {
+      if (!visible[f])
+      {
+        next.push_back(faces[f]);
+      }
+    }
+    for (const auto& e : edges)
+    {
+      if (!edges.count({ e.first.second, e.first.first }))
+      {
+        next.push_back({ e.first.first, e.first.second, p });
+      }
+    }
+    faces.swap(next);
+  }
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (const auto& p : x)
+  {
+    points->InsertNextPoint(p.data());
+  }
+  vtkNew<vtkCellArray> cells;
+  for (const Face& f : faces)
+  {
+    const vtkIdType ids[3] = { f[0], f[1], f[2] };
+    cells->InsertNextCell(3, ids);
+  }
+  pd->SetPoints(points);
+  pd->SetPolys(cells);
+  return pd;
+}
+
+/// The prism of height h over a simple polygon in the z = 0 plane (counter-clockwise
+/// seen from +z): two polygon caps and one quad per side, double-precision points.
+inline vtkSmartPointer<vtkPolyData> Prism(const std::vector<std::array<double, 2>>& polygon, double h)
+{
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  const vtkIdType n = static_cast<vtkIdType>(polygon.size());
+  for (double z : { 0.0, h })
+  {
+    for (const auto& p : polygon)
+    {
+      points->InsertNextPoint(p[0], p[1], z);
+    }
+  }
+  vtkNew<vtkCellArray> cells;
+  std::vector<vtkIdType> bottom, top;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    bottom.push_back(n - 1 - i); // clockwise from +z: outward is -z
+    top.push_back(n + i);
+    const vtkIdType j = (i + 1) % n;
+    const vtkIdType side[4] = { i, j, n + j, n + i };
+    cells->InsertNextCell(4, side);
+  }
+  cells->InsertNextCell(n, bottom.data());
+  cells->InsertNextCell(n, top.data());
+  pd->SetPoints(points);
+  pd->SetPolys(cells);
+  return pd;
+}
+}
+
+#endif
