@@ -379,6 +379,16 @@ int vtkMedialGovernors::LineOf(vtkIdType a, vtkIdType b) const
   return this->NumberOfPlanes + this->SharpEdgeLine[it - this->SharpEdges.begin()];
 }
 
+bool vtkMedialGovernors::IsCorner(vtkIdType v) const
+{
+  int lines = 0;
+  for (vtkIdType i = this->VertexOffsets[v]; i < this->VertexOffsets[v + 1]; ++i)
+  {
+    lines += this->Features[this->VertexIncident[i]].Kind == LINE ? 1 : 0;
+  }
+  return lines >= 2;
+}
+
 bool vtkMedialGovernors::AreIncident(int a, int b) const
 {
   if (this->Features[a].Kind > this->Features[b].Kind)
@@ -630,6 +640,49 @@ bool vtkMedialGovernors::Explains(int f, const double q[3], vtkIdType t, double 
     }
   }
   return this->DistanceToFeature(f, q) <= tolerance;
+}
+
+bool vtkMedialGovernors::TouchedFeatures(
+  const double c[3], double radius, double tolerance, std::vector<int>& out) const
+{
+  out.clear();
+  thread_local std::vector<vtkMedialSurfaceQuery::ClosestHit> hits;
+  this->Query->TrianglesWithin(c, radius + tolerance, hits);
+  const double eps2 = 1e-24 * this->Diagonal * this->Diagonal;
+  auto consider = [&](int f) {
+    if (std::fabs(this->DistanceToFeature(f, c) - radius) <= tolerance)
+    {
+      out.push_back(f);
+    }
+  };
+  for (const auto& hit : hits)
+  {
+    if (hit.Distance < radius - tolerance)
+    {
+      out.clear();
+      return false;
+    }
+    consider(this->PlaneOf(hit.Triangle));
+    const vtkIdType* v = this->Mesh->GetTriangle(hit.Triangle);
+    for (int j = 0; j < 3; ++j)
+    {
+      if (G::SegmentDistance2(hit.Point, this->Mesh->GetPoint(v[j]), this->Mesh->GetPoint(v[(j + 1) % 3])) <= eps2)
+      {
+        const int line = this->LineOf(v[j], v[(j + 1) % 3]);
+        if (line >= 0)
+        {
+          consider(line);
+        }
+      }
+      if (G::Distance2(hit.Point, this->Mesh->GetPoint(v[j])) <= eps2 && this->IsCorner(v[j]))
+      {
+        consider(this->NumberOfPlanes + this->NumberOfLines + static_cast<int>(v[j]));
+      }
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return true;
 }
 
 int vtkMedialGovernors::PointType(int governorCount, double radius) const

@@ -114,6 +114,15 @@ public:
   void Classify(const double centre[3], double radius, const double* surfacePoint,
     double absoluteTolerance, double thetaDegrees, BallGovernors& out) const;
 
+  /**
+   * Every feature whose primitive is tangent to the sphere (centre, radius) within
+   * `tolerance` where the ball touches it: a face's plane when the contact is on the
+   * face, an edge's line and a vertex where the contact is on them (so a contact on
+   * a reflex edge gives the edge and no face). Sorted ids. Returns false when some
+   * surface point is closer than radius - tolerance (the ball is not empty).
+   */
+  bool TouchedFeatures(const double centre[3], double radius, double tolerance, std::vector<int>& out) const;
+
   /// MedialPointType of a ball with that many governors (see the class comment).
   int PointType(int governorCount, double radius) const;
 
@@ -142,6 +151,8 @@ private:
   // or within `tolerance` of its primitive.
   bool Explains(int f, const double q[3], vtkIdType triangle, double tolerance) const;
   int PlaneOf(vtkIdType triangle) const { return this->TrianglePlane[triangle]; }
+  // A vertex where two or more lines meet (a ball can touch it as a point).
+  bool IsCorner(vtkIdType vertex) const;
   int LineOf(vtkIdType a, vtkIdType b) const;
 
   const vtkMedialTriangleMesh* Mesh = nullptr;

@@ -464,16 +464,6 @@ constexpr size_t MaximumUnion = 6;
 constexpr size_t MaximumSeeds = 4;
 }
 
-struct vtkMedialSeamSolver::Candidate
-{
-  std::array<int, 4> Features;
-  int N = 4;
-  std::vector<BallVector> Seeds; // triples: Seeds[0] is the reference
-  double Reach = HUGE_VAL;       // triples: largest distance of the solution from the reference
-  std::vector<vtkIdType> Pairs;  // pairs that proposed it
-  std::vector<ExactPoint> Found;
-};
-
 vtkMedialSeamSolver::vtkMedialSeamSolver(const vtkMedialGovernors& governors)
   : Governors(governors)
 {
@@ -624,8 +614,7 @@ void vtkMedialSeamSolver::TangentBalls(const int* features, int n, const double*
   }
 }
 
-bool vtkMedialSeamSolver::SeamConstraint(
-  const int features[3], const BallVector& reference, double constraint[5]) const
+bool vtkMedialSeamSolver::SeamTangent(const int features[3], const BallVector& reference, double t[4]) const
 {
   double X[4];
   for (int k = 0; k < 3; ++k)
@@ -662,10 +651,20 @@ bool vtkMedialSeamSolver::SeamConstraint(
   {
     return false;
   }
-  const double* t = space.N[0];
-  // t.(X' - Xref') = 0 in scaled units is t.(x, r) = t.(xref, rref) in world units.
-  std::copy(t, t + 4, constraint);
-  constraint[4] = t[0] * reference[0] + t[1] * reference[1] + t[2] * reference[2] + t[3] * reference[3];
+  // A direction in scaled units is the same direction in world units.
+  std::copy(space.N[0], space.N[0] + 4, t);
+  return true;
+}
+
+bool vtkMedialSeamSolver::SeamConstraint(
+  const int features[3], const BallVector& reference, double constraint[5]) const
+{
+  if (!this->SeamTangent(features, reference, constraint))
+  {
+    return false;
+  }
+  constraint[4] = constraint[0] * reference[0] + constraint[1] * reference[1] + constraint[2] * reference[2] +
+    constraint[3] * reference[3];
   return true;
 }
 
@@ -710,6 +709,11 @@ void vtkMedialSeamSolver::SolveCandidates(std::vector<Candidate>& candidates, in
     for (vtkIdType i = begin; i < end; ++i)
     {
       Candidate& c = candidates[i];
+      if (c.Solved)
+      {
+        continue;
+      }
+      c.Solved = true;
       std::vector<BallVector> solutions;
       double constraint[5];
       if (c.N == 3)
@@ -726,7 +730,22 @@ void vtkMedialSeamSolver::SolveCandidates(std::vector<Candidate>& candidates, in
         const double moved = std::sqrt(G::Distance2(s.data(), c.Seeds[0].data()));
         if (moved <= c.Reach && this->Verify(s, c.Features.data(), c.N, p))
         {
-          c.Found.push_back(p);
+          if (c.N == 4 || p.GovernorCount < 4)
+          {
+            c.Found.push_back(p);
+            continue;
+          }
+          // A seam point touching a fourth governor lies within the tolerance of a
+          // junction: the quadruple gives that exactly.
+          for (int d : p.Features)
+          {
+            if (d != c.Features[0] && d != c.Features[1] && d != c.Features[2])
+            {
+              std::array<int, 4> q{ { c.Features[0], c.Features[1], c.Features[2], d } };
+              std::sort(q.begin(), q.end());
+              c.Nearby.emplace_back(q, s);
+            }
+          }
         }
       }
     }
@@ -873,17 +892,35 @@ bool vtkMedialSeamSolver::Solve(const std::vector<Ball>& balls, const std::vecto
     }
   }
 
-  // 4. Junction vertices.
+  for (const Candidate& c : triples)
+  {
+    for (const Tagged& q : c.Nearby)
+    {
+      addQuadruple(q.first, q.second, -1);
+    }
+  }
+
+  // 4. Junction vertices, then every seam traced from its seam points and junctions
+  //    to its ends, where more junctions are solved.
+  std::vector<Candidate> first;
+  for (auto& entry : quadruples)
+  {
+    first.push_back(entry.second);
+  }
+  this->SolveCandidates(first, threads, aborted, stopped);
+  for (Candidate& c : first)
+  {
+    quadruples[c.Features] = std::move(c);
+  }
+  if (stopped || !this->TraceAll(triples, quadruples, threads, aborted))
+  {
+    return false;
+  }
   std::vector<Candidate> quads;
   quads.reserve(quadruples.size());
   for (auto& entry : quadruples)
   {
     quads.push_back(std::move(entry.second));
-  }
-  this->SolveCandidates(quads, threads, aborted, stopped);
-  if (stopped)
-  {
-    return false;
   }
   result.SeamCandidates = static_cast<vtkIdType>(triples.size());
   result.JunctionCandidates = static_cast<vtkIdType>(quads.size());

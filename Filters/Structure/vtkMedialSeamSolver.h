@@ -64,6 +64,7 @@
 
 #include <array>
 #include <functional>
+#include <map>
 #include <vector>
 
 class vtkMedialSeamSolver
@@ -128,13 +129,56 @@ public:
   /// The seam constraint through `reference` for 3 features (false when degenerate).
   bool SeamConstraint(const int features[3], const BallVector& reference, double constraint[5]) const;
 
+  /// Unit tangent (in (x, r) space) of the seam of 3 features at X (false when degenerate).
+  bool SeamTangent(const int features[3], const BallVector& X, double tangent[4]) const;
+
   /// Verifies a solution for `features` (see the class comment) and fills `point`.
   bool Verify(const BallVector& ball, const int* features, int n, ExactPoint& point) const;
 
 private:
-  struct Candidate;
+  using Tagged = std::pair<std::array<int, 4>, BallVector>; // features (-1 padded) and a ball
+  // Three features and a reference ball (a seam point), or four and seeds (a junction).
+  struct Candidate
+  {
+    std::array<int, 4> Features{ { -1, -1, -1, -1 } };
+    int N = 4;
+    std::vector<BallVector> Seeds; // triples: Seeds[0] is the reference
+    double Reach = 1e300;          // triples: largest distance of the solution from the reference
+    std::vector<vtkIdType> Pairs;  // pairs that proposed it
+    std::vector<ExactPoint> Found; // verified solutions
+    std::vector<Tagged> Nearby;    // triples: junction candidates where a solution touched a fourth governor
+    bool Solved = false;
+  };
+  // What tracing one seam found at its ends: junction candidates (4 features) and
+  // the seams it turns into at transitions (3 features), each with a ball there.
+  struct TraceEnds
+  {
+    std::vector<Tagged> Quadruples;
+    std::vector<Tagged> Triples;
+  };
+  enum SeamStates
+  {
+    ON_SEAM,
+    BLOCKED, // a fourth governor enters the ball
+    LEFT,    // a contact left its face or edge, or the radius reached zero
+  };
+
   void SolveCandidates(std::vector<Candidate>& candidates, int threads,
     const std::function<bool()>& aborted, bool& stopped) const;
+  // The ball on the seam of `features` nearest to `guess` in the hyperplane through it
+  // perpendicular to `tangent`.
+  bool OnSeam(const int features[3], const BallVector& guess, const double tangent[4], BallVector& out) const;
+  int SeamState(const int features[3], const BallVector& X, double tolerance, std::vector<int>& touched) const;
+  // Follows the seam of `features` both ways from `start` (a verified seam point) to
+  // its ends: marching with a predictor-corrector, then bisecting where it stops.
+  void TraceSeam(const int features[3], const BallVector& start, TraceEnds& ends) const;
+  // The ends found where the seam stops between `last` (on it) and `beyond`.
+  void Ends(const int features[3], const BallVector& last, const BallVector& beyond, const double tangent[4],
+    TraceEnds& ends) const;
+  // Traces every seam reachable from the seam points and junctions found so far,
+  // wave by wave, solving the junction candidates met on the way.
+  bool TraceAll(std::vector<Candidate>& triples, std::map<std::array<int, 4>, Candidate>& quadruples,
+    int threads, const std::function<bool()>& aborted) const;
 
   const vtkMedialGovernors& Governors;
   double Origin[3] = { 0, 0, 0 }; // the algebra works in (x - Origin) / Scale

@@ -10,6 +10,7 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <utility>
@@ -130,6 +131,52 @@ inline vtkSmartPointer<vtkPolyData> Prism(const std::vector<std::array<double, 2
   }
   cells->InsertNextCell(n, bottom.data());
   cells->InsertNextCell(n, top.data());
+  pd->SetPoints(points);
+  pd->SetPolys(cells);
+  return pd;
+}
+
+/// The box [0, A] x [0, B] x [0, C] without the corner box [a, A] x [b, B] x [c, C]:
+/// three reflex edges meeting at the reflex vertex (a, b, c). Polygon faces, some
+/// L-shaped, wound counter-clockwise seen from outside.
+inline vtkSmartPointer<vtkPolyData> NotchedBox(double A, double B, double C, double a, double b, double c)
+{
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> cells;
+  using P = std::array<double, 3>;
+  // Each face with its outward axis; the corners are reversed when their (Newell)
+  // normal points the other way.
+  auto face = [&](std::vector<P> corners, int axis, double sign) {
+    double normal = 0.0;
+    for (size_t i = 0; i < corners.size(); ++i)
+    {
+      const P& p = corners[i];
+      const P& q = corners[(i + 1) % corners.size()];
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      normal += (p[u] - q[u]) * (p[v] + q[v]);
+    }
+    if (normal * sign < 0.0)
+    {
+      std::reverse(corners.begin(), corners.end());
+    }
+    std::vector<vtkIdType> ids;
+    for (const P& p : corners)
+    {
+      ids.push_back(points->InsertNextPoint(p.data()));
+    }
+    cells->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+  };
+  face({ { 0, 0, 0 }, { 0, B, 0 }, { 0, B, C }, { 0, 0, C } }, 0, -1);
+  face({ { 0, 0, 0 }, { A, 0, 0 }, { A, 0, C }, { 0, 0, C } }, 1, -1);
+  face({ { 0, 0, 0 }, { A, 0, 0 }, { A, B, 0 }, { 0, B, 0 } }, 2, -1);
+  face({ { A, 0, 0 }, { A, B, 0 }, { A, B, c }, { A, b, c }, { A, b, C }, { A, 0, C } }, 0, 1);
+  face({ { 0, B, 0 }, { A, B, 0 }, { A, B, c }, { a, B, c }, { a, B, C }, { 0, B, C } }, 1, 1);
+  face({ { 0, 0, C }, { A, 0, C }, { A, b, C }, { a, b, C }, { a, B, C }, { 0, B, C } }, 2, 1);
+  face({ { a, b, c }, { a, B, c }, { a, B, C }, { a, b, C } }, 0, 1);
+  face({ { a, b, c }, { A, b, c }, { A, b, C }, { a, b, C } }, 1, 1);
+  face({ { a, b, c }, { A, b, c }, { A, B, c }, { a, B, c } }, 2, 1);
   pd->SetPoints(points);
   pd->SetPolys(cells);
   return pd;

@@ -104,7 +104,8 @@ public:
     int Governors;
   };
 
-  /// `shape`: outward-oriented closed polyhedron; `reflexEdges`: pairs of end points.
+  /// `shape`: outward-oriented closed polyhedron; `reflexEdges`: pairs of end points
+  /// (a reflex vertex is a pair of equal points).
   PolyhedronOracle(vtkPolyData* shape, const std::vector<std::array<Vec3, 2>>& reflexEdges)
     : Segments(reflexEdges)
   {
@@ -172,18 +173,16 @@ public:
     return best;
   }
 
-  /// Distinct surface features the ball (x, r) touches within eps: faces whose
-  /// closest point is not on a reflex edge, and reflex edges.
+  /// Distinct contacts of the ball (x, r): the faces' closest points at distance r
+  /// within eps, those closer than 1e-6 of the diagonal to each other counted once
+  /// (a reflex edge or vertex is the closest point of all the faces around it).
   int Governors(const Vec3& x, double r, double eps) const
   {
-    int count = 0;
-    for (const auto& s : this->Segments)
-    {
-      count += std::fabs(PointSegmentDistance(x.data(), s[0].data(), s[1].data()) - r) <= eps ? 1 : 0;
-    }
+    std::vector<Vec3> contacts;
     for (const Face& f : this->Faces)
     {
-      double best = HUGE_VAL, q[3], bq[3];
+      double best = HUGE_VAL, q[3];
+      Vec3 bq;
       for (int t : f.Triangles)
       {
         const auto& tri = this->Triangles[t];
@@ -191,21 +190,29 @@ public:
         if (d < best)
         {
           best = d;
-          std::copy(q, q + 3, bq);
+          std::copy(q, q + 3, bq.data());
         }
       }
-      bool onEdge = false;
-      for (const auto& s : this->Segments)
+      if (std::fabs(best - r) > eps)
       {
-        onEdge = onEdge || PointSegmentDistance(bq, s[0].data(), s[1].data()) <= eps;
+        continue;
       }
-      count += std::fabs(best - r) <= eps && !onEdge ? 1 : 0;
+      bool known = false;
+      for (const Vec3& c : contacts)
+      {
+        known = known || std::sqrt((c[0] - bq[0]) * (c[0] - bq[0]) + (c[1] - bq[1]) * (c[1] - bq[1]) +
+                           (c[2] - bq[2]) * (c[2] - bq[2])) <= 1e-6 * this->Diagonal;
+      }
+      if (!known)
+      {
+        contacts.push_back(bq);
+      }
     }
-    return count;
+    return static_cast<int>(contacts.size());
   }
 
   /// The junction vertices: empty balls tangent to 4 features, touching 4 or more,
-  /// from every 4-subset of faces and reflex edges, merged within `merge`.
+  /// from every 4-subset of faces and at most one reflex edge or vertex, merged within `merge`.
   std::vector<Ball> Junctions(double eps, double merge) const
   {
     const int nf = static_cast<int>(this->Faces.size());
@@ -266,7 +273,7 @@ private:
     std::vector<int> Triangles;
   };
 
-  // Balls tangent to features f[0..3] (faces < nf, then at most one segment's line).
+  // Balls tangent to features f[0..3] (faces < nf, then at most one reflex edge's line or vertex).
   std::vector<std::array<double, 4>> Solve(const int f[4], int nf) const
   {
     // Rows n.x - r = d of the faces.
@@ -343,7 +350,7 @@ private:
     const double ul = std::sqrt(Dot3(u, u));
     for (double& x : u)
     {
-      x /= ul;
+      x = ul > 0.0 ? x / ul : 0.0; // a reflex vertex: |x - p| = r
     }
     // w(t) = X0x - p + t Dx; |w|^2 - (w.u)^2 - (X0r + t Dr)^2 = 0.
     double w0[3], wd[3];
