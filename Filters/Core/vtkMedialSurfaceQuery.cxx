@@ -339,10 +339,11 @@ void vtkMedialSurfaceQuery::MaximalTangentBall(
 }
 
 void vtkMedialSurfaceQuery::TrianglesWithin(
-  const double x[3], double distance, std::vector<ClosestHit>& hits) const
+  const double x[3], double distance, std::vector<ClosestHit>& hits, const ContactFilter* filter) const
 {
   hits.clear();
-  this->Tree.VisitWithin(x, distance, [&](double d2, const double* q, vtkIdType t) {
+  this->Tree.VisitWithin(x, distance, filter ? filter->SamplePoint : nullptr, filter ? filter->CosMinAngle : 1.0,
+    [&](double d2, const double* q, vtkIdType t) {
     ClosestHit hit;
     std::copy(q, q + 3, hit.Point);
     hit.Distance = std::sqrt(d2);

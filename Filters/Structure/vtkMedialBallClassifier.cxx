@@ -72,7 +72,7 @@ int vtkMedialBallClassifier::RequestData(
   vtkPolyData* exact = vtkPolyData::GetData(outputVector, 1);
   this->NumberOfRimBalls = this->NumberOfSheetBalls = this->NumberOfSeamBalls = 0;
   this->NumberOfJunctionBalls = this->NumberOfUntouchedBalls = 0;
-  this->NumberOfSeamPoints = this->NumberOfJunctionVertices = 0;
+  this->NumberOfSeamPoints = this->NumberOfJunctionVertices = this->NumberOfTracedSeams = 0;
 
   if (!surfaceData)
   {
@@ -179,10 +179,17 @@ int vtkMedialBallClassifier::RequestData(
     }
     const auto pairs = vtkMedialSeamSolver::NearestPairs(centres.data(), n, this->NumberOfNeighbors);
     vtkMedialSeamSolver solver(surface.Governors);
+    solver.SetMaximumTracedSeams(this->MaximumTracedSeams);
     vtkMedialSeamSolver::Result result;
     if (!solver.Solve(records, pairs, threads, aborted, result))
     {
       return 1;
+    }
+    this->NumberOfTracedSeams = result.TracedSeams;
+    if (result.TracingStopped && this->MaximumTracedSeams > 0)
+    {
+      vtkWarningMacro(<< "Seam tracing stopped at MaximumTracedSeams (" << this->MaximumTracedSeams
+                      << "); junction vertices beyond may be missing.");
     }
     for (const auto& p : result.Points)
     {
@@ -211,6 +218,7 @@ void vtkMedialBallClassifier::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumSeparationAngle: " << this->MinimumSeparationAngle << "\n";
   os << indent << "ComputeExactPoints: " << this->ComputeExactPoints << "\n";
   os << indent << "NumberOfNeighbors: " << this->NumberOfNeighbors << "\n";
+  os << indent << "MaximumTracedSeams: " << this->MaximumTracedSeams << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "NumberOfRimBalls: " << this->NumberOfRimBalls << "\n";
   os << indent << "NumberOfSheetBalls: " << this->NumberOfSheetBalls << "\n";
@@ -219,4 +227,5 @@ void vtkMedialBallClassifier::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfUntouchedBalls: " << this->NumberOfUntouchedBalls << "\n";
   os << indent << "NumberOfSeamPoints: " << this->NumberOfSeamPoints << "\n";
   os << indent << "NumberOfJunctionVertices: " << this->NumberOfJunctionVertices << "\n";
+  os << indent << "NumberOfTracedSeams: " << this->NumberOfTracedSeams << "\n";
 }

@@ -23,7 +23,9 @@
  *     reflex edges and vertices quadratics (closed form when one quadratic is left,
  *     Newton's method from the neighbours otherwise), and every solution is checked
  *     to be empty and to touch its governors within 1e-9 of the diagonal. Junctions
- *     are also solved where two found seams share two governors. On a polyhedron at
+ *     are also solved where two found seams share two governors, and every seam found
+ *     is followed to its ends (MaximumTracedSeams), where the next junctions are
+ *     solved and the seams that meet there are followed in turn. On a polyhedron at
  *     theta = 0 the junction vertices are exact up to rounding; on a convex one they
  *     are the vertices of its 3D straight skeleton. Governors made of several
  *     features (theta-merged regions of a tessellated smooth surface) have no exact
@@ -97,6 +99,15 @@ public:
   ///@}
 
   ///@{
+  /// Seams followed to their ends at most (default 20000; 0: none). Tracing makes the
+  /// junctions complete on polyhedra; on finely tessellated surfaces at theta = 0 the
+  /// exact medial axis has as many seams as facet triples, and the budget bounds the
+  /// work (a warning says when it was reached).
+  vtkSetClampMacro(MaximumTracedSeams, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(MaximumTracedSeams, vtkIdType);
+  ///@}
+
+  ///@{
   /// OpenMP threads; 0 means all cores (default 0). The output does not depend on it.
   vtkSetClampMacro(NumberOfThreads, int, 0, 4096);
   vtkGetMacro(NumberOfThreads, int);
@@ -104,7 +115,8 @@ public:
 
   ///@{
   /// Figures from the last execution: balls of each type (untouched balls, which
-  /// touch no surface within the tolerance, are also rims), and the exact points.
+  /// touch no surface within the tolerance, are also rims), the exact points, and
+  /// the seams traced.
   vtkGetMacro(NumberOfRimBalls, vtkIdType);
   vtkGetMacro(NumberOfSheetBalls, vtkIdType);
   vtkGetMacro(NumberOfSeamBalls, vtkIdType);
@@ -112,6 +124,7 @@ public:
   vtkGetMacro(NumberOfUntouchedBalls, vtkIdType);
   vtkGetMacro(NumberOfSeamPoints, vtkIdType);
   vtkGetMacro(NumberOfJunctionVertices, vtkIdType);
+  vtkGetMacro(NumberOfTracedSeams, vtkIdType);
   ///@}
 
 protected:
@@ -126,6 +139,7 @@ protected:
   double MinimumSeparationAngle = 45.0;
   bool ComputeExactPoints = true;
   int NumberOfNeighbors = 12;
+  vtkIdType MaximumTracedSeams = 20000;
   int NumberOfThreads = 0;
 
   vtkIdType NumberOfRimBalls = 0;
@@ -135,6 +149,7 @@ protected:
   vtkIdType NumberOfUntouchedBalls = 0;
   vtkIdType NumberOfSeamPoints = 0;
   vtkIdType NumberOfJunctionVertices = 0;
+  vtkIdType NumberOfTracedSeams = 0;
 
 private:
   vtkMedialBallClassifier(const vtkMedialBallClassifier&) = delete;

@@ -76,36 +76,47 @@ bool Parallel(const double a[3], const double b[3])
   return G::Dot(x, x) <= CoplanarSine * CoplanarSine;
 }
 
+}
+
 // Per-thread scratch space of Classify.
-struct ClassifyScratch
+struct vtkMedialGovernors::ClassifyScratch
 {
   std::vector<vtkMedialSurfaceQuery::ClosestHit> Hits;
   std::vector<std::tuple<vtkIdType, vtkIdType, int>> Keys; // (a, b, hit): a vertex (b = -1) or an edge
-  std::vector<int> Feature;   // per hit
-  std::vector<int> Component; // per hit: dense connected-region id
-  std::vector<int> Governor;  // per hit: dense governor id
+  std::vector<int> Feature;        // per hit
+  std::vector<unsigned char> Cap;  // per hit: in the cap around the sample point
+  std::vector<int> Best;           // per region or governor root: its best contact
+  std::vector<int> Used;
   std::vector<std::array<double, 3>> Direction;
   std::vector<std::pair<std::array<long long, 3>, int>> Cells;
   UnionFind Sets;
+  double CapAxis[3] = { 0, 0, 0 }; // unit direction from the centre to the cap's anchor
+  double CapLimit = 0.0;           // outside the cap where (q - c).CapAxis <= CapLimit
+  double Nearest = 0.0;            // distance of the nearest surface point
 };
 
-// With theta > 0: joins contacts (and the sample point P, index hits.size()) whose
-// directions from c are less than theta apart. Single linkage; a grid on the unit
-// directions with cells one chord wide keeps it linear in the number of contacts.
-void MergeCloserThan(const double c[3], const double* surfacePoint, double thetaDegrees,
+namespace
+{
+using ClassifyScratch = vtkMedialGovernors::ClassifyScratch;
+
+// With theta > 0: joins the contacts outside the cap whose directions from c are
+// less than theta apart. Single linkage; a grid on the unit directions with cells
+// one chord wide keeps it linear in the number of contacts.
+void MergeCloserThan(const double c[3], double thetaDegrees,
   const std::vector<vtkMedialSurfaceQuery::ClosestHit>& hits, ClassifyScratch& s)
 {
   const double theta = thetaDegrees * (3.14159265358979323846 / 180.0);
   const double cosTheta = std::cos(theta);
   const int k = static_cast<int>(hits.size());
-  s.Direction.resize(static_cast<size_t>(k + 1));
-  std::vector<int>& used = s.Governor; // contacts with a direction (reused storage)
+  s.Direction.resize(static_cast<size_t>(k));
+  std::vector<int>& used = s.Used;
   used.clear();
-  auto direction = [&](const double* x, int i) {
+  for (int i = 0; i < k; ++i)
+  {
     double d[3];
-    G::Sub(x, c, d);
+    G::Sub(hits[i].Point, c, d);
     const double len = std::sqrt(G::Dot(d, d));
-    if (len > 0.0)
+    if (len > 0.0 && !s.Cap[i])
     {
       for (int j = 0; j < 3; ++j)
       {
@@ -113,14 +124,6 @@ void MergeCloserThan(const double c[3], const double* surfacePoint, double theta
       }
       used.push_back(i);
     }
-  };
-  for (int i = 0; i < k; ++i)
-  {
-    direction(hits[i].Point, i);
-  }
-  if (surfacePoint)
-  {
-    direction(surfacePoint, k);
   }
   auto join = [&](int i, int j) {
     if (G::Dot(s.Direction[i].data(), s.Direction[j].data()) > cosTheta)
@@ -177,6 +180,54 @@ void MergeCloserThan(const double c[3], const double* surfacePoint, double theta
       }
     }
   }
+}
+
+// The cap (theta > 0): contacts less than theta from the anchor, seen from c, and
+// contacts inside the ball. The anchor is the sample point P, or without it the
+// deepest contact when the ball overlaps the surface. False when there is none.
+bool MarkCap(const double c[3], double radius, const double* surfacePoint, double thetaDegrees,
+  double tolerance, const std::vector<vtkMedialSurfaceQuery::ClosestHit>& hits, ClassifyScratch& s)
+{
+  const int k = static_cast<int>(hits.size());
+  s.Cap.assign(static_cast<size_t>(k), 0);
+  const double* anchor = surfacePoint;
+  if (!anchor)
+  {
+    int deepest = 0;
+    for (int i = 1; i < k; ++i)
+    {
+      deepest = hits[i].Distance < hits[deepest].Distance ? i : deepest;
+    }
+    anchor = hits[deepest].Distance < radius - tolerance ? hits[deepest].Point : nullptr;
+  }
+  double* u = s.CapAxis;
+  if (!(thetaDegrees > 0.0) || !anchor)
+  {
+    return false;
+  }
+  G::Sub(anchor, c, u);
+  const double ul = std::sqrt(G::Dot(u, u));
+  if (!(ul > 0.0))
+  {
+    return false;
+  }
+  // The sampler's rule (vtkMedialSurfaceQuery::ContactFilter), a plane cut:
+  // q is outside the cap where (q - c).u <= r cos(theta), u the unit direction to
+  // the anchor; the contact that stopped the ball is there, on the cone's rim, so
+  // the test leans that way by the tolerance.
+  const double cosTheta = std::cos(thetaDegrees * (3.14159265358979323846 / 180.0));
+  for (int j = 0; j < 3; ++j)
+  {
+    u[j] /= ul;
+  }
+  s.CapLimit = radius * cosTheta + tolerance;
+  for (int i = 0; i < k; ++i)
+  {
+    double d[3];
+    G::Sub(hits[i].Point, c, d);
+    s.Cap[i] = hits[i].Distance < radius - tolerance || G::Dot(u, d) > s.CapLimit;
+  }
+  return true;
 }
 }
 
@@ -489,23 +540,24 @@ void vtkMedialGovernors::Classify(const double c[3], double radius, const double
   out.Compound.clear();
   out.ContactFeatures.clear();
   out.NearestDistance = HUGE_VAL;
-  thread_local ClassifyScratch s;
-  const double reach = std::max(0.0, radius) + tolerance;
-  this->Query->TrianglesWithin(c, reach, s.Hits);
-  const int k = static_cast<int>(s.Hits.size());
-  if (k == 0)
+  thread_local vtkMedialGovernors::ClassifyScratch s;
+  const int capFeature = this->GatherContacts(c, radius, surfacePoint, tolerance, thetaDegrees, s);
+  if (s.Hits.empty() && capFeature < 0)
   {
     return;
   }
+  out.NearestDistance = s.Nearest;
+  const double reach = std::max(0.0, radius) + tolerance;
   const auto& hits = s.Hits;
-  const double reach2 = reach * reach;
+  const int k = static_cast<int>(hits.size());
 
-  // 1. Connected regions: triangles sharing a vertex or an edge inside the band.
-  s.Sets.Reset(k + 1); // + the sample point P
+  // 1. Connected regions: triangles sharing a vertex or an edge inside the band,
+  //    on the same side of the cap's border.
+  s.Sets.Reset(k);
   s.Keys.clear();
+  const double reach2 = reach * reach;
   for (int i = 0; i < k; ++i)
   {
-    out.NearestDistance = std::min(out.NearestDistance, hits[i].Distance);
     const vtkIdType* v = this->Mesh->GetTriangle(hits[i].Triangle);
     for (int j = 0; j < 3; ++j)
     {
@@ -523,55 +575,38 @@ void vtkMedialGovernors::Classify(const double c[3], double radius, const double
   std::sort(s.Keys.begin(), s.Keys.end());
   for (size_t i = 1; i < s.Keys.size(); ++i)
   {
-    if (std::get<0>(s.Keys[i]) == std::get<0>(s.Keys[i - 1]) && std::get<1>(s.Keys[i]) == std::get<1>(s.Keys[i - 1]))
+    const int x = std::get<2>(s.Keys[i]), y = std::get<2>(s.Keys[i - 1]);
+    if (std::get<0>(s.Keys[i]) == std::get<0>(s.Keys[i - 1]) &&
+      std::get<1>(s.Keys[i]) == std::get<1>(s.Keys[i - 1]) && s.Cap[x] == s.Cap[y])
     {
-      s.Sets.Union(std::get<2>(s.Keys[i]), std::get<2>(s.Keys[i - 1]));
+      s.Sets.Union(x, y);
     }
   }
 
-  // 2. The feature of each region: that of its nearest contact, a plane before a
-  //    line before a point among contacts at the same distance.
+  // 2. The feature of each region: that of its best contact.
   s.Feature.resize(static_cast<size_t>(k));
   for (int i = 0; i < k; ++i)
   {
     s.Feature[i] = this->FeatureOfContact(c, hits[i].Point, hits[i].Distance, hits[i].Triangle);
   }
-  const double tie = 1e-12 * this->Diagonal;
-  auto better = [&](int i, int j) { // contact i describes a region better than j
-    const double di = hits[i].Distance, dj = hits[j].Distance;
-    if (std::fabs(di - dj) > tie + 1e-12 * std::min(di, dj))
-    {
-      return di < dj;
-    }
-    const int ki = this->Features[s.Feature[i]].Kind, kj = this->Features[s.Feature[j]].Kind;
-    return ki != kj ? ki < kj : s.Feature[i] < s.Feature[j];
-  };
-  std::vector<int>& best = s.Component; // per root: the best contact (reused storage)
-  best.assign(static_cast<size_t>(k), -1);
+  this->BestContacts(s);
+  std::vector<std::pair<int, int>> regionFeature; // (feature, root) of the regions outside the cap
   for (int i = 0; i < k; ++i)
   {
-    int& b = best[s.Sets.Find(i)];
-    b = b < 0 || better(i, b) ? i : b;
-  }
-  for (int i = 0; i < k; ++i)
-  {
-    if (best[i] >= 0)
+    if (s.Best[i] >= 0)
     {
-      out.ContactFeatures.push_back(s.Feature[best[i]]);
+      out.ContactFeatures.push_back(s.Feature[s.Best[i]]);
+      if (!s.Cap[i])
+      {
+        regionFeature.emplace_back(s.Feature[s.Best[i]], i);
+      }
     }
   }
   std::sort(out.ContactFeatures.begin(), out.ContactFeatures.end());
   out.ContactFeatures.erase(std::unique(out.ContactFeatures.begin(), out.ContactFeatures.end()), out.ContactFeatures.end());
 
-  // 3. Governors: regions with the same feature, and with theta > 0 contacts closer than theta.
-  std::vector<std::pair<int, int>> regionFeature; // (feature, root)
-  for (int i = 0; i < k; ++i)
-  {
-    if (best[i] >= 0)
-    {
-      regionFeature.emplace_back(s.Feature[best[i]], i);
-    }
-  }
+  // 3. Governors: the cap is one; outside it, regions with the same feature and
+  //    contacts less than theta apart.
   std::sort(regionFeature.begin(), regionFeature.end());
   for (size_t i = 1; i < regionFeature.size(); ++i)
   {
@@ -580,26 +615,31 @@ void vtkMedialGovernors::Classify(const double c[3], double radius, const double
       s.Sets.Union(regionFeature[i].second, regionFeature[i - 1].second);
     }
   }
+  {
+    int first = -1;
+    for (int i = 0; i < k; ++i)
+    {
+      if (s.Cap[i])
+      {
+        first < 0 ? (void)(first = i) : s.Sets.Union(first, i);
+      }
+    }
+  }
   if (thetaDegrees > 0.0)
   {
-    MergeCloserThan(c, surfacePoint, thetaDegrees, hits, s);
+    MergeCloserThan(c, thetaDegrees, hits, s);
   }
 
   // 4. Each governor's feature (its best contact's) and whether every contact lies on it.
-  best.assign(static_cast<size_t>(k + 1), -1);
-  for (int i = 0; i < k; ++i)
-  {
-    int& b = best[s.Sets.Find(i)];
-    b = b < 0 || better(i, b) ? i : b;
-  }
+  this->BestContacts(s);
   std::vector<std::pair<int, unsigned char>> governors;
-  for (int root = 0; root <= k; ++root)
+  for (int root = 0; root < k; ++root)
   {
-    if (best[root] < 0)
+    if (s.Best[root] < 0)
     {
       continue;
     }
-    const int f = s.Feature[best[root]];
+    const int f = s.Feature[s.Best[root]];
     bool simple = true;
     for (int i = 0; i < k && simple; ++i)
     {
@@ -607,11 +647,110 @@ void vtkMedialGovernors::Classify(const double c[3], double radius, const double
     }
     governors.emplace_back(f, simple ? 0 : 1);
   }
+  if (capFeature >= 0)
+  {
+    governors.emplace_back(capFeature, 1); // the cap of a ball that overlaps the surface
+    out.ContactFeatures.push_back(capFeature);
+    std::sort(out.ContactFeatures.begin(), out.ContactFeatures.end());
+    out.ContactFeatures.erase(std::unique(out.ContactFeatures.begin(), out.ContactFeatures.end()), out.ContactFeatures.end());
+  }
   std::sort(governors.begin(), governors.end());
   for (const auto& g : governors)
   {
     out.Features.push_back(g.first);
     out.Compound.push_back(g.second);
+  }
+}
+
+int vtkMedialGovernors::GatherContacts(const double c[3], double radius, const double* surfacePoint,
+  double tolerance, double thetaDegrees, ClassifyScratch& s) const
+{
+  const double reach = std::max(0.0, radius) + tolerance;
+  vtkMedialSurfaceQuery::ClosestHit deepest;
+  if (thetaDegrees > 0.0 && radius > tolerance && !this->Query->ContainsBall(c, radius - tolerance) &&
+    this->Query->ClosestPoint(c, radius, deepest))
+  {
+    // The ball overlaps the surface inside its cap (the sampler ignores contacts
+    // there): the cap is one compound governor, and only the contacts beyond it,
+    // on the far side of the sampler's plane cut, are read.
+    const double* anchor = surfacePoint ? surfacePoint : deepest.Point;
+    double u[3];
+    G::Sub(anchor, c, u);
+    const double ul = std::sqrt(G::Dot(u, u));
+    if (ul > 0.0)
+    {
+      vtkMedialSurfaceQuery::ContactFilter filter;
+      G::AddScaled(c, radius / ul, u, filter.SamplePoint);
+      // The stopping contact lies on the cone's rim: lean towards keeping it.
+      filter.CosMinAngle = std::min(1.0, std::cos(thetaDegrees * (3.14159265358979323846 / 180.0)) + tolerance / radius);
+      this->Query->TrianglesWithin(c, reach, s.Hits, &filter);
+      s.Cap.assign(s.Hits.size(), 0);
+      s.Nearest = deepest.Distance;
+      return this->FeatureOfContact(c, deepest.Point, deepest.Distance, deepest.Triangle);
+    }
+  }
+  this->Query->TrianglesWithin(c, reach, s.Hits);
+  s.Nearest = HUGE_VAL;
+  for (const auto& hit : s.Hits)
+  {
+    s.Nearest = std::min(s.Nearest, hit.Distance);
+  }
+  if (MarkCap(c, radius, surfacePoint, thetaDegrees, tolerance, s.Hits, s))
+  {
+    this->AddContactsBeyondCap(c, radius, tolerance, s);
+  }
+  return -1;
+}
+
+void vtkMedialGovernors::AddContactsBeyondCap(const double c[3], double radius, double tolerance,
+  ClassifyScratch& s) const
+{
+  // A triangle whose closest point is in the cap may still touch the sphere beyond
+  // it: a ball stopped on the cone's rim touches there (the sampler's blocker).
+  const double reach = radius + tolerance;
+  const size_t k = s.Hits.size();
+  const double limit = G::Dot(s.CapAxis, c) + s.CapLimit; // outside: CapAxis.q <= limit
+  for (size_t i = 0; i < k; ++i)
+  {
+    if (!s.Cap[i])
+    {
+      continue;
+    }
+    const vtkIdType* v = this->Mesh->GetTriangle(s.Hits[i].Triangle);
+    vtkMedialSurfaceQuery::ClosestHit beyond;
+    const double d2 = G::ClosestPointOnClippedTriangle(c, this->Mesh->GetPoint(v[0]), this->Mesh->GetPoint(v[1]),
+      this->Mesh->GetPoint(v[2]), s.CapAxis, limit, beyond.Point);
+    if (d2 <= reach * reach)
+    {
+      beyond.Distance = std::sqrt(d2);
+      beyond.Triangle = s.Hits[i].Triangle;
+      s.Hits.push_back(beyond);
+      s.Cap.push_back(beyond.Distance < radius - tolerance ? 1 : 0);
+    }
+  }
+}
+
+void vtkMedialGovernors::BestContacts(ClassifyScratch& s) const
+{
+  // A nearer contact describes its set better; among contacts at the same distance
+  // a plane before a line before a point, then the smaller feature id.
+  const double tie = 1e-12 * this->Diagonal;
+  const auto& hits = s.Hits;
+  auto better = [&](int i, int j) {
+    const double di = hits[i].Distance, dj = hits[j].Distance;
+    if (std::fabs(di - dj) > tie + 1e-12 * std::min(di, dj))
+    {
+      return di < dj;
+    }
+    const int ki = this->Features[s.Feature[i]].Kind, kj = this->Features[s.Feature[j]].Kind;
+    return ki != kj ? ki < kj : s.Feature[i] < s.Feature[j];
+  };
+  const int k = static_cast<int>(hits.size());
+  s.Best.assign(static_cast<size_t>(k), -1);
+  for (int i = 0; i < k; ++i)
+  {
+    int& b = s.Best[s.Sets.Find(i)];
+    b = b < 0 || better(i, b) ? i : b;
   }
 }
 

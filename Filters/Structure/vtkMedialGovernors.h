@@ -139,11 +139,21 @@ public:
   const vtkMedialTriangleMesh& GetMesh() const { return *this->Mesh; }
   const vtkMedialSurfaceQuery& GetQuery() const { return *this->Query; }
   /// Absolute contact tolerance (Settings.Tolerance times the diagonal).
+  struct ClassifyScratch; // per-thread scratch space of Classify
   double GetContactTolerance() const { return this->ContactTolerance; }
   double GetMinimumSeparationAngle() const { return this->Theta; }
   double GetDiagonal() const { return this->Diagonal; }
 
 private:
+  // The contacts of a ball in s.Hits (s.Cap marks those in the cap around the
+  // sample point). When the ball overlaps the surface (theta > 0) only the
+  // contacts beyond the cap are read, and the cap's feature is returned (else -1).
+  int GatherContacts(const double c[3], double radius, const double* surfacePoint, double tolerance,
+    double thetaDegrees, ClassifyScratch& s) const;
+  // With theta > 0: contacts on the triangles of the cap that lie beyond it.
+  void AddContactsBeyondCap(const double c[3], double radius, double tolerance, ClassifyScratch& s) const;
+  // The best contact of each set of s.Sets (s.Best, indexed by root).
+  void BestContacts(ClassifyScratch& s) const;
   // Feature of the contact q (at `distance` from c) on `triangle`.
   int FeatureOfContact(const double c[3], const double q[3], double distance, vtkIdType triangle) const;
   // True when the contact q on `triangle` is part of feature f: on one of its

@@ -912,7 +912,7 @@ bool vtkMedialSeamSolver::Solve(const std::vector<Ball>& balls, const std::vecto
   {
     quadruples[c.Features] = std::move(c);
   }
-  if (stopped || !this->TraceAll(triples, quadruples, threads, aborted))
+  if (stopped || !this->TraceAll(triples, quadruples, threads, aborted, result))
   {
     return false;
   }

@@ -40,7 +40,16 @@
  * as junction candidates. A ball with 3 to 6 governors gives its own triples and
  * quadruples. Then every two accepted seam triples sharing two governors give the
  * quadruple of their union: a junction is the end of the seams that meet there, so
- * it is found when two of its seams are. Results are merged within
+ * it is found when two of its seams are. A triple's solution that touches a fourth
+ * governor gives that quadruple instead. Last, every seam found is traced to its
+ * ends (predictor-corrector along the seam's tangent, doubling the step while the
+ * ball stays empty and touches its three governors, then bisection): where a fourth
+ * governor enters, its quadruple is solved (a junction, whose other seams are traced
+ * in the next wave); where a contact leaves its face or edge for the edge or vertex
+ * on its boundary, the seam goes on as the triple with that feature (a transition);
+ * where the radius reaches zero it ends at the rim. On a polyhedron every junction
+ * is the end of a seam, so tracing from any seam of a connected seam graph reaches
+ * all its junctions; MaximumTracedSeams bounds the work. Results are merged within
  * MergeTolerance (1e-9 of the diagonal), a junction absorbing seam points there.
  * Output is deterministic for any thread count (tasks are solved into fixed slots
  * and merged in task order).
@@ -95,8 +104,9 @@ public:
     std::vector<vtkIdType> PairPoint; // per input pair: index in Points, or -1
     vtkIdType SeamCandidates = 0;     // triples solved
     vtkIdType JunctionCandidates = 0; // distinct quadruples solved
-    vtkIdType Solutions = 0;          // roots found (before verification)
-    vtkIdType Verified = 0;           // roots accepted (before merging)
+    vtkIdType Verified = 0;           // solutions accepted (before merging)
+    vtkIdType TracedSeams = 0;        // distinct seams followed to their ends
+    bool TracingStopped = false;      // MaximumTracedSeams was reached: junctions may be missing
   };
 
   explicit vtkMedialSeamSolver(const vtkMedialGovernors& governors);
@@ -106,6 +116,9 @@ public:
   void SetVerifyTolerance(double t) { this->VerifyTolerance = t; }
   void SetMergeTolerance(double t) { this->MergeTolerance = t; }
   ///@}
+
+  /// Seams followed to their ends at most (default 20000; 0: no tracing).
+  void SetMaximumTracedSeams(vtkIdType n) { this->MaximumTracedSeams = n; }
 
   /**
    * Seam points and junction vertices between the given neighbour pairs (indices
@@ -178,13 +191,14 @@ private:
   // Traces every seam reachable from the seam points and junctions found so far,
   // wave by wave, solving the junction candidates met on the way.
   bool TraceAll(std::vector<Candidate>& triples, std::map<std::array<int, 4>, Candidate>& quadruples,
-    int threads, const std::function<bool()>& aborted) const;
+    int threads, const std::function<bool()>& aborted, Result& result) const;
 
   const vtkMedialGovernors& Governors;
   double Origin[3] = { 0, 0, 0 }; // the algebra works in (x - Origin) / Scale
   double Scale = 1.0;
   double VerifyTolerance = 1e-9;
   double MergeTolerance = 1e-9;
+  vtkIdType MaximumTracedSeams = 20000;
 };
 
 #endif

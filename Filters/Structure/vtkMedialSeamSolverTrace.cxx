@@ -3,6 +3,7 @@
 #include "vtkMedialSeamSolver.h"
 
 #include "vtkMedialGeometry.h"
+#include "vtkMedialSurfaceQuery.h"
 
 #include <omp.h>
 
@@ -19,7 +20,6 @@ using BallVector = vtkMedialSeamSolver::BallVector;
 constexpr int MaximumSteps = 200;
 constexpr int MaximumBisections = 64;
 constexpr int MaximumWaves = 64;
-constexpr size_t MaximumTracedSeams = 20000;
 
 double Distance4(const BallVector& a, const BallVector& b)
 {
@@ -66,8 +66,12 @@ int vtkMedialSeamSolver::SeamState(
     touched.clear();
     return LEFT;
   }
-  if (!this->Governors.TouchedFeatures(X.data(), X[3], tolerance, touched))
+  // The contains-ball query stops at the first point inside: cheap for the balls
+  // beyond a seam's end, which may hold much of the surface.
+  if (!this->Governors.GetQuery().ContainsBall(X.data(), X[3] - tolerance) ||
+    !this->Governors.TouchedFeatures(X.data(), X[3], tolerance, touched))
   {
+    touched.clear();
     return BLOCKED;
   }
   for (int i = 0; i < 3; ++i)
@@ -135,7 +139,7 @@ void vtkMedialSeamSolver::Ends(const int features[3], const BallVector& last, co
   const double tolerance = this->VerifyTolerance * diagonal;
   std::vector<int> touched;
   BallVector lo = last, hi = beyond;
-  for (int i = 0; i < MaximumBisections && Distance4(lo, hi) > 1e-14 * diagonal; ++i)
+  for (int i = 0; i < MaximumBisections && Distance4(lo, hi) > 1e-10 * diagonal; ++i)
   {
     BallVector mid;
     for (int k = 0; k < 4; ++k)
@@ -188,7 +192,8 @@ void vtkMedialSeamSolver::Ends(const int features[3], const BallVector& last, co
 }
 
 bool vtkMedialSeamSolver::TraceAll(std::vector<Candidate>& triples,
-  std::map<std::array<int, 4>, Candidate>& quadruples, int threads, const std::function<bool()>& aborted) const
+  std::map<std::array<int, 4>, Candidate>& quadruples, int threads, const std::function<bool()>& aborted,
+  Result& result) const
 {
   auto incident = [&](const std::array<int, 4>& f, int n) {
     for (int i = 0; i < n; ++i)
@@ -205,11 +210,19 @@ bool vtkMedialSeamSolver::TraceAll(std::vector<Candidate>& triples,
   };
   std::set<std::array<int, 4>> traced;
   std::vector<Tagged> pending;
+  const size_t budget = static_cast<size_t>(std::max<vtkIdType>(0, this->MaximumTracedSeams));
   auto queue = [&](const std::array<int, 4>& f, const BallVector& at) {
-    if (traced.size() < MaximumTracedSeams && !incident(f, 3) && traced.insert(f).second)
+    if (incident(f, 3) || traced.count(f))
     {
-      pending.emplace_back(f, at);
+      return;
     }
+    if (traced.size() >= budget)
+    {
+      result.TracingStopped = true;
+      return;
+    }
+    traced.insert(f);
+    pending.emplace_back(f, at);
   };
   // The seams of a junction: every triple of the features it touches.
   auto queueJunction = [&](const ExactPoint& p) {
@@ -301,5 +314,7 @@ bool vtkMedialSeamSolver::TraceAll(std::vector<Candidate>& triples,
       }
     }
   }
+  result.TracedSeams = static_cast<vtkIdType>(traced.size());
+  result.TracingStopped = result.TracingStopped || !pending.empty();
   return true;
 }
