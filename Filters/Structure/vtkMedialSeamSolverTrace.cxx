@@ -15,11 +15,10 @@ namespace
 {
 using BallVector = vtkMedialSeamSolver::BallVector;
 
-// Bounds on the work of tracing: marching steps per direction, bisection steps,
-// waves of new seams, and seams traced in all.
+// Bounds on the work of tracing one seam: marching steps per direction and
+// bisection steps (the seams traced in all are bounded by MaximumTracedSeams).
 constexpr int MaximumSteps = 200;
 constexpr int MaximumBisections = 64;
-constexpr int MaximumWaves = 64;
 
 double Distance4(const BallVector& a, const BallVector& b)
 {
@@ -249,7 +248,7 @@ bool vtkMedialSeamSolver::TraceAll(std::vector<Candidate>& triples,
       queueJunction(p);
     }
   }
-  for (int wave = 0; wave < MaximumWaves && !pending.empty(); ++wave)
+  while (!pending.empty())
   {
     const std::vector<Tagged> current = std::move(pending);
     pending.clear();
@@ -315,6 +314,5 @@ bool vtkMedialSeamSolver::TraceAll(std::vector<Candidate>& triples,
     }
   }
   result.TracedSeams = static_cast<vtkIdType>(traced.size());
-  result.TracingStopped = result.TracingStopped || !pending.empty();
   return true;
 }
