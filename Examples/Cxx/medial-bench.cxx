@@ -66,7 +66,10 @@ struct Row
   double Extra; // speed-up or ratio, depending on the row
 };
 
-vtkSmartPointer<vtkPolyData> LoadBenchMesh(const std::string& sharedDir, std::string& label)
+// horse.ply from the shared meshes, Loop-subdivided `subdivisions` times; without the
+// shared data, the generated demo shape at `resolution`.
+vtkSmartPointer<vtkPolyData> LoadBenchMesh(
+  const std::string& sharedDir, int subdivisions, int resolution, std::string& label)
 {
   const std::string horse = sharedDir + "/horse.ply";
   struct stat st;
@@ -76,15 +79,21 @@ vtkSmartPointer<vtkPolyData> LoadBenchMesh(const std::string& sharedDir, std::st
     reader->SetFileName(horse.c_str());
     vtkNew<vtkTriangleFilter> triangles;
     triangles->SetInputConnection(reader->GetOutputPort());
+    triangles->Update();
+    label = "horse.ply";
+    if (subdivisions == 0)
+    {
+      return triangles->GetOutput();
+    }
     vtkNew<vtkLoopSubdivisionFilter> loop;
     loop->SetInputConnection(triangles->GetOutputPort());
-    loop->SetNumberOfSubdivisions(2);
+    loop->SetNumberOfSubdivisions(subdivisions);
     loop->Update();
-    label = "horse.ply, Loop x2";
+    label += ", Loop x" + std::to_string(subdivisions);
     return loop->GetOutput();
   }
   vtkNew<vtkMedialShapeSource> jack;
-  jack->SetResolution(230);
+  jack->SetResolution(resolution);
   jack->Update();
   label = "generated demo shape (shared data absent)";
   return jack->GetOutput();
@@ -158,24 +167,6 @@ StructureRow RunStructure(vtkPolyData* mesh, double theta)
   row.ClassifySeconds = timed(sampler->GetOutput(), false);
   row.ExactSeconds = timed(sampler->GetOutput(), true);
   return row;
-}
-
-vtkSmartPointer<vtkPolyData> LoadStructureMesh(const std::string& sharedDir, std::string& label)
-{
-  const std::string horse = sharedDir + "/horse.ply";
-  struct stat st;
-  if (stat(horse.c_str(), &st) == 0)
-  {
-    vtkNew<vtkPLYReader> reader;
-    reader->SetFileName(horse.c_str());
-    reader->Update();
-    label = "horse.ply";
-    return reader->GetOutput();
-  }
-  vtkNew<vtkMedialShapeSource> jack;
-  jack->Update();
-  label = "generated demo shape (shared data absent)";
-  return jack->GetOutput();
 }
 
 void PrintStructure(const std::vector<StructureRow>& rows, const std::string& label, bool json, std::ostringstream& js)
@@ -267,7 +258,7 @@ int main(int argc, char* argv[])
   }
   // The 3D classification rows (first: they are short).
   std::string structureLabel;
-  vtkSmartPointer<vtkPolyData> structureMesh = LoadStructureMesh(sharedDir, structureLabel);
+  vtkSmartPointer<vtkPolyData> structureMesh = LoadBenchMesh(sharedDir, 0, 16, structureLabel);
   const std::vector<StructureRow> structure = { RunStructure(structureMesh, 45.0), RunStructure(structureMesh, 0.0) };
   if (structureOnly)
   {
@@ -282,7 +273,7 @@ int main(int argc, char* argv[])
 
   std::string label;
   const double tLoad = Now();
-  vtkSmartPointer<vtkPolyData> mesh = LoadBenchMesh(sharedDir, label);
+  vtkSmartPointer<vtkPolyData> mesh = LoadBenchMesh(sharedDir, 2, 230, label);
   const double loadSeconds = Now() - tLoad;
 
   // Preparation and BVH build, timed apart from sampling.

@@ -753,32 +753,34 @@ void vtkMedialSeamSolver::SolveCandidates(std::vector<Candidate>& candidates, in
   }
 }
 
+bool vtkMedialSeamSolver::HasIncidentPair(const std::array<int, 4>& f, int n) const
+{
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = i + 1; j < n; ++j)
+    {
+      if (this->Governors.AreIncident(f[i], f[j]))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 bool vtkMedialSeamSolver::Solve(const std::vector<Ball>& balls, const std::vector<Pair>& pairs,
   int threads, const std::function<bool()>& aborted, Result& result) const
 {
   result = Result();
   result.PairPoint.assign(pairs.size(), -1);
   threads = threads > 0 ? threads : omp_get_num_procs();
-  auto incident = [&](const std::array<int, 4>& f, int n) {
-    for (int i = 0; i < n; ++i)
-    {
-      for (int j = i + 1; j < n; ++j)
-      {
-        if (this->Governors.AreIncident(f[i], f[j]))
-        {
-          return true;
-        }
-      }
-    }
-    return false;
-  };
   auto vectorOf = [](const Ball& b) { return BallVector{ b.Centre[0], b.Centre[1], b.Centre[2], b.Radius }; };
 
   // 1. Seam candidates (triples) and junction candidates (quadruples) from pairs and balls.
   std::vector<Candidate> triples;
   std::map<std::array<int, 4>, Candidate> quadruples;
   auto addTriple = [&](const std::array<int, 4>& f, const BallVector& reference, double reach, vtkIdType pair) {
-    if (incident(f, 3))
+    if (this->HasIncidentPair(f, 3))
     {
       return;
     }
@@ -794,7 +796,7 @@ bool vtkMedialSeamSolver::Solve(const std::vector<Ball>& balls, const std::vecto
     triples.push_back(std::move(c));
   };
   auto addQuadruple = [&](const std::array<int, 4>& f, const BallVector& seed, vtkIdType pair) {
-    if (incident(f, 4))
+    if (this->HasIncidentPair(f, 4))
     {
       return;
     }

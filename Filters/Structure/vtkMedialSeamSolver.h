@@ -176,6 +176,8 @@ private:
     LEFT,    // a contact left its face or edge, or the radius reached zero
   };
 
+  // True when two of the first n features lie one on the other's boundary (not solved).
+  bool HasIncidentPair(const std::array<int, 4>& features, int n) const;
   void SolveCandidates(std::vector<Candidate>& candidates, int threads,
     const std::function<bool()>& aborted, bool& stopped) const;
   // The ball on the seam of `features` nearest to `guess` in the hyperplane through it

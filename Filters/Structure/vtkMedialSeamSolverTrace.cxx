@@ -194,24 +194,11 @@ bool vtkMedialSeamSolver::TraceAll(std::vector<Candidate>& triples,
   std::map<std::array<int, 4>, Candidate>& quadruples, int threads, const std::function<bool()>& aborted,
   Result& result) const
 {
-  auto incident = [&](const std::array<int, 4>& f, int n) {
-    for (int i = 0; i < n; ++i)
-    {
-      for (int j = i + 1; j < n; ++j)
-      {
-        if (this->Governors.AreIncident(f[i], f[j]))
-        {
-          return true;
-        }
-      }
-    }
-    return false;
-  };
   std::set<std::array<int, 4>> traced;
   std::vector<Tagged> pending;
   const size_t budget = static_cast<size_t>(std::max<vtkIdType>(0, this->MaximumTracedSeams));
   auto queue = [&](const std::array<int, 4>& f, const BallVector& at) {
-    if (incident(f, 3) || traced.count(f))
+    if (this->HasIncidentPair(f, 3) || traced.count(f))
     {
       return;
     }
@@ -269,7 +256,7 @@ bool vtkMedialSeamSolver::TraceAll(std::vector<Candidate>& triples,
     {
       for (const Tagged& q : e.Quadruples)
       {
-        if (incident(q.first, 4))
+        if (this->HasIncidentPair(q.first, 4))
         {
           continue;
         }
