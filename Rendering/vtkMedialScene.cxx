@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialScene.h"
+#include "vtkMedialPlane.h"
 
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialJunctionFilter.h"
@@ -17,7 +18,6 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPNGWriter.h"
-#include "vtkPlane.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -119,26 +119,21 @@ vtkSmartPointer<vtkActor> NodeActor(vtkPolyData* graph, int type, double size, c
 // Unit normal of the points' least-squares plane, its largest component positive.
 void PlaneNormal(vtkPolyData* shape, double normal[3])
 {
-  double origin[3];
   normal[0] = normal[1] = 0.0;
   normal[2] = 1.0;
-  if (!shape || !shape->GetPoints() || !vtkPlane::ComputeBestFittingPlane(shape->GetPoints(), origin, normal))
+  if (!shape || shape->GetNumberOfPoints() < 3)
   {
     return;
   }
+  double centre[3], values[3], axes[3][3];
+  vtkMedialPlane::FitPoints(
+    shape->GetNumberOfPoints(), [shape](vtkIdType i, double p[3]) { shape->GetPoint(i, p); }, centre, values, axes);
+  for (int k = 0; k < 3; ++k)
+  {
+    normal[k] = axes[k][2];
+  }
   vtkMath::Normalize(normal);
-  int major = 0;
-  for (int k = 1; k < 3; ++k)
-  {
-    major = std::fabs(normal[k]) > std::fabs(normal[major]) ? k : major;
-  }
-  if (normal[major] < 0)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      normal[k] = -normal[k];
-    }
-  }
+  vtkMedialPlane::CanonicalSign(normal);
 }
 }
 

@@ -523,75 +523,6 @@ bool MakeDemo(const std::string& name, vtkSmartPointer<vtkPolyData>& out)
   return true;
 }
 
-// Plane of the points (centroid and the normal of least variance); the returned
-// value is the largest distance of a point from it, relative to the diagonal.
-double FitPlane(vtkPolyData* pd, double centre[3], double normal[3])
-{
-  const vtkIdType n = pd->GetNumberOfPoints();
-  centre[0] = centre[1] = centre[2] = 0.0;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double p[3];
-    pd->GetPoint(i, p);
-    for (int k = 0; k < 3; ++k)
-    {
-      centre[k] += p[k] / n;
-    }
-  }
-  if (!std::isfinite(centre[0] + centre[1] + centre[2]))
-  {
-    return HUGE_VAL; // NaN or infinite coordinates: not a plane (the sampler says why)
-  }
-  double cov[3][3] = {}, row0[3], row1[3], row2[3];
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double p[3];
-    pd->GetPoint(i, p);
-    for (int a = 0; a < 3; ++a)
-    {
-      for (int b = 0; b < 3; ++b)
-      {
-        cov[a][b] += (p[a] - centre[a]) * (p[b] - centre[b]);
-      }
-    }
-  }
-  double* rows[3] = { row0, row1, row2 };
-  double* in[3] = { cov[0], cov[1], cov[2] };
-  double values[3], vecs[3][3];
-  double* v[3] = { vecs[0], vecs[1], vecs[2] };
-  for (int a = 0; a < 3; ++a)
-  {
-    std::copy(cov[a], cov[a] + 3, rows[a]);
-  }
-  vtkMath::Jacobi(in, values, v);
-  // Eigenvalues come sorted in decreasing order; vectors are the columns.
-  for (int k = 0; k < 3; ++k)
-  {
-    normal[k] = vecs[k][2];
-  }
-  double worst = 0.0;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double p[3];
-    pd->GetPoint(i, p);
-    worst = std::max(worst,
-      std::abs((p[0] - centre[0]) * normal[0] + (p[1] - centre[1]) * normal[1] + (p[2] - centre[2]) * normal[2]));
-  }
-  const double diag = pd->GetLength();
-  return diag > 0 ? worst / diag : 0.0;
-}
-
-// 2D input: planar loops as polygons or polylines (a closed surface is never planar).
-bool IsPlanarInput(vtkPolyData* pd)
-{
-  if (pd->GetNumberOfStrips() > 0 || (pd->GetNumberOfPolys() == 0 && pd->GetNumberOfLines() == 0))
-  {
-    return false;
-  }
-  double c[3], n[3];
-  return pd->GetNumberOfPoints() >= 3 && FitPlane(pd, c, n) <= 1e-6;
-}
-
 vtkSmartPointer<vtkPolyData> RunJunctions(vtkPolyData* polygon, int threads, MessageSink& sink)
 {
   vtkNew<vtkMedialJunctionFilter> junctions;
@@ -853,7 +784,7 @@ int main(int argc, char* argv[])
   CheckOutputs(opt);
 
   vtkSmartPointer<vtkPolyData> surface = LoadInput(opt, sink);
-  const bool planar = IsPlanarInput(surface);
+  const bool planar = vtkMedialAxisSampler::IsPlanarInput(surface);
   if (!opt.Junctions.empty() && !planar)
   {
     Fail("--junctions needs planar polygons or closed polylines; '" + opt.Input + "' is not planar");

@@ -3,6 +3,7 @@
 
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialBoundaryDistance.h"
+#include "vtkMedialPipeline.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -40,7 +41,7 @@ int vtkMedialBallProtrusion::FillInputPortInformation(int, vtkInformation* info)
 int vtkMedialBallProtrusion::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  vtkMedialBoundaryDistance::RequestWholeInputs(inputVector, 2);
+  vtkMedialRequestWholeInput(inputVector, 2);
   return 1;
 }
 

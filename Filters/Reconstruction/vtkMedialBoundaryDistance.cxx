@@ -2,6 +2,7 @@
 #include "vtkMedialBoundaryDistance.h"
 
 #include "vtkMedialGeometry.h"
+#include "vtkMedialPlane.h"
 #include "vtkMedialPolygon.h"
 #include "vtkMedialRandom.h"
 #include "vtkMedialSurfaceQuery.h"
@@ -235,18 +236,6 @@ vtkSmartPointer<vtkPoints> vtkMedialBoundaryDistance::SamplePoints(
 
 bool vtkMedialBoundaryDistance::IsPlanar(vtkPolyData* shape)
 {
-  return vtkMedialPolygon::LooksPlanarLoops(shape);
+  return vtkMedialPlane::IsPlanarLoops(shape);
 }
 
-void vtkMedialBoundaryDistance::RequestWholeInputs(vtkInformationVector** inputVector, int numberOfPorts)
-{
-  for (int port = 0; port < numberOfPorts; ++port)
-  {
-    if (vtkInformation* info = inputVector[port]->GetInformationObject(0))
-    {
-      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-    }
-  }
-}

@@ -32,7 +32,6 @@
 #include <string>
 #include <vector>
 
-class vtkInformationVector;
 class vtkPoints;
 class vtkPolyData;
 
@@ -64,10 +63,6 @@ public:
 
   /// True when `shape` is planar loops (the sampler's 2D mode): measure it by its curves.
   static bool IsPlanar(vtkPolyData* shape);
-
-  /// For the measuring filters' RequestUpdateExtent: every input port asks for its whole
-  /// data set, whatever piece is requested downstream (distances need entire shapes).
-  static void RequestWholeInputs(vtkInformationVector** inputVector, int numberOfPorts);
 
 private:
   struct Surface;

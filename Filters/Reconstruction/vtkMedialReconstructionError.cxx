@@ -3,6 +3,7 @@
 
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialBoundaryDistance.h"
+#include "vtkMedialPipeline.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -97,7 +98,7 @@ int vtkMedialReconstructionError::FillInputPortInformation(int, vtkInformation* 
 int vtkMedialReconstructionError::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  vtkMedialBoundaryDistance::RequestWholeInputs(inputVector, 2);
+  vtkMedialRequestWholeInput(inputVector, 2);
   return 1;
 }
 

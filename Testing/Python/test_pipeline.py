@@ -127,6 +127,16 @@ check(covered_field.GetArray("CoverageReached").GetValue(0) == 1,
       f"face-distance reaches 1% coverage with {covered.GetOutput().GetNumberOfPoints()} balls "
       f"(gap {covered_field.GetArray('MaxCoverageGap').GetValue(0):.4f})")
 
+# 2D or 3D, asked from Python as the command line asks it.
+Sampler = medialaxis.vtkMedialAxisSampler
+lshape = medialaxis.vtkMedialShapeSource()
+lshape.SetShapeToLShape()
+lshape.Update()
+plane_centre, plane_normal = [0.0] * 3, [0.0] * 3
+check(Sampler.IsPlanarInput(lshape.GetOutput(), plane_centre, plane_normal) and abs(plane_normal[2]) > 0.999999,
+      f"the L-shape is planar input, normal {plane_normal}")
+check(not Sampler.IsPlanarInput(reader.GetOutput()), "the capsule is not planar input")
+
 # One rendered image against its baseline.
 demo = medialaxis.vtkMedialShapeSource()
 demo_sampler = medialaxis.vtkMedialAxisSampler()
