@@ -3,6 +3,7 @@
 #include "vtkMedialArrayNames.h"
 
 #include "vtkMedialGovernors.h"
+#include "vtkMedialPipeline.h"
 #include "vtkMedialSeamSolver.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
@@ -17,7 +18,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <omp.h>
 
@@ -28,6 +28,33 @@ vtkStandardNewMacro(vtkMedialBallClassifier);
 
 namespace
 {
+// Output 1: one vertex per exact point, with Radius, MedialPointType and GovernorCount.
+void WriteExactPoints(const std::vector<vtkMedialSeamSolver::ExactPoint>& exactPoints, vtkPolyData* exact)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> vertices;
+  vtkNew<vtkDoubleArray> radius;
+  radius->SetName(vtkMedialArrayNames::Radius);
+  vtkNew<vtkIntArray> type, count;
+  type->SetName(vtkMedialArrayNames::MedialPointType);
+  count->SetName(vtkMedialArrayNames::GovernorCount);
+  for (const auto& p : exactPoints)
+  {
+    const vtkIdType id = points->InsertNextPoint(p.Centre);
+    vertices->InsertNextCell(1, &id);
+    radius->InsertNextValue(p.Radius);
+    type->InsertNextValue(p.Type);
+    count->InsertNextValue(p.GovernorCount);
+  }
+  exact->SetPoints(points);
+  exact->SetVerts(vertices);
+  exact->GetPointData()->AddArray(radius);
+  exact->GetPointData()->SetActiveScalars(vtkMedialArrayNames::Radius);
+  exact->GetPointData()->AddArray(type);
+  exact->GetPointData()->AddArray(count);
+}
+
 // The surface engines, built once per execution.
 struct Surface
 {
@@ -52,14 +79,8 @@ int vtkMedialBallClassifier::FillInputPortInformation(int, vtkInformation* info)
 int vtkMedialBallClassifier::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  // Contacts need the whole surface whatever piece of balls is requested.
-  vtkInformation* surfaceInfo = inputVector[1]->GetInformationObject(0);
-  if (surfaceInfo)
-  {
-    surfaceInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-    surfaceInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-    surfaceInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-  }
+  // Contacts need the whole surface, and neighbours all the balls, whatever piece is requested.
+  vtkMedialRequestWholeInput(inputVector, 2);
   return 1;
 }
 
@@ -162,14 +183,7 @@ int vtkMedialBallClassifier::RequestData(
   output->GetPointData()->AddArray(type);
 
   // 2. Exact seam points and junction vertices.
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> vertices;
-  vtkNew<vtkDoubleArray> exactRadius;
-  exactRadius->SetName(vtkMedialArrayNames::Radius);
-  vtkNew<vtkIntArray> exactType, exactCount;
-  exactType->SetName(vtkMedialArrayNames::MedialPointType);
-  exactCount->SetName(vtkMedialArrayNames::GovernorCount);
+  vtkMedialSeamSolver::Result result;
   if (this->ComputeExactPoints && n > 1)
   {
     std::vector<double> centres(static_cast<size_t>(3 * n));
@@ -180,7 +194,6 @@ int vtkMedialBallClassifier::RequestData(
     const auto pairs = vtkMedialSeamSolver::NearestPairs(centres.data(), n, this->NumberOfNeighbors);
     vtkMedialSeamSolver solver(surface.Governors);
     solver.SetMaximumTracedSeams(this->MaximumTracedSeams);
-    vtkMedialSeamSolver::Result result;
     if (!solver.Solve(records, pairs, threads, aborted, result))
     {
       return 1;
@@ -191,22 +204,12 @@ int vtkMedialBallClassifier::RequestData(
       vtkWarningMacro(<< "Seam tracing stopped at MaximumTracedSeams (" << this->MaximumTracedSeams
                       << "); junction vertices beyond may be missing.");
     }
-    for (const auto& p : result.Points)
-    {
-      const vtkIdType id = points->InsertNextPoint(p.Centre);
-      vertices->InsertNextCell(1, &id);
-      exactRadius->InsertNextValue(p.Radius);
-      exactType->InsertNextValue(p.Type);
-      exactCount->InsertNextValue(p.GovernorCount);
-      ++(p.Type == JUNCTION ? this->NumberOfJunctionVertices : this->NumberOfSeamPoints);
-    }
   }
-  exact->SetPoints(points);
-  exact->SetVerts(vertices);
-  exact->GetPointData()->AddArray(exactRadius);
-  exact->GetPointData()->SetActiveScalars(vtkMedialArrayNames::Radius);
-  exact->GetPointData()->AddArray(exactType);
-  exact->GetPointData()->AddArray(exactCount);
+  for (const auto& p : result.Points)
+  {
+    ++(p.Type == JUNCTION ? this->NumberOfJunctionVertices : this->NumberOfSeamPoints);
+  }
+  WriteExactPoints(result.Points, exact);
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -251,9 +251,8 @@ bool vtkMedialGovernors::Build(const vtkMedialTriangleMesh& mesh, const vtkMedia
     error = "the surface is empty, flat or too large";
     return false;
   }
-
   // Edges: (min vertex, max vertex, triangle), sorted so each edge's triangles are adjacent.
-  std::vector<std::tuple<vtkIdType, vtkIdType, vtkIdType>> edges;
+  EdgeList edges;
   edges.reserve(static_cast<size_t>(3 * nt));
   for (vtkIdType t = 0; t < nt; ++t)
   {
@@ -265,8 +264,19 @@ bool vtkMedialGovernors::Build(const vtkMedialTriangleMesh& mesh, const vtkMedia
     }
   }
   std::sort(edges.begin(), edges.end());
+  this->BuildPlanes(edges);
+  std::vector<std::pair<vtkIdType, int>> atVertex; // (vertex, sharp edge)
+  this->BuildLines(edges, atVertex);
+  this->BuildPoints(atVertex);
+  return true;
+}
 
-  // Planes: coplanar triangles joined across manifold edges.
+void vtkMedialGovernors::BuildPlanes(const EdgeList& edges)
+{
+  // Coplanar triangles joined across manifold edges; each group's plane is its
+  // largest triangle's.
+  const vtkMedialTriangleMesh& mesh = *this->Mesh;
+  const vtkIdType nt = mesh.GetNumberOfTriangles();
   UnionFind sets;
   sets.Reset(static_cast<int>(nt));
   auto sameEdge = [&](size_t i, size_t j) {
@@ -286,25 +296,22 @@ bool vtkMedialGovernors::Build(const vtkMedialTriangleMesh& mesh, const vtkMedia
   }
   this->NumberOfPlanes = DenseRoots(sets, static_cast<int>(nt), this->TrianglePlane);
   this->Features.assign(static_cast<size_t>(this->NumberOfPlanes), Feature());
+  std::vector<double> largest(static_cast<size_t>(this->NumberOfPlanes), -1.0);
+  for (vtkIdType t = 0; t < nt; ++t)
   {
-    std::vector<double> largest(static_cast<size_t>(this->NumberOfPlanes), -1.0);
-    for (vtkIdType t = 0; t < nt; ++t)
+    const int p = this->TrianglePlane[t];
+    if (mesh.Areas[t] > largest[p])
     {
-      const int p = this->TrianglePlane[t];
-      if (mesh.Areas[t] > largest[p])
+      largest[p] = mesh.Areas[t];
+      Feature& f = this->Features[p];
+      f.Kind = PLANE;
+      std::copy(mesh.GetPoint(mesh.GetTriangle(t)[0]), mesh.GetPoint(mesh.GetTriangle(t)[0]) + 3, f.Point);
+      for (int k = 0; k < 3; ++k)
       {
-        largest[p] = mesh.Areas[t];
-        Feature& f = this->Features[p];
-        f.Kind = PLANE;
-        std::copy(mesh.GetPoint(mesh.GetTriangle(t)[0]), mesh.GetPoint(mesh.GetTriangle(t)[0]) + 3, f.Point);
-        for (int k = 0; k < 3; ++k)
-        {
-          f.Direction[k] = -mesh.GetNormal(t)[k];
-        }
+        f.Direction[k] = -mesh.GetNormal(t)[k];
       }
     }
   }
-
   // Sharp edges: between two plane groups (or on a boundary).
   this->SharpEdges.clear();
   for (size_t i = 0; i < edges.size();)
@@ -322,10 +329,16 @@ bool vtkMedialGovernors::Build(const vtkMedialTriangleMesh& mesh, const vtkMedia
     }
     i = j;
   }
-  // Lines: collinear sharp edges joined at shared vertices.
+}
+
+void vtkMedialGovernors::BuildLines(const EdgeList& edges, std::vector<std::pair<vtkIdType, int>>& atVertex)
+{
+  // Collinear sharp edges joined at shared vertices; each line's direction is its
+  // longest edge's.
+  const vtkMedialTriangleMesh& mesh = *this->Mesh;
   const int ns = static_cast<int>(this->SharpEdges.size());
   std::vector<std::array<double, 3>> direction(static_cast<size_t>(ns));
-  std::vector<std::pair<vtkIdType, int>> atVertex; // (vertex, sharp edge)
+  atVertex.clear();
   for (int e = 0; e < ns; ++e)
   {
     const double* a = mesh.GetPoint(this->SharpEdges[e].first);
@@ -340,6 +353,7 @@ bool vtkMedialGovernors::Build(const vtkMedialTriangleMesh& mesh, const vtkMedia
     atVertex.emplace_back(this->SharpEdges[e].second, e);
   }
   std::sort(atVertex.begin(), atVertex.end());
+  UnionFind sets;
   sets.Reset(ns);
   for (size_t i = 0; i < atVertex.size(); ++i)
   {
@@ -354,21 +368,19 @@ bool vtkMedialGovernors::Build(const vtkMedialTriangleMesh& mesh, const vtkMedia
   this->NumberOfLines = DenseRoots(sets, ns, this->SharpEdgeLine);
   this->Features.resize(static_cast<size_t>(this->NumberOfPlanes + this->NumberOfLines));
   this->LinePlanes.assign(static_cast<size_t>(this->NumberOfLines), {});
+  std::vector<double> longest(static_cast<size_t>(this->NumberOfLines), -1.0);
+  for (int e = 0; e < ns; ++e)
   {
-    std::vector<double> longest(static_cast<size_t>(this->NumberOfLines), -1.0);
-    for (int e = 0; e < ns; ++e)
+    const int l = this->SharpEdgeLine[e];
+    const double* a = mesh.GetPoint(this->SharpEdges[e].first);
+    const double len2 = G::Distance2(a, mesh.GetPoint(this->SharpEdges[e].second));
+    if (len2 > longest[l])
     {
-      const int l = this->SharpEdgeLine[e];
-      const double* a = mesh.GetPoint(this->SharpEdges[e].first);
-      const double len2 = G::Distance2(a, mesh.GetPoint(this->SharpEdges[e].second));
-      if (len2 > longest[l])
-      {
-        longest[l] = len2;
-        Feature& f = this->Features[this->NumberOfPlanes + l];
-        f.Kind = LINE;
-        std::copy(a, a + 3, f.Point);
-        std::copy(direction[e].begin(), direction[e].end(), f.Direction);
-      }
+      longest[l] = len2;
+      Feature& f = this->Features[this->NumberOfPlanes + l];
+      f.Kind = LINE;
+      std::copy(a, a + 3, f.Point);
+      std::copy(direction[e].begin(), direction[e].end(), f.Direction);
     }
   }
   for (const auto& edge : edges)
@@ -384,8 +396,14 @@ bool vtkMedialGovernors::Build(const vtkMedialTriangleMesh& mesh, const vtkMedia
     std::sort(planes.begin(), planes.end());
     planes.erase(std::unique(planes.begin(), planes.end()), planes.end());
   }
+}
 
-  // Points: every vertex, with the planes and lines incident to it.
+void vtkMedialGovernors::BuildPoints(const std::vector<std::pair<vtkIdType, int>>& atVertex)
+{
+  // Every vertex, with the planes and lines incident to it (CSR).
+  const vtkMedialTriangleMesh& mesh = *this->Mesh;
+  const vtkIdType nt = mesh.GetNumberOfTriangles();
+  const vtkIdType nv = static_cast<vtkIdType>(mesh.Points.size() / 3);
   const int first = this->NumberOfPlanes + this->NumberOfLines;
   this->Features.resize(static_cast<size_t>(first + nv));
   std::vector<std::pair<vtkIdType, int>> incident;
@@ -416,7 +434,6 @@ bool vtkMedialGovernors::Build(const vtkMedialTriangleMesh& mesh, const vtkMedia
     f.Kind = POINT;
     std::copy(mesh.GetPoint(v), mesh.GetPoint(v) + 3, f.Point);
   }
-  return true;
 }
 
 int vtkMedialGovernors::LineOf(vtkIdType a, vtkIdType b) const

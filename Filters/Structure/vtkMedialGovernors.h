@@ -56,6 +56,8 @@
 #include "vtkType.h"
 
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 class vtkMedialTriangleMesh;
@@ -145,6 +147,12 @@ public:
   double GetDiagonal() const { return this->Diagonal; }
 
 private:
+  using EdgeList = std::vector<std::tuple<vtkIdType, vtkIdType, vtkIdType>>; // (min, max vertex, triangle)
+  // Build's passes: plane groups and sharp edges; lines of collinear sharp edges
+  // (atVertex: each sharp edge at each of its vertices); vertices and their incidences.
+  void BuildPlanes(const EdgeList& edges);
+  void BuildLines(const EdgeList& edges, std::vector<std::pair<vtkIdType, int>>& atVertex);
+  void BuildPoints(const std::vector<std::pair<vtkIdType, int>>& atVertex);
   // The contacts of a ball in s.Hits (s.Cap marks those in the cap around the
   // sample point). When the ball overlaps the surface (theta > 0) only the
   // contacts beyond the cap are read, and the cap's feature is returned (else -1).

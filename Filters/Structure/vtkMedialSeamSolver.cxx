@@ -768,50 +768,49 @@ bool vtkMedialSeamSolver::HasIncidentPair(const std::array<int, 4>& f, int n) co
   return false;
 }
 
-bool vtkMedialSeamSolver::Solve(const std::vector<Ball>& balls, const std::vector<Pair>& pairs,
-  int threads, const std::function<bool()>& aborted, Result& result) const
+void vtkMedialSeamSolver::AddTriple(Candidates& candidates, const std::array<int, 4>& f,
+  const BallVector& reference, double reach, vtkIdType pair) const
 {
-  result = Result();
-  result.PairPoint.assign(pairs.size(), -1);
-  threads = threads > 0 ? threads : omp_get_num_procs();
-  auto vectorOf = [](const Ball& b) { return BallVector{ b.Centre[0], b.Centre[1], b.Centre[2], b.Radius }; };
+  if (this->HasIncidentPair(f, 3))
+  {
+    return;
+  }
+  Candidate c;
+  c.Features = f;
+  c.N = 3;
+  c.Seeds.push_back(reference);
+  c.Reach = reach;
+  if (pair >= 0)
+  {
+    c.Pairs.push_back(pair);
+  }
+  candidates.Triples.push_back(std::move(c));
+}
 
-  // 1. Seam candidates (triples) and junction candidates (quadruples) from pairs and balls.
-  std::vector<Candidate> triples;
-  std::map<std::array<int, 4>, Candidate> quadruples;
-  auto addTriple = [&](const std::array<int, 4>& f, const BallVector& reference, double reach, vtkIdType pair) {
-    if (this->HasIncidentPair(f, 3))
-    {
-      return;
-    }
-    Candidate c;
-    c.Features = f;
-    c.N = 3;
-    c.Seeds.push_back(reference);
-    c.Reach = reach;
-    if (pair >= 0)
-    {
-      c.Pairs.push_back(pair);
-    }
-    triples.push_back(std::move(c));
-  };
-  auto addQuadruple = [&](const std::array<int, 4>& f, const BallVector& seed, vtkIdType pair) {
-    if (this->HasIncidentPair(f, 4))
-    {
-      return;
-    }
-    Candidate& c = quadruples[f];
-    c.Features = f;
-    c.N = 4;
-    if (c.Seeds.size() < MaximumSeeds)
-    {
-      c.Seeds.push_back(seed);
-    }
-    if (pair >= 0 && c.Pairs.size() < MaximumSeeds)
-    {
-      c.Pairs.push_back(pair);
-    }
-  };
+void vtkMedialSeamSolver::AddQuadruple(
+  Candidates& candidates, const std::array<int, 4>& f, const BallVector& seed, vtkIdType pair) const
+{
+  if (this->HasIncidentPair(f, 4))
+  {
+    return;
+  }
+  Candidate& c = candidates.Quadruples[f];
+  c.Features = f;
+  c.N = 4;
+  if (!c.Solved && c.Seeds.size() < MaximumSeeds)
+  {
+    c.Seeds.push_back(seed);
+  }
+  if (pair >= 0 && c.Pairs.size() < MaximumSeeds)
+  {
+    c.Pairs.push_back(pair);
+  }
+}
+
+void vtkMedialSeamSolver::Propose(
+  const std::vector<Ball>& balls, const std::vector<Pair>& pairs, Candidates& candidates) const
+{
+  auto vectorOf = [](const Ball& b) { return BallVector{ b.Centre[0], b.Centre[1], b.Centre[2], b.Radius }; };
   for (size_t p = 0; p < pairs.size(); ++p)
   {
     const Ball& a = balls[pairs[p][0]];
@@ -832,13 +831,14 @@ bool vtkMedialSeamSolver::Solve(const std::vector<Ball>& balls, const std::vecto
       mid[k] = 0.5 * (va[k] + vb[k]);
       gap2 += (va[k] - vb[k]) * (va[k] - vb[k]);
     }
+    const vtkIdType pair = static_cast<vtkIdType>(p);
     if (u.size() == 3)
     {
-      addTriple({ u[0], u[1], u[2], -1 }, mid, 2.0 * std::sqrt(gap2), static_cast<vtkIdType>(p));
+      this->AddTriple(candidates, { { u[0], u[1], u[2], -1 } }, mid, 2.0 * std::sqrt(gap2), pair);
     }
     else if (u.size() <= MaximumUnion)
     {
-      Subsets(u, 4, [&](const std::array<int, 4>& f) { addQuadruple(f, mid, static_cast<vtkIdType>(p)); });
+      Subsets(u, 4, [&](const std::array<int, 4>& f) { this->AddQuadruple(candidates, f, mid, pair); });
     }
   }
   for (const Ball& b : balls)
@@ -848,90 +848,65 @@ bool vtkMedialSeamSolver::Solve(const std::vector<Ball>& balls, const std::vecto
     {
       continue;
     }
-    Subsets(g, 3, [&](const std::array<int, 4>& f) { addTriple(f, vectorOf(b), b.Radius, -1); });
-    Subsets(g, 4, [&](const std::array<int, 4>& f) { addQuadruple(f, vectorOf(b), -1); });
+    Subsets(g, 3, [&](const std::array<int, 4>& f) { this->AddTriple(candidates, f, vectorOf(b), b.Radius, -1); });
+    Subsets(g, 4, [&](const std::array<int, 4>& f) { this->AddQuadruple(candidates, f, vectorOf(b), -1); });
   }
+}
 
-  // 2. Seam points.
-  bool stopped = aborted && aborted();
-  this->SolveCandidates(triples, threads, aborted, stopped);
-  if (stopped)
-  {
-    return false;
-  }
-
-  // 3. Junction candidates from two accepted seams that share two governors.
+void vtkMedialSeamSolver::ProposeFromSeams(Candidates& candidates) const
+{
+  // Two accepted seams that share two governors meet at the junction of all four.
   std::map<std::array<int, 2>, std::vector<std::pair<int, BallVector>>> byPair;
-  for (const Candidate& c : triples)
+  for (const Candidate& c : candidates.Triples)
   {
     for (const ExactPoint& p : c.Found)
     {
       const BallVector seed{ p.Centre[0], p.Centre[1], p.Centre[2], p.Radius };
       const auto& f = c.Features;
-      byPair[{ f[0], f[1] }].emplace_back(f[2], seed);
-      byPair[{ f[0], f[2] }].emplace_back(f[1], seed);
-      byPair[{ f[1], f[2] }].emplace_back(f[0], seed);
+      byPair[{ { f[0], f[1] } }].emplace_back(f[2], seed);
+      byPair[{ { f[0], f[2] } }].emplace_back(f[1], seed);
+      byPair[{ { f[1], f[2] } }].emplace_back(f[0], seed);
     }
   }
+  using Third = std::pair<int, BallVector>;
   for (auto& entry : byPair)
   {
     auto& thirds = entry.second;
     // One seed per distinct third governor is enough.
-    std::stable_sort(thirds.begin(), thirds.end(),
-      [](const std::pair<int, BallVector>& x, const std::pair<int, BallVector>& y) { return x.first < y.first; });
+    std::stable_sort(
+      thirds.begin(), thirds.end(), [](const Third& x, const Third& y) { return x.first < y.first; });
     thirds.erase(std::unique(thirds.begin(), thirds.end(),
-                   [](const std::pair<int, BallVector>& x, const std::pair<int, BallVector>& y) { return x.first == y.first; }),
+                   [](const Third& x, const Third& y) { return x.first == y.first; }),
       thirds.end());
     for (size_t i = 0; i < thirds.size(); ++i)
     {
       for (size_t j = i + 1; j < thirds.size(); ++j)
       {
-        std::array<int, 4> f{ entry.first[0], entry.first[1], thirds[i].first, thirds[j].first };
+        std::array<int, 4> f{ { entry.first[0], entry.first[1], thirds[i].first, thirds[j].first } };
         std::sort(f.begin(), f.end());
-        addQuadruple(f, thirds[i].second, -1);
-        addQuadruple(f, thirds[j].second, -1);
+        this->AddQuadruple(candidates, f, thirds[i].second, -1);
+        this->AddQuadruple(candidates, f, thirds[j].second, -1);
       }
     }
   }
-
-  for (const Candidate& c : triples)
+  // Seam points that touched a fourth governor: its junction.
+  for (const Candidate& c : candidates.Triples)
   {
     for (const Tagged& q : c.Nearby)
     {
-      addQuadruple(q.first, q.second, -1);
+      this->AddQuadruple(candidates, q.first, q.second, -1);
     }
   }
+}
 
-  // 4. Junction vertices, then every seam traced from its seam points and junctions
-  //    to its ends, where more junctions are solved.
-  std::vector<Candidate> first;
-  for (auto& entry : quadruples)
-  {
-    first.push_back(entry.second);
-  }
-  this->SolveCandidates(first, threads, aborted, stopped);
-  for (Candidate& c : first)
-  {
-    quadruples[c.Features] = std::move(c);
-  }
-  if (stopped || !this->TraceAll(triples, quadruples, threads, aborted, result))
-  {
-    return false;
-  }
-  std::vector<Candidate> quads;
-  quads.reserve(quadruples.size());
-  for (auto& entry : quadruples)
-  {
-    quads.push_back(std::move(entry.second));
-  }
-  result.SeamCandidates = static_cast<vtkIdType>(triples.size());
-  result.JunctionCandidates = static_cast<vtkIdType>(quads.size());
-
-  // 5. Merge, junctions first, in candidate order; each pair gets the point it found
-  //    nearest to its midpoint.
+void vtkMedialSeamSolver::MergePoints(const std::vector<Ball>& balls, const std::vector<Pair>& pairs,
+  const std::vector<Candidate>& quadruples, const std::vector<Candidate>& triples, Result& result) const
+{
+  // Junctions first, in candidate order; each pair gets the point it found nearest
+  // to its midpoint.
   PointMerger merger(this->MergeTolerance * this->Governors.GetDiagonal());
   std::vector<double> pairDistance(pairs.size(), HUGE_VAL);
-  for (const std::vector<Candidate>* list : { &quads, &triples })
+  for (const std::vector<Candidate>* list : { &quadruples, &triples })
   {
     for (const Candidate& c : *list)
     {
@@ -955,6 +930,55 @@ bool vtkMedialSeamSolver::Solve(const std::vector<Ball>& balls, const std::vecto
       }
     }
   }
+}
+
+bool vtkMedialSeamSolver::Solve(const std::vector<Ball>& balls, const std::vector<Pair>& pairs,
+  int threads, const std::function<bool()>& aborted, Result& result) const
+{
+  result = Result();
+  result.PairPoint.assign(pairs.size(), -1);
+  threads = threads > 0 ? threads : omp_get_num_procs();
+
+  // 1. Seam candidates (triples) and junction candidates (quadruples) from pairs and balls.
+  Candidates candidates;
+  this->Propose(balls, pairs, candidates);
+
+  // 2. Seam points, and the junctions where two seams found meet.
+  bool stopped = aborted && aborted();
+  this->SolveCandidates(candidates.Triples, threads, aborted, stopped);
+  if (stopped)
+  {
+    return false;
+  }
+  this->ProposeFromSeams(candidates);
+
+  // 3. Junction vertices, then every seam traced from its seam points and junctions
+  //    to its ends, where more junctions are solved.
+  std::vector<Candidate> first;
+  for (auto& entry : candidates.Quadruples)
+  {
+    first.push_back(entry.second);
+  }
+  this->SolveCandidates(first, threads, aborted, stopped);
+  for (Candidate& c : first)
+  {
+    candidates.Quadruples[c.Features] = std::move(c);
+  }
+  if (stopped || !this->TraceAll(candidates, threads, aborted, result))
+  {
+    return false;
+  }
+  std::vector<Candidate> quadruples;
+  quadruples.reserve(candidates.Quadruples.size());
+  for (auto& entry : candidates.Quadruples)
+  {
+    quadruples.push_back(std::move(entry.second));
+  }
+  result.SeamCandidates = static_cast<vtkIdType>(candidates.Triples.size());
+  result.JunctionCandidates = static_cast<vtkIdType>(quadruples.size());
+
+  // 4. Merged points.
+  this->MergePoints(balls, pairs, quadruples, candidates.Triples, result);
   return true;
 }
 

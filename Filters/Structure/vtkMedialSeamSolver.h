@@ -176,6 +176,21 @@ private:
     LEFT,    // a contact left its face or edge, or the radius reached zero
   };
 
+  struct Candidates
+  {
+    std::vector<Candidate> Triples;
+    std::map<std::array<int, 4>, Candidate> Quadruples;
+  };
+  void AddTriple(Candidates& candidates, const std::array<int, 4>& features, const BallVector& reference,
+    double reach, vtkIdType pair) const;
+  void AddQuadruple(
+    Candidates& candidates, const std::array<int, 4>& features, const BallVector& seed, vtkIdType pair) const;
+  // Candidates from the neighbour pairs whose governors differ, and from balls with 3+ governors.
+  void Propose(const std::vector<Ball>& balls, const std::vector<Pair>& pairs, Candidates& candidates) const;
+  // Junction candidates from the seams solved: two sharing two governors, or one touching a fourth.
+  void ProposeFromSeams(Candidates& candidates) const;
+  void MergePoints(const std::vector<Ball>& balls, const std::vector<Pair>& pairs,
+    const std::vector<Candidate>& quadruples, const std::vector<Candidate>& triples, Result& result) const;
   // True when two of the first n features lie one on the other's boundary (not solved).
   bool HasIncidentPair(const std::array<int, 4>& features, int n) const;
   void SolveCandidates(std::vector<Candidate>& candidates, int threads,
@@ -192,8 +207,8 @@ private:
     TraceEnds& ends) const;
   // Traces every seam reachable from the seam points and junctions found so far,
   // wave by wave, solving the junction candidates met on the way.
-  bool TraceAll(std::vector<Candidate>& triples, std::map<std::array<int, 4>, Candidate>& quadruples,
-    int threads, const std::function<bool()>& aborted, Result& result) const;
+  bool TraceAll(
+    Candidates& candidates, int threads, const std::function<bool()>& aborted, Result& result) const;
 
   const vtkMedialGovernors& Governors;
   double Origin[3] = { 0, 0, 0 }; // the algebra works in (x - Origin) / Scale

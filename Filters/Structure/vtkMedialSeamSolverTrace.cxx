@@ -190,10 +190,10 @@ void vtkMedialSeamSolver::Ends(const int features[3], const BallVector& last, co
   }
 }
 
-bool vtkMedialSeamSolver::TraceAll(std::vector<Candidate>& triples,
-  std::map<std::array<int, 4>, Candidate>& quadruples, int threads, const std::function<bool()>& aborted,
-  Result& result) const
+bool vtkMedialSeamSolver::TraceAll(
+  Candidates& candidates, int threads, const std::function<bool()>& aborted, Result& result) const
 {
+  auto& quadruples = candidates.Quadruples;
   std::set<std::array<int, 4>> traced;
   std::vector<Tagged> pending;
   const size_t budget = static_cast<size_t>(std::max<vtkIdType>(0, this->MaximumTracedSeams));
@@ -221,7 +221,7 @@ bool vtkMedialSeamSolver::TraceAll(std::vector<Candidate>& triples,
           queue({ { g[i], g[j], g[k], -1 } }, at);
         }
   };
-  for (const Candidate& c : triples)
+  for (const Candidate& c : candidates.Triples)
   {
     for (const ExactPoint& p : c.Found)
     {
@@ -256,20 +256,11 @@ bool vtkMedialSeamSolver::TraceAll(std::vector<Candidate>& triples,
     {
       for (const Tagged& q : e.Quadruples)
       {
-        if (this->HasIncidentPair(q.first, 4))
+        const bool known = quadruples.count(q.first) > 0;
+        this->AddQuadruple(candidates, q.first, q.second, -1);
+        if (!known && quadruples.count(q.first))
         {
-          continue;
-        }
-        Candidate& c = quadruples[q.first];
-        if (!c.Solved && c.Seeds.empty())
-        {
-          c.Features = q.first;
-          c.N = 4;
           fresh.push_back(q.first);
-        }
-        if (!c.Solved && c.Seeds.size() < 4)
-        {
-          c.Seeds.push_back(q.second);
         }
       }
     }
