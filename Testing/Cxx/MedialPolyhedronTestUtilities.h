@@ -136,50 +136,94 @@ inline vtkSmartPointer<vtkPolyData> Prism(const std::vector<std::array<double, 2
   return pd;
 }
 
-/// The box [0, A] x [0, B] x [0, C] without the corner box [a, A] x [b, B] x [c, C]:
-/// three reflex edges meeting at the reflex vertex (a, b, c). Polygon faces, some
-/// L-shaped, wound counter-clockwise seen from outside.
-inline vtkSmartPointer<vtkPolyData> NotchedBox(double A, double B, double C, double a, double b, double c)
+/// A polyhedron with axis-aligned polygon faces, each given by its corners and its
+/// outward axis (0, 1, 2) and sign; the corners are reversed where their (Newell)
+/// normal points the other way, so every face is counter-clockwise seen from outside.
+struct AxisFace
+{
+  std::vector<std::array<double, 3>> Corners;
+  int Axis;
+  double Sign;
+};
+inline vtkSmartPointer<vtkPolyData> AxisAlignedPolyhedron(const std::vector<AxisFace>& faces)
 {
   auto pd = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> cells;
-  using P = std::array<double, 3>;
-  // Each face with its outward axis; the corners are reversed when their (Newell)
-  // normal points the other way.
-  auto face = [&](std::vector<P> corners, int axis, double sign) {
+  for (AxisFace face : faces)
+  {
+    auto& corners = face.Corners;
     double normal = 0.0;
+    const int u = (face.Axis + 1) % 3, v = (face.Axis + 2) % 3;
     for (size_t i = 0; i < corners.size(); ++i)
     {
-      const P& p = corners[i];
-      const P& q = corners[(i + 1) % corners.size()];
-      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      const auto& p = corners[i];
+      const auto& q = corners[(i + 1) % corners.size()];
       normal += (p[u] - q[u]) * (p[v] + q[v]);
     }
-    if (normal * sign < 0.0)
+    if (normal * face.Sign < 0.0)
     {
       std::reverse(corners.begin(), corners.end());
     }
     std::vector<vtkIdType> ids;
-    for (const P& p : corners)
+    for (const auto& p : corners)
     {
       ids.push_back(points->InsertNextPoint(p.data()));
     }
     cells->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-  };
-  face({ { 0, 0, 0 }, { 0, B, 0 }, { 0, B, C }, { 0, 0, C } }, 0, -1);
-  face({ { 0, 0, 0 }, { A, 0, 0 }, { A, 0, C }, { 0, 0, C } }, 1, -1);
-  face({ { 0, 0, 0 }, { A, 0, 0 }, { A, B, 0 }, { 0, B, 0 } }, 2, -1);
-  face({ { A, 0, 0 }, { A, B, 0 }, { A, B, c }, { A, b, c }, { A, b, C }, { A, 0, C } }, 0, 1);
-  face({ { 0, B, 0 }, { A, B, 0 }, { A, B, c }, { a, B, c }, { a, B, C }, { 0, B, C } }, 1, 1);
-  face({ { 0, 0, C }, { A, 0, C }, { A, b, C }, { a, b, C }, { a, B, C }, { 0, B, C } }, 2, 1);
-  face({ { a, b, c }, { a, B, c }, { a, B, C }, { a, b, C } }, 0, 1);
-  face({ { a, b, c }, { A, b, c }, { A, b, C }, { a, b, C } }, 1, 1);
-  face({ { a, b, c }, { A, b, c }, { A, B, c }, { a, B, c } }, 2, 1);
+  }
   pd->SetPoints(points);
   pd->SetPolys(cells);
   return pd;
+}
+
+/// The box [0, A] x [0, B] x [0, C] without the corner box [a, A] x [b, B] x [c, C]:
+/// three reflex edges meeting at the reflex vertex (a, b, c).
+inline vtkSmartPointer<vtkPolyData> NotchedBox(double A, double B, double C, double a, double b, double c)
+{
+  return AxisAlignedPolyhedron({
+    { { { 0, 0, 0 }, { 0, B, 0 }, { 0, B, C }, { 0, 0, C } }, 0, -1 },
+    { { { 0, 0, 0 }, { A, 0, 0 }, { A, 0, C }, { 0, 0, C } }, 1, -1 },
+    { { { 0, 0, 0 }, { A, 0, 0 }, { A, B, 0 }, { 0, B, 0 } }, 2, -1 },
+    { { { A, 0, 0 }, { A, B, 0 }, { A, B, c }, { A, b, c }, { A, b, C }, { A, 0, C } }, 0, 1 },
+    { { { 0, B, 0 }, { A, B, 0 }, { A, B, c }, { a, B, c }, { a, B, C }, { 0, B, C } }, 1, 1 },
+    { { { 0, 0, C }, { A, 0, C }, { A, b, C }, { a, b, C }, { a, B, C }, { 0, B, C } }, 2, 1 },
+    { { { a, b, c }, { a, B, c }, { a, B, C }, { a, b, C } }, 0, 1 },
+    { { { a, b, c }, { A, b, c }, { A, b, C }, { a, b, C } }, 1, 1 },
+    { { { a, b, c }, { A, b, c }, { A, B, c }, { a, B, c } }, 2, 1 },
+  });
+}
+
+/// The box [0, X] x [0, Y] x [0, Z] with a channel along x cut into its top,
+/// [y1, y2] x [z1, Z], and one along y cut into its bottom, [x1, x2] x [0, z2]
+/// (z2 < z1): four reflex edges, two along x and two along y, skew to each other.
+inline vtkSmartPointer<vtkPolyData> CrossedGrooves(
+  double X, double Y, double Z, double y1, double y2, double z1, double x1, double x2, double z2)
+{
+  return AxisAlignedPolyhedron({
+    // Top strips, the top channel's floor and walls.
+    { { { 0, 0, Z }, { X, 0, Z }, { X, y1, Z }, { 0, y1, Z } }, 2, 1 },
+    { { { 0, y2, Z }, { X, y2, Z }, { X, Y, Z }, { 0, Y, Z } }, 2, 1 },
+    { { { 0, y1, z1 }, { X, y1, z1 }, { X, y2, z1 }, { 0, y2, z1 } }, 2, 1 },
+    { { { 0, y1, z1 }, { X, y1, z1 }, { X, y1, Z }, { 0, y1, Z } }, 1, 1 },
+    { { { 0, y2, z1 }, { X, y2, z1 }, { X, y2, Z }, { 0, y2, Z } }, 1, -1 },
+    // Bottom strips, the bottom channel's ceiling and walls.
+    { { { 0, 0, 0 }, { x1, 0, 0 }, { x1, Y, 0 }, { 0, Y, 0 } }, 2, -1 },
+    { { { x2, 0, 0 }, { X, 0, 0 }, { X, Y, 0 }, { x2, Y, 0 } }, 2, -1 },
+    { { { x1, 0, z2 }, { x2, 0, z2 }, { x2, Y, z2 }, { x1, Y, z2 } }, 2, -1 },
+    { { { x1, 0, 0 }, { x1, Y, 0 }, { x1, Y, z2 }, { x1, 0, z2 } }, 0, 1 },
+    { { { x2, 0, 0 }, { x2, Y, 0 }, { x2, Y, z2 }, { x2, 0, z2 } }, 0, -1 },
+    // Sides: U-shaped around each channel's ends.
+    { { { 0, 0, 0 }, { 0, Y, 0 }, { 0, Y, Z }, { 0, y2, Z }, { 0, y2, z1 }, { 0, y1, z1 }, { 0, y1, Z }, { 0, 0, Z } },
+      0, -1 },
+    { { { X, 0, 0 }, { X, Y, 0 }, { X, Y, Z }, { X, y2, Z }, { X, y2, z1 }, { X, y1, z1 }, { X, y1, Z }, { X, 0, Z } },
+      0, 1 },
+    { { { 0, 0, 0 }, { x1, 0, 0 }, { x1, 0, z2 }, { x2, 0, z2 }, { x2, 0, 0 }, { X, 0, 0 }, { X, 0, Z }, { 0, 0, Z } },
+      1, -1 },
+    { { { 0, Y, 0 }, { x1, Y, 0 }, { x1, Y, z2 }, { x2, Y, z2 }, { x2, Y, 0 }, { X, Y, 0 }, { X, Y, Z }, { 0, Y, Z } },
+      1, 1 },
+  });
 }
 }
 

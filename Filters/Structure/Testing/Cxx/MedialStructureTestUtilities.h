@@ -212,7 +212,7 @@ public:
   }
 
   /// The junction vertices: empty balls tangent to 4 features, touching 4 or more,
-  /// from every 4-subset of faces and at most one reflex edge or vertex, merged within `merge`.
+  /// from every 4-subset of faces and at most two reflex edges or vertices, merged within `merge`.
   std::vector<Ball> Junctions(double eps, double merge) const
   {
     const int nf = static_cast<int>(this->Faces.size());
@@ -224,25 +224,28 @@ public:
         for (f[2] = f[1] + 1; f[2] < total; ++f[2])
           for (f[3] = f[2] + 1; f[3] < total; ++f[3])
           {
-            if (f[2] >= nf)
+            if (f[1] >= nf)
             {
-              continue; // the solver below takes at most one segment
+              continue; // at most two reflex edges or vertices per subset
             }
-            // A face whose plane holds the reflex edge touches a ball only where the
-            // edge does: with the edge it is one contact (and a double root).
+            // A face whose plane holds a reflex edge (or vertex) touches a ball only where
+            // the edge does: with the edge it is one contact (and a double root).
             bool adjacent = false;
-            for (int i = 0; i < 3 && f[3] >= nf; ++i)
+            for (int i = 0; i < 2; ++i)
             {
-              const Face& face = this->Faces[f[i]];
-              const auto& ends = this->Segments[f[3] - nf];
-              adjacent = adjacent || (std::fabs(Dot3(face.N, ends[0].data()) - face.D) <= eps &&
-                                       std::fabs(Dot3(face.N, ends[1].data()) - face.D) <= eps);
+              for (int j = 2; j < 4 && f[j] >= nf; ++j)
+              {
+                const Face& face = this->Faces[f[i]];
+                const auto& ends = this->Segments[f[j] - nf];
+                adjacent = adjacent || (std::fabs(Dot3(face.N, ends[0].data()) - face.D) <= eps &&
+                                         std::fabs(Dot3(face.N, ends[1].data()) - face.D) <= eps);
+              }
             }
-            if (adjacent)
+            if (adjacent || (f[2] < nf && f[3] >= nf && this->HoldsSegment(f[2], f[3] - nf, eps)))
             {
               continue;
             }
-            for (const auto& X : this->Solve(f, nf))
+            for (const auto& X : f[2] >= nf ? this->SolveTwoQuadrics(f, nf) : this->Solve(f, nf))
             {
               const Vec3 c{ X[0], X[1], X[2] };
               if (!(X[3] > eps) || this->SurfaceDistance(c) < X[3] - eps || this->Governors(c, X[3], eps) < 4)
@@ -272,6 +275,159 @@ private:
     double D;    // N.x = D on the face
     std::vector<int> Triangles;
   };
+
+  bool HoldsSegment(int face, int segment, double eps) const
+  {
+    const Face& f = this->Faces[face];
+    const auto& ends = this->Segments[segment];
+    return std::fabs(Dot3(f.N, ends[0].data()) - f.D) <= eps && std::fabs(Dot3(f.N, ends[1].data()) - f.D) <= eps;
+  }
+
+  // |x - p|^2 - ((x - p).u)^2 - r^2 of segment s's line (u = 0 for a vertex), and its gradient.
+  double Quadric(int s, const double X[4], double g[4]) const
+  {
+    const auto& ends = this->Segments[s];
+    double u[3] = { ends[1][0] - ends[0][0], ends[1][1] - ends[0][1], ends[1][2] - ends[0][2] };
+    const double ul = std::sqrt(Dot3(u, u));
+    double w[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      u[k] = ul > 0.0 ? u[k] / ul : 0.0;
+      w[k] = X[k] - ends[0][k];
+    }
+    const double along = Dot3(w, u);
+    for (int k = 0; k < 3; ++k)
+    {
+      g[k] = 2.0 * (w[k] - along * u[k]);
+    }
+    g[3] = -2.0 * X[3];
+    return Dot3(w, w) - along * along - X[3] * X[3];
+  }
+
+  // Two faces and two reflex edges (or vertices): the faces leave a plane of (x, r),
+  // X0 + s D1 + t D2; Newton's method on the two quadrics from a 16 x 16 grid of
+  // starts over it (brute force), roots merged.
+  std::vector<std::array<double, 4>> SolveTwoQuadrics(const int f[4], int nf) const
+  {
+    double rows[2][4], b[2];
+    for (int i = 0; i < 2; ++i)
+    {
+      const Face& face = this->Faces[f[i]];
+      rows[i][0] = face.N[0];
+      rows[i][1] = face.N[1];
+      rows[i][2] = face.N[2];
+      rows[i][3] = -1.0;
+      b[i] = face.D;
+    }
+    // Minimum-norm X0 = R^T (R R^T)^-1 b and an orthonormal basis D1, D2 of the null space.
+    auto dot4 = [](const double* x, const double* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2] + x[3] * y[3]; };
+    const double g00 = dot4(rows[0], rows[0]), g01 = dot4(rows[0], rows[1]), g11 = dot4(rows[1], rows[1]);
+    const double det = g00 * g11 - g01 * g01;
+    if (!(std::fabs(det) > 1e-12))
+    {
+      return {};
+    }
+    const double l0 = (g11 * b[0] - g01 * b[1]) / det, l1 = (g00 * b[1] - g01 * b[0]) / det;
+    double X0[4], D[2][4];
+    for (int k = 0; k < 4; ++k)
+    {
+      X0[k] = l0 * rows[0][k] + l1 * rows[1][k];
+    }
+    // Orthonormal rows q0, q1, then unit vectors with the rows and earlier picks projected out.
+    double q[4][4];
+    for (int i = 0; i < 2; ++i)
+    {
+      std::copy(rows[i], rows[i] + 4, q[i]);
+      for (int j = 0; j < i; ++j)
+      {
+        const double p = dot4(q[i], q[j]);
+        for (int k = 0; k < 4; ++k)
+        {
+          q[i][k] -= p * q[j][k];
+        }
+      }
+      const double n = std::sqrt(dot4(q[i], q[i]));
+      for (double& x : q[i])
+      {
+        x /= n;
+      }
+    }
+    int found = 2;
+    for (int e = 0; e < 4 && found < 4; ++e)
+    {
+      double v[4] = { 0, 0, 0, 0 };
+      v[e] = 1.0;
+      for (int j = 0; j < found; ++j)
+      {
+        const double p = dot4(v, q[j]);
+        for (int k = 0; k < 4; ++k)
+        {
+          v[k] -= p * q[j][k];
+        }
+      }
+      const double n = std::sqrt(dot4(v, v));
+      if (n > 0.3)
+      {
+        for (int k = 0; k < 4; ++k)
+        {
+          q[found][k] = v[k] / n;
+        }
+        ++found;
+      }
+    }
+    if (found < 4)
+    {
+      return {};
+    }
+    double basis[2][4];
+    std::copy(q[2], q[2] + 4, basis[0]);
+    std::copy(q[3], q[3] + 4, basis[1]);
+    std::copy(basis[0], basis[0] + 4, D[0]);
+    std::copy(basis[1], basis[1] + 4, D[1]);
+    std::vector<std::array<double, 4>> roots;
+    const double span = this->Diagonal;
+    for (int gi = 0; gi < 16; ++gi)
+    {
+      for (int gj = 0; gj < 16; ++gj)
+      {
+        double st[2] = { span * (-1.0 + 2.0 * (gi + 0.5) / 16), span * (-1.0 + 2.0 * (gj + 0.5) / 16) };
+        double X[4], F[2] = { 1, 1 };
+        for (int it = 0; it < 60; ++it)
+        {
+          for (int k = 0; k < 4; ++k)
+          {
+            X[k] = X0[k] + st[0] * D[0][k] + st[1] * D[1][k];
+          }
+          double g0[4], g1[4];
+          F[0] = this->Quadric(f[2] - nf, X, g0);
+          F[1] = this->Quadric(f[3] - nf, X, g1);
+          const double J[2][2] = { { dot4(g0, D[0]), dot4(g0, D[1]) }, { dot4(g1, D[0]), dot4(g1, D[1]) } };
+          const double dj = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+          if (!(std::fabs(dj) > 1e-300))
+          {
+            break;
+          }
+          st[0] -= (J[1][1] * F[0] - J[0][1] * F[1]) / dj;
+          st[1] -= (J[0][0] * F[1] - J[1][0] * F[0]) / dj;
+        }
+        if (std::fabs(F[0]) + std::fabs(F[1]) > 1e-20 * this->Diagonal * this->Diagonal || !(X[3] > 0.0))
+        {
+          continue;
+        }
+        bool known = false;
+        for (const auto& r : roots)
+        {
+          known = known || std::fabs(r[0] - X[0]) + std::fabs(r[1] - X[1]) + std::fabs(r[2] - X[2]) + std::fabs(r[3] - X[3]) <
+              1e-10 * this->Diagonal;
+        }
+        if (!known)
+        {
+          roots.push_back({ X[0], X[1], X[2], X[3] });
+        }
+      }
+    }
+    return roots;
+  }
 
   // Balls tangent to features f[0..3] (faces < nf, then at most one reflex edge's line or vertex).
   std::vector<std::array<double, 4>> Solve(const int f[4], int nf) const

@@ -162,5 +162,17 @@ int TestMedialClassifierJunctions(int, char*[])
       { { v, Vec3{ A, b, c } }, { v, Vec3{ a, B, c } }, { v, Vec3{ a, b, C } }, { v, v } }, "notched box", 3000,
       false));
   }
+  // Crossed grooves: a channel along x in the top, one along y in the bottom. Junctions
+  // under their crossing touch a top edge and a bottom edge, two skew lines (Newton's
+  // method; the closed form here is a grid of Newton starts over the two faces' plane).
+  {
+    // Generic sizes: no two faces exactly a ball's diameter apart (no junction lines).
+    const double X = 2.43, Y = 2.07, Z = 1.37;
+    const double y1 = 0.83, y2 = 1.31, z1 = 0.71, x1 = 0.93, x2 = 1.52, z2 = 0.47;
+    run(CheckShape(CrossedGrooves(X, Y, Z, y1, y2, z1, x1, x2, z2),
+      { { Vec3{ 0, y1, z1 }, Vec3{ X, y1, z1 } }, { Vec3{ 0, y2, z1 }, Vec3{ X, y2, z1 } },
+        { Vec3{ x1, 0, z2 }, Vec3{ x1, Y, z2 } }, { Vec3{ x2, 0, z2 }, Vec3{ x2, Y, z2 } } },
+      "crossed grooves"));
+  }
   return status;
 }
