@@ -16,27 +16,34 @@
  *
  * Governors of a ball (Classify). The contacts are every triangle whose closest
  * point to the centre c is within radius + tolerance (vtkMedialSurfaceQuery::
- * TrianglesWithin). Two contacts belong to one governor when
- *  - they are connected on the surface inside that band: the triangles share a
+ * TrianglesWithin). With theta > 0 (MinimumSeparationAngle) the sampler's rule
+ * (vtkMedialSurfaceQuery::ContactFilter) splits them: the cap is the contacts on
+ * the near side of the plane cut (q - c).u > r cos(theta), u the unit direction
+ * to the sample point P (without P: to the deepest contact, when the ball overlaps
+ * the surface), and the contacts inside the ball; the cap is one governor, P's. A
+ * triangle crossing the cut also gives its closest point beyond it (a ball stopped
+ * on the cone's rim touches there). A ball that overlaps the surface reads only
+ * the contacts beyond the cap (TrianglesWithin with the filter), so a tessellated
+ * cap costs nothing. Outside the cap, two contacts belong to one governor when
+ *  - they are connected on the surface inside the band: the triangles share a
  *    vertex or an edge that is itself within radius + tolerance of c; or
- *  - theta > 0 (MinimumSeparationAngle) and the angle between them, seen from c,
- *    is below theta (single linkage; the sample point P, when given, is one more
- *    contact). This is the sampler's separation-angle rule: contacts closer than
- *    theta count as one (vtkMedialSurfaceQuery::ContactFilter); or
- *  - their connected regions have the same feature.
+ *  - their connected regions have the same feature; or
+ *  - theta > 0 and the angle between them, seen from c, is below theta (single
+ *    linkage: contacts closer than theta count as one).
  * The feature of a connected region is the feature of its nearest contact q on
  * triangle t: PLANE (t's group) when c - q is along t's inward normal, else LINE
  * when q is on a sharp edge and c - q is perpendicular to it, else POINT (q is a
  * vertex). Among contacts at the same distance a plane wins over a line, a line
  * over a point. A governor is simple when every contact point lies on its
  * feature within the tolerance (a face, a reflex edge, a reflex vertex), and
- * compound otherwise (theta merged regions of several features, e.g. a tessellated
- * cap). Only simple governors have an exact equation (vtkMedialSeamSolver).
+ * compound otherwise (a cap that overlaps the surface, theta-merged regions of
+ * several features). Only simple governors have an exact equation
+ * (vtkMedialSeamSolver). At theta = 0 there is no cap.
  *
  * MedialPointType (3D codes, vtkMedialArrayNames.h): 0 rim (at most one governor,
  * or radius within the tolerance: the sheet's free boundary, where the radius goes
- * to zero or the sheet ends at a convex edge or a ridge flatter than 180 - theta
- * degrees), 1 sheet (2 governors), 2 seam (3), 3 junction (4 or more).
+ * to zero, or where contacts on both sides of a convex edge or ridge merge), 1 sheet
+ * (2 governors), 2 seam (3), 3 junction (4 or more).
  *
  * API for the structure filters (thread-safe after Build, no allocation per call
  * beyond the output's vectors):
@@ -141,10 +148,11 @@ public:
   const vtkMedialTriangleMesh& GetMesh() const { return *this->Mesh; }
   const vtkMedialSurfaceQuery& GetQuery() const { return *this->Query; }
   /// Absolute contact tolerance (Settings.Tolerance times the diagonal).
-  struct ClassifyScratch; // per-thread scratch space of Classify
   double GetContactTolerance() const { return this->ContactTolerance; }
   double GetMinimumSeparationAngle() const { return this->Theta; }
   double GetDiagonal() const { return this->Diagonal; }
+
+  struct ClassifyScratch; // per-thread scratch space of Classify (defined in the .cxx)
 
 private:
   using EdgeList = std::vector<std::tuple<vtkIdType, vtkIdType, vtkIdType>>; // (min, max vertex, triangle)
