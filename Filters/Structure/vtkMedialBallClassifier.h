@@ -9,10 +9,12 @@
  *     features: planes (coplanar faces), lines (sharp edges) and points (vertices).
  *  2. Each ball (input 0: points with a Radius array; an optional SurfacePoint
  *     array gives the sample P the ball is tangent at) gets its governors: the
- *     connected regions of surface within Tolerance * diagonal of its sphere, regions
- *     seen from the centre less than MinimumSeparationAngle apart counting as one
- *     (the sampler's theta rule). At theta = 0 on a polyhedron a governor is a
- *     face, a reflex edge or a reflex vertex. GovernorCount is their number and
+ *     connected regions of surface within Tolerance * diagonal of its sphere. With
+ *     theta = MinimumSeparationAngle > 0 the sampler's rule applies: the contacts
+ *     less than theta from P, seen from the centre, are one governor (P's cap; the
+ *     surface the ball overlaps is there), and other regions less than theta apart
+ *     count as one. At theta = 0 on a polyhedron a governor is a face, a reflex edge
+ *     or a reflex vertex. GovernorCount is their number and
  *     MedialPointType the 3D code: 0 rim (at most one governor, or a radius within
  *     the tolerance: the free boundary of a sheet, where the radius goes to zero or
  *     the sheet ends at a convex edge or a ridge flatter than 180 - theta degrees),
