@@ -10,6 +10,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
+#include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -68,6 +69,7 @@ vtkMedialBallClassifier::vtkMedialBallClassifier()
 {
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(2);
+  this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkMedialArrayNames::Radius);
 }
 
 int vtkMedialBallClassifier::FillInputPortInformation(int, vtkInformation* info)
@@ -101,10 +103,12 @@ int vtkMedialBallClassifier::RequestData(
     return 0;
   }
   const vtkIdType n = balls->GetNumberOfPoints();
-  vtkDataArray* radius = balls->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
-  if (n > 0 && (!radius || radius->GetNumberOfComponents() != 1))
+  vtkDataArray* radius = n > 0 ? this->GetInputArrayToProcess(0, inputVector) : nullptr;
+  if (n > 0 && (!radius || radius->GetNumberOfComponents() != 1 || radius->GetNumberOfTuples() != n))
   {
-    vtkErrorMacro(<< "The balls need a one-component point array named " << vtkMedialArrayNames::Radius << ".");
+    vtkErrorMacro(<< "Cannot classify the balls: they need a point data array of one radius per point (by "
+                     "default '"
+                  << vtkMedialArrayNames::Radius << "').");
     return 0;
   }
   vtkDataArray* surfacePoint = balls->GetPointData()->GetArray(vtkMedialArrayNames::SurfacePoint);

@@ -34,7 +34,8 @@
  *     equation; balls with one are not solved.
  *
  * Inputs: port 0, the balls (vtkPolyData points, e.g. vtkMedialAxisSampler's
- * output) with point data Radius (and optionally SurfacePoint); port 1, the closed
+ * output) with a radius array, chosen with SetInputArrayToProcess(0, ...) and by
+ * default the point data array Radius (and optionally SurfacePoint); port 1, the closed
  * surface they were computed from (SetSurfaceConnection). Balls should come from the
  * same theta; with BISECTION balls use a Tolerance above the sampler's.
  *
