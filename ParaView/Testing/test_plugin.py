@@ -25,7 +25,7 @@ def check(condition, message):
 LoadPlugin(plugin, remote=False, ns=globals())
 check(all(name in globals() for name in (
     "MedialAxisSampler", "MedialJunctionFilter", "MedialBallUnion", "MedialShapeSource",
-    "MedialReconstructionError", "MedialBallProtrusion", "MedialMeshReader",
+    "MedialReconstructionError", "MedialBallProtrusion", "MedialBallClassifier", "MedialMeshReader",
     "MedialOFFReader")), "the plugin defines every proxy")
 
 # Sampler -> reconstruction on the demo shape.
@@ -65,6 +65,16 @@ by_angle = servermanager.Fetch(protrusion).GetFieldData().GetArray("MaxProtrusio
 check(by_radius == by_copy and by_angle != by_radius,
       "protrusion: radius array selection (Radius %g, copy %g, SeparationAngle %g)"
       % (by_radius, by_copy, by_angle))
+
+# The 3D structure: every ball of a box classified, and its exact junction vertices.
+box = MedialShapeSource(Shape="Box", Resolution=2)  # noqa: F821
+box_balls = MedialAxisSampler(Input=box, NumberOfSamples=2000, MinimumSeparationAngle=0)  # noqa: F821
+classifier = MedialBallClassifier(Balls=box_balls, Surface=box, MinimumSeparationAngle=0)  # noqa: F821
+classified = servermanager.Fetch(classifier)
+exact = servermanager.Fetch(classifier, idx=1)
+types = classified.GetPointData().GetArray("MedialPointType")
+check(types is not None and classified.GetNumberOfPoints() == 2000 and exact.GetNumberOfPoints() > 0,
+      "classifier: 2000 balls typed, %d exact seam and junction points" % exact.GetNumberOfPoints())
 
 # Enumerations take their labels; the values reach the filter.
 sampler.Method = "Bisection"
