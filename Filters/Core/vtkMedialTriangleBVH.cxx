@@ -213,12 +213,23 @@ struct Scratch
 {
   std::vector<std::int32_t> Stack;
   std::vector<std::int32_t> Deferred;
+  std::vector<std::int32_t> CapNodes; // dropped for the cone while reaching into the ball
+  std::vector<std::int32_t> CapSlots; // the same, triangles
 };
-Scratch& ThreadScratch()
+// This thread's scratch space as the last query left it.
+Scratch& CurrentScratch()
 {
   thread_local Scratch scratch;
+  return scratch;
+}
+// The same, emptied for a new query.
+Scratch& ThreadScratch()
+{
+  Scratch& scratch = CurrentScratch();
   scratch.Stack.clear();
   scratch.Deferred.clear();
+  scratch.CapNodes.clear();
+  scratch.CapSlots.clear();
   return scratch;
 }
 }
@@ -517,8 +528,9 @@ void vtkMedialTriangleBVH::BuildNode(std::vector<Node>& nodes, std::int32_t node
 }
 
 void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[3],
-  vtkIdType ownTriangle, double cosMinAngle, double slack, TangentBall& result) const
+  vtkIdType ownTriangle, double cosMinAngle, double slack, double allowed, TangentBall& result) const
 {
+  const bool inscribe = cosMinAngle < 1.0 && allowed < result.Radius;
   const bool capped = cosMinAngle < 1.0;
   const double lift = 1.0 - cosMinAngle;                            // admissible: n.(q - p) >= r * lift
   const double coneSin = capped ? std::sqrt(0.5 * lift) : 0.0;     // sin(theta / 2)
@@ -588,8 +600,16 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
         hi[k] = std::max({ a[k], b[k], c[k] });
       }
       const double h = HeightAbove(lo, hi, p, n);
-      if (!(h > 0.0) || h * h < coneSin * coneSin * BoxDistance2(lo, hi, p))
+      if (!(h > 0.0))
       {
+        return false;
+      }
+      if (h * h < coneSin * coneSin * BoxDistance2(lo, hi, p))
+      {
+        if (inscribe)
+        {
+          scratch.CapSlots.push_back(slot); // it may cross the final ball in the cap
+        }
         return false;
       }
     }
@@ -640,7 +660,8 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
 
   // Depth first, nearer child first; a node is dropped as soon as it cannot
   // block the current ball (tested again when popped: the ball keeps shrinking).
-  auto culled = [&](const Node& node) {
+  auto culled = [&](std::int32_t index) {
+    const Node& node = this->Nodes[index];
     if (MissesBall(node, centreRel, radius))
     {
       return true;
@@ -651,7 +672,15 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
     {
       return true;
     }
-    return coneSin > 0.0 && h * h < coneSin * coneSin * BoxDistance2(node, pRel);
+    if (coneSin > 0.0 && h * h < coneSin * coneSin * BoxDistance2(node, pRel))
+    {
+      if (inscribe)
+      {
+        scratch.CapNodes.push_back(index); // it may cross the final ball in the cap
+      }
+      return true;
+    }
+    return false;
   };
   auto traverse = [&](std::int32_t root, const std::int32_t skip[3]) {
     scratch.Stack.push_back(root);
@@ -660,7 +689,7 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
       const std::int32_t index = scratch.Stack.back();
       scratch.Stack.pop_back();
       const Node& node = this->Nodes[index];
-      if (index == skip[0] || index == skip[1] || index == skip[2] || culled(node))
+      if (index == skip[0] || index == skip[1] || index == skip[2] || culled(index))
       {
         continue;
       }
@@ -722,19 +751,110 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
     }
   }
   result.Radius = radius;
+  if (inscribe && allowed < radius)
+  {
+    this->InscribeInCap(p, centre, radius, cosMinAngle, allowed, ownTriangle, result);
+  }
+}
+
+// The cap's surface that the ball (centre, radius) tangent at p, found by the angle
+// rule, leaves out: only what the traversal dropped for the cone (CapNodes, CapSlots)
+// or kept aside as reaching into the ball in the cap only (Deferred) can lie inside
+// the final ball, which is inside every earlier one. The closest point of that surface
+// within radius - allowed, if any, is the inscribed ball's contact.
+void vtkMedialTriangleBVH::InscribeInCap(const double p[3], const double centre[3], double radius,
+  double cosMinAngle, double allowed, vtkIdType ownTriangle, TangentBall& result) const
+{
+  Scratch& scratch = CurrentScratch(); // what MaximalTangentBall collected
+  // The cap: (q - c).(p - c) >= r^2 cos(theta), as w.q <= k for the clipping.
+  double w[3];
+  G::Sub(centre, p, w);
+  const double k = G::Dot(w, centre) - radius * radius * cosMinAngle;
+  double centreRel[3];
+  G::Sub(centre, this->Origin, centreRel);
+  const double reach = radius - allowed;
+  double best2 = reach * reach, best[3] = { 0, 0, 0 };
+  std::int32_t bestSlot = -1;
+  auto test = [&](std::int32_t slot) {
+    const double* plane = &this->Planes[4 * slot];
+    const double off = G::Dot(plane, centre) - plane[3];
+    if (this->TriangleIds[slot] == ownTriangle || off * off >= best2)
+    {
+      return;
+    }
+    const double* a = &this->Vertices[9 * slot];
+    double q[3];
+    if (G::ClosestPointOnTriangle(centre, a, a + 3, a + 6, q) >= best2)
+    {
+      return;
+    }
+    const double d2 = G::ClosestPointOnClippedTriangle(centre, a, a + 3, a + 6, w, k, q);
+    if (d2 < best2)
+    {
+      best2 = d2;
+      std::copy(q, q + 3, best);
+      bestSlot = slot;
+    }
+  };
+  for (const auto* slots : { &scratch.CapSlots, &scratch.Deferred })
+  {
+    for (std::int32_t slot : *slots)
+    {
+      test(slot);
+    }
+  }
+  for (std::int32_t root : scratch.CapNodes)
+  {
+    scratch.Stack.push_back(root);
+    while (!scratch.Stack.empty())
+    {
+      const Node& node = this->Nodes[scratch.Stack.back()];
+      scratch.Stack.pop_back();
+      if (MissesBall(node, centreRel, std::sqrt(best2)))
+      {
+        continue;
+      }
+      if (node.Count > 0)
+      {
+        for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
+        {
+          test(slot);
+        }
+        continue;
+      }
+      scratch.Stack.push_back(node.Start + 1);
+      scratch.Stack.push_back(node.Start);
+    }
+  }
+  if (bestSlot >= 0)
+  {
+    result.Shrunk = true;
+    result.InscribedRadius = std::sqrt(best2);
+    std::copy(best, best + 3, result.InscribedContact);
+    result.InscribedTriangle = this->TriangleIds[bestSlot];
+  }
 }
 
 template <class Visit>
 void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTriangle,
-  const double samplePoint[3], double cosMinAngle, double& reach2, Visit visit) const
+  const double samplePoint[3], double cosMinAngle, bool capOnly, double& reach2, Visit visit) const
 {
-  // Admissible part of a triangle: (q - x).(s - x) <= |s - x|^2 cos(theta), as w.q <= k.
+  // Admissible part of a triangle: (q - x).(s - x) <= |s - x|^2 cos(theta), as w.q <= k;
+  // with capOnly, the other side: the cap, written as (-w).q <= -k.
   const bool capped = cosMinAngle < 1.0 && samplePoint;
   double w[3] = { 0, 0, 0 }, k = 0.0;
   if (capped)
   {
     G::Sub(samplePoint, x, w);
     k = G::Dot(w, x) + G::Dot(w, w) * cosMinAngle;
+    if (capOnly)
+    {
+      for (double& c : w)
+      {
+        c = -c;
+      }
+      k = -k;
+    }
   }
   double xRel[3]; // x relative to the origin, for the node bounds
   G::Sub(x, this->Origin, xRel);
@@ -750,7 +870,7 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
     }
     if (capped)
     {
-      // The whole box on the cap's side of the plane w.q = k: nothing there counts.
+      // The whole box on the far side of the plane w.q = k: nothing there counts.
       double lowest = G::Dot(w, this->Origin) - k; // w.q - k at the box's lowest corner
       for (int d = 0; d < 3; ++d)
       {
@@ -765,14 +885,21 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
     {
       for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
       {
-        if (this->TriangleIds[slot] == ownTriangle)
+        // Cheapest first: the triangle's plane misses the ball.
+        const double* plane = &this->Planes[4 * slot];
+        const double off = G::Dot(plane, x) - plane[3];
+        if (this->TriangleIds[slot] == ownTriangle || off * off >= reach2)
         {
           continue;
         }
         const double* a = &this->Vertices[9 * slot];
+        // The whole triangle first: cheaper, and never farther than its admissible part.
         double q[3];
-        const double d2 = capped ? G::ClosestPointOnClippedTriangle(x, a, a + 3, a + 6, w, k, q)
-                                 : G::ClosestPointOnTriangle(x, a, a + 3, a + 6, q);
+        double d2 = G::ClosestPointOnTriangle(x, a, a + 3, a + 6, q);
+        if (capped && d2 < reach2)
+        {
+          d2 = G::ClosestPointOnClippedTriangle(x, a, a + 3, a + 6, w, k, q);
+        }
         if (!visit(d2, q, this->TriangleIds[slot]))
         {
           scratch.Stack.clear();
@@ -789,12 +916,12 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
 }
 
 bool vtkMedialTriangleBVH::ClosestPoint(const double x[3], double upperBound,
-  vtkIdType ownTriangle, const double samplePoint[3], double cosMinAngle, double point[3],
-  double& distance, vtkIdType& triangle) const
+  vtkIdType ownTriangle, const double samplePoint[3], double cosMinAngle, bool capOnly,
+  double point[3], double& distance, vtkIdType& triangle) const
 {
   double best2 = upperBound * upperBound;
   triangle = -1;
-  this->VisitAdmissible(x, ownTriangle, samplePoint, cosMinAngle, best2,
+  this->VisitAdmissible(x, ownTriangle, samplePoint, cosMinAngle, capOnly, best2,
     [&](double d2, const double q[3], vtkIdType t) {
       if (d2 < best2)
       {
@@ -809,14 +936,54 @@ bool vtkMedialTriangleBVH::ClosestPoint(const double x[3], double upperBound,
 }
 
 bool vtkMedialTriangleBVH::ContainsBall(const double x[3], double radius, vtkIdType ownTriangle,
-  const double samplePoint[3], double cosMinAngle) const
+  const double samplePoint[3], double cosMinAngle, bool capOnly) const
 {
   double reach2 = radius * radius;
   bool empty = true;
-  this->VisitAdmissible(x, ownTriangle, samplePoint, cosMinAngle, reach2,
+  this->VisitAdmissible(x, ownTriangle, samplePoint, cosMinAngle, capOnly, reach2,
     [&](double d2, const double*, vtkIdType) {
       empty = !(d2 < reach2);
       return empty; // stop at the first point inside
     });
   return empty;
+}
+
+void vtkMedialTriangleBVH::VisitBox(
+  const double lo[3], const double hi[3], const std::function<bool(vtkIdType)>& visit) const
+{
+  if (this->Nodes.empty())
+  {
+    return;
+  }
+  double l[3], h[3]; // relative to the origin, as the node bounds
+  G::Sub(lo, this->Origin, l);
+  G::Sub(hi, this->Origin, h);
+  std::vector<std::int32_t> stack{ 0 }; // own stack: visit may run other queries
+  while (!stack.empty())
+  {
+    const Node& node = this->Nodes[stack.back()];
+    stack.pop_back();
+    bool apart = false;
+    for (int k = 0; k < 3; ++k)
+    {
+      apart = apart || node.Lo[k] > h[k] || node.Hi[k] < l[k];
+    }
+    if (apart)
+    {
+      continue;
+    }
+    if (node.Count == 0)
+    {
+      stack.push_back(node.Start + 1);
+      stack.push_back(node.Start);
+      continue;
+    }
+    for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
+    {
+      if (!visit(this->TriangleIds[slot]))
+      {
+        return;
+      }
+    }
+  }
 }

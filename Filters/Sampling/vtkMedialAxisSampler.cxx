@@ -131,19 +131,9 @@ int vtkMedialAxisSampler::RequestData(
   }
   this->BoundaryEdges = mesh.BoundaryEdges;
   this->NumberOfTriangles = mesh.GetNumberOfTriangles();
-  if (mesh.DuplicateTriangles > 0)
+  for (const std::string& warning : mesh.Warnings())
   {
-    vtkWarningMacro(<< "Input has " << mesh.DuplicateTriangles << " duplicate triangles; they were ignored.");
-  }
-  if (mesh.NonManifoldEdges > 0)
-  {
-    vtkWarningMacro(<< "Input has " << mesh.NonManifoldEdges
-                    << " non-manifold edges; inside and outside may be ambiguous there.");
-  }
-  if (mesh.NonOrientableComponents > 0)
-  {
-    vtkWarningMacro(<< mesh.NonOrientableComponents
-                    << " component(s) cannot be oriented consistently (non-orientable surface).");
+    vtkWarningMacro(<< warning);
   }
 
   vtkMedialSurfaceQuery query;
@@ -342,32 +332,44 @@ int vtkMedialAxisSampler::RequestData(
     this->WriteCoverage(output);
   }
 
+  this->WarnAboutDiscardedSamples(mesh, used);
+  return 1;
+}
+
+// Shared by every 3D strategy: an open surface, or rays that met the surface from
+// outside (a surface folded over itself, or shells that touch or intersect).
+void vtkMedialAxisSampler::WarnAboutDiscardedSamples(const vtkMedialTriangleMesh& mesh, vtkIdType evaluated)
+{
   if (mesh.BoundaryEdges > 0)
   {
     vtkWarningMacro(<< "Input surface is open (" << mesh.BoundaryEdges << " boundary edges): "
-                    << this->DiscardedSamples << " of " << count
+                    << this->DiscardedSamples << " of " << evaluated
                     << " samples were discarded because their ray escaped through a hole.");
+  }
+  else if (this->DiscardedSamples > 0 && !mesh.Contacts.empty())
+  {
+    vtkWarningMacro(<< this->DiscardedSamples << " of " << evaluated
+                    << " samples were discarded: their inward ray met the surface from outside, "
+                       "where shells touch or intersect (see the warning naming them).");
   }
   else if (this->DiscardedSamples > 0)
   {
     // Closed, yet a ray left the solid: a folded-over or self-intersecting patch.
-    vtkWarningMacro(<< this->DiscardedSamples << " of " << count
-                    << " samples were discarded: their inward ray met the surface from outside "
-                       "(folded-over or self-intersecting triangles?).");
+    vtkWarningMacro(<< this->DiscardedSamples << " of " << evaluated
+                    << " samples were discarded: their inward ray met the surface from outside, "
+                       "so the surface folds over or intersects itself (self-intersecting triangles).");
   }
-  return 1;
 }
+
+static_assert(static_cast<int>(vtkMedialAxisSampler::BISECTION) == vtkMedialBallParameters::BISECTION &&
+    static_cast<int>(vtkMedialAxisSampler::SHRINKING_BALL) == vtkMedialBallParameters::SHRINKING_BALL &&
+    static_cast<int>(vtkMedialAxisSampler::ONE_PASS) == vtkMedialBallParameters::ONE_PASS,
+  "the solver's methods are the sampler's");
 
 vtkMedialBallParameters vtkMedialAxisSampler::MakeBallParameters(double diagonal) const
 {
-  vtkMedialBallParameters param;
-  param.Method = this->Method;
-  param.Tolerance = this->Tolerance * diagonal;
-  param.CosMinAngle = this->MinimumSeparationAngle > 0.0
-    ? std::cos(this->MinimumSeparationAngle * 3.14159265358979323846 / 180.0)
-    : 1.0;
-  param.MaximumIterations = this->MaximumIterations;
-  return param;
+  return vtkMedialMakeBallParameters(this->Method, this->Tolerance, this->MinimumSeparationAngle,
+    this->MaximumProtrusion, this->MaximumIterations, diagonal);
 }
 
 int vtkMedialAxisSampler::RequestDataIterative(
@@ -420,6 +422,20 @@ int vtkMedialAxisSampler::RequestDataIterative(
   this->CoverageReached = result.CoverageReached;
   this->MaxCoverageGap = result.MaxGap / mesh.Diagonal;
   this->WriteSamples(output, evaluated, result.Records);
+  this->WarnAboutDiscardedSamples(mesh, evaluated);
+  if (settings.Strategy == vtkMedialIterativeSettings::FACE_DISTANCE && evaluated < settings.Budget &&
+    !result.CoverageReached && result.WorstFace >= 0)
+  {
+    vtkWarningMacro(<< "face-distance stopped after " << evaluated << " of " << settings.Budget
+                    << " samples without reaching the coverage: " << result.GivenUpFaces
+                    << " faces were given up (" << (result.GivenUpFaces == 1 ? "its" : "their")
+                    << " own samples failed " << settings.MaximumFaceAttempts
+                    << " times to cover them: next to a hole, or where no admissible ball reaches). "
+                       "The largest gap, "
+                    << this->MaxCoverageGap << " of the diagonal, is at (" << result.WorstPoint[0]
+                    << ", " << result.WorstPoint[1] << ", " << result.WorstPoint[2]
+                    << ") on input cell " << mesh.SourceCellIds[result.WorstFace] << ".");
+  }
   // RequestedSamples is the budget; the samples used are EvaluatedSamples.
   output->GetFieldData()->GetArray(vtkMedialArrayNames::RequestedSamples)->SetTuple1(0, static_cast<double>(settings.Budget));
   vtkIdType validSeeds = 0;
@@ -565,6 +581,7 @@ void vtkMedialAxisSampler::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Method: " << GetMethodName(this->Method) << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "MinimumSeparationAngle: " << this->MinimumSeparationAngle << "\n";
+  os << indent << "MaximumProtrusion: " << this->MaximumProtrusion << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "MaximumIterations: " << this->MaximumIterations << "\n";
