@@ -13,6 +13,7 @@
 #include "vtkMedialBallUnion.h"
 #include "vtkMedialJunctionFilter.h"
 #include "vtkMedialShapeSource.h"
+#include "vtkMedialThickness.h"
 #include "vtkOFFReader.h"
 
 #include "vtkActor.h"
@@ -78,7 +79,8 @@ const char* Usage =
   "                   [--strategy random|closest-neighbor|face-distance] [--coverage E]\n"
   "                   [--threads T] [--tolerance E] [--min-angle DEG] [-o OUT.vtp]\n"
   "                   [--render OUT.png] [--stats] [--reconstruct OUT.vtp|.stl|.ply]\n"
-  "                   [--resolution N] [--junctions OUT.vtp]\n"
+  "                   [--resolution N] [--junctions OUT.vtp] [--max-protrusion E]\n"
+  "                   [--thickness OUT.vtp] [--thickness-below T]\n"
   "  INPUT        closed surface: .vtp .vtk .ply .stl .obj .off; or planar polygons / closed\n"
   "               polylines (any plane, holes allowed) for the 2D medial axis;\n"
   "               or a demo: demo:jack (3D, the default with no INPUT), demo:l-shape,\n"
@@ -96,9 +98,13 @@ const char* Usage =
   "  --tolerance E  bisection tolerance relative to the bounding-box diagonal (default 1e-6)\n"
   "  --min-angle DEG  minimum separation angle theta in degrees (default 45; 0 = exact\n"
   "               medial axis of the polyhedron)\n"
+  "  --max-protrusion E  largest depth, relative to the bounding-box diagonal, by which a\n"
+  "               ball may cross the surface (default 1e-4; 1 = the angle rule alone, whose\n"
+  "               balls cross it by up to about 2%)\n"
   "  -o OUT.vtp   write the medial balls (points with Radius, SurfacePoint, ...)\n"
   "  --render OUT.png  render the surface and the medial points offscreen (needs X; use xvfb-run)\n"
-  "  --stats      print one JSON line of figures on stdout\n"
+  "  --stats      print one JSON line of figures on stdout (protrusion_max_rel: how far\n"
+  "               the balls cross the surface, relative to the diagonal)\n"
   "  --reconstruct OUT  write the boundary of the union of the medial balls (.vtp .stl .ply);\n"
   "               with --stats adds reconstruction_seconds and, for a closed input,\n"
   "               hausdorff_max_rel and hausdorff_mean_rel (vertex to surface, the larger\n"
@@ -107,7 +113,13 @@ const char* Usage =
   "  --resolution N  grid points per axis of the reconstruction (default 128)\n"
   "  --junctions OUT.vtp  2D input only: write the medial graph (junctions, end points,\n"
   "               linear and parabolic arcs; point data Radius, MedialPointType,\n"
-  "               GovernorCount; cell data ArcType). --render then draws it too.\n";
+  "               GovernorCount; cell data ArcType). --render then draws it too.\n"
+  "  --thickness OUT.vtp  3D input: write the surface with its wall thickness (point and cell\n"
+  "               data Thickness, MedialRadius, MedialCentre, RayThickness); --render then\n"
+  "               draws the surface coloured by thickness; --stats adds thickness_min,\n"
+  "               thickness_p01 and thickness_median\n"
+  "  --thickness-below T  3D input: report the share of the area and the number of regions\n"
+  "               thinner than T (in the input's units), e.g. a printer's minimum wall\n";
 
 struct Options
 {
@@ -126,6 +138,9 @@ struct Options
   bool Stats = false;
   std::string Reconstruct;
   int Resolution = 128;
+  double MaxProtrusion = 1e-4;
+  std::string Thickness;
+  double ThicknessBelow = 0.0;
 };
 
 volatile std::sig_atomic_t Interrupted = 0;
@@ -347,6 +362,22 @@ Options Parse(int argc, char* argv[])
     {
       o.Junctions = need(i);
     }
+    else if (a == "--max-protrusion")
+    {
+      o.MaxProtrusion = number(i, 0, 1);
+    }
+    else if (a == "--thickness")
+    {
+      o.Thickness = need(i);
+    }
+    else if (a == "--thickness-below")
+    {
+      o.ThicknessBelow = number(i, 0, 1e300);
+      if (!(o.ThicknessBelow > 0.0))
+      {
+        Fail("--thickness-below expects a thickness above 0");
+      }
+    }
     else if (!a.empty() && a[0] == '-')
     {
       Fail("unknown option '" + a + "' (see --help)");
@@ -561,56 +592,49 @@ void WritePng(vtkRenderWindow* window, const std::string& path, MessageSink& sin
   }
 }
 
-void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, MessageSink& sink,
-  vtkPolyData* reconstruction = nullptr)
+// Colours `data` (as drawn by `mapper`) by one of its point or cell arrays through a
+// blue (low) to red (high) table over the array's range; returns the colour bar.
+vtkSmartPointer<vtkScalarBarActor> ColourBy(vtkPolyDataMapper* mapper, vtkPolyData* data, const char* name, bool cells)
 {
-  vtkNew<vtkPolyDataMapper> surfaceMapper;
-  surfaceMapper->SetInputData(surface);
-  surfaceMapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> surfaceActor;
-  surfaceActor->SetMapper(surfaceMapper);
-  surfaceActor->GetProperty()->SetColor(0.80, 0.82, 0.86);
-  surfaceActor->GetProperty()->SetOpacity(0.22);
-
   double range[2] = { 0.0, 1.0 };
-  if (auto* r = medial->GetPointData()->GetArray(vtkMedialArrayNames::Radius))
+  vtkDataArray* values = cells ? data->GetCellData()->GetArray(name) : data->GetPointData()->GetArray(name);
+  if (values && values->GetNumberOfTuples() > 0)
   {
-    if (r->GetNumberOfTuples() > 0)
-    {
-      r->GetRange(range);
-    }
+    values->GetRange(range);
   }
   vtkNew<vtkLookupTable> lut;
   lut->SetHueRange(0.667, 0.0); // blue (thin) to red (thick)
   lut->SetTableRange(range);
   lut->Build();
-  vtkNew<vtkPolyDataMapper> medialMapper;
-  medialMapper->SetInputData(medial);
-  medialMapper->SetLookupTable(lut);
-  medialMapper->SetScalarModeToUsePointFieldData();
-  medialMapper->SelectColorArray(vtkMedialArrayNames::Radius);
-  medialMapper->SetScalarRange(range);
-  medialMapper->ScalarVisibilityOn();
-  vtkNew<vtkActor> medialActor;
-  medialActor->SetMapper(medialMapper);
-  medialActor->GetProperty()->SetPointSize(4);
-  medialActor->GetProperty()->RenderPointsAsSpheresOn();
-
-  vtkNew<vtkScalarBarActor> bar;
+  mapper->SetLookupTable(lut);
+  if (cells)
+  {
+    mapper->SetScalarModeToUseCellFieldData();
+  }
+  else
+  {
+    mapper->SetScalarModeToUsePointFieldData();
+  }
+  mapper->SelectColorArray(name);
+  mapper->SetScalarRange(range);
+  mapper->ScalarVisibilityOn();
+  auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
   bar->SetLookupTable(lut);
-  bar->SetTitle(vtkMedialArrayNames::Radius);
+  bar->SetTitle(name);
   bar->SetNumberOfLabels(5);
   bar->SetWidth(0.09);
   bar->SetHeight(0.6);
   bar->SetPosition(0.89, 0.2);
   bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
   bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
+  return bar;
+}
 
-  vtkNew<vtkRenderer> renderer;
+// Frames the renderer's actors (a three-quarter view), renders offscreen and writes the PNG.
+void FrameAndWrite(vtkRenderer* renderer, const std::string& path, MessageSink& sink,
+  vtkPolyData* reconstruction = nullptr)
+{
   renderer->SetBackground(1, 1, 1);
-  renderer->AddActor(surfaceActor);
-  renderer->AddActor(medialActor);
-  renderer->AddActor2D(bar);
   renderer->ResetCamera();
   renderer->GetActiveCamera()->Azimuth(30);
   renderer->GetActiveCamera()->Elevation(20);
@@ -626,6 +650,111 @@ void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, 
   }
   window->Render();
   WritePng(window, path, sink);
+}
+
+void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, MessageSink& sink,
+  vtkPolyData* reconstruction = nullptr)
+{
+  vtkNew<vtkPolyDataMapper> surfaceMapper;
+  surfaceMapper->SetInputData(surface);
+  surfaceMapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> surfaceActor;
+  surfaceActor->SetMapper(surfaceMapper);
+  surfaceActor->GetProperty()->SetColor(0.80, 0.82, 0.86);
+  surfaceActor->GetProperty()->SetOpacity(0.22);
+
+  vtkNew<vtkPolyDataMapper> medialMapper;
+  medialMapper->SetInputData(medial);
+  vtkSmartPointer<vtkScalarBarActor> bar = ColourBy(medialMapper, medial, vtkMedialArrayNames::Radius, false);
+  vtkNew<vtkActor> medialActor;
+  medialActor->SetMapper(medialMapper);
+  medialActor->GetProperty()->SetPointSize(4);
+  medialActor->GetProperty()->RenderPointsAsSpheresOn();
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(surfaceActor);
+  renderer->AddActor(medialActor);
+  renderer->AddActor2D(bar);
+  FrameAndWrite(renderer, path, sink, reconstruction);
+}
+
+// The surface coloured by its Thickness (point data), with a colour bar.
+void RenderThickness(vtkPolyData* thickness, const std::string& path, MessageSink& sink)
+{
+  vtkNew<vtkPolyDataNormals> normals; // smooth shading
+  normals->SetInputData(thickness);
+  normals->SplittingOff();
+  normals->Update();
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(normals->GetOutputPort());
+  vtkSmartPointer<vtkScalarBarActor> bar =
+    ColourBy(mapper, normals->GetOutput(), vtkMedialArrayNames::Thickness, false);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->AddActor2D(bar);
+  FrameAndWrite(renderer, path, sink);
+}
+
+// Runs vtkMedialThickness with the sampler's angle and protrusion settings.
+vtkSmartPointer<vtkPolyData> MeasureThickness(vtkPolyData* surface, const Options& opt, MessageSink& sink)
+{
+  vtkNew<vtkMedialThickness> thickness;
+  thickness->SetInputData(surface);
+  thickness->SetMinimumSeparationAngle(opt.MinAngle);
+  thickness->SetMaximumProtrusion(opt.MaxProtrusion);
+  thickness->SetThinThreshold(opt.ThicknessBelow);
+  thickness->SetNumberOfThreads(opt.Threads);
+  thickness->Update();
+  if (!sink.LastError.empty())
+  {
+    Fail(sink.LastError);
+  }
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->ShallowCopy(thickness->GetOutput());
+  return result;
+}
+
+// JSON members (or, without --stats, a line) for --thickness and --thickness-below:
+// percentiles of the point Thickness (NaN left out) and the thin share and regions.
+std::string ThicknessReport(vtkPolyData* thickness, const Options& opt)
+{
+  std::vector<double> values;
+  vtkDataArray* t = thickness->GetPointData()->GetArray(vtkMedialArrayNames::Thickness);
+  for (vtkIdType i = 0; t && i < t->GetNumberOfTuples(); ++i)
+  {
+    if (!std::isnan(t->GetComponent(i, 0)))
+    {
+      values.push_back(t->GetComponent(i, 0));
+    }
+  }
+  std::sort(values.begin(), values.end());
+  auto quantile = [&](double q) {
+    return values.empty() ? std::nan("") : values[static_cast<size_t>(q * (values.size() - 1))];
+  };
+  const double share = opt.ThicknessBelow > 0.0
+    ? thickness->GetFieldData()->GetArray(vtkMedialArrayNames::ThinAreaFraction)->GetComponent(0, 0)
+    : 0.0;
+  const double regions = opt.ThicknessBelow > 0.0
+    ? thickness->GetFieldData()->GetArray(vtkMedialArrayNames::ThinRegionCount)->GetComponent(0, 0)
+    : 0.0;
+  std::ostringstream out;
+  out.precision(6);
+  if (!opt.Stats)
+  {
+    out << "thinner than " << opt.ThicknessBelow << ": " << 100.0 * share << "% of the area, in "
+        << regions << (regions == 1 ? " region" : " regions");
+    return out.str();
+  }
+  out << ", \"thickness_min\": " << quantile(0.0) << ", \"thickness_p01\": " << quantile(0.01)
+      << ", \"thickness_median\": " << quantile(0.5);
+  if (opt.ThicknessBelow > 0.0)
+  {
+    out << ", \"thickness_below\": " << opt.ThicknessBelow << ", \"thin_area_fraction\": " << share
+        << ", \"thin_regions\": " << regions;
+  }
+  return out.str();
 }
 
 // JSON members for --reconstruct; the Hausdorff figures only for a closed input.
@@ -966,6 +1095,14 @@ int main(int argc, char* argv[])
   {
     CheckReconstructPath(opt.Reconstruct);
   }
+  if (!opt.Thickness.empty())
+  {
+    if (Extension(opt.Thickness) != ".vtp")
+    {
+      Fail("--thickness writes VTK XML polydata and needs a .vtp name, got '" + opt.Thickness + "'");
+    }
+    CheckWritable(opt.Thickness, "--thickness");
+  }
 
   if (!opt.Junctions.empty())
   {
@@ -997,6 +1134,11 @@ int main(int argc, char* argv[])
   {
     Fail("--junctions needs planar polygons or closed polylines; '" + opt.Input + "' is not planar");
   }
+  const bool wantThickness = !opt.Thickness.empty() || opt.ThicknessBelow > 0.0;
+  if (wantThickness && planar)
+  {
+    Fail("--thickness and --thickness-below need a 3D surface; '" + opt.Input + "' is planar");
+  }
   vtkSmartPointer<vtkPolyData> graph;
   if (planar && (!opt.Junctions.empty() || !opt.Render.empty() || opt.Stats))
   {
@@ -1024,6 +1166,7 @@ int main(int argc, char* argv[])
   sampler->SetNumberOfThreads(opt.Threads);
   sampler->SetTolerance(opt.Tolerance);
   sampler->SetMinimumSeparationAngle(opt.MinAngle);
+  sampler->SetMaximumProtrusion(opt.MaxProtrusion);
 
   // Progress bar: only on a terminal, and only once a run has lasted a second.
   const auto start = std::chrono::steady_clock::now();
@@ -1108,11 +1251,35 @@ int main(int argc, char* argv[])
       std::chrono::duration<double>(std::chrono::steady_clock::now() - reconstructStart).count();
     WriteReconstruction(reconstruction, opt.Reconstruct, sink);
   }
+  vtkSmartPointer<vtkPolyData> thickness;
+  if (wantThickness)
+  {
+    thickness = MeasureThickness(surface, opt, sink);
+    if (!opt.Thickness.empty())
+    {
+      vtkNew<vtkXMLPolyDataWriter> writer;
+      writer->SetInputData(thickness);
+      writer->SetFileName(opt.Thickness.c_str());
+      writer->SetDataModeToBinary();
+      if (!writer->Write() || !sink.LastError.empty())
+      {
+        Fail("cannot write '" + opt.Thickness + "': " + sink.LastError);
+      }
+    }
+    if (opt.ThicknessBelow > 0.0 && !opt.Stats)
+    {
+      std::cout << ThicknessReport(thickness, opt) << std::endl;
+    }
+  }
   if (!opt.Render.empty())
   {
     if (planar)
     {
       Render2D(surface, graph, opt.Render, sink);
+    }
+    else if (thickness)
+    {
+      RenderThickness(thickness, opt.Render, sink);
     }
     else
     {
@@ -1141,8 +1308,17 @@ int main(int argc, char* argv[])
          << ", \"coverage_reached\": " << (sampler->GetCoverageReached() ? "true" : "false")
          << ", \"max_coverage_gap\": " << sampler->GetMaxCoverageGap();
     }
+    if (!planar)
+    {
+      js << ", \"max_protrusion\": " << opt.MaxProtrusion << ", \"protrusion_max_rel\": "
+         << medialbench::BallProtrusion(medial, surface, surface->GetLength(), threads);
+    }
     js << ", \"seconds\": " << seconds
        << ReconstructionStats(surface, reconstruction, reconstructionSeconds, sampler, opt);
+    if (thickness)
+    {
+      js << ThicknessReport(thickness, opt);
+    }
     if (graph)
     {
       vtkIdType junctions = 0, ends = 0;
