@@ -16,7 +16,7 @@ import time
 
 import vtk
 import medialaxis  # noqa: F401 (registers the classes)
-from medialaxis.vtkMedialAxisFilters import vtkMedialJunctionFilter, vtkMedialShapeSource
+from medialaxis import vtkMedialJunctionFilter, vtkMedialShapeSource
 
 threads = int(sys.argv[1]) if len(sys.argv) > 1 else 2
 
@@ -113,5 +113,5 @@ for name, make in (("STAR shape (1024 spikes)", shape_star), ("random star", ran
         best = dt if best is None else min(best, dt)
     print(f"{name}: {data.GetNumberOfPoints()} vertices, {threads} threads: {best:.3f} s, "
           f"{f.GetNumberOfJunctions()} junctions, {f.GetNumberOfEndPoints()} ends, "
-          f"{f.GetNumberOfSamples()} samples, unresolved {f.GetUnresolvedIntervals()}, "
+          f"{f.GetNumberOfBoundarySamples()} samples, unresolved {f.GetUnresolvedIntervals()}, "
           f"{f.GetOutput().GetNumberOfLines()} arcs, (cycles, components) = {graph_cycles(f.GetOutput())}")

@@ -5,55 +5,33 @@
 // Reads a mesh or polygon (or generates a demo shape), runs vtkMedialAxisSampler
 // (and, for 2D input, vtkMedialJunctionFilter), and writes the medial balls, the
 // medial graph, a picture and a JSON line of figures. Only wiring lives here;
-// every algorithm is in a filter.
+// every algorithm is in a filter, every picture in vtkMedialScene.
 
 #include "vtkMedialArrayNames.h"
-#include "MedialReconstructionError.h"
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialBallProtrusion.h"
 #include "vtkMedialBallUnion.h"
+#include "vtkMedialFileReader.h"
 #include "vtkMedialJunctionFilter.h"
+#include "vtkMedialReconstructionError.h"
+#include "vtkMedialScene.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkMedialThickness.h"
-#include "vtkOFFReader.h"
 
-#include "vtkActor.h"
 #include "vtkCallbackCommand.h"
-#include "vtkCamera.h"
 #include "vtkCommand.h"
-#include "vtkDataSetSurfaceFilter.h"
-#include "vtkDataSetReader.h"
-#include "vtkFieldData.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkLogger.h"
-#include "vtkCellData.h"
-#include "vtkGlyph3D.h"
-#include "vtkLookupTable.h"
 #include "vtkMath.h"
-#include "vtkPoints.h"
-#include "vtkCellArray.h"
-#include "vtkRegularPolygonSource.h"
-#include "vtkSphereSource.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
-#include "vtkPLYReader.h"
 #include "vtkPLYWriter.h"
-#include "vtkPolyDataNormals.h"
-#include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
-#include "vtkSTLReader.h"
 #include "vtkSTLWriter.h"
-#include "vtkScalarBarActor.h"
 #include "vtkSmartPointer.h"
-#include "vtkTextProperty.h"
-#include "vtkWindowToImageFilter.h"
-#include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
 
 #include <omp.h>
@@ -62,15 +40,16 @@
 
 #include <algorithm>
 #include <cctype>
-#include <csignal>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -99,12 +78,13 @@ const char* Usage =
   "  --min-angle DEG  minimum separation angle theta in degrees (default 45; 0 = exact\n"
   "               medial axis of the polyhedron)\n"
   "  --max-protrusion E  largest depth, relative to the bounding-box diagonal, by which a\n"
-  "               ball may cross the surface (default 1e-4; 1 = the angle rule alone, whose\n"
-  "               balls cross it by up to about 2%)\n"
+  "               ball may cross the surface; deeper, it is shrunk about its centre until\n"
+  "               inscribed (default 1e-4; 1 = never: the angle rule alone, whose balls\n"
+  "               cross the surface by up to about 2% of the diagonal)\n"
   "  -o OUT.vtp   write the medial balls (points with Radius, SurfacePoint, ...)\n"
   "  --render OUT.png  render the surface and the medial points offscreen (needs X; use xvfb-run)\n"
-  "  --stats      print one JSON line of figures on stdout (protrusion_max_rel: how far\n"
-  "               the balls cross the surface, relative to the diagonal)\n"
+  "  --stats      print one JSON line of figures on stdout; 3D input adds protrusion_max_rel,\n"
+  "               how far the balls cross the surface (relative to the diagonal)\n"
   "  --reconstruct OUT  write the boundary of the union of the medial balls (.vtp .stl .ply);\n"
   "               with --stats adds reconstruction_seconds and, for a closed input,\n"
   "               hausdorff_max_rel and hausdorff_mean_rel (vertex to surface, the larger\n"
@@ -235,6 +215,32 @@ bool ParseNumber(const char* text, double& value)
   return end != text && *end == '\0' && std::isfinite(value);
 }
 
+// --method NAME.
+int ParseMethod(const std::string& name)
+{
+  for (int m : { vtkMedialAxisSampler::BISECTION, vtkMedialAxisSampler::SHRINKING_BALL, vtkMedialAxisSampler::ONE_PASS })
+  {
+    if (name == vtkMedialAxisSampler::GetMethodName(m))
+    {
+      return m;
+    }
+  }
+  Fail("unknown --method '" + name + "' (bisection, shrinking-ball, one-pass)");
+}
+
+// --strategy NAME.
+int ParseStrategy(const std::string& name)
+{
+  for (int k = vtkMedialAxisSampler::RANDOM; k <= vtkMedialAxisSampler::FACE_DISTANCE; ++k)
+  {
+    if (name == vtkMedialAxisSampler::GetSamplingStrategyName(k))
+    {
+      return k;
+    }
+  }
+  Fail("unknown --strategy '" + name + "' (random, closest-neighbor, face-distance)");
+}
+
 Options Parse(int argc, char* argv[])
 {
   Options o;
@@ -280,43 +286,11 @@ Options Parse(int argc, char* argv[])
     }
     else if (a == "--method")
     {
-      const std::string m = need(i);
-      if (m == "bisection")
-      {
-        o.Method = vtkMedialAxisSampler::BISECTION;
-      }
-      else if (m == "shrinking-ball")
-      {
-        o.Method = vtkMedialAxisSampler::SHRINKING_BALL;
-      }
-      else if (m == "one-pass")
-      {
-        o.Method = vtkMedialAxisSampler::ONE_PASS;
-      }
-      else
-      {
-        Fail("unknown --method '" + m + "' (bisection, shrinking-ball, one-pass)");
-      }
+      o.Method = ParseMethod(need(i));
     }
     else if (a == "--strategy")
     {
-      const std::string m = need(i);
-      if (m == "random")
-      {
-        o.Strategy = vtkMedialAxisSampler::RANDOM;
-      }
-      else if (m == "closest-neighbor")
-      {
-        o.Strategy = vtkMedialAxisSampler::CLOSEST_NEIGHBOR;
-      }
-      else if (m == "face-distance")
-      {
-        o.Strategy = vtkMedialAxisSampler::FACE_DISTANCE;
-      }
-      else
-      {
-        Fail("unknown --strategy '" + m + "' (random, closest-neighbor, face-distance)");
-      }
+      o.Strategy = ParseStrategy(need(i));
     }
     else if (a == "--coverage")
     {
@@ -354,13 +328,13 @@ Options Parse(int argc, char* argv[])
     {
       o.Reconstruct = need(i);
     }
-    else if (a == "--resolution")
-    {
-      o.Resolution = static_cast<int>(integer(i, 8, 2048));
-    }
     else if (a == "--junctions")
     {
       o.Junctions = need(i);
+    }
+    else if (a == "--resolution")
+    {
+      o.Resolution = static_cast<int>(integer(i, 8, 2048));
     }
     else if (a == "--max-protrusion")
     {
@@ -396,10 +370,7 @@ Options Parse(int argc, char* argv[])
 
 std::string Extension(const std::string& path)
 {
-  const size_t dot = path.find_last_of('.');
-  std::string e = dot == std::string::npos ? "" : path.substr(dot);
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
-  return e;
+  return vtkMedialFileReader::GetExtension(path.c_str());
 }
 
 // Fails unless `path` can be created as a file.
@@ -418,14 +389,6 @@ void CheckWritable(const std::string& path, const char* what)
   }
 }
 
-template <class Reader>
-vtkSmartPointer<vtkAlgorithm> FileReader(const std::string& path)
-{
-  auto reader = vtkSmartPointer<Reader>::New();
-  reader->SetFileName(path.c_str());
-  return reader;
-}
-
 vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, MessageSink& sink)
 {
   struct stat st;
@@ -441,49 +404,17 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, MessageSink& s
   {
     Fail("input '" + path + "' is empty");
   }
-  const std::string ext = Extension(path);
-  vtkSmartPointer<vtkAlgorithm> reader, legacy;
-  if (ext == ".vtp")
-  {
-    reader = FileReader<vtkXMLPolyDataReader>(path);
-  }
-  else if (ext == ".vtk")
-  {
-    // Any legacy dataset; its surface is extracted.
-    legacy = FileReader<vtkDataSetReader>(path); // kept alive: the connection does not own it
-    auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
-    surface->SetInputConnection(legacy->GetOutputPort());
-    reader = surface;
-  }
-  else if (ext == ".ply")
-  {
-    reader = FileReader<vtkPLYReader>(path);
-  }
-  else if (ext == ".stl")
-  {
-    reader = FileReader<vtkSTLReader>(path);
-  }
-  else if (ext == ".obj")
-  {
-    reader = FileReader<vtkOBJReader>(path);
-  }
-  else if (ext == ".off")
-  {
-    reader = FileReader<vtkOFFReader>(path);
-  }
-  else
-  {
-    Fail("unsupported input extension '" + ext + "' (.vtp .vtk .ply .stl .obj .off)");
-  }
+  vtkNew<vtkMedialFileReader> reader;
+  reader->SetFileName(path.c_str());
   reader->Update();
   if (!sink.LastError.empty())
   {
     Fail("cannot read '" + path + "': " + sink.LastError);
   }
-  vtkPolyData* data = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (!data || data->GetNumberOfPoints() == 0)
+  vtkPolyData* data = reader->GetOutput();
+  if (data->GetNumberOfPoints() == 0)
   {
-    Fail("cannot read '" + path + "': no points (empty or not a " + ext + " file)");
+    Fail("cannot read '" + path + "': no points (empty or not a " + Extension(path) + " file)");
   }
   auto copy = vtkSmartPointer<vtkPolyData>::New();
   copy->ShallowCopy(data);
@@ -518,9 +449,28 @@ vtkSmartPointer<vtkPolyData> Reconstruct(vtkPolyData* medial, const Options& opt
   return result;
 }
 
+// Writes binary VTK XML polydata; fails with the writer's reason.
+void WriteVtp(vtkPolyData* data, const std::string& path, MessageSink& sink)
+{
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(data);
+  writer->SetFileName(path.c_str());
+  writer->SetDataModeToBinary();
+  if (!writer->Write() || !sink.LastError.empty())
+  {
+    Fail("cannot write '" + path + "': " + sink.LastError);
+  }
+}
+
+// The reconstruction, written by the extension of `path` (.stl, .ply or .vtp).
 void WriteReconstruction(vtkPolyData* reconstruction, const std::string& path, MessageSink& sink)
 {
   const std::string ext = Extension(path);
+  if (ext != ".stl" && ext != ".ply")
+  {
+    WriteVtp(reconstruction, path, sink);
+    return;
+  }
   int written = 0;
   if (ext == ".stl")
   {
@@ -530,20 +480,12 @@ void WriteReconstruction(vtkPolyData* reconstruction, const std::string& path, M
     w->SetFileTypeToBinary();
     written = w->Write();
   }
-  else if (ext == ".ply")
+  else
   {
     vtkNew<vtkPLYWriter> w;
     w->SetInputData(reconstruction);
     w->SetFileName(path.c_str());
     w->SetFileTypeToBinary();
-    written = w->Write();
-  }
-  else
-  {
-    vtkNew<vtkXMLPolyDataWriter> w;
-    w->SetInputData(reconstruction);
-    w->SetFileName(path.c_str());
-    w->SetDataModeToBinary();
     written = w->Write();
   }
   if (!written || !sink.LastError.empty())
@@ -552,214 +494,9 @@ void WriteReconstruction(vtkPolyData* reconstruction, const std::string& path, M
   }
 }
 
-// Splits the window: the input and medial points on the left, the reconstruction on
-// the right with the same camera.
-void AddReconstructionView(vtkRenderWindow* window, vtkRenderer* left, vtkPolyData* reconstruction)
-{
-  left->SetViewport(0.0, 0.0, 0.5, 1.0);
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputData(reconstruction);
-  normals->SplittingOff();
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(normals->GetOutputPort());
-  mapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(0.90, 0.62, 0.40);
-  vtkNew<vtkRenderer> right;
-  right->SetViewport(0.5, 0.0, 1.0, 1.0);
-  right->SetBackground(1, 1, 1);
-  right->AddActor(actor);
-  right->SetActiveCamera(left->GetActiveCamera());
-  window->AddRenderer(right);
-  int* size = window->GetSize();
-  window->SetSize(2 * size[0], size[1]);
-}
-
-// Saves what the window shows as a PNG; fails with the writer's reason.
-void WritePng(vtkRenderWindow* window, const std::string& path, MessageSink& sink)
-{
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff();
-  vtkNew<vtkPNGWriter> png;
-  png->SetInputConnection(grab->GetOutputPort());
-  png->SetFileName(path.c_str());
-  png->Write();
-  if (!sink.LastError.empty())
-  {
-    Fail("cannot write '" + path + "': " + sink.LastError);
-  }
-}
-
-// Colours `data` (as drawn by `mapper`) by one of its point or cell arrays through a
-// blue (low) to red (high) table over the array's range; returns the colour bar.
-vtkSmartPointer<vtkScalarBarActor> ColourBy(vtkPolyDataMapper* mapper, vtkPolyData* data, const char* name, bool cells)
-{
-  double range[2] = { 0.0, 1.0 };
-  vtkDataArray* values = cells ? data->GetCellData()->GetArray(name) : data->GetPointData()->GetArray(name);
-  if (values && values->GetNumberOfTuples() > 0)
-  {
-    values->GetRange(range);
-  }
-  vtkNew<vtkLookupTable> lut;
-  lut->SetHueRange(0.667, 0.0); // blue (thin) to red (thick)
-  lut->SetTableRange(range);
-  lut->Build();
-  mapper->SetLookupTable(lut);
-  if (cells)
-  {
-    mapper->SetScalarModeToUseCellFieldData();
-  }
-  else
-  {
-    mapper->SetScalarModeToUsePointFieldData();
-  }
-  mapper->SelectColorArray(name);
-  mapper->SetScalarRange(range);
-  mapper->ScalarVisibilityOn();
-  auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
-  bar->SetLookupTable(lut);
-  bar->SetTitle(name);
-  bar->SetNumberOfLabels(5);
-  bar->SetWidth(0.09);
-  bar->SetHeight(0.6);
-  bar->SetPosition(0.89, 0.2);
-  bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
-  bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
-  return bar;
-}
-
-// Frames the renderer's actors (a three-quarter view), renders offscreen and writes the PNG.
-void FrameAndWrite(vtkRenderer* renderer, const std::string& path, MessageSink& sink,
-  vtkPolyData* reconstruction = nullptr)
-{
-  renderer->SetBackground(1, 1, 1);
-  renderer->ResetCamera();
-  renderer->GetActiveCamera()->Azimuth(30);
-  renderer->GetActiveCamera()->Elevation(20);
-  renderer->ResetCamera();
-  renderer->GetActiveCamera()->Zoom(1.6);
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetSize(900, 640);
-  window->AddRenderer(renderer);
-  if (reconstruction)
-  {
-    AddReconstructionView(window, renderer, reconstruction);
-  }
-  window->Render();
-  WritePng(window, path, sink);
-}
-
-void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, MessageSink& sink,
-  vtkPolyData* reconstruction = nullptr)
-{
-  vtkNew<vtkPolyDataMapper> surfaceMapper;
-  surfaceMapper->SetInputData(surface);
-  surfaceMapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> surfaceActor;
-  surfaceActor->SetMapper(surfaceMapper);
-  surfaceActor->GetProperty()->SetColor(0.80, 0.82, 0.86);
-  surfaceActor->GetProperty()->SetOpacity(0.22);
-
-  vtkNew<vtkPolyDataMapper> medialMapper;
-  medialMapper->SetInputData(medial);
-  vtkSmartPointer<vtkScalarBarActor> bar = ColourBy(medialMapper, medial, vtkMedialArrayNames::Radius, false);
-  vtkNew<vtkActor> medialActor;
-  medialActor->SetMapper(medialMapper);
-  medialActor->GetProperty()->SetPointSize(4);
-  medialActor->GetProperty()->RenderPointsAsSpheresOn();
-
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(surfaceActor);
-  renderer->AddActor(medialActor);
-  renderer->AddActor2D(bar);
-  FrameAndWrite(renderer, path, sink, reconstruction);
-}
-
-// The surface coloured by its Thickness (point data), with a colour bar.
-void RenderThickness(vtkPolyData* thickness, const std::string& path, MessageSink& sink)
-{
-  vtkNew<vtkPolyDataNormals> normals; // smooth shading
-  normals->SetInputData(thickness);
-  normals->SplittingOff();
-  normals->Update();
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(normals->GetOutputPort());
-  vtkSmartPointer<vtkScalarBarActor> bar =
-    ColourBy(mapper, normals->GetOutput(), vtkMedialArrayNames::Thickness, false);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  renderer->AddActor2D(bar);
-  FrameAndWrite(renderer, path, sink);
-}
-
-// Runs vtkMedialThickness with the sampler's angle and protrusion settings.
-vtkSmartPointer<vtkPolyData> MeasureThickness(vtkPolyData* surface, const Options& opt, MessageSink& sink)
-{
-  vtkNew<vtkMedialThickness> thickness;
-  thickness->SetInputData(surface);
-  thickness->SetMinimumSeparationAngle(opt.MinAngle);
-  thickness->SetMaximumProtrusion(opt.MaxProtrusion);
-  thickness->SetThinThreshold(opt.ThicknessBelow);
-  thickness->SetNumberOfThreads(opt.Threads);
-  thickness->Update();
-  if (!sink.LastError.empty())
-  {
-    Fail(sink.LastError);
-  }
-  auto result = vtkSmartPointer<vtkPolyData>::New();
-  result->ShallowCopy(thickness->GetOutput());
-  return result;
-}
-
-// JSON members (or, without --stats, a line) for --thickness and --thickness-below:
-// percentiles of the point Thickness (NaN left out) and the thin share and regions.
-std::string ThicknessReport(vtkPolyData* thickness, const Options& opt)
-{
-  std::vector<double> values;
-  vtkDataArray* t = thickness->GetPointData()->GetArray(vtkMedialArrayNames::Thickness);
-  for (vtkIdType i = 0; t && i < t->GetNumberOfTuples(); ++i)
-  {
-    if (!std::isnan(t->GetComponent(i, 0)))
-    {
-      values.push_back(t->GetComponent(i, 0));
-    }
-  }
-  std::sort(values.begin(), values.end());
-  auto quantile = [&](double q) {
-    return values.empty() ? std::nan("") : values[static_cast<size_t>(q * (values.size() - 1))];
-  };
-  const double share = opt.ThicknessBelow > 0.0
-    ? thickness->GetFieldData()->GetArray(vtkMedialArrayNames::ThinAreaFraction)->GetComponent(0, 0)
-    : 0.0;
-  const double regions = opt.ThicknessBelow > 0.0
-    ? thickness->GetFieldData()->GetArray(vtkMedialArrayNames::ThinRegionCount)->GetComponent(0, 0)
-    : 0.0;
-  std::ostringstream out;
-  out.precision(6);
-  if (!opt.Stats)
-  {
-    out << "thinner than " << opt.ThicknessBelow << ": " << 100.0 * share << "% of the area, in "
-        << regions << (regions == 1 ? " region" : " regions");
-    return out.str();
-  }
-  out << ", \"thickness_min\": " << quantile(0.0) << ", \"thickness_p01\": " << quantile(0.01)
-      << ", \"thickness_median\": " << quantile(0.5);
-  if (opt.ThicknessBelow > 0.0)
-  {
-    out << ", \"thickness_below\": " << opt.ThicknessBelow << ", \"thin_area_fraction\": " << share
-        << ", \"thin_regions\": " << regions;
-  }
-  return out.str();
-}
-
-// JSON members for --reconstruct; the Hausdorff figures only for a closed input.
+// JSON members for --reconstruct; the error figures only for a closed input.
 std::string ReconstructionStats(vtkPolyData* surface, vtkPolyData* reconstruction, double seconds,
-  vtkMedialAxisSampler* sampler, const Options& opt)
+  vtkMedialAxisSampler* sampler, const Options& opt, MessageSink& sink)
 {
   if (!reconstruction)
   {
@@ -768,17 +505,24 @@ std::string ReconstructionStats(vtkPolyData* surface, vtkPolyData* reconstructio
   std::ostringstream js;
   js.precision(6);
   js << ", \"reconstruction_seconds\": " << seconds << ", \"resolution\": " << opt.Resolution;
-  if (sampler->GetBoundaryEdges() == 0)
+  if (sampler->GetBoundaryEdges() == 0 && reconstruction->GetNumberOfCells() > 0)
   {
-    const int threads = opt.Threads > 0 ? opt.Threads : omp_get_num_procs();
-    const medialbench::ReconstructionError e =
-      medialbench::MeasureReconstruction(surface, reconstruction, threads);
-    js << ", \"hausdorff_max_rel\": " << e.MaxRel() << ", \"hausdorff_mean_rel\": " << e.MeanRel();
+    vtkNew<vtkMedialReconstructionError> error;
+    error->SetOriginalData(surface);
+    error->SetReconstructionData(reconstruction);
+    error->SetNumberOfThreads(opt.Threads);
+    error->Update();
+    if (!sink.LastError.empty())
+    {
+      Fail(sink.LastError);
+    }
+    js << ", \"hausdorff_max_rel\": " << error->GetVertexHausdorff()
+       << ", \"hausdorff_mean_rel\": " << error->GetVertexMeanHausdorff()
+       << ", \"hausdorff_area_max_rel\": " << error->GetAreaHausdorff()
+       << ", \"hausdorff_area_mean_rel\": " << error->GetAreaMeanHausdorff();
   }
   return js.str();
 }
-
-// ---- 2D input: demo shapes, planarity, the medial graph and its picture ----
 
 // demo:NAME inputs; returns false for an unknown name.
 bool MakeDemo(const std::string& name, vtkSmartPointer<vtkPolyData>& out)
@@ -814,75 +558,6 @@ bool MakeDemo(const std::string& name, vtkSmartPointer<vtkPolyData>& out)
   return true;
 }
 
-// Plane of the points (centroid and the normal of least variance); the returned
-// value is the largest distance of a point from it, relative to the diagonal.
-double FitPlane(vtkPolyData* pd, double centre[3], double normal[3])
-{
-  const vtkIdType n = pd->GetNumberOfPoints();
-  centre[0] = centre[1] = centre[2] = 0.0;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double p[3];
-    pd->GetPoint(i, p);
-    for (int k = 0; k < 3; ++k)
-    {
-      centre[k] += p[k] / n;
-    }
-  }
-  if (!std::isfinite(centre[0] + centre[1] + centre[2]))
-  {
-    return HUGE_VAL; // NaN or infinite coordinates: not a plane (the sampler says why)
-  }
-  double cov[3][3] = {}, row0[3], row1[3], row2[3];
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double p[3];
-    pd->GetPoint(i, p);
-    for (int a = 0; a < 3; ++a)
-    {
-      for (int b = 0; b < 3; ++b)
-      {
-        cov[a][b] += (p[a] - centre[a]) * (p[b] - centre[b]);
-      }
-    }
-  }
-  double* rows[3] = { row0, row1, row2 };
-  double* in[3] = { cov[0], cov[1], cov[2] };
-  double values[3], vecs[3][3];
-  double* v[3] = { vecs[0], vecs[1], vecs[2] };
-  for (int a = 0; a < 3; ++a)
-  {
-    std::copy(cov[a], cov[a] + 3, rows[a]);
-  }
-  vtkMath::Jacobi(in, values, v);
-  // Eigenvalues come sorted in decreasing order; vectors are the columns.
-  for (int k = 0; k < 3; ++k)
-  {
-    normal[k] = vecs[k][2];
-  }
-  double worst = 0.0;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double p[3];
-    pd->GetPoint(i, p);
-    worst = std::max(worst,
-      std::abs((p[0] - centre[0]) * normal[0] + (p[1] - centre[1]) * normal[1] + (p[2] - centre[2]) * normal[2]));
-  }
-  const double diag = pd->GetLength();
-  return diag > 0 ? worst / diag : 0.0;
-}
-
-// 2D input: planar loops as polygons or polylines (a closed surface is never planar).
-bool IsPlanarInput(vtkPolyData* pd)
-{
-  if (pd->GetNumberOfStrips() > 0 || (pd->GetNumberOfPolys() == 0 && pd->GetNumberOfLines() == 0))
-  {
-    return false;
-  }
-  double c[3], n[3];
-  return pd->GetNumberOfPoints() >= 3 && FitPlane(pd, c, n) <= 1e-6;
-}
-
 vtkSmartPointer<vtkPolyData> RunJunctions(vtkPolyData* polygon, int threads, MessageSink& sink)
 {
   vtkNew<vtkMedialJunctionFilter> junctions;
@@ -896,147 +571,6 @@ vtkSmartPointer<vtkPolyData> RunJunctions(vtkPolyData* polygon, int threads, Mes
   auto graph = vtkSmartPointer<vtkPolyData>::New();
   graph->ShallowCopy(junctions->GetOutput());
   return graph;
-}
-
-// Points of the graph with one MedialPointType, as spheres.
-vtkSmartPointer<vtkActor> NodeActor(vtkPolyData* graph, int type, double size, const double rgb[3])
-{
-  vtkNew<vtkPoints> pts;
-  auto* types = graph->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
-  for (vtkIdType i = 0; types && i < graph->GetNumberOfPoints(); ++i)
-  {
-    if (static_cast<int>(types->GetTuple1(i)) == type)
-    {
-      pts->InsertNextPoint(graph->GetPoint(i));
-    }
-  }
-  vtkNew<vtkPolyData> cloud;
-  cloud->SetPoints(pts);
-  vtkNew<vtkSphereSource> ball;
-  ball->SetRadius(size);
-  ball->SetThetaResolution(16);
-  ball->SetPhiResolution(12);
-  vtkNew<vtkGlyph3D> glyphs;
-  glyphs->SetInputData(cloud);
-  glyphs->SetSourceConnection(ball->GetOutputPort());
-  glyphs->ScalingOff();
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(glyphs->GetOutputPort());
-  mapper->ScalarVisibilityOff();
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(rgb[0], rgb[1], rgb[2]);
-  return actor;
-}
-
-// Picture of a 2D medial axis: the polygon (black), the graph's arcs (blue linear,
-// orange parabolic), junctions (red), end points (green) and the maximal disks of
-// the largest junctions (grey circles).
-void Render2D(vtkPolyData* polygon, vtkPolyData* graph, const std::string& path, MessageSink& sink)
-{
-  double centre[3], normal[3];
-  FitPlane(polygon, centre, normal);
-  const double diag = polygon->GetLength();
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(1, 1, 1);
-
-  vtkNew<vtkPolyData> outline;
-  outline->SetPoints(polygon->GetPoints());
-  vtkNew<vtkCellArray> edges;
-  for (vtkCellArray* cells : { polygon->GetPolys(), polygon->GetLines() })
-  {
-    vtkIdType npts;
-    const vtkIdType* ids;
-    for (cells->InitTraversal(); cells->GetNextCell(npts, ids);)
-    {
-      std::vector<vtkIdType> loop(ids, ids + npts);
-      if (cells == polygon->GetPolys())
-      {
-        loop.push_back(ids[0]);
-      }
-      edges->InsertNextCell(static_cast<vtkIdType>(loop.size()), loop.data());
-    }
-  }
-  outline->SetLines(edges);
-  vtkNew<vtkPolyDataMapper> outlineMapper;
-  outlineMapper->SetInputData(outline);
-  outlineMapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> outlineActor;
-  outlineActor->SetMapper(outlineMapper);
-  outlineActor->GetProperty()->SetColor(0.1, 0.1, 0.1);
-  outlineActor->GetProperty()->SetLineWidth(3);
-  renderer->AddActor(outlineActor);
-
-  // Arcs coloured by ArcType through a two-entry table.
-  vtkNew<vtkLookupTable> arcColours;
-  arcColours->SetNumberOfTableValues(2);
-  arcColours->SetTableValue(0, 0.15, 0.35, 0.85);
-  arcColours->SetTableValue(1, 0.95, 0.55, 0.1);
-  arcColours->SetTableRange(0, 1);
-  arcColours->Build();
-  vtkNew<vtkPolyDataMapper> arcMapper;
-  arcMapper->SetInputData(graph);
-  arcMapper->SetScalarModeToUseCellFieldData();
-  arcMapper->SelectColorArray(vtkMedialArrayNames::ArcType);
-  arcMapper->SetLookupTable(arcColours);
-  arcMapper->SetScalarRange(0, 1);
-  arcMapper->ScalarVisibilityOn();
-  vtkNew<vtkActor> arcActor;
-  arcActor->SetMapper(arcMapper);
-  arcActor->GetProperty()->SetLineWidth(3);
-  renderer->AddActor(arcActor);
-
-  // Maximal disks of the (up to) six largest junctions.
-  std::vector<std::pair<double, vtkIdType>> junctions;
-  auto* types = graph->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
-  auto* radius = graph->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
-  for (vtkIdType i = 0; types && i < graph->GetNumberOfPoints(); ++i)
-  {
-    if (static_cast<int>(types->GetTuple1(i)) == vtkMedialJunctionFilter::JUNCTION_POINT)
-    {
-      junctions.emplace_back(-radius->GetTuple1(i), i);
-    }
-  }
-  std::sort(junctions.begin(), junctions.end());
-  for (size_t k = 0; k < junctions.size() && k < 6; ++k)
-  {
-    vtkNew<vtkRegularPolygonSource> circle;
-    circle->SetNumberOfSides(96);
-    circle->GeneratePolygonOff();
-    circle->SetRadius(-junctions[k].first);
-    circle->SetCenter(graph->GetPoint(junctions[k].second));
-    circle->SetNormal(normal);
-    vtkNew<vtkPolyDataMapper> m;
-    m->SetInputConnection(circle->GetOutputPort());
-    vtkNew<vtkActor> a;
-    a->SetMapper(m);
-    a->GetProperty()->SetColor(0.55, 0.55, 0.6);
-    a->GetProperty()->SetLineWidth(1.5);
-    renderer->AddActor(a);
-  }
-  const double red[3] = { 0.85, 0.1, 0.1 }, green[3] = { 0.1, 0.65, 0.2 };
-  renderer->AddActor(NodeActor(graph, vtkMedialJunctionFilter::JUNCTION_POINT, 0.012 * diag, red));
-  renderer->AddActor(NodeActor(graph, vtkMedialJunctionFilter::END_POINT, 0.009 * diag, green));
-
-  // Look straight at the plane.
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetFocalPoint(centre);
-  camera->SetPosition(centre[0] + normal[0], centre[1] + normal[1], centre[2] + normal[2]);
-  double up[3] = { 0, 1, 0 };
-  if (std::abs(vtkMath::Dot(up, normal)) > 0.9)
-  {
-    up[0] = 1;
-    up[1] = 0;
-  }
-  camera->SetViewUp(up);
-  renderer->ResetCamera();
-  camera->Zoom(1.3);
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetSize(900, 700);
-  window->AddRenderer(renderer);
-  window->Render();
-  WritePng(window, path, sink);
 }
 
 std::string JsonString(const std::string& s)
@@ -1062,17 +596,20 @@ std::string JsonString(const std::string& s)
   }
   return out + "\"";
 }
+
+// Fails unless `path` is a writable .vtp name.
+void CheckVtpPath(const std::string& path, const char* flag)
+{
+  if (Extension(path) != ".vtp")
+  {
+    Fail(std::string(flag) + " writes VTK XML polydata and needs a .vtp name, got '" + path + "'");
+  }
+  CheckWritable(path, flag);
 }
 
-int main(int argc, char* argv[])
+// Fails before any work when an output cannot be written or rendered.
+void CheckOutputs(const Options& opt)
 {
-  const Options opt = Parse(argc, argv);
-  std::signal(SIGINT, OnInterrupt);
-  vtkNew<MessageSink> sinkWindow;
-  vtkOutputWindow::SetInstance(sinkWindow);
-  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // the sink prints instead
-  MessageSink& sink = *sinkWindow;
-
   if (!opt.Render.empty())
   {
     const char* display = std::getenv("DISPLAY");
@@ -1085,34 +622,25 @@ int main(int argc, char* argv[])
   }
   if (!opt.Output.empty())
   {
-    if (Extension(opt.Output) != ".vtp")
-    {
-      Fail("-o writes VTK XML polydata and needs a .vtp name, got '" + opt.Output + "'");
-    }
-    CheckWritable(opt.Output, "-o");
+    CheckVtpPath(opt.Output, "-o");
   }
   if (!opt.Reconstruct.empty())
   {
     CheckReconstructPath(opt.Reconstruct);
   }
-  if (!opt.Thickness.empty())
-  {
-    if (Extension(opt.Thickness) != ".vtp")
-    {
-      Fail("--thickness writes VTK XML polydata and needs a .vtp name, got '" + opt.Thickness + "'");
-    }
-    CheckWritable(opt.Thickness, "--thickness");
-  }
-
   if (!opt.Junctions.empty())
   {
-    if (Extension(opt.Junctions) != ".vtp")
-    {
-      Fail("--junctions writes VTK XML polydata and needs a .vtp name, got '" + opt.Junctions + "'");
-    }
-    CheckWritable(opt.Junctions, "--junctions");
+    CheckVtpPath(opt.Junctions, "--junctions");
   }
+  if (!opt.Thickness.empty())
+  {
+    CheckVtpPath(opt.Thickness, "--thickness");
+  }
+}
 
+// The input surface: a demo shape (none given: demo:jack) or a file.
+vtkSmartPointer<vtkPolyData> LoadInput(const Options& opt, MessageSink& sink)
+{
   vtkSmartPointer<vtkPolyData> surface;
   if (opt.Input.empty())
   {
@@ -1129,7 +657,258 @@ int main(int argc, char* argv[])
   {
     surface = ReadSurface(opt.Input, sink);
   }
-  const bool planar = IsPlanarInput(surface);
+  return surface;
+}
+
+// Progress bar on stderr: only on a terminal, and only once a run has lasted a second.
+struct Progress
+{
+  std::chrono::steady_clock::time_point Start;
+  bool Shown = false;
+
+  static void Show(vtkObject*, unsigned long, void* client, void* data)
+  {
+    auto* p = static_cast<Progress*>(client);
+    const double fraction = *static_cast<double*>(data);
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - p->Start).count();
+    if (elapsed < 1.0 && !p->Shown)
+    {
+      return;
+    }
+    p->Shown = true;
+    const int width = 40, filled = static_cast<int>(fraction * width + 0.5);
+    std::fprintf(stderr, "\r[%s%s] %3d%%  %.1fs", std::string(filled, '#').c_str(),
+      std::string(width - filled, ' ').c_str(), static_cast<int>(fraction * 100 + 0.5), elapsed);
+    std::fflush(stderr);
+  }
+};
+
+// Ctrl-C while sampling: abort at the next block, then exit with 130 (OnInterrupt).
+void AbortOnInterrupt(vtkObject* caller, unsigned long, void*, void* data)
+{
+  // The pipeline reports 0 before RequestData starts; blocks report more than 0.
+  if (*static_cast<double*>(data) > 0.0)
+  {
+    AbortWatched = 1;
+  }
+  if (Interrupted)
+  {
+    static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+  }
+}
+
+// Runs the sampler on `surface` with the command line's settings; `seconds` is its wall time.
+vtkSmartPointer<vtkMedialAxisSampler> Sample(vtkPolyData* surface, const Options& opt, MessageSink& sink, double& seconds)
+{
+  auto sampler = vtkSmartPointer<vtkMedialAxisSampler>::New();
+  sampler->SetInputData(surface);
+  sampler->SetNumberOfSamples(static_cast<vtkIdType>(opt.Samples));
+  sampler->SetMethod(opt.Method);
+  sampler->SetSamplingStrategy(opt.Strategy);
+  sampler->SetCoverageTolerance(opt.Coverage);
+  sampler->SetRandomSeed(opt.Seed);
+  sampler->SetNumberOfThreads(opt.Threads);
+  sampler->SetTolerance(opt.Tolerance);
+  sampler->SetMinimumSeparationAngle(opt.MinAngle);
+  sampler->SetMaximumProtrusion(opt.MaxProtrusion);
+
+  const auto start = std::chrono::steady_clock::now();
+  Progress progress{ start };
+  vtkNew<vtkCallbackCommand> progressCommand;
+  if (isatty(STDERR_FILENO))
+  {
+    progressCommand->SetClientData(&progress);
+    progressCommand->SetCallback(&Progress::Show);
+    sampler->AddObserver(vtkCommand::ProgressEvent, progressCommand);
+  }
+  vtkNew<vtkCallbackCommand> interruptCommand;
+  interruptCommand->SetCallback(&AbortOnInterrupt);
+  sampler->AddObserver(vtkCommand::ProgressEvent, interruptCommand);
+
+  sampler->Update();
+  AbortWatched = 0;
+  if (Interrupted)
+  {
+    std::cerr << (progress.Shown ? "\n" : "") << "medial-axis: interrupted\n";
+    std::exit(130);
+  }
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (progress.Shown)
+  {
+    std::fprintf(stderr, "\n");
+  }
+  if (!sink.LastError.empty())
+  {
+    Fail(sink.LastError);
+  }
+  sampler->RemoveAllObservers(); // the progress state lives on this stack
+  return sampler;
+}
+
+// --render: the 2D graph scene for planar input, the surface coloured by thickness
+// with --thickness, else the 3D scene (with the reconstruction beside it when there is one).
+void RenderPicture(vtkPolyData* surface, vtkPolyData* medial, vtkPolyData* graph, vtkPolyData* reconstruction,
+  vtkPolyData* thickness, const std::string& path, MessageSink& sink)
+{
+  vtkNew<vtkMedialScene> scene;
+  scene->SetSurface(surface);
+  if (graph)
+  {
+    scene->SetGraph(graph);
+  }
+  else if (thickness)
+  {
+    scene->SetSurface(thickness);
+    scene->SetSurfaceScalars(vtkMedialArrayNames::Thickness);
+  }
+  else
+  {
+    scene->SetMedial(medial);
+    scene->SetReconstruction(reconstruction);
+  }
+  if (!scene->WritePNG(path.c_str()) || !sink.LastError.empty())
+  {
+    Fail("cannot write '" + path + "': " + sink.LastError);
+  }
+}
+
+// JSON members of the sampler's run (the line's opening brace included).
+std::string SamplerStats(
+  const Options& opt, vtkMedialAxisSampler* sampler, vtkPolyData* medial, bool planar, double seconds)
+{
+  const int threads = opt.Threads > 0 ? opt.Threads : omp_get_num_procs();
+  std::ostringstream js;
+  js.precision(6);
+  js << "{\"input\": " << JsonString(opt.Input.empty() ? "demo:jack" : opt.Input)
+     << ", \"triangles\": " << sampler->GetNumberOfTriangles() << ", \"samples\": " << opt.Samples
+     << ", \"medial_points\": " << medial->GetNumberOfPoints()
+     << ", \"discarded\": " << sampler->GetDiscardedSamples() << ", \"method\": "
+     << JsonString(vtkMedialAxisSampler::GetMethodName(opt.Method)) << ", \"threads\": " << threads
+     << ", \"min_angle\": " << opt.MinAngle << ", \"tolerance\": " << opt.Tolerance
+     << ", \"iterations_mean\": " << sampler->GetMeanIterations()
+     << ", \"capped\": " << sampler->GetCappedSamples()
+     << ", \"strategy\": "
+     << JsonString(vtkMedialAxisSampler::GetSamplingStrategyName(planar ? vtkMedialAxisSampler::RANDOM : opt.Strategy));
+  if (!planar && (opt.Strategy != vtkMedialAxisSampler::RANDOM || opt.Coverage > 0.0))
+  {
+    js << ", \"evaluated\": " << sampler->GetEvaluatedSamples() << ", \"seeds\": " << sampler->GetSeedSamples()
+       << ", \"links\": " << medial->GetNumberOfLines() << ", \"coverage\": " << opt.Coverage
+       << ", \"coverage_reached\": " << (sampler->GetCoverageReached() ? "true" : "false")
+       << ", \"max_coverage_gap\": " << sampler->GetMaxCoverageGap();
+  }
+  js << ", \"seconds\": " << seconds;
+  return js.str();
+}
+
+// vtkMedialThickness with the sampler's angle and protrusion settings.
+vtkSmartPointer<vtkPolyData> MeasureThickness(vtkPolyData* surface, const Options& opt, MessageSink& sink)
+{
+  vtkNew<vtkMedialThickness> thickness;
+  thickness->SetInputData(surface);
+  thickness->SetMinimumSeparationAngle(opt.MinAngle);
+  thickness->SetMaximumProtrusion(opt.MaxProtrusion);
+  thickness->SetThinThreshold(opt.ThicknessBelow);
+  thickness->SetNumberOfThreads(opt.Threads);
+  thickness->Update();
+  if (!sink.LastError.empty())
+  {
+    Fail(sink.LastError);
+  }
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->ShallowCopy(thickness->GetOutput());
+  return result;
+}
+
+// JSON members for --thickness and --thickness-below (or, without --stats, a line for
+// --thickness-below): percentiles of the point Thickness (NaN left out), the thin share
+// of the area and its regions.
+std::string ThicknessReport(vtkPolyData* thickness, const Options& opt)
+{
+  std::vector<double> values;
+  vtkDataArray* t = thickness->GetPointData()->GetArray(vtkMedialArrayNames::Thickness);
+  for (vtkIdType i = 0; t && i < t->GetNumberOfTuples(); ++i)
+  {
+    if (!std::isnan(t->GetComponent(i, 0)))
+    {
+      values.push_back(t->GetComponent(i, 0));
+    }
+  }
+  std::sort(values.begin(), values.end());
+  auto quantile = [&](double q) {
+    return values.empty() ? std::nan("") : values[static_cast<size_t>(q * (values.size() - 1))];
+  };
+  auto field = [&](const char* name) {
+    vtkDataArray* a = thickness->GetFieldData()->GetArray(name);
+    return a ? a->GetComponent(0, 0) : 0.0;
+  };
+  const double share = field(vtkMedialArrayNames::ThinAreaFraction);
+  const double regions = field(vtkMedialArrayNames::ThinRegionCount);
+  std::ostringstream out;
+  out.precision(6);
+  if (!opt.Stats)
+  {
+    out << "thinner than " << opt.ThicknessBelow << ": " << 100.0 * share << "% of the area, in " << regions
+        << (regions == 1 ? " region" : " regions");
+    return out.str();
+  }
+  out << ", \"thickness_min\": " << quantile(0.0) << ", \"thickness_p01\": " << quantile(0.01)
+      << ", \"thickness_median\": " << quantile(0.5);
+  if (opt.ThicknessBelow > 0.0)
+  {
+    out << ", \"thickness_below\": " << opt.ThicknessBelow << ", \"thin_area_fraction\": " << share
+        << ", \"thin_regions\": " << regions;
+  }
+  return out.str();
+}
+
+// JSON members of the balls' protrusion through the surface (vtkMedialBallProtrusion).
+std::string ProtrusionStats(vtkPolyData* surface, vtkPolyData* medial, const Options& opt, MessageSink& sink)
+{
+  vtkNew<vtkMedialBallProtrusion> protrusion;
+  protrusion->SetSurfaceData(surface);
+  protrusion->SetBallsData(medial);
+  protrusion->SetNumberOfThreads(opt.Threads);
+  protrusion->Update();
+  if (!sink.LastError.empty())
+  {
+    Fail(sink.LastError);
+  }
+  std::ostringstream js;
+  js.precision(6);
+  js << ", \"max_protrusion\": " << opt.MaxProtrusion << ", \"protrusion_max_rel\": " << protrusion->GetMaxProtrusion();
+  return js.str();
+}
+
+// JSON members of the 2D medial graph.
+std::string GraphStats(vtkPolyData* graph)
+{
+  vtkIdType junctions = 0, ends = 0;
+  vtkDataArray* types = graph->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
+  for (vtkIdType i = 0; i < graph->GetNumberOfPoints(); ++i)
+  {
+    const int t = static_cast<int>(types->GetTuple1(i));
+    junctions += t == vtkMedialJunctionFilter::JUNCTION_POINT ? 1 : 0;
+    ends += t == vtkMedialJunctionFilter::END_POINT ? 1 : 0;
+  }
+  std::ostringstream js;
+  js << ", \"junctions\": " << junctions << ", \"end_points\": " << ends << ", \"arcs\": " << graph->GetNumberOfLines();
+  return js.str();
+}
+
+}
+
+int main(int argc, char* argv[])
+{
+  const Options opt = Parse(argc, argv);
+  std::signal(SIGINT, OnInterrupt);
+  vtkNew<MessageSink> sinkWindow;
+  vtkOutputWindow::SetInstance(sinkWindow);
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // the sink prints instead
+  MessageSink& sink = *sinkWindow;
+  CheckOutputs(opt);
+
+  vtkSmartPointer<vtkPolyData> surface = LoadInput(opt, sink);
+  const bool planar = vtkMedialAxisSampler::IsPlanarInput(surface);
   if (!opt.Junctions.empty() && !planar)
   {
     Fail("--junctions needs planar polygons or closed polylines; '" + opt.Input + "' is not planar");
@@ -1146,109 +925,23 @@ int main(int argc, char* argv[])
   }
   if (!opt.Junctions.empty())
   {
-    vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetInputData(graph);
-    writer->SetFileName(opt.Junctions.c_str());
-    writer->SetDataModeToBinary();
-    if (!writer->Write() || !sink.LastError.empty())
-    {
-      Fail("cannot write '" + opt.Junctions + "': " + sink.LastError);
-    }
+    WriteVtp(graph, opt.Junctions, sink);
   }
 
-  vtkNew<vtkMedialAxisSampler> sampler;
-  sampler->SetInputData(surface);
-  sampler->SetNumberOfSamples(static_cast<vtkIdType>(opt.Samples));
-  sampler->SetMethod(opt.Method);
-  sampler->SetSamplingStrategy(opt.Strategy);
-  sampler->SetCoverageTolerance(opt.Coverage);
-  sampler->SetRandomSeed(opt.Seed);
-  sampler->SetNumberOfThreads(opt.Threads);
-  sampler->SetTolerance(opt.Tolerance);
-  sampler->SetMinimumSeparationAngle(opt.MinAngle);
-  sampler->SetMaximumProtrusion(opt.MaxProtrusion);
-
-  // Progress bar: only on a terminal, and only once a run has lasted a second.
-  const auto start = std::chrono::steady_clock::now();
-  struct Progress
-  {
-    std::chrono::steady_clock::time_point Start;
-    bool Shown = false;
-  } progress{ start };
-  vtkNew<vtkCallbackCommand> progressCommand;
-  if (isatty(STDERR_FILENO))
-  {
-    progressCommand->SetClientData(&progress);
-    progressCommand->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
-      auto* p = static_cast<Progress*>(client);
-      const double fraction = *static_cast<double*>(data);
-      const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - p->Start).count();
-      if (elapsed < 1.0 && !p->Shown)
-      {
-        return;
-      }
-      p->Shown = true;
-      const int width = 40, filled = static_cast<int>(fraction * width + 0.5);
-      std::fprintf(stderr, "\r[%s%s] %3d%%  %.1fs", std::string(filled, '#').c_str(),
-        std::string(width - filled, ' ').c_str(), static_cast<int>(fraction * 100 + 0.5), elapsed);
-      std::fflush(stderr);
-    });
-    sampler->AddObserver(vtkCommand::ProgressEvent, progressCommand);
-  }
-
-  // Ctrl-C while sampling: abort at the next block, then exit with 130 (OnInterrupt).
-  vtkNew<vtkCallbackCommand> interruptCommand;
-  interruptCommand->SetCallback([](vtkObject* caller, unsigned long, void*, void* data) {
-    // The pipeline reports 0 before RequestData starts; blocks report more than 0.
-    if (*static_cast<double*>(data) > 0.0)
-    {
-      AbortWatched = 1;
-    }
-    if (Interrupted)
-    {
-      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
-    }
-  });
-  sampler->AddObserver(vtkCommand::ProgressEvent, interruptCommand);
-
-  sampler->Update();
-  AbortWatched = 0;
-  if (Interrupted)
-  {
-    std::cerr << (progress.Shown ? "\n" : "") << "medial-axis: interrupted\n";
-    return 130;
-  }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (progress.Shown)
-  {
-    std::fprintf(stderr, "\n");
-  }
-  if (!sink.LastError.empty())
-  {
-    Fail(sink.LastError);
-  }
+  double seconds = 0.0;
+  vtkSmartPointer<vtkMedialAxisSampler> sampler = Sample(surface, opt, sink, seconds);
   vtkPolyData* medial = sampler->GetOutput();
-
   if (!opt.Output.empty())
   {
-    vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetInputData(medial);
-    writer->SetFileName(opt.Output.c_str());
-    writer->SetDataModeToBinary();
-    if (!writer->Write() || !sink.LastError.empty())
-    {
-      Fail("cannot write '" + opt.Output + "': " + sink.LastError);
-    }
+    WriteVtp(medial, opt.Output, sink);
   }
   vtkSmartPointer<vtkPolyData> reconstruction;
   double reconstructionSeconds = 0.0;
   if (!opt.Reconstruct.empty())
   {
-    const auto reconstructStart = std::chrono::steady_clock::now();
+    const auto start = std::chrono::steady_clock::now();
     reconstruction = Reconstruct(medial, opt, sink);
-    reconstructionSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - reconstructStart).count();
+    reconstructionSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     WriteReconstruction(reconstruction, opt.Reconstruct, sink);
   }
   vtkSmartPointer<vtkPolyData> thickness;
@@ -1257,14 +950,7 @@ int main(int argc, char* argv[])
     thickness = MeasureThickness(surface, opt, sink);
     if (!opt.Thickness.empty())
     {
-      vtkNew<vtkXMLPolyDataWriter> writer;
-      writer->SetInputData(thickness);
-      writer->SetFileName(opt.Thickness.c_str());
-      writer->SetDataModeToBinary();
-      if (!writer->Write() || !sink.LastError.empty())
-      {
-        Fail("cannot write '" + opt.Thickness + "': " + sink.LastError);
-      }
+      WriteVtp(thickness, opt.Thickness, sink);
     }
     if (opt.ThicknessBelow > 0.0 && !opt.Stats)
     {
@@ -1273,67 +959,15 @@ int main(int argc, char* argv[])
   }
   if (!opt.Render.empty())
   {
-    if (planar)
-    {
-      Render2D(surface, graph, opt.Render, sink);
-    }
-    else if (thickness)
-    {
-      RenderThickness(thickness, opt.Render, sink);
-    }
-    else
-    {
-      Render(surface, medial, opt.Render, sink, reconstruction);
-    }
+    RenderPicture(surface, medial, planar ? graph.Get() : nullptr, reconstruction, thickness, opt.Render, sink);
   }
   if (opt.Stats)
   {
-    const int threads = opt.Threads > 0 ? opt.Threads : omp_get_num_procs();
-    std::ostringstream js;
-    js.precision(6);
-    js << "{\"input\": " << JsonString(opt.Input.empty() ? "demo:jack" : opt.Input)
-       << ", \"triangles\": " << sampler->GetNumberOfTriangles() << ", \"samples\": " << opt.Samples
-       << ", \"medial_points\": " << medial->GetNumberOfPoints()
-       << ", \"discarded\": " << sampler->GetDiscardedSamples() << ", \"method\": "
-       << JsonString(vtkMedialAxisSampler::GetMethodName(opt.Method)) << ", \"threads\": " << threads
-       << ", \"min_angle\": " << opt.MinAngle << ", \"tolerance\": " << opt.Tolerance
-       << ", \"iterations_mean\": " << sampler->GetMeanIterations()
-       << ", \"capped\": " << sampler->GetCappedSamples()
-       << ", \"strategy\": "
-       << JsonString(vtkMedialAxisSampler::GetSamplingStrategyName(planar ? vtkMedialAxisSampler::RANDOM : opt.Strategy));
-    if (!planar && (opt.Strategy != vtkMedialAxisSampler::RANDOM || opt.Coverage > 0.0))
-    {
-      js << ", \"evaluated\": " << sampler->GetEvaluatedSamples() << ", \"seeds\": " << sampler->GetSeedSamples()
-         << ", \"links\": " << medial->GetNumberOfLines() << ", \"coverage\": " << opt.Coverage
-         << ", \"coverage_reached\": " << (sampler->GetCoverageReached() ? "true" : "false")
-         << ", \"max_coverage_gap\": " << sampler->GetMaxCoverageGap();
-    }
-    if (!planar)
-    {
-      js << ", \"max_protrusion\": " << opt.MaxProtrusion << ", \"protrusion_max_rel\": "
-         << medialbench::BallProtrusion(medial, surface, surface->GetLength(), threads);
-    }
-    js << ", \"seconds\": " << seconds
-       << ReconstructionStats(surface, reconstruction, reconstructionSeconds, sampler, opt);
-    if (thickness)
-    {
-      js << ThicknessReport(thickness, opt);
-    }
-    if (graph)
-    {
-      vtkIdType junctions = 0, ends = 0;
-      auto* types = graph->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
-      for (vtkIdType i = 0; i < graph->GetNumberOfPoints(); ++i)
-      {
-        const int t = static_cast<int>(types->GetTuple1(i));
-        junctions += t == vtkMedialJunctionFilter::JUNCTION_POINT ? 1 : 0;
-        ends += t == vtkMedialJunctionFilter::END_POINT ? 1 : 0;
-      }
-      js << ", \"junctions\": " << junctions << ", \"end_points\": " << ends
-         << ", \"arcs\": " << graph->GetNumberOfLines();
-    }
-    js << "}";
-    std::cout << js.str() << std::endl;
+    std::cout << SamplerStats(opt, sampler, medial, planar, seconds)
+              << (planar ? std::string() : ProtrusionStats(surface, medial, opt, sink))
+              << ReconstructionStats(surface, reconstruction, reconstructionSeconds, sampler, opt, sink)
+              << (graph ? GraphStats(graph) : std::string())
+              << (thickness ? ThicknessReport(thickness, opt) : std::string()) << "}" << std::endl;
   }
   return 0;
 }

@@ -4,15 +4,14 @@
  * @brief Internal: one medial ball of a triangle mesh, shared by every sampling
  * strategy of vtkMedialAxisSampler and by vtkMedialThickness.
  *
- * vtkMedialDrawSurfacePoint draws the area-weighted random surface point of sample
- * `index` from the stream (seed, index) (the Random strategy's samples).
  * vtkMedialSolveBall finds the maximal admissible ball tangent at a given surface
  * point p on a given triangle, along the inward normal, by bisection or the
  * shrinking ball or the one-pass traversal (see vtkMedialAxisSampler), then, when the
  * surface in the cap around p (which the separation angle ignores) enters the ball
  * deeper than MaximumProtrusion, shrinks it about its centre to the distance to that
- * surface, so that it is inscribed (out.Shrunk); any strategy that
- * chooses its own surface points calls it. vtkMedialSolveBallAlong does the same
+ * surface, so that it is inscribed (out.Shrunk); any strategy that chooses its own
+ * surface points calls it (the Random strategy draws them with
+ * vtkMedialDrawSurfacePoint, vtkMedialRandom.h). vtkMedialSolveBallAlong does the same
  * along any inward direction (a vertex normal). All are thread-safe after the mesh
  * and the query are built. Internal header; not installed.
  */
@@ -46,10 +45,6 @@ struct vtkMedialBallParameters
 /// (the angle rule alone).
 vtkMedialBallParameters vtkMedialMakeBallParameters(int method, double tolerance,
   double minimumAngle, double maximumProtrusion, int maximumIterations, double diagonal);
-
-/// Surface point of sample `index`: a triangle picked by area, a uniform point on it.
-void vtkMedialDrawSurfacePoint(const vtkMedialTriangleMesh& mesh, vtkTypeUInt64 seed,
-  vtkIdType index, vtkIdType& triangle, double p[3]);
 
 /// Maximal admissible ball tangent at p (lying on `triangle`). out.Valid is false when
 /// the inward ray escapes through a hole.

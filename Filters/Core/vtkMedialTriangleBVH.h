@@ -113,6 +113,8 @@ public:
   };
 
 private:
+  class TangentSearch; // the passes of MaximalTangentBall
+
   struct Subtree
   {
     std::int32_t Node, Begin, End;
@@ -124,15 +126,20 @@ private:
     std::vector<std::int32_t>& order, const std::vector<double>& centroids,
     const std::vector<double>& boxes, const vtkMedialTriangleMesh& mesh,
     std::vector<Subtree>* later, std::int32_t grain) const;
+  // The node over order[begin, end): its box, its slab; and its centroids' box.
+  Node BoundNode(std::int32_t begin, std::int32_t end, const std::vector<std::int32_t>& order,
+    const std::vector<double>& centroids, const std::vector<double>& boxes, const vtkMedialTriangleMesh& mesh,
+    double cLo[3], double cHi[3]) const;
+  // Partitions order[begin, end) for the two children (binned SAH, else the median);
+  // returns where the right child starts.
+  static std::int32_t SplitNode(std::int32_t begin, std::int32_t end, std::vector<std::int32_t>& order,
+    const std::vector<double>& centroids, const std::vector<double>& boxes, const double cLo[3],
+    const double cHi[3]);
 
   // Depth first, nearer child first, over the triangles other than ownTriangle
   // whose admissible part may lie within sqrt(reach2) of x. visit(d2, q, triangle)
   // gets each one's closest admissible point q and returns false to stop; it may
   // lower reach2 to narrow the search. Used by ClosestPoint and ContainsBall.
-  // MaximalTangentBall's last step: the cap's surface set aside, within radius - allowed.
-  void InscribeInCap(const double p[3], const double centre[3], double radius, double cosMinAngle,
-    double allowed, vtkIdType ownTriangle, TangentBall& result) const;
-
   template <class Visit>
   void VisitAdmissible(const double x[3], vtkIdType ownTriangle, const double samplePoint[3],
     double cosMinAngle, bool capOnly, double& reach2, Visit visit) const;

@@ -6,7 +6,7 @@
 //   medial-bad-input run FILE [-n N] [--junctions] [--write OUT.vtp]
 //                         [--same-as REF [--scale S]] [--cli-output OUT.vtp]
 //       runs the pipeline the command-line program would run, filter by filter: the
-//       stock reader for FILE's extension, vtkMedialAxisSampler (and, with --junctions,
+//       reader for FILE's extension (vtkMedialFileReader), vtkMedialAxisSampler (and, with --junctions,
 //       vtkMedialJunctionFilter), optionally vtkXMLPolyDataWriter. Prints one summary
 //       line per filter and every error or warning it logged, and exits 0 when every
 //       update succeeded, 1 when one failed. --same-as checks that the radii, divided by
@@ -16,26 +16,21 @@
 #include "MedialTestSupport.h"
 
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialFileReader.h"
 #include "vtkMedialJunctionFilter.h"
 #include "vtkMath.h"
 #include "vtkMedialShapeSource.h"
-#include "vtkOFFReader.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
-#include "vtkDataSetReader.h"
-#include "vtkDataSetSurfaceFilter.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkLogger.h"
-#include "vtkOBJReader.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
-#include "vtkPLYReader.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSTLReader.h"
 #include "vtkSmartPointer.h"
 #include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
@@ -195,24 +190,35 @@ vtkSmartPointer<vtkPolyData> FoldedBox()
   return out;
 }
 
-// Two unit boxes touching along one edge: 4 triangles meet there.
-vtkSmartPointer<vtkPolyData> BoxesSharingAnEdge()
+// Several generated shapes in one mesh: each moved by Offset, its triangles reversed
+// when asked (a naive export winds every shell outward; nesting must sort it out).
+struct Body
 {
-  vtkNew<vtkMedialShapeSource> box;
-  box->SetShapeToBox();
-  box->SetBoxLengths(1, 1, 1);
-  box->SetResolution(1);
-  box->Update();
-  vtkPolyData* b = box->GetOutput();
+  int Shape;
+  int Resolution;
+  double Size;       // radius of a sphere, side of a cube
+  double Offset[3];
+  bool Reversed;
+};
+vtkSmartPointer<vtkPolyData> Bodies(const std::vector<Body>& bodies)
+{
   std::vector<std::array<double, 3>> pts;
   Polys tris;
-  for (int copy = 0; copy < 2; ++copy)
+  for (const Body& body : bodies)
   {
+    vtkNew<vtkMedialShapeSource> source;
+    source->SetShape(body.Shape);
+    source->SetResolution(body.Resolution);
+    source->SetRadius(body.Size);
+    source->SetBoxLengths(body.Size, body.Size, body.Size);
+    source->Update();
+    vtkPolyData* b = source->GetOutput();
+    const vtkIdType first = static_cast<vtkIdType>(pts.size());
     for (vtkIdType i = 0; i < b->GetNumberOfPoints(); ++i)
     {
       double x[3];
       b->GetPoint(i, x);
-      pts.push_back({ x[0] + copy, x[1] + copy, x[2] });
+      pts.push_back({ x[0] + body.Offset[0], x[1] + body.Offset[1], x[2] + body.Offset[2] });
     }
     for (vtkIdType c = 0; c < b->GetNumberOfCells(); ++c)
     {
@@ -222,12 +228,23 @@ vtkSmartPointer<vtkPolyData> BoxesSharingAnEdge()
       std::vector<vtkIdType> t;
       for (vtkIdType k = 0; k < n; ++k)
       {
-        t.push_back(ids[k] + copy * b->GetNumberOfPoints());
+        t.push_back(ids[k] + first);
+      }
+      if (body.Reversed)
+      {
+        std::reverse(t.begin(), t.end());
       }
       tris.push_back(t);
     }
   }
   return Make(pts, tris);
+}
+
+// Two unit boxes touching along one edge: 4 triangles meet there.
+vtkSmartPointer<vtkPolyData> BoxesSharingAnEdge()
+{
+  const int box = vtkMedialShapeSource::BOX;
+  return Bodies({ { box, 1, 1.0, { 0, 0, 0 }, false }, { box, 1, 1.0, { 1, 1, 0 }, false } });
 }
 
 bool WriteText(const std::string& path, const std::string& text)
@@ -291,6 +308,21 @@ int Generate(const std::string& dir)
   ok &= WriteVtp(dir + "/non-manifold.vtp", BoxesSharingAnEdge());
   ok &= WriteVtp(dir + "/folded.vtp", FoldedBox());
   {
+    // Solids as users have them: shells as a naive export writes them (all outward).
+    const int ball = vtkMedialShapeSource::SPHERE, box = vtkMedialShapeSource::BOX;
+    ok &= WriteVtp(dir + "/hollow-sphere.vtp",
+      Bodies({ { ball, 4, 1.0, { 0, 0, 0 }, false }, { ball, 4, 0.7, { 0, 0, 0 }, false } }));
+    ok &= WriteVtp(dir + "/solid-in-cavity.vtp", Bodies({ { ball, 4, 1.0, { 0, 0, 0 }, true },
+      { ball, 4, 0.7, { 0, 0, 0 }, false }, { ball, 4, 0.4, { 0, 0, 0 }, true } }));
+    ok &= WriteVtp(dir + "/two-bodies.vtp",
+      Bodies({ { ball, 4, 1.0, { 0, 0, 0 }, false }, { ball, 4, 0.5, { 3, 0, 0 }, true } }));
+    // Face to face, with different tessellations: no vertex in common.
+    ok &= WriteVtp(dir + "/touching-boxes.vtp",
+      Bodies({ { box, 2, 1.0, { 0, 0, 0 }, false }, { box, 3, 1.0, { 1, 0, 0 }, false } }));
+    ok &= WriteVtp(dir + "/intersecting-spheres.vtp",
+      Bodies({ { ball, 4, 1.0, { 0, 0, 0 }, false }, { ball, 4, 1.0, { 1.5, 0, 0 }, false } }));
+  }
+  {
     // Every triangle twice.
     auto doubled = EditTriangles(sphere, [](vtkIdType, std::vector<vtkIdType>&) { return true; });
     for (vtkIdType c = 0; c < sphere->GetNumberOfCells(); ++c)
@@ -344,54 +376,6 @@ int Generate(const std::string& dir)
 
 // ---------------------------------------------------------------- runs
 
-std::string Extension(const std::string& path)
-{
-  const size_t dot = path.find_last_of('.');
-  std::string e = dot == std::string::npos ? "" : path.substr(dot);
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
-  return e;
-}
-
-// The stock reader for the extension, as the command-line program picks it; `keep`
-// holds a legacy reader whose surface filter is returned.
-vtkSmartPointer<vtkAlgorithm> ReaderFor(const std::string& path, vtkSmartPointer<vtkAlgorithm>& keep)
-{
-  const std::string ext = Extension(path);
-  vtkSmartPointer<vtkAlgorithm> reader;
-  auto named = [&](auto r) {
-    r->SetFileName(path.c_str());
-    return r;
-  };
-  if (ext == ".vtp")
-  {
-    reader = named(vtkSmartPointer<vtkXMLPolyDataReader>::New());
-  }
-  else if (ext == ".vtk")
-  {
-    keep = named(vtkSmartPointer<vtkDataSetReader>::New());
-    auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
-    surface->SetInputConnection(keep->GetOutputPort());
-    reader = surface;
-  }
-  else if (ext == ".ply")
-  {
-    reader = named(vtkSmartPointer<vtkPLYReader>::New());
-  }
-  else if (ext == ".stl")
-  {
-    reader = named(vtkSmartPointer<vtkSTLReader>::New());
-  }
-  else if (ext == ".obj")
-  {
-    reader = named(vtkSmartPointer<vtkOBJReader>::New());
-  }
-  else if (ext == ".off")
-  {
-    reader = named(vtkSmartPointer<vtkOFFReader>::New());
-  }
-  return reader;
-}
-
 void PrintLog(const char* who, const EventLog& log)
 {
   std::string text = log.Text;
@@ -422,19 +406,10 @@ struct SamplerRun
 // The sampler on a file, as run from the command line (seed 1, default settings).
 bool RunSampler(const std::string& path, vtkIdType samples, SamplerRun& run, bool print)
 {
-  vtkSmartPointer<vtkAlgorithm> keep;
-  auto reader = ReaderFor(path, keep);
-  if (!reader)
-  {
-    std::printf("reader: no reader for '%s'\n", Extension(path).c_str());
-    return false;
-  }
+  vtkNew<vtkMedialFileReader> reader;
+  reader->SetFileName(path.c_str());
   EventLog log;
   log.Watch(reader);
-  if (keep)
-  {
-    log.Watch(keep);
-  }
   vtkNew<vtkMedialAxisSampler> sampler;
   log.Watch(sampler);
   sampler->SetInputConnection(reader->GetOutputPort());
@@ -530,8 +505,8 @@ int Run(int argc, char* argv[])
 
   if (junctions)
   {
-    vtkSmartPointer<vtkAlgorithm> keep;
-    auto reader = ReaderFor(path, keep);
+    vtkNew<vtkMedialFileReader> reader;
+    reader->SetFileName(path.c_str());
     EventLog log;
     vtkNew<vtkMedialJunctionFilter> filter;
     log.Watch(filter);
