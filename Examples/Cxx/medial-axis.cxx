@@ -432,6 +432,19 @@ void CheckReconstructPath(const std::string& path)
   CheckWritable(path, "--reconstruct");
 }
 
+// Updates `filter`, fails with the first error reported, and keeps a copy of output 0.
+vtkSmartPointer<vtkPolyData> Run(vtkPolyDataAlgorithm* filter, MessageSink& sink)
+{
+  filter->Update();
+  if (!sink.LastError.empty())
+  {
+    Fail(sink.LastError);
+  }
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->ShallowCopy(filter->GetOutput());
+  return result;
+}
+
 // Union of the medial balls, written to `path` by its extension.
 vtkSmartPointer<vtkPolyData> Reconstruct(vtkPolyData* medial, const Options& opt, MessageSink& sink)
 {
@@ -439,14 +452,7 @@ vtkSmartPointer<vtkPolyData> Reconstruct(vtkPolyData* medial, const Options& opt
   ballUnion->SetInputData(medial);
   ballUnion->SetSampleDimensions(opt.Resolution, opt.Resolution, opt.Resolution);
   ballUnion->SetNumberOfThreads(opt.Threads);
-  ballUnion->Update();
-  if (!sink.LastError.empty())
-  {
-    Fail(sink.LastError);
-  }
-  auto result = vtkSmartPointer<vtkPolyData>::New();
-  result->ShallowCopy(ballUnion->GetOutput());
-  return result;
+  return Run(ballUnion, sink);
 }
 
 // Writes binary VTK XML polydata; fails with the writer's reason.
@@ -563,14 +569,7 @@ vtkSmartPointer<vtkPolyData> RunJunctions(vtkPolyData* polygon, int threads, Mes
   vtkNew<vtkMedialJunctionFilter> junctions;
   junctions->SetInputData(polygon);
   junctions->SetNumberOfThreads(threads);
-  junctions->Update();
-  if (!sink.LastError.empty())
-  {
-    Fail(sink.LastError);
-  }
-  auto graph = vtkSmartPointer<vtkPolyData>::New();
-  graph->ShallowCopy(junctions->GetOutput());
-  return graph;
+  return Run(junctions, sink);
 }
 
 std::string JsonString(const std::string& s)
@@ -809,14 +808,7 @@ vtkSmartPointer<vtkPolyData> MeasureThickness(vtkPolyData* surface, const Option
   thickness->SetMaximumProtrusion(opt.MaxProtrusion);
   thickness->SetThinThreshold(opt.ThicknessBelow);
   thickness->SetNumberOfThreads(opt.Threads);
-  thickness->Update();
-  if (!sink.LastError.empty())
-  {
-    Fail(sink.LastError);
-  }
-  auto result = vtkSmartPointer<vtkPolyData>::New();
-  result->ShallowCopy(thickness->GetOutput());
-  return result;
+  return Run(thickness, sink);
 }
 
 // JSON members for --thickness and --thickness-below (or, without --stats, a line for

@@ -84,12 +84,18 @@ void TrianglesAroundVertices(
   }
 }
 
-// Runs solve(item, hint) for items in `order`, in fixed groups of Chain, in parallel;
-// returns the contact triangle to hint the next one with. Polls `stop` between blocks.
-template <class Solve, class Progress>
-bool SolveInChains(const std::vector<vtkIdType>& order, int threads, Solve solve, Progress progress)
+// Runs solve(item, hint) for every (item, triangle) pair, in the tree's leaf order of
+// the triangles (neighbours touch the same nodes), in fixed groups of Chain in parallel;
+// solve returns the contact triangle to hint the next item with. Reports progress from
+// `from` over `span` between blocks; false when aborted.
+template <class Solve>
+bool SolveInLeafOrder(vtkAlgorithm* self, const vtkMedialSurfaceQuery& query,
+  std::vector<std::pair<vtkIdType, vtkIdType>> items, int threads, double from, double span, Solve solve)
 {
-  const vtkIdType n = static_cast<vtkIdType>(order.size());
+  const std::vector<std::int32_t>& rank = query.GetLeafRanks();
+  std::stable_sort(items.begin(), items.end(),
+    [&](const auto& a, const auto& b) { return rank[a.second] < rank[b.second]; });
+  const vtkIdType n = static_cast<vtkIdType>(items.size());
   for (vtkIdType begin = 0; begin < n; begin += Block)
   {
     const vtkIdType end = std::min(n, begin + Block);
@@ -100,15 +106,29 @@ bool SolveInChains(const std::vector<vtkIdType>& order, int threads, Solve solve
       vtkIdType hint = -1;
       for (vtkIdType k = begin + g * Chain; k < std::min(end, begin + (g + 1) * Chain); ++k)
       {
-        hint = solve(order[k], hint);
+        hint = solve(items[k].first, hint);
       }
     }
-    if (!progress(static_cast<double>(end) / static_cast<double>(n)))
+    self->UpdateProgress(from + span * static_cast<double>(end) / static_cast<double>(n));
+    if (self->GetAbortExecute())
     {
       return false;
     }
   }
   return true;
+}
+
+// The ball of a valid record as a radius and a centre; its contact triangle hints the
+// next item.
+vtkIdType Keep(const vtkMedialSampleRecord& ball, vtkIdType hint, double& radius, double centre[3])
+{
+  if (!ball.Valid)
+  {
+    return hint;
+  }
+  radius = ball.Radius;
+  std::copy(ball.Centre, ball.Centre + 3, centre);
+  return ball.ContactTriangle;
 }
 
 // Distance along the inward direction n from p to the surface beyond, or NaN when the
@@ -189,19 +209,14 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
 {
   const vtkIdType np = mesh.GetNumberOfPoints();
   measures.assign(np, Measure{ NaN, { NaN, NaN, NaN }, NaN });
-  // Vertices in the tree's leaf order of one of their triangles: neighbours touch the same nodes.
-  std::vector<vtkIdType> order;
-  const std::vector<std::int32_t>& rank = query.GetLeafRanks();
+  std::vector<std::pair<vtkIdType, vtkIdType>> items; // (vertex, one of its triangles)
   for (vtkIdType v = 0; v < np; ++v)
   {
     if (start[v + 1] > start[v])
     {
-      order.push_back(v);
+      items.emplace_back(v, around[start[v]]);
     }
   }
-  std::stable_sort(order.begin(), order.end(),
-    [&](vtkIdType a, vtkIdType b) { return rank[around[start[a]]] < rank[around[start[b]]]; });
-  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
   auto solve = [&](vtkIdType v, vtkIdType hint) {
     const double* p = mesh.GetPoint(v);
     const double* n = &normals[3 * v];
@@ -250,17 +265,10 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
       }
       m.Ray = length > 0.0 ? RayLength(query, mesh, p, d, -1) : 0.0;
     }
-    if (best.Valid)
-    {
-      m.Radius = best.Radius;
-      std::copy(best.Centre, best.Centre + 3, m.Centre);
-    }
-    return best.Valid ? best.ContactTriangle : hint;
+    return Keep(best, hint, m.Radius, m.Centre);
   };
-  return SolveInChains(order, threads, solve, [this](double fraction) {
-    this->UpdateProgress(0.1 + 0.6 * fraction);
-    return !(this->GetAbortExecute() != 0);
-  });
+  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  return SolveInLeafOrder(this, query, items, threads, 0.1, 0.6, solve);
 }
 
 bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
@@ -278,18 +286,14 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
       l = t;
     }
   }
-  std::vector<vtkIdType> order;
+  std::vector<std::pair<vtkIdType, vtkIdType>> items; // (cell, its largest triangle)
   for (vtkIdType c = 0; c < cells; ++c)
   {
     if (largest[c] >= 0)
     {
-      order.push_back(c);
+      items.emplace_back(c, largest[c]);
     }
   }
-  const std::vector<std::int32_t>& rank = query.GetLeafRanks();
-  std::stable_sort(order.begin(), order.end(),
-    [&](vtkIdType a, vtkIdType b) { return rank[largest[a]] < rank[largest[b]]; });
-  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
   auto solve = [&](vtkIdType c, vtkIdType hint) {
     const vtkIdType t = largest[c];
     const vtkIdType* v = mesh.GetTriangle(t);
@@ -303,17 +307,10 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
     vtkMedialSolveBall(query, mesh, param, t, p, ball, hint);
     Measure& m = measures[c];
     m.Ray = RayLength(query, mesh, p, n, t);
-    if (ball.Valid)
-    {
-      m.Radius = ball.Radius;
-      std::copy(ball.Centre, ball.Centre + 3, m.Centre);
-    }
-    return ball.Valid ? ball.ContactTriangle : hint;
+    return Keep(ball, hint, m.Radius, m.Centre);
   };
-  return SolveInChains(order, threads, solve, [this](double fraction) {
-    this->UpdateProgress(0.7 + 0.3 * fraction);
-    return !(this->GetAbortExecute() != 0);
-  });
+  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  return SolveInLeafOrder(this, query, items, threads, 0.7, 0.3, solve);
 }
 
 void vtkMedialThickness::ThinRegions(const vtkMedialTriangleMesh& mesh,
@@ -501,13 +498,17 @@ int vtkMedialThickness::RequestData(
       output->GetFieldData()->AddArray(a);
     }
   }
-  if (mesh.BoundaryEdges > 0 || this->MissingPoints > 0)
+  if (mesh.BoundaryEdges > 0)
   {
-    vtkWarningMacro(<< "Input surface is " << (mesh.BoundaryEdges > 0 ? "open (" : "closed (")
-                    << mesh.BoundaryEdges << " boundary edges): " << this->MissingPoints << " of "
-                    << input->GetNumberOfPoints()
-                    << " points have no thickness (NaN): their ray escaped through a hole or met "
-                       "the surface from outside, or no cell uses them.");
+    vtkWarningMacro(<< "Input surface is open (" << mesh.BoundaryEdges << " boundary edges): "
+                    << this->MissingPoints << " of " << input->GetNumberOfPoints()
+                    << " points have no thickness (NaN): their ray escaped through a hole.");
+  }
+  else if (this->MissingPoints > 0)
+  {
+    vtkWarningMacro(<< this->MissingPoints << " of " << input->GetNumberOfPoints()
+                    << " points have no thickness (NaN): no cell uses them, or their ray met the "
+                       "surface from outside.");
   }
   return 1;
 }
