@@ -8,7 +8,9 @@
  *  - 3D (no Graph): the Surface as a light grey translucent shell (SurfaceOpacity),
  *    the Medial balls' centres (and any link lines) coloured by their `Radius` array
  *    from blue (thin) to red (thick), drawn as spheres of PointSize pixels, with a
- *    scalar bar (ScalarBarVisibility). Given a Reconstruction, the window gets a
+ *    scalar bar (ScalarBarVisibility). With SurfaceScalars (e.g. "Thickness" from
+ *    vtkMedialThickness), the Surface is drawn opaque and coloured by that point array
+ *    instead, with its scale, and the Medial balls are left out. Given a Reconstruction, the window gets a
  *    second view on its right: the reconstruction, shaded in copper, seen through the
  *    same camera.
  *  - 2D (a Graph, vtkMedialJunctionFilter's output): the Surface's loops as black
@@ -37,8 +39,11 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for vtkSmartPointer
 
+#include <string> // for std::string
+
 class vtkPolyData;
 class vtkRenderWindow;
+class vtkPolyDataMapper;
 class vtkRenderer;
 
 class VTKMEDIALAXISRENDERING_EXPORT vtkMedialScene : public vtkObject
@@ -76,6 +81,13 @@ public:
   /// Opacity of the 3D surface (default 0.2; 1 draws it opaque).
   vtkSetClampMacro(SurfaceOpacity, double, 0.0, 1.0);
   vtkGetMacro(SurfaceOpacity, double);
+  ///@}
+
+  ///@{
+  /// A point array of the Surface to colour it by, opaque, with its scale (default
+  /// empty: the translucent grey shell). E.g. vtkMedialArrayNames::Thickness.
+  vtkSetStdStringFromCharMacro(SurfaceScalars);
+  vtkGetCharFromStdStringMacro(SurfaceScalars);
   ///@}
 
   ///@{
@@ -134,6 +146,7 @@ protected:
   vtkPolyData* Graph = nullptr;
   vtkPolyData* Reconstruction = nullptr;
   double SurfaceOpacity = 0.2;
+  std::string SurfaceScalars;
   double PointSize = 4.0;
   double LineWidth = 1.0;
   bool ScalarBarVisibility = true;
@@ -149,6 +162,7 @@ private:
   void operator=(const vtkMedialScene&) = delete;
 
   void AddBalls(vtkRenderer* renderer);
+  void ColourBy(vtkPolyDataMapper* mapper, vtkPolyData* data, const char* name, vtkRenderer* renderer);
   void AddGraph(vtkRenderer* renderer, const double normal[3]);
   void AddReconstructionView(vtkRenderWindow* window, vtkRenderer* left);
   void Frame(vtkRenderer* renderer, const double normal[3]);
