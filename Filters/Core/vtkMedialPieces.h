@@ -13,7 +13,7 @@
  *  - First piece: the result needs all of the input and the work is sequential
  *    (the 2D medial graph, the iterative sampling strategies, a coverage stop, the
  *    measures vtkMedialReconstructionError and vtkMedialBallProtrusion, the 3D
- *    classifier vtkMedialBallClassifier). The
+ *    classifier vtkMedialBallClassifier, the wall thickness vtkMedialThickness). The
  *    filter asks for the whole input and computes in piece 0; the other pieces stay
  *    empty and skip all work.
  *  - Gather: the result needs all of the input, which upstream pieces hold apart
