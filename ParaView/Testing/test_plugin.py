@@ -25,8 +25,8 @@ def check(condition, message):
 LoadPlugin(plugin, remote=False, ns=globals())
 check(all(name in globals() for name in (
     "MedialAxisSampler", "MedialJunctionFilter", "MedialBallUnion", "MedialShapeSource",
-    "MedialReconstructionError", "MedialBallProtrusion", "MedialBallClassifier", "MedialMeshReader",
-    "MedialOFFReader")), "the plugin defines every proxy")
+    "MedialReconstructionError", "MedialBallProtrusion", "MedialBallClassifier", "MedialThickness",
+    "MedialMeshReader", "MedialOFFReader")), "the plugin defines every proxy")
 
 # Sampler -> reconstruction on the demo shape.
 demo = MedialShapeSource()  # noqa: F821 (defined by the plugin)
@@ -65,6 +65,30 @@ by_angle = servermanager.Fetch(protrusion).GetFieldData().GetArray("MaxProtrusio
 check(by_radius == by_copy and by_angle != by_radius,
       "protrusion: radius array selection (Radius %g, copy %g, SeparationAngle %g)"
       % (by_radius, by_copy, by_angle))
+
+# Maximum Protrusion reaches the sampler: the angle rule alone (1) lets balls cross the
+# demo shape deeper than the inscribed default does.
+loose = MedialAxisSampler(Input=demo, NumberOfSamples=3000, MaximumProtrusion=1)  # noqa: F821
+loose_protrusion = MedialBallProtrusion(Surface=demo, Balls=loose)  # noqa: F821
+by_loose = servermanager.Fetch(loose_protrusion).GetFieldData().GetArray("MaxProtrusion").GetValue(0)
+check(by_loose > by_radius, "sampler: Maximum Protrusion 1 crosses deeper (%g) than the default (%g)"
+      % (by_loose, by_radius))
+
+# Wall thickness: 2 x TubeRadius on a torus, Radius - InnerRadius on a hollow sphere
+# (the new shapes' panels reach the source), and the thin-region figures.
+for shape, props, expected in (("Torus", {"Radius": 1.0, "TubeRadius": 0.25, "Resolution": 48}, 0.5),
+                               ("Hollow sphere", {"Radius": 1.0, "InnerRadius": 0.6, "Resolution": 4}, 0.4)):
+    solid = MedialShapeSource(Shape=shape, **props)  # noqa: F821
+    walls = MedialThickness(Input=solid, ThinThreshold=expected * 1.05)  # noqa: F821
+    measured = servermanager.Fetch(walls)
+    values = measured.GetPointData().GetArray("Thickness")
+    low, high = values.GetRange() if values else (0, 0)
+    fraction = measured.GetFieldData().GetArray("ThinAreaFraction")
+    check(values is not None and abs(low - expected) < 0.02 * expected and abs(high - expected) < 0.02 * expected
+          and measured.GetCellData().GetArray("Thickness") is not None
+          and fraction is not None and fraction.GetValue(0) > 0.99,
+          "thickness of the %s: %g to %g (expected %g), thin area %s"
+          % (shape.lower(), low, high, expected, fraction.GetValue(0) if fraction else None))
 
 # The 3D structure: every ball of a box classified, and its exact junction vertices.
 box = MedialShapeSource(Shape="Box", Resolution=2)  # noqa: F821
