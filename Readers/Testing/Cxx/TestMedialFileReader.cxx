@@ -78,7 +78,7 @@ int TestMedialFileReader(int, char*[])
   // The format table.
   MEDIAL_CHECK(vtkMedialFileReader::GetExtensions(vtkMedialFileReader::SURFACE) == ".vtp .vtk .ply .stl .obj .off",
     "surface extensions: %s", vtkMedialFileReader::GetExtensions(vtkMedialFileReader::SURFACE).c_str());
-  MEDIAL_CHECK(vtkMedialFileReader::GetExtensions(vtkMedialFileReader::BALLS) == ".ma .vtp", "ball extensions: %s",
+  MEDIAL_CHECK(vtkMedialFileReader::GetExtensions(vtkMedialFileReader::BALLS) == ".ma .ply .vtp .vtk .csv", "ball extensions: %s",
     vtkMedialFileReader::GetExtensions(vtkMedialFileReader::BALLS).c_str());
   MEDIAL_CHECK(vtkMedialFileReader::GetExtension("/a.b/Mesh.PLY") == ".ply", "extension of Mesh.PLY");
   MEDIAL_CHECK(vtkMedialFileReader::GetExtension("/a.b/mesh").empty(), "a dot in a folder is no extension");

@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkMedialFileWriter.h"
+
+#include "vtkMedialBallCSVWriter.h"
+#include "vtkMedialBallPLYWriter.h"
+#include "vtkMedialFileReader.h"
+#include "vtkMedialMeshWriter.h"
+#include "vtkMedialMessageRelay.h"
+
+#include "vtkErrorCode.h"
+#include "vtkExecutive.h"
+#include "vtkInformation.h"
+#include "vtkOBJWriter.h"
+#include "vtkObjectFactory.h"
+#include "vtkPLYWriter.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataWriter.h"
+#include "vtkSTLWriter.h"
+#include "vtkSmartPointer.h"
+#include "vtkXMLPolyDataWriter.h"
+#include "vtkXMLWriter.h"
+
+#include <string>
+
+vtkStandardNewMacro(vtkMedialFileWriter);
+
+namespace
+{
+// A stock writer with its file name, in its binary mode where it has one.
+template <class Writer>
+vtkAlgorithm* NewNamed(const char* fileName)
+{
+  Writer* writer = Writer::New();
+  writer->SetFileName(fileName);
+  return writer;
+}
+
+vtkAlgorithm* NewXML(const char* fileName)
+{
+  auto* writer = vtkXMLPolyDataWriter::New();
+  writer->SetFileName(fileName);
+  writer->SetDataModeToBinary();
+  return writer;
+}
+
+vtkAlgorithm* NewLegacy(const char* fileName)
+{
+  auto* writer = vtkPolyDataWriter::New();
+  writer->SetFileName(fileName);
+  writer->SetFileTypeToBinary();
+  return writer;
+}
+
+vtkAlgorithm* NewSTL(const char* fileName)
+{
+  auto* writer = vtkSTLWriter::New();
+  writer->SetFileName(fileName);
+  writer->SetFileTypeToBinary();
+  return writer;
+}
+
+vtkAlgorithm* NewPLY(const char* fileName)
+{
+  auto* writer = vtkPLYWriter::New();
+  writer->SetFileName(fileName);
+  writer->SetFileTypeToBinary();
+  return writer;
+}
+
+struct Format
+{
+  const char* Extension;
+  int Content;
+  vtkAlgorithm* (*NewWriter)(const char* fileName);
+};
+
+// Every file format the tools write, in the order GetExtensions() lists them.
+const Format Formats[] = {
+  { ".vtp", vtkMedialFileWriter::SURFACE, &NewXML },
+  { ".vtk", vtkMedialFileWriter::SURFACE, &NewLegacy },
+  { ".stl", vtkMedialFileWriter::SURFACE, &NewSTL },
+  { ".ply", vtkMedialFileWriter::SURFACE, &NewPLY },
+  { ".obj", vtkMedialFileWriter::SURFACE, &NewNamed<vtkOBJWriter> },
+  { ".vtp", vtkMedialFileWriter::BALLS, &NewXML },
+  { ".vtk", vtkMedialFileWriter::BALLS, &NewLegacy },
+  { ".ply", vtkMedialFileWriter::BALLS, &NewNamed<vtkMedialBallPLYWriter> },
+  { ".ma", vtkMedialFileWriter::BALLS, &NewNamed<vtkMedialMeshWriter> },
+  { ".csv", vtkMedialFileWriter::BALLS, &NewNamed<vtkMedialBallCSVWriter> },
+};
+
+const Format* FindFormat(const char* fileName, int content)
+{
+  const std::string extension = vtkMedialFileReader::GetExtension(fileName);
+  for (const Format& format : Formats)
+  {
+    if (format.Content == content && extension == format.Extension)
+    {
+      return &format;
+    }
+  }
+  return nullptr;
+}
+}
+
+vtkMedialFileWriter::~vtkMedialFileWriter()
+{
+  this->SetFileName(nullptr);
+}
+
+vtkAlgorithm* vtkMedialFileWriter::NewWriter(const char* fileName, int content)
+{
+  const Format* format = FindFormat(fileName, content);
+  return format ? format->NewWriter(fileName) : nullptr;
+}
+
+std::string vtkMedialFileWriter::GetExtensions(int content)
+{
+  std::string list;
+  for (const Format& format : Formats)
+  {
+    if (format.Content == content)
+    {
+      list += (list.empty() ? "" : " ") + std::string(format.Extension);
+    }
+  }
+  return list;
+}
+
+int vtkMedialFileWriter::CanWriteExtension(const char* fileName, int content)
+{
+  return FindFormat(fileName, content) ? 1 : 0;
+}
+
+vtkPolyData* vtkMedialFileWriter::GetInput()
+{
+  return vtkPolyData::SafeDownCast(this->Superclass::GetInput());
+}
+
+int vtkMedialFileWriter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+void vtkMedialFileWriter::WriteData()
+{
+  this->SetErrorCode(vtkErrorCode::NoError);
+  if (!this->FileName || !*this->FileName)
+  {
+    vtkErrorMacro("No FileName set.");
+    this->SetErrorCode(vtkErrorCode::NoFileNameError);
+    return;
+  }
+  const Format* format = FindFormat(this->FileName, this->Content);
+  if (!format)
+  {
+    const std::string extension = vtkMedialFileReader::GetExtension(this->FileName);
+    vtkErrorMacro("Cannot write '" << this->FileName << "': "
+                                   << (extension.empty() ? "no extension" : "unsupported extension '" + extension + "'")
+                                   << " for " << (this->Content == BALLS ? "balls" : "a surface") << " ("
+                                   << GetExtensions(this->Content) << ")");
+    this->SetErrorCode(vtkErrorCode::FileFormatError);
+    return;
+  }
+  vtkSmartPointer<vtkAlgorithm> writer;
+  writer.TakeReference(format->NewWriter(this->FileName));
+  // The chosen writer's messages are this writer's; its executive's failure note repeats them.
+  vtkNew<vtkMedialMessageRelay> relay;
+  relay->Outer = this;
+  relay->Relay(writer);
+  relay->Mute(writer->GetExecutive());
+  vtkNew<vtkPolyData> input; // a shallow copy: the writer must not update our pipeline
+  input->ShallowCopy(this->GetInput());
+  writer->SetInputDataObject(input);
+  vtkWriter* legacy = vtkWriter::SafeDownCast(writer);
+  vtkXMLWriter* xml = vtkXMLWriter::SafeDownCast(writer);
+  const int written = legacy ? legacy->Write() : (xml ? xml->Write() : 0);
+  if (!written || relay->Errors > 0 || writer->GetErrorCode() != vtkErrorCode::NoError)
+  {
+    if (relay->Errors == 0)
+    {
+      vtkErrorMacro("Cannot write '" << this->FileName << "': "
+                                     << vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode()));
+    }
+    this->SetErrorCode(
+      writer->GetErrorCode() != vtkErrorCode::NoError ? writer->GetErrorCode() : vtkErrorCode::UnknownError);
+  }
+}
+
+void vtkMedialFileWriter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "Content: " << (this->Content == SURFACE ? "SURFACE" : "BALLS") << "\n";
+}
