@@ -56,6 +56,19 @@ inline double AngleDegrees(const double apex[3], const double a[3], const double
   return std::atan2(std::sqrt(Dot(w, w)), Dot(u, v)) * (180.0 / 3.14159265358979323846);
 }
 
+/// Squared distance from p to the segment [a, b] (to a when a == b).
+inline double SegmentDistance2(const double p[3], const double a[3], const double b[3])
+{
+  double ab[3], ap[3];
+  Sub(b, a, ab);
+  Sub(p, a, ap);
+  const double len2 = Dot(ab, ab);
+  const double t = len2 > 0.0 ? std::min(1.0, std::max(0.0, Dot(ap, ab) / len2)) : 0.0;
+  double q[3];
+  AddScaled(a, t, ab, q);
+  return Distance2(p, q);
+}
+
 /// Closest point to p on triangle (a, b, c); returns the squared distance.
 inline double ClosestPointOnTriangle(
   const double p[3], const double a[3], const double b[3], const double c[3], double out[3])

@@ -6,6 +6,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -335,4 +336,20 @@ void vtkMedialSurfaceQuery::MaximalTangentBall(
   const double p[3], const double n[3], const ContactFilter& filter, TangentBall& ball) const
 {
   this->Tree.MaximalTangentBall(p, n, filter.OwnTriangle, filter.CosMinAngle, this->Slack, ball);
+}
+
+void vtkMedialSurfaceQuery::TrianglesWithin(
+  const double x[3], double distance, std::vector<ClosestHit>& hits, const ContactFilter* filter) const
+{
+  hits.clear();
+  this->Tree.VisitWithin(x, distance, filter ? filter->SamplePoint : nullptr, filter ? filter->CosMinAngle : 1.0,
+    [&](double d2, const double* q, vtkIdType t) {
+    ClosestHit hit;
+    std::copy(q, q + 3, hit.Point);
+    hit.Distance = std::sqrt(d2);
+    hit.Triangle = t;
+    hits.push_back(hit);
+  });
+  std::sort(hits.begin(), hits.end(),
+    [](const ClosestHit& a, const ClosestHit& b) { return a.Triangle < b.Triangle; });
 }

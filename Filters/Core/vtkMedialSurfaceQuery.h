@@ -35,6 +35,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 class vtkMedialTriangleMesh;
 
@@ -86,6 +87,17 @@ public:
 
   /// True when no admissible surface point lies strictly inside the ball. Stops at the first one found.
   bool ContainsBall(const double centre[3], double radius, const ContactFilter* filter = nullptr) const;
+
+  /**
+   * Every triangle whose closest admissible point to x is at most `distance` away,
+   * with that point and its distance, sorted by triangle id (replaces the contents
+   * of `hits`). The filter's OwnTriangle is not skipped here; with its CosMinAngle
+   * < 1 only each triangle's part outside the cap counts. Used by the medial
+   * structure filters to read every contact of a ball. Always answered by the
+   * internal tree.
+   */
+  void TrianglesWithin(const double x[3], double distance, std::vector<ClosestHit>& hits,
+    const ContactFilter* filter = nullptr) const;
 
   /**
    * Largest admissible ball tangent at p with centre p + r n (n unit, inward),

@@ -898,3 +898,20 @@ bool vtkMedialTriangleBVH::ContainsBall(const double x[3], double radius, vtkIdT
     });
   return empty;
 }
+
+void vtkMedialTriangleBVH::VisitWithin(const double x[3], double distance, const double samplePoint[3],
+  double cosMinAngle, const std::function<void(double, const double*, vtkIdType)>& visit) const
+{
+  const double limit2 = distance * distance;
+  // The traversal culls nodes at or beyond its reach: reach a little further and
+  // decide in double on each triangle.
+  double reach2 = limit2 * (1.0 + 1e-12) + 1e-300;
+  this->VisitAdmissible(x, -1, samplePoint, cosMinAngle, reach2,
+    [&](double d2, const double q[3], vtkIdType t) {
+      if (d2 <= limit2)
+      {
+        visit(d2, q, t);
+      }
+      return true;
+    });
+}

@@ -81,6 +81,15 @@ public:
   bool ContainsBall(const double x[3], double radius, vtkIdType ownTriangle,
     const double samplePoint[3], double cosMinAngle) const;
 
+  /**
+   * Every triangle whose closest point to x is at most `distance` away: visit(d2, q,
+   * triangle) gets the squared distance, that closest point and the mesh triangle
+   * id, in traversal order (deterministic for a given mesh). With cosMinAngle < 1
+   * only the admissible part of each triangle counts (same rule as ClosestPoint).
+   */
+  void VisitWithin(const double x[3], double distance, const double samplePoint[3], double cosMinAngle,
+    const std::function<void(double, const double*, vtkIdType)>& visit) const;
+
   /// Position of each mesh triangle in leaf order: nearby triangles get nearby ranks.
   const std::vector<std::int32_t>& GetLeafRanks() const { return this->LeafRank; }
   vtkIdType GetNumberOfNodes() const { return static_cast<vtkIdType>(this->Nodes.size()); }
