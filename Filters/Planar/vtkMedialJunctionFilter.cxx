@@ -3,6 +3,7 @@
 #include "vtkMedialArrayNames.h"
 
 #include "vtkMedialPolygon.h"
+#include "vtkMedialProgress.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -926,7 +927,7 @@ public:
   bool SolveSamples()
   {
     const vtkIdType count = static_cast<vtkIdType>(this->ToSolve.size());
-    return this->InBlocks(count, 0.0, 0.5, [this](vtkIdType i) {
+    return this->InBlocks(count, [this](vtkIdType i) {
       Sample& s = this->Walks[this->ToSolve[i].first][this->ToSolve[i].second];
       s = this->S.SampleAt(s.Before);
     });
@@ -947,7 +948,7 @@ public:
     this->Found.assign(intervals.size(), {});
     std::vector<int> failed(intervals.size(), 0);
     const bool done =
-      this->InBlocks(static_cast<vtkIdType>(intervals.size()), 0.5, 0.4, [&](vtkIdType i) {
+      this->InBlocks(static_cast<vtkIdType>(intervals.size()), [&](vtkIdType i) {
         const auto& walk = this->Walks[intervals[i].first];
         const size_t k = intervals[i].second;
         this->S.FindEvents(walk[k], walk[(k + 1) % walk.size()], 0, this->Found[i], failed[i]);
@@ -1026,10 +1027,10 @@ private:
     this->Walks[loop].push_back(s);
   }
 
-  // Runs work(i) for i in [0, count) in parallel blocks; progress goes from `start`
-  // over `share`. False when aborted.
+  // Runs work(i) for i in [0, count) in parallel blocks, reporting the fraction done
+  // (the stage's progress). False when aborted.
   template <class Work>
-  bool InBlocks(vtkIdType count, double start, double share, Work&& work) const
+  bool InBlocks(vtkIdType count, Work&& work) const
   {
     const vtkIdType block = 16384;
     for (vtkIdType begin = 0; begin < count && !this->Self->GetAbortExecute(); begin += block)
@@ -1040,7 +1041,7 @@ private:
       {
         work(i);
       }
-      this->Self->UpdateProgress(start + share * static_cast<double>(end) / static_cast<double>(count));
+      this->Self->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
     }
     return !this->Self->GetAbortExecute();
   }
@@ -1188,6 +1189,8 @@ int vtkMedialJunctionFilter::RequestData(
   this->NumberOfBoundarySamples = 0;
   this->UnresolvedIntervals = 0;
 
+  vtkMedialStages stages(this);
+  stages.Begin("Preparing the polygon", 0.0, 0.02);
   vtkMedialPolygon poly;
   std::string error;
   if (!poly.Build(input, error))
@@ -1199,10 +1202,17 @@ int vtkMedialJunctionFilter::RequestData(
   const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
   JunctionPasses passes(this, poly, solver, threads);
   this->NumberOfBoundarySamples = passes.Walk(this->SamplesPerUnitLength, this->MinimumSamplesPerEdge);
-  if (!passes.SolveSamples() || !passes.FindAllEvents(this->UnresolvedIntervals))
+  stages.Begin("Solving the boundary disks", 0.02, 0.5);
+  if (!passes.SolveSamples())
   {
     return 1; // aborted: leave the output empty
   }
+  stages.Begin("Finding the junctions", 0.5, 0.9);
+  if (!passes.FindAllEvents(this->UnresolvedIntervals))
+  {
+    return 1;
+  }
+  stages.Begin("Connecting the graph", 0.9, 1.0);
   NodeSet nodes(1e-8 * poly.GetDiagonal());
   std::vector<Arc> arcs;
   passes.Connect(nodes, arcs);
