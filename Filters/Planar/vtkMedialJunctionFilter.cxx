@@ -814,9 +814,11 @@ struct Node
   double Radius;
   int Type;
   int Count;
+  int Polygon;
 };
 
-// Merges nodes closer than a tolerance (a junction is found from every side).
+// Merges nodes of one polygon closer than a tolerance (a junction is found from
+// every side).
 class NodeSet
 {
 public:
@@ -824,7 +826,7 @@ public:
     : Tol(tol)
   {
   }
-  int Add(const Event& ev)
+  int Add(const Event& ev, int polygon)
   {
     const long long ix = static_cast<long long>(std::floor(ev.Centre[0] / this->Tol));
     const long long iy = static_cast<long long>(std::floor(ev.Centre[1] / this->Tol));
@@ -843,7 +845,7 @@ public:
         for (int id : it->second)
         {
           Node& n = this->Nodes[id];
-          if (std::hypot(n.Centre[0] - ev.Centre[0], n.Centre[1] - ev.Centre[1]) <= this->Tol)
+          if (n.Polygon == polygon && std::hypot(n.Centre[0] - ev.Centre[0], n.Centre[1] - ev.Centre[1]) <= this->Tol)
           {
             n.Count = std::max(n.Count, ev.Count);
             n.Type = n.Type == vtkMedialJunctionFilter::END_POINT ? n.Type : std::max(n.Type, type);
@@ -853,7 +855,7 @@ public:
       }
     }
     const int id = static_cast<int>(this->Nodes.size());
-    this->Nodes.push_back({ { ev.Centre[0], ev.Centre[1] }, ev.Radius, type, ev.IsEnd ? 2 : ev.Count });
+    this->Nodes.push_back({ { ev.Centre[0], ev.Centre[1] }, ev.Radius, type, ev.IsEnd ? 2 : ev.Count, polygon });
     this->Cells[Key(ix, iy)].push_back(id);
     return id;
   }
@@ -865,11 +867,13 @@ private:
   std::unordered_map<long long, std::vector<int>> Cells;
 };
 
-// An arc of the graph between nodes A and B, with the governor pair that traces it.
+// An arc of the graph between nodes A and B of one polygon, with the governor pair
+// that traces it.
 struct Arc
 {
   int A, B;
   Governors Pair;
+  int Polygon;
 };
 
 // The passes of vtkMedialJunctionFilter::RequestData on one prepared polygon, in the
@@ -890,10 +894,11 @@ public:
   vtkIdType Walk(double samplesPerUnitLength, int minimumSamplesPerEdge)
   {
     const vtkMedialPolygon& poly = this->Poly;
-    const double diagonal = poly.GetDiagonal();
     this->Walks.assign(static_cast<size_t>(poly.GetNumberOfLoops()), {});
     for (int loop = 0; loop < poly.GetNumberOfLoops(); ++loop)
     {
+      // Each polygon is sampled as if it were alone: by its own diagonal.
+      const double diagonal = poly.GetPolygonDiagonal(poly.GetLoopPolygon(loop));
       auto& walk = this->Walks[loop];
       for (int e : poly.GetLoopEdges(loop))
       {
@@ -998,7 +1003,7 @@ public:
         if (items[i].IsEvent)
         {
           eventAt.push_back(i);
-          nodeOf.push_back(nodes.Add(items[i].Ev));
+          nodeOf.push_back(nodes.Add(items[i].Ev, this->Poly.GetLoopPolygon(loop)));
         }
       }
       for (size_t j = 0; j < eventAt.size(); ++j)
@@ -1012,7 +1017,7 @@ public:
         auto key = std::make_tuple(std::min(a, b), std::max(a, b), pair);
         if (seen.emplace(key, true).second)
         {
-          arcs.push_back({ a, b, pair });
+          arcs.push_back({ a, b, pair, this->Poly.GetLoopPolygon(loop) });
         }
       }
     }
@@ -1127,6 +1132,8 @@ void WriteGraph(const vtkMedialPolygon& poly, NodeSet& nodes, const std::vector<
   vtkNew<vtkCellArray> lines;
   vtkNew<vtkIntArray> arcType;
   arcType->SetName(vtkMedialArrayNames::ArcType);
+  vtkNew<vtkIntArray> polygonId;
+  polygonId->SetName(vtkMedialArrayNames::PolygonId);
   const int E = poly.GetNumberOfEdges();
   for (const Arc& arc : arcs)
   {
@@ -1160,6 +1167,7 @@ void WriteGraph(const vtkMedialPolygon& poly, NodeSet& nodes, const std::vector<
     ids.push_back(arc.B);
     lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
     arcType->InsertNextValue(parabolic ? vtkMedialJunctionFilter::PARABOLIC_ARC : vtkMedialJunctionFilter::LINEAR_ARC);
+    polygonId->InsertNextValue(arc.Polygon);
   }
   output->SetPoints(points);
   output->SetLines(lines);
@@ -1168,6 +1176,7 @@ void WriteGraph(const vtkMedialPolygon& poly, NodeSet& nodes, const std::vector<
   output->GetPointData()->AddArray(type);
   output->GetPointData()->AddArray(governors);
   output->GetCellData()->AddArray(arcType);
+  output->GetCellData()->AddArray(polygonId);
 }
 }
 
@@ -1188,6 +1197,7 @@ int vtkMedialJunctionFilter::RequestData(
   this->NumberOfEndPoints = 0;
   this->NumberOfBoundarySamples = 0;
   this->UnresolvedIntervals = 0;
+  this->NumberOfPolygons = 0;
 
   vtkMedialStages stages(this);
   stages.Begin("Preparing the polygon", 0.0, 0.02);
@@ -1198,6 +1208,7 @@ int vtkMedialJunctionFilter::RequestData(
     vtkErrorMacro(<< "Cannot compute the medial graph: " << error << ".");
     return 0;
   }
+  this->NumberOfPolygons = poly.GetNumberOfPolygons();
   const Solver solver(poly, this->Tolerance);
   const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
   JunctionPasses passes(this, poly, solver, threads);
@@ -1239,4 +1250,5 @@ void vtkMedialJunctionFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfEndPoints: " << this->NumberOfEndPoints << "\n";
   os << indent << "NumberOfBoundarySamples: " << this->NumberOfBoundarySamples << "\n";
   os << indent << "UnresolvedIntervals: " << this->UnresolvedIntervals << "\n";
+  os << indent << "NumberOfPolygons: " << this->NumberOfPolygons << "\n";
 }
