@@ -72,20 +72,21 @@ struct Format
   const char* Extension;
   int Content;
   vtkAlgorithm* (*NewWriter)(const char* fileName);
+  bool Lines; // the format holds line cells (STL and VTK's PLY writer keep triangles only)
 };
 
 // Every file format the tools write, in the order GetExtensions() lists them.
 const Format Formats[] = {
-  { ".vtp", vtkMedialFileWriter::SURFACE, &NewXML },
-  { ".vtk", vtkMedialFileWriter::SURFACE, &NewLegacy },
-  { ".stl", vtkMedialFileWriter::SURFACE, &NewSTL },
-  { ".ply", vtkMedialFileWriter::SURFACE, &NewPLY },
-  { ".obj", vtkMedialFileWriter::SURFACE, &NewNamed<vtkOBJWriter> },
-  { ".vtp", vtkMedialFileWriter::BALLS, &NewXML },
-  { ".vtk", vtkMedialFileWriter::BALLS, &NewLegacy },
-  { ".ply", vtkMedialFileWriter::BALLS, &NewNamed<vtkMedialBallPLYWriter> },
-  { ".ma", vtkMedialFileWriter::BALLS, &NewNamed<vtkMedialMeshWriter> },
-  { ".csv", vtkMedialFileWriter::BALLS, &NewNamed<vtkMedialBallCSVWriter> },
+  { ".vtp", vtkMedialFileWriter::SURFACE, &NewXML, true },
+  { ".vtk", vtkMedialFileWriter::SURFACE, &NewLegacy, true },
+  { ".stl", vtkMedialFileWriter::SURFACE, &NewSTL, false },
+  { ".ply", vtkMedialFileWriter::SURFACE, &NewPLY, false },
+  { ".obj", vtkMedialFileWriter::SURFACE, &NewNamed<vtkOBJWriter>, true },
+  { ".vtp", vtkMedialFileWriter::BALLS, &NewXML, true },
+  { ".vtk", vtkMedialFileWriter::BALLS, &NewLegacy, true },
+  { ".ply", vtkMedialFileWriter::BALLS, &NewNamed<vtkMedialBallPLYWriter>, true },
+  { ".ma", vtkMedialFileWriter::BALLS, &NewNamed<vtkMedialMeshWriter>, true },
+  { ".csv", vtkMedialFileWriter::BALLS, &NewNamed<vtkMedialBallCSVWriter>, true },
 };
 
 const Format* FindFormat(const char* fileName, int content)
@@ -159,6 +160,15 @@ void vtkMedialFileWriter::WriteData()
                                    << (extension.empty() ? "no extension" : "unsupported extension '" + extension + "'")
                                    << " for " << (this->Content == BALLS ? "balls" : "a surface") << " ("
                                    << GetExtensions(this->Content) << ")");
+    this->SetErrorCode(vtkErrorCode::FileFormatError);
+    return;
+  }
+  vtkPolyData* data = this->GetInput();
+  if (!format->Lines && data && data->GetNumberOfLines() > 0 && data->GetNumberOfPolys() + data->GetNumberOfStrips() == 0)
+  {
+    vtkErrorMacro("Cannot write '" << this->FileName << "': " << format->Extension
+                                   << " holds triangles only, and the data are lines (a planar reconstruction?); "
+                                      "write .vtp, .vtk or .obj");
     this->SetErrorCode(vtkErrorCode::FileFormatError);
     return;
   }

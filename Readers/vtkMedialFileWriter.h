@@ -20,6 +20,9 @@
  * | BALLS | .ma | vtkMedialMeshWriter (`v x y z r`, edges, faces) |
  * | BALLS | .csv | vtkMedialBallCSVWriter (one row per ball, every point array) |
  *
+ * Lines (a planar reconstruction's curves) without polygons are refused for .stl
+ * and the surface .ply, which hold triangles only.
+ *
  * BALLS is any polydata whose points carry a `Radius` array: the sampler's balls,
  * a medial mesh, the 2D medial graph. Every ball format is read back by
  * vtkMedialFileReader with SetContentToBalls().
