@@ -242,50 +242,33 @@ vtkRenderWindow* vtkMedialScene::GetRenderWindow()
   return this->Window;
 }
 
-// The translucent surface and the medial points coloured by radius; returns the
-// renderer of the scale (nullptr without one), to be given a strip of its own.
-vtkSmartPointer<vtkRenderer> vtkMedialScene::AddBalls(vtkRenderer* renderer)
+// Colours what `mapper` draws by the point array `name` of `data`, blue (low) to red
+// (high) over its range; returns the renderer of the scale (nullptr without
+// ScalarBarVisibility), to be given a strip of its own beside the model.
+vtkSmartPointer<vtkRenderer> vtkMedialScene::ColourBy(vtkPolyDataMapper* mapper, vtkPolyData* data, const char* name)
 {
-  if (this->Surface)
-  {
-    vtkSmartPointer<vtkActor> surface = ActorOf(this->Surface, 0.80, 0.82, 0.86);
-    surface->GetProperty()->SetOpacity(this->SurfaceOpacity);
-    renderer->AddActor(surface);
-  }
-  if (!this->Medial)
-  {
-    return nullptr;
-  }
   double range[2] = { 0.0, 1.0 };
-  vtkDataArray* radius = this->Medial->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
-  if (radius && radius->GetNumberOfTuples() > 0)
+  vtkDataArray* values = data->GetPointData()->GetArray(name);
+  if (values && values->GetNumberOfTuples() > 0)
   {
-    radius->GetRange(range);
+    values->GetRange(range);
   }
   vtkNew<vtkLookupTable> lut;
   lut->SetHueRange(0.667, 0.0); // blue (thin) to red (thick)
   lut->SetTableRange(range);
   lut->Build();
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(WithVertices(this->Medial));
   mapper->SetLookupTable(lut);
   mapper->SetScalarModeToUsePointFieldData();
-  mapper->SelectColorArray(vtkMedialArrayNames::Radius);
+  mapper->SelectColorArray(name);
   mapper->SetScalarRange(range);
   mapper->ScalarVisibilityOn();
-  vtkNew<vtkActor> medial;
-  medial->SetMapper(mapper);
-  medial->GetProperty()->SetPointSize(this->PointSize);
-  medial->GetProperty()->SetLineWidth(this->LineWidth);
-  medial->GetProperty()->RenderPointsAsSpheresOn();
-  renderer->AddActor(medial);
   if (!this->ScalarBarVisibility)
   {
     return nullptr;
   }
   vtkNew<vtkScalarBarActor> bar;
   bar->SetLookupTable(lut);
-  bar->SetTitle(vtkMedialArrayNames::Radius);
+  bar->SetTitle(name);
   bar->SetNumberOfLabels(5);
   bar->SetPosition(0.1, 0.12); // in the strip's own viewport
   bar->SetWidth(0.8);
@@ -296,6 +279,47 @@ vtkSmartPointer<vtkRenderer> vtkMedialScene::AddBalls(vtkRenderer* renderer)
   auto strip = vtkSmartPointer<vtkRenderer>::New();
   strip->SetBackground(1, 1, 1);
   strip->AddActor2D(bar);
+  return strip;
+}
+
+// The translucent surface and the medial points coloured by radius; or, with
+// SurfaceScalars, the opaque surface coloured by that array. Returns the renderer of
+// the scale (nullptr without one).
+vtkSmartPointer<vtkRenderer> vtkMedialScene::AddBalls(vtkRenderer* renderer)
+{
+  if (this->Surface && !this->SurfaceScalars.empty())
+  {
+    vtkNew<vtkPolyDataNormals> normals; // smooth shading
+    normals->SetInputData(this->Surface);
+    normals->SplittingOff();
+    normals->Update();
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(normals->GetOutputPort());
+    vtkSmartPointer<vtkRenderer> strip = this->ColourBy(mapper, normals->GetOutput(), this->SurfaceScalars.c_str());
+    vtkNew<vtkActor> surface;
+    surface->SetMapper(mapper);
+    renderer->AddActor(surface);
+    return strip;
+  }
+  if (this->Surface)
+  {
+    vtkSmartPointer<vtkActor> surface = ActorOf(this->Surface, 0.80, 0.82, 0.86);
+    surface->GetProperty()->SetOpacity(this->SurfaceOpacity);
+    renderer->AddActor(surface);
+  }
+  if (!this->Medial)
+  {
+    return nullptr;
+  }
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(WithVertices(this->Medial));
+  vtkSmartPointer<vtkRenderer> strip = this->ColourBy(mapper, this->Medial, vtkMedialArrayNames::Radius);
+  vtkNew<vtkActor> medial;
+  medial->SetMapper(mapper);
+  medial->GetProperty()->SetPointSize(this->PointSize);
+  medial->GetProperty()->SetLineWidth(this->LineWidth);
+  medial->GetProperty()->RenderPointsAsSpheresOn();
+  renderer->AddActor(medial);
   return strip;
 }
 
@@ -600,6 +624,7 @@ void vtkMedialScene::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Graph: " << this->Graph << "\n";
   os << indent << "Reconstruction: " << this->Reconstruction << "\n";
   os << indent << "SurfaceOpacity: " << this->SurfaceOpacity << "\n";
+  os << indent << "SurfaceScalars: " << this->SurfaceScalars << "\n";
   os << indent << "PointSize: " << this->PointSize << "\n";
   os << indent << "LineWidth: " << this->LineWidth << "\n";
   os << indent << "ScalarBarVisibility: " << this->ScalarBarVisibility << "\n";

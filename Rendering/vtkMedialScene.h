@@ -8,9 +8,12 @@
  *  - 3D (no Graph): the Surface as a light grey translucent shell (SurfaceOpacity),
  *    the Medial balls' centres (and any link lines or medial-mesh faces) coloured by
  *    their `Radius` array from blue (thin) to red (thick), the centres drawn as
- *    spheres of PointSize pixels, with a scalar bar (ScalarBarVisibility). Given a
- *    Reconstruction, the picture gets a second view on the right of the first: the
- *    reconstruction, shaded in copper, seen through the same camera.
+ *    spheres of PointSize pixels, with a scalar bar (ScalarBarVisibility). With
+ *    SurfaceScalars (e.g. "Thickness" from vtkMedialThickness), the Surface is drawn
+ *    opaque and coloured by that point array instead, with its scale, and the Medial
+ *    balls are left out. Given a Reconstruction, the picture gets a second view on
+ *    the right of the first: the reconstruction, shaded in copper, seen through the
+ *    same camera.
  *  - 2D (a Graph, vtkMedialJunctionFilter's output): the Surface's loops as black
  *    outlines, the graph's arcs by `ArcType` (blue linear, orange parabolic), the
  *    maximal disks of the six largest junctions (grey circles), junctions (red) and
@@ -52,8 +55,11 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for vtkSmartPointer
 
+#include <string> // for std::string
+
 class vtkPolyData;
 class vtkRenderWindow;
+class vtkPolyDataMapper;
 class vtkRenderer;
 
 class VTKMEDIALAXISRENDERING_EXPORT vtkMedialScene : public vtkObject
@@ -91,6 +97,13 @@ public:
   /// Opacity of the 3D surface (default 0.2; 1 draws it opaque).
   vtkSetClampMacro(SurfaceOpacity, double, 0.0, 1.0);
   vtkGetMacro(SurfaceOpacity, double);
+  ///@}
+
+  ///@{
+  /// A point array of the Surface to colour it by, opaque, with its scale (default
+  /// empty: the translucent grey shell). E.g. vtkMedialArrayNames::Thickness.
+  vtkSetStdStringFromCharMacro(SurfaceScalars);
+  vtkGetCharFromStdStringMacro(SurfaceScalars);
   ///@}
 
   ///@{
@@ -176,6 +189,7 @@ protected:
   vtkPolyData* Graph = nullptr;
   vtkPolyData* Reconstruction = nullptr;
   double SurfaceOpacity = 0.2;
+  std::string SurfaceScalars;
   double PointSize = 4.0;
   double LineWidth = 1.0;
   bool ScalarBarVisibility = true;
@@ -193,6 +207,7 @@ private:
   void operator=(const vtkMedialScene&) = delete;
 
   vtkSmartPointer<vtkRenderer> AddBalls(vtkRenderer* renderer);
+  vtkSmartPointer<vtkRenderer> ColourBy(vtkPolyDataMapper* mapper, vtkPolyData* data, const char* name);
   void AddGraph(vtkRenderer* renderer, const double normal[3]);
   vtkSmartPointer<vtkRenderer> AddReconstructionView(vtkRenderer* left);
   void ViewAxes(double right[3], double up[3], double toward[3]) const;

@@ -46,7 +46,8 @@ void OnInterrupt(int)
 bool Abortable(const std::string& stage)
 {
   return stage.rfind("Sampling", 0) == 0 || stage == "Drawing the samples" || stage == "Solving the boundary disks" ||
-    stage == "Finding the junctions" || stage == "Filling the distance field";
+    stage == "Finding the junctions" || stage == "Filling the distance field" ||
+    stage.rfind("Measuring the thickness", 0) == 0;
 }
 
 // VTK writes "ERROR: In file, line N\nClass (0x...): message"; keep the message.

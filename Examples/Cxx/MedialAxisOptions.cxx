@@ -48,6 +48,10 @@ const char* Usage =
   "  --tolerance E     bisection tolerance relative to the diagonal (default 1e-6)\n"
   "  --min-angle DEG   minimum separation angle theta (default 45; 0 = exact medial axis of\n"
   "                    the polyhedron)\n"
+  "  --max-protrusion E  largest depth, relative to the diagonal, by which a ball may cross\n"
+  "                    the surface; deeper, it is shrunk about its centre until inscribed\n"
+  "                    (default 1e-4; 1 = never: the angle rule alone, whose balls cross the\n"
+  "                    surface by up to about 2% of the diagonal)\n"
   "  --balls IN        read medial balls instead of sampling: .ma (Q-MAT, MATFP, Coverage\n"
   "                    Axis, ours), .ply with a per-vertex radius, .vtp, .vtk, .csv; INPUT is\n"
   "                    then optional (the surface to draw and to measure against)\n"
@@ -62,13 +66,21 @@ const char* Usage =
   "  --junctions OUT   2D input: the medial graph (junctions, end points, linear and\n"
   "                    parabolic arcs; Radius, MedialPointType, GovernorCount; cell data\n"
   "                    ArcType, PolygonId): .vtp .vtk .ply .ma .csv; --render then draws it\n"
+  "  --thickness OUT   3D input: the surface with its wall thickness (point and cell data\n"
+  "                    Thickness, MedialRadius, MedialCentre, RayThickness): .vtp .vtk;\n"
+  "                    --render then draws the surface coloured by thickness; --stats adds\n"
+  "                    thickness_min, thickness_p01 and thickness_median\n"
+  "  --thickness-below T  3D input: the share of the area and the number of regions thinner\n"
+  "                    than T (in the input's units), e.g. a printer's minimum wall; a line\n"
+  "                    on stdout, or members of the --stats line\n"
   "  --render OUT.png  a picture, offscreen (needs X: run under xvfb-run)\n"
   "  --view V          auto (default: the longest extent across, the second up), +x -x +y\n"
   "                    -y +z -z (look along that axis), iso\n"
   "  --size WxH        picture size in pixels (default 900x640, 900x700 in 2D, twice as wide\n"
   "                    with --reconstruct)\n"
   "  --zoom Z          zoom after framing the whole model (default 1)\n"
-  "  --stats           one JSON line of figures on stdout\n"
+  "  --stats           one JSON line of figures on stdout; 3D input adds protrusion_max_rel,\n"
+  "                    how far the balls cross the surface (relative to the diagonal)\n"
   "Messages:\n"
   "  --quiet           no progress (warnings and errors are still printed)\n"
   "  --version         the program's version\n"
@@ -205,11 +217,21 @@ const std::vector<Flag>& Flags()
     { "threads", nullptr, F::COUNT, 0, 4096, [](Options& o, auto&, double v) { o.Threads = static_cast<int>(v); } },
     { "tolerance", nullptr, F::NUMBER, 1e-15, 0.1, [](Options& o, auto&, double v) { o.Tolerance = v; } },
     { "min-angle", nullptr, F::NUMBER, 0, 179, [](Options& o, auto&, double v) { o.MinAngle = v; } },
+    { "max-protrusion", nullptr, F::NUMBER, 0, 1, [](Options& o, auto&, double v) { o.MaxProtrusion = v; } },
     { "balls", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Balls = t; } },
     { "output", "o", F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Output = t; } },
     { "reconstruct", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Reconstruct = t; } },
     { "resolution", nullptr, F::COUNT, 8, 2048, [](Options& o, auto&, double v) { o.Resolution = static_cast<int>(v); } },
     { "junctions", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Junctions = t; } },
+    { "thickness", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Thickness = t; } },
+    { "thickness-below", nullptr, F::NUMBER, 0, 1e300,
+      [](Options& o, auto&, double v) {
+        if (!(v > 0.0))
+        {
+          Fail("--thickness-below expects a thickness above 0");
+        }
+        o.ThicknessBelow = v;
+      } },
     { "render", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Render = t; } },
     { "view", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.View = ParseView(t); } },
     { "size", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { ParseSize(t, o.Size); } },
@@ -350,14 +372,15 @@ void CheckWriter(const std::string& path, const std::string& flag, int content)
 
 void CheckOutputs(const Options& o)
 {
-  if (o.Output.empty() && o.Render.empty() && o.Reconstruct.empty() && o.Junctions.empty() && !o.Stats)
+  if (o.Output.empty() && o.Render.empty() && o.Reconstruct.empty() && o.Junctions.empty() && o.Thickness.empty() &&
+    o.ThicknessBelow <= 0.0 && !o.Stats)
   {
-    Fail("nothing to write: give -o OUT, --reconstruct OUT, --junctions OUT, --render OUT.png or --stats "
-         "(see --help)");
+    Fail("nothing to write: give -o OUT, --reconstruct OUT, --junctions OUT, --thickness OUT, "
+         "--thickness-below T, --render OUT.png or --stats (see --help)");
   }
   if (!o.Balls.empty())
   {
-    for (const char* sampling : { "samples", "method", "strategy", "coverage", "seed", "tolerance", "min-angle" })
+    for (const char* sampling : { "samples", "method", "strategy", "coverage", "seed", "tolerance", "min-angle", "max-protrusion" })
     {
       if (o.Given.count(sampling))
       {
@@ -395,6 +418,16 @@ void CheckOutputs(const Options& o)
   if (!o.Junctions.empty())
   {
     CheckWriter(o.Junctions, "--junctions", vtkMedialFileWriter::BALLS);
+  }
+  if (!o.Thickness.empty())
+  {
+    // Only the VTK formats keep the point and cell arrays, the whole point of the file.
+    const std::string ext = Extension(o.Thickness);
+    if (ext != ".vtp" && ext != ".vtk")
+    {
+      Fail("--thickness writes the surface with its Thickness arrays: .vtp .vtk, got '" + o.Thickness + "'");
+    }
+    CheckWriter(o.Thickness, "--thickness", vtkMedialFileWriter::SURFACE);
   }
 }
 }

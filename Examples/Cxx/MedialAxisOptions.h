@@ -25,11 +25,14 @@ struct Options
   int Threads = 0;
   double Tolerance = 1e-6;
   double MinAngle = 45.0;
+  double MaxProtrusion = 1e-4;
   std::string Balls;       // --balls: read balls instead of sampling
   std::string Output;      // -o: the balls
   std::string Render;      // --render: the picture
   std::string Reconstruct; // --reconstruct: the union of balls
   std::string Junctions;   // --junctions: the 2D medial graph
+  std::string Thickness;   // --thickness: the surface with its wall thickness
+  double ThicknessBelow = 0.0;
   int Resolution = 128;
   bool Stats = false;
   bool Quiet = false;

@@ -5,8 +5,8 @@
 // Reads a mesh or polygons (or generates a demo shape), samples its medial balls
 // with vtkMedialAxisSampler (or reads balls another tool wrote, --balls), and
 // writes what is asked: the balls, the 2D medial graph (vtkMedialJunctionFilter),
-// the union of balls (vtkMedialBallUnion), a picture (vtkMedialScene) and a JSON
-// line of figures. Only wiring lives here: every algorithm is in a filter, every
+// the union of balls (vtkMedialBallUnion), the wall thickness (vtkMedialThickness),
+// a picture (vtkMedialScene) and a JSON line of figures. Only wiring lives here: every algorithm is in a filter, every
 // format in vtkMedialFileReader / vtkMedialFileWriter, every picture in
 // vtkMedialScene. The flag rules are in MedialAxisOptions.h, what is said on
 // stderr in MedialAxisConsole.h.
@@ -15,6 +15,7 @@
 
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialBallProtrusion.h"
 #include "vtkMedialBallUnion.h"
 #include "vtkMedialFileReader.h"
 #include "vtkMedialFileWriter.h"
@@ -22,8 +23,10 @@
 #include "vtkMedialReconstructionError.h"
 #include "vtkMedialScene.h"
 #include "vtkMedialShapeSource.h"
+#include "vtkMedialThickness.h"
 
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -32,13 +35,16 @@
 #include <omp.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 using medialaxis::Console;
 using medialaxis::Fail;
@@ -184,6 +190,7 @@ public:
   void MedialGraph();
   void SampleOrReadBalls();
   void Reconstruct();
+  void Thickness();
   void Render();
   void PrintStats();
 
@@ -191,6 +198,8 @@ private:
   void Sample();
   void ReadBalls();
   void ReconstructionError();
+  void Protrusion(bool sampled);
+  void ThicknessReport();
 
   const Options& Opt;
   Console& Out;
@@ -199,6 +208,7 @@ private:
   vtkSmartPointer<vtkPolyData> Balls;
   vtkSmartPointer<vtkPolyData> Graph;
   vtkSmartPointer<vtkPolyData> Reconstruction;
+  vtkSmartPointer<vtkPolyData> WallThickness;
   bool Planar = false;
   int Polygons = 0;
   bool Closed = true; // the sampler saw no boundary edges (or no sampler ran)
@@ -210,6 +220,10 @@ void Program::LoadInput()
   const std::string& input = this->Opt.Input;
   if (input.empty() && !this->Opt.Balls.empty())
   {
+    if (!this->Opt.Thickness.empty() || this->Opt.ThicknessBelow > 0.0)
+    {
+      Fail("--thickness and --thickness-below measure a surface: give INPUT with --balls");
+    }
     this->Json << "\"input\": null";
     return;
   }
@@ -227,6 +241,10 @@ void Program::LoadInput()
   }
   this->Planar = vtkMedialAxisSampler::IsPlanarInput(this->Surface);
   this->Json << "\"input\": " << JsonString(input.empty() ? "demo:jack" : input);
+  if (this->Planar && (!this->Opt.Thickness.empty() || this->Opt.ThicknessBelow > 0.0))
+  {
+    Fail("--thickness and --thickness-below need a 3D surface; '" + input + "' is planar");
+  }
 }
 
 // 2D input: the medial graph, when it is written, drawn or counted.
@@ -255,13 +273,18 @@ void Program::MedialGraph()
 
 void Program::SampleOrReadBalls()
 {
-  if (this->Opt.Balls.empty())
+  const bool sampled = this->Opt.Balls.empty();
+  if (sampled)
   {
     this->Sample();
   }
   else
   {
     this->ReadBalls();
+  }
+  if (this->Opt.Stats && this->Surface && !this->Planar)
+  {
+    this->Protrusion(sampled);
   }
   if (!this->Opt.Output.empty())
   {
@@ -282,6 +305,7 @@ void Program::Sample()
   sampler->SetNumberOfThreads(o.Threads);
   sampler->SetTolerance(o.Tolerance);
   sampler->SetMinimumSeparationAngle(o.MinAngle);
+  sampler->SetMaximumProtrusion(o.MaxProtrusion);
   const Clock::time_point start = Clock::now();
   Run(sampler, this->Out);
   const double seconds = SecondsSince(start);
@@ -324,6 +348,22 @@ void Program::ReadBalls()
              << ", \"radius_max\": " << range[1];
 }
 
+// How far the balls cross the 3D surface (vtkMedialBallProtrusion), and the limit
+// the sampler was given.
+void Program::Protrusion(bool sampled)
+{
+  vtkNew<vtkMedialBallProtrusion> protrusion;
+  protrusion->SetSurfaceData(this->Surface);
+  protrusion->SetBallsData(this->Balls);
+  protrusion->SetNumberOfThreads(this->Opt.Threads);
+  Run(protrusion, this->Out);
+  if (sampled)
+  {
+    this->Json << ", \"max_protrusion\": " << this->Opt.MaxProtrusion;
+  }
+  this->Json << ", \"protrusion_max_rel\": " << protrusion->GetMaxProtrusion();
+}
+
 // --reconstruct: the union of the balls, and its error against a closed input.
 void Program::Reconstruct()
 {
@@ -359,8 +399,73 @@ void Program::ReconstructionError()
              << ", \"hausdorff_area_mean_rel\": " << error->GetAreaMeanHausdorff();
 }
 
-// --render: the 2D graph scene for planar input, else the balls (with the
-// reconstruction beside them when there is one).
+// --thickness, --thickness-below: the wall thickness of a 3D surface, with the
+// sampler's angle and protrusion settings.
+void Program::Thickness()
+{
+  if (this->Opt.Thickness.empty() && this->Opt.ThicknessBelow <= 0.0)
+  {
+    return;
+  }
+  vtkNew<vtkMedialThickness> thickness;
+  thickness->SetInputData(this->Surface);
+  thickness->SetMinimumSeparationAngle(this->Opt.MinAngle);
+  thickness->SetMaximumProtrusion(this->Opt.MaxProtrusion);
+  thickness->SetThinThreshold(this->Opt.ThicknessBelow);
+  thickness->SetNumberOfThreads(this->Opt.Threads);
+  Run(thickness, this->Out);
+  this->WallThickness = Copy(thickness->GetOutput());
+  if (!this->Opt.Thickness.empty())
+  {
+    Write(this->WallThickness, this->Opt.Thickness, vtkMedialFileWriter::SURFACE, this->Out);
+  }
+  this->ThicknessReport();
+}
+
+// Percentiles of the point Thickness (NaN left out) and the thin share of the area
+// with its regions: JSON members with --stats, else a line for --thickness-below.
+void Program::ThicknessReport()
+{
+  auto field = [&](const char* name) {
+    vtkDataArray* a = this->WallThickness->GetFieldData()->GetArray(name);
+    return a ? a->GetComponent(0, 0) : 0.0;
+  };
+  const double share = field(vtkMedialArrayNames::ThinAreaFraction);
+  const double regions = field(vtkMedialArrayNames::ThinRegionCount);
+  const double below = this->Opt.ThicknessBelow;
+  if (!this->Opt.Stats)
+  {
+    if (below > 0.0)
+    {
+      std::cout << "thinner than " << below << ": " << 100.0 * share << "% of the area, in " << regions
+                << (regions == 1 ? " region" : " regions") << std::endl;
+    }
+    return;
+  }
+  std::vector<double> values;
+  vtkDataArray* t = this->WallThickness->GetPointData()->GetArray(vtkMedialArrayNames::Thickness);
+  for (vtkIdType i = 0; t && i < t->GetNumberOfTuples(); ++i)
+  {
+    if (!std::isnan(t->GetComponent(i, 0)))
+    {
+      values.push_back(t->GetComponent(i, 0));
+    }
+  }
+  std::sort(values.begin(), values.end());
+  auto quantile = [&](double q) {
+    return values.empty() ? std::nan("") : values[static_cast<size_t>(q * (values.size() - 1))];
+  };
+  this->Json << ", \"thickness_min\": " << quantile(0.0) << ", \"thickness_p01\": " << quantile(0.01)
+              << ", \"thickness_median\": " << quantile(0.5);
+  if (below > 0.0)
+  {
+    this->Json << ", \"thickness_below\": " << below << ", \"thin_area_fraction\": " << share
+                << ", \"thin_regions\": " << regions;
+  }
+}
+
+// --render: the 2D graph scene for planar input, the surface coloured by thickness
+// with --thickness, else the balls (with the reconstruction beside them when there is one).
 void Program::Render()
 {
   if (this->Opt.Render.empty())
@@ -374,6 +479,11 @@ void Program::Render()
   if (this->Graph)
   {
     scene->SetGraph(this->Graph);
+  }
+  else if (this->WallThickness)
+  {
+    scene->SetSurface(this->WallThickness);
+    scene->SetSurfaceScalars(vtkMedialArrayNames::Thickness);
   }
   else
   {
@@ -423,6 +533,7 @@ int main(int argc, char* argv[])
   program.MedialGraph();
   program.SampleOrReadBalls();
   program.Reconstruct();
+  program.Thickness();
   program.Render();
   program.PrintStats();
   return 0;

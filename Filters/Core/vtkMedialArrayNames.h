@@ -24,7 +24,8 @@
  * Cell data of the 2D medial graph: ArcType (0 linear, 1 parabolic), PolygonId.
  * Cell data of the sampler's links: InitialLink.
  *
- * Point data on a surface (thickness): Thickness, MedialRadius, MedialCentre, RayThickness.
+ * Point and cell data on a surface (thickness): Thickness, MedialRadius, MedialCentre,
+ * RayThickness; field data ThinAreaFraction, ThinRegionCount.
  *
  * Field data: RequestedSamples, DiscardedSamples, MeanIterations, CappedSamples,
  * EvaluatedSamples, SeedSamples, CoverageReached, MaxCoverageGap.
@@ -61,6 +62,8 @@ constexpr const char* Thickness = "Thickness";
 constexpr const char* MedialRadius = "MedialRadius";
 constexpr const char* MedialCentre = "MedialCentre";
 constexpr const char* RayThickness = "RayThickness";
+constexpr const char* ThinAreaFraction = "ThinAreaFraction";
+constexpr const char* ThinRegionCount = "ThinRegionCount";
 
 // Field data of the sampler.
 constexpr const char* RequestedSamples = "RequestedSamples";

@@ -16,6 +16,12 @@
  *    Resolution x Resolution squares of two triangles.
  *  - CAPSULE: a cylinder of radius Radius and length Length along z with
  *    hemispherical caps, 4 * Resolution segments around.
+ *  - TORUS: a ring of radius Radius in the z = 0 plane swept by a circle of radius
+ *    TubeRadius, 4 * Resolution segments around the ring (and as many around the tube
+ *    as keep the quads about square, at least 6). Its wall thickness is 2 TubeRadius.
+ *  - HOLLOW_SPHERE: a geodesic sphere of radius Radius with a concentric spherical
+ *    cavity of radius InnerRadius (both split Resolution times, as SPHERE); the
+ *    cavity's triangles face into it. Its wall thickness is Radius - InnerRadius.
  *
  * Planar shapes in the z = 0 plane, as polygon cells (for vtkMedialJunctionFilter
  * and the 2D mode of vtkMedialAxisSampler; Resolution is ignored unless stated):
@@ -51,12 +57,14 @@ public:
     L_SHAPE = 4,
     RECTANGLE = 5,
     SQUARE_FRAME = 6,
-    STAR = 7
+    STAR = 7,
+    TORUS = 8,
+    HOLLOW_SPHERE = 9
   };
 
   ///@{
   /// Which shape to generate (default JACK).
-  vtkSetClampMacro(Shape, int, JACK, STAR);
+  vtkSetClampMacro(Shape, int, JACK, HOLLOW_SPHERE);
   vtkGetMacro(Shape, int);
   void SetShapeToJack() { this->SetShape(JACK); }
   void SetShapeToSphere() { this->SetShape(SPHERE); }
@@ -66,8 +74,10 @@ public:
   void SetShapeToRectangle() { this->SetShape(RECTANGLE); }
   void SetShapeToSquareFrame() { this->SetShape(SQUARE_FRAME); }
   void SetShapeToStar() { this->SetShape(STAR); }
+  void SetShapeToTorus() { this->SetShape(TORUS); }
+  void SetShapeToHollowSphere() { this->SetShape(HOLLOW_SPHERE); }
   /// True for the planar (2D) shapes.
-  static bool IsPlanar(int shape) { return shape >= L_SHAPE; }
+  static bool IsPlanar(int shape) { return shape >= L_SHAPE && shape <= STAR; }
   ///@}
 
   ///@{
@@ -89,6 +99,18 @@ public:
   ///@}
 
   ///@{
+  /// Tube radius of the TORUS (default 0.3); below Radius.
+  vtkSetClampMacro(TubeRadius, double, 1e-300, VTK_DOUBLE_MAX);
+  vtkGetMacro(TubeRadius, double);
+  ///@}
+
+  ///@{
+  /// Cavity radius of the HOLLOW_SPHERE (default 0.7); below Radius.
+  vtkSetClampMacro(InnerRadius, double, 1e-300, VTK_DOUBLE_MAX);
+  vtkGetMacro(InnerRadius, double);
+  ///@}
+
+  ///@{
   /// Side lengths of the BOX (default 3, 2, 1).
   vtkSetVector3Macro(BoxLengths, double);
   vtkGetVector3Macro(BoxLengths, double);
@@ -104,6 +126,8 @@ protected:
   int Resolution = 16;
   double Radius = 1.0;
   double Length = 2.0;
+  double TubeRadius = 0.3;
+  double InnerRadius = 0.7;
   double BoxLengths[3] = { 3.0, 2.0, 1.0 };
 
 private:

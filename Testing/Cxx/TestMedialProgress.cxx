@@ -16,6 +16,7 @@
 #include "vtkMedialJunctionFilter.h"
 #include "vtkMedialReconstructionError.h"
 #include "vtkMedialShapeSource.h"
+#include "vtkMedialThickness.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -206,9 +207,20 @@ int ReadingAndSampling(const std::string& folder)
   classifier->SetSurfaceConnection(reader->GetOutputPort());
   Recorder classifying(classifier);
   classifier->Update();
-  return Check("vtkMedialBallClassifier", classifying,
-    { { "Preparing the surface and its governors", false }, { "Classifying the balls", true },
-      { "Solving seams and junctions", false } });
+  if (Check("vtkMedialBallClassifier", classifying,
+        { { "Preparing the surface and its governors", false }, { "Classifying the balls", true },
+          { "Solving seams and junctions", false } }) != EXIT_SUCCESS)
+  {
+    return EXIT_FAILURE;
+  }
+  vtkNew<vtkMedialThickness> thickness;
+  thickness->SetInputConnection(reader->GetOutputPort());
+  thickness->SetThinThreshold(0.1); // cell thickness too
+  Recorder measuringThickness(thickness);
+  thickness->Update();
+  return Check("vtkMedialThickness", measuringThickness,
+    { { "Preparing the surface", false }, { "Building the surface queries", false },
+      { "Measuring the thickness at the vertices", true }, { "Measuring the thickness at the cells", true } });
 }
 
 int Planar()
