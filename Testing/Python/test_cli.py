@@ -11,8 +11,11 @@ writes and what it prints:
  3. Flags: --flag=value, -n=VALUE, 10k and 1.5k, --version; a run that writes
     nothing and a switch given a value are refused before any work.
  4. Progress: without a terminal one line per finished stage (reading, preparation,
-    sampling, writing); --quiet prints nothing on stderr; on a terminal (a pty) the
-    bar is redrawn in place and a warning gets a line of its own.
+    sampling, reconstruction, thickness, writing); --quiet prints nothing on stderr;
+    on a terminal (a pty) the bar is redrawn in place and a warning gets a line of
+    its own.
+ 5. The picture: --size WxH gives a PNG of that size, --view and --zoom change the
+    picture, bad values are refused.
 
 Arguments: MEDIAL_AXIS SCRATCH_DIR. Exits 0 on success, 1 on failure.
 """
@@ -146,6 +149,17 @@ stages = re.findall(r"^medial-axis: (.*): done \([0-9.]+ s\)$", plain.stderr, re
 print("stages:", stages)
 check(stages[:4] == ["Preparing the surface", "Building the surface queries", "Drawing the samples", "Sampling"]
       and stages[-1].startswith("Writing"), "without a terminal, one line per finished stage")
+# Every long stage of the program, a file read, the reconstruction and the thickness.
+run("-n", "500", "-o", path("p.ply"), "--quiet")
+plain = run("--balls", path("p.ply"), "--reconstruct", path("p-rebuilt.vtp"), "--resolution", "48")
+stages = re.findall(r"^medial-axis: (.*): done \([0-9.]+ s\)$", plain.stderr, re.M)
+print("stages:", stages)
+check(stages[:1] == ["Reading the balls"] and "Filling the distance field" in stages
+      and stages[-1].startswith("Writing"), "--balls and --reconstruct: reading, reconstruction and writing stages")
+plain = run("-n", "300", "--thickness-below", "0.3")
+stages = re.findall(r"^medial-axis: (.*): done \([0-9.]+ s\)$", plain.stderr, re.M)
+check("Measuring the thickness at the vertices" in stages and "Measuring the thickness at the cells" in stages,
+      "--thickness-below: the thickness stages " + str(stages))
 quiet = run("-n", "2000", "--stats", "--quiet")
 check(quiet.stderr == "" and quiet.stdout.startswith('{"input"'), "--quiet: nothing on stderr")
 
@@ -178,6 +192,26 @@ check("[##" in tty and "\r" in tty, "on a terminal the bar is drawn and redrawn 
 check(len(warning) == 1 and re.search(r"(^|\r\x1b\[K)medial-axis: warning: Input surface is open", warning[0])
       is not None and "[#" not in warning[0].split("medial-axis: warning")[1],
       "the warning has a line of its own: " + repr(warning[0][:160] if warning else tty[-300:]))
+
+# 5. The picture's flags: --size sets the PNG's size, --view and --zoom change the picture.
+def png_size(name):
+    with open(name, "rb") as f:
+        header = f.read(24)
+    return int.from_bytes(header[16:20], "big"), int.from_bytes(header[20:24], "big")
+
+
+pictures = {}
+for name, args in (("auto", []), ("plus-z", ["--view=+z"]), ("iso", ["--view", "iso"]), ("zoom", ["--zoom", "2"])):
+    pictures[name] = path(f"view-{name}.png")
+    run("-n", "300", "--quiet", "--render", pictures[name], "--size=320x200", *args)
+    check(png_size(pictures[name]) == (320, 200), f"--size=320x200 {' '.join(args)}: {png_size(pictures[name])}")
+for name in ("plus-z", "iso", "zoom"):
+    check(not same_bytes(pictures["auto"], pictures[name]), f"--{name} draws another picture than the default")
+run("-n", "300", "--quiet", "--render", path("view-default.png"))
+check(png_size(path("view-default.png")) == (900, 640), "the default size is 900x640")
+check("unknown --view 'up'" in run("--view", "up", "--stats", code=1).stderr, "--view up is refused")
+check("--size expects WIDTHxHEIGHT" in run("--size", "10x10", "--stats", code=1).stderr, "--size 10x10 is refused")
+check("--zoom expects a number" in run("--zoom", "0", "--stats", code=1).stderr, "--zoom 0 is refused")
 
 print(f"{len(failures)} failure(s)")
 sys.exit(1 if failures else 0)
