@@ -4,6 +4,7 @@
 #include "vtkMedialBallCSVReader.h"
 #include "vtkMedialBallPLYReader.h"
 #include "vtkMedialMeshReader.h"
+#include "vtkMedialFormatTable.h"
 #include "vtkMedialMessageRelay.h"
 #include "vtkMedialOFFReader.h"
 
@@ -62,15 +63,7 @@ const Format Formats[] = {
 
 const Format* FindFormat(const char* fileName, int content)
 {
-  const std::string extension = vtkMedialFileReader::GetExtension(fileName);
-  for (const Format& format : Formats)
-  {
-    if (format.Content == content && extension == format.Extension)
-    {
-      return &format;
-    }
-  }
-  return nullptr;
+  return vtkMedialFindFormat(Formats, fileName, content);
 }
 }
 
@@ -82,15 +75,7 @@ vtkAlgorithm* vtkMedialFileReader::NewReader(const char* fileName, int content)
 
 std::string vtkMedialFileReader::GetExtensions(int content)
 {
-  std::string list;
-  for (const Format& format : Formats)
-  {
-    if (format.Content == content)
-    {
-      list += (list.empty() ? "" : " ") + std::string(format.Extension);
-    }
-  }
-  return list;
+  return vtkMedialFormatExtensions(Formats, content);
 }
 
 int vtkMedialFileReader::CanReadExtension(const char* fileName, int content)

@@ -5,6 +5,7 @@
 #include "vtkMedialBallPLYWriter.h"
 #include "vtkMedialFileReader.h"
 #include "vtkMedialMeshWriter.h"
+#include "vtkMedialFormatTable.h"
 #include "vtkMedialMessageRelay.h"
 
 #include "vtkErrorCode.h"
@@ -91,15 +92,7 @@ const Format Formats[] = {
 
 const Format* FindFormat(const char* fileName, int content)
 {
-  const std::string extension = vtkMedialFileReader::GetExtension(fileName);
-  for (const Format& format : Formats)
-  {
-    if (format.Content == content && extension == format.Extension)
-    {
-      return &format;
-    }
-  }
-  return nullptr;
+  return vtkMedialFindFormat(Formats, fileName, content);
 }
 }
 
@@ -116,15 +109,7 @@ vtkAlgorithm* vtkMedialFileWriter::NewWriter(const char* fileName, int content)
 
 std::string vtkMedialFileWriter::GetExtensions(int content)
 {
-  std::string list;
-  for (const Format& format : Formats)
-  {
-    if (format.Content == content)
-    {
-      list += (list.empty() ? "" : " ") + std::string(format.Extension);
-    }
-  }
-  return list;
+  return vtkMedialFormatExtensions(Formats, content);
 }
 
 int vtkMedialFileWriter::CanWriteExtension(const char* fileName, int content)

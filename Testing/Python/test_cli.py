@@ -32,17 +32,10 @@ from vtkmodules.vtkIOLegacy import vtkPolyDataReader
 from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
 
+from checks import check, finish
+
 cli, temp = sys.argv[1], sys.argv[2]
 os.makedirs(temp, exist_ok=True)
-failures = []
-
-
-def check(condition, message):
-    print(("ok   " if condition else "FAIL ") + message)
-    if not condition:
-        failures.append(message)
-
-
 def run(*args, code=0):
     result = subprocess.run([cli, *args], capture_output=True, text=True)
     check(result.returncode == code, f"medial-axis {' '.join(args)}: exit {result.returncode}, expected {code}"
@@ -213,5 +206,4 @@ check("unknown --view 'up'" in run("--view", "up", "--stats", code=1).stderr, "-
 check("--size expects WIDTHxHEIGHT" in run("--size", "10x10", "--stats", code=1).stderr, "--size 10x10 is refused")
 check("--zoom expects a number" in run("--zoom", "0", "--stats", code=1).stderr, "--zoom 0 is refused")
 
-print(f"{len(failures)} failure(s)")
-sys.exit(1 if failures else 0)
+finish()

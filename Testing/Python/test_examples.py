@@ -19,6 +19,7 @@ import sys
 import numpy as np
 
 import medialaxis
+from checks import check, finish
 from vtkmodules.vtkCommonCore import vtkIdList
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkSTLReader
@@ -29,15 +30,6 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
 examples, cli, temp = sys.argv[1], sys.argv[2], sys.argv[3]
 os.makedirs(temp, exist_ok=True)
-failures = []
-
-
-def check(condition, message):
-    print(("ok   " if condition else "FAIL ") + message)
-    if not condition:
-        failures.append(message)
-
-
 def path(name):
     return os.path.join(temp, name)
 
@@ -192,5 +184,4 @@ differing = np.count_nonzero(np.abs(a - b).max(axis=1) > 8) if size_a == size_b 
 check(size_a == size_b and differing <= 0.001 * len(a),
       f"medial_axis_png.py and medial-axis --render: sizes {size_a[:2]} and {size_b[:2]}, {differing} pixels differ")
 
-print(f"{len(failures)} failure(s)")
-sys.exit(1 if failures else 0)
+finish()

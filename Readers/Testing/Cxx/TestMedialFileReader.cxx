@@ -42,23 +42,6 @@ const char* const TetraGrid = "# vtk DataFile Version 3.0\ntetra\nASCII\nDATASET
                               "POINTS 4 double\n0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n";
 const char* const Balls = "2 1 0\nv 0 0 0 1\nv 2 0 0 0.5\ne 0 1\n";
 
-struct Read
-{
-  bool Ok = false;
-  vtkSmartPointer<vtkPolyData> Output;
-  EventLog Log;
-};
-
-void ReadFile(const std::string& path, int content, Read& result)
-{
-  vtkNew<vtkMedialFileReader> reader;
-  result.Log.Watch(reader);
-  reader->SetFileName(path.c_str());
-  reader->SetContent(content);
-  result.Ok = reader->GetExecutive()->Update() == 1;
-  result.Output = reader->GetOutput();
-}
-
 vtkIdType SurfaceTriangles(vtkPolyData* pd)
 {
   vtkIdType triangles = 0;

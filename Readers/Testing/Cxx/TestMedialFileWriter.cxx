@@ -66,23 +66,6 @@ vtkSmartPointer<vtkPolyData> MakeBalls()
   return balls;
 }
 
-struct Result
-{
-  bool Ok = false;
-  vtkSmartPointer<vtkPolyData> Output;
-  EventLog Log;
-};
-
-void Read(const std::string& path, int content, Result& result)
-{
-  vtkNew<vtkMedialFileReader> reader;
-  result.Log.Watch(reader);
-  reader->SetFileName(path.c_str());
-  reader->SetContent(content);
-  result.Ok = reader->GetExecutive()->Update() == 1;
-  result.Output = reader->GetOutput();
-}
-
 bool Write(vtkPolyData* data, const std::string& path, int content, EventLog& log)
 {
   vtkNew<vtkMedialFileWriter> writer;
@@ -158,8 +141,8 @@ int RoundTrips(const TempDir& dir)
     EventLog log;
     const std::string path = dir.File(name);
     MEDIAL_CHECK(Write(balls, path, vtkMedialFileWriter::BALLS, log), "%s: %s", name, log.Text.c_str());
-    Result r;
-    Read(path, vtkMedialFileReader::BALLS, r);
+    Read r;
+    ReadFile(path, vtkMedialFileReader::BALLS, r);
     MEDIAL_CHECK(r.Ok && r.Log.Errors == 0, "%s read back: %s", name, r.Log.Text.c_str());
     MEDIAL_CHECK(SameBalls(balls, r.Output), "%s: the balls changed", name);
     const std::string ext = vtkMedialFileReader::GetExtension(name);
@@ -186,8 +169,8 @@ int RoundTrips(const TempDir& dir)
   ascii->SetFileName(dir.File("ascii.ply").c_str());
   ascii->SetFileTypeToASCII();
   MEDIAL_CHECK(ascii->Write() == 1, "ASCII PLY write");
-  Result r;
-  Read(dir.File("ascii.ply"), vtkMedialFileReader::BALLS, r);
+  Read r;
+  ReadFile(dir.File("ascii.ply"), vtkMedialFileReader::BALLS, r);
   MEDIAL_CHECK(r.Ok && SameBalls(balls, r.Output) && CellsOf(r.Output->GetLines()) == ExpectedEdges(),
     "ASCII PLY read back: %s", r.Log.Text.c_str());
   return EXIT_SUCCESS;
@@ -204,8 +187,8 @@ int ForeignFiles(const TempDir& dir)
                             "property list uchar int neighbours\r\nelement face 1\r\n"
                             "property list uint int vertex_indices\r\nend_header\r\n"
                             "7.5\r\n0 0 0 255 0.5 2 1 2\r\n1 0 0 0 0.25 0\r\n0 2 0 9 1.5 1 0\r\n4 0 1 2 0\r\n";
-  Result a;
-  Read(dir.Write("foreign.ply", ascii), vtkMedialFileReader::BALLS, a);
+  Read a;
+  ReadFile(dir.Write("foreign.ply", ascii), vtkMedialFileReader::BALLS, a);
   vtkDataArray* radius = a.Output->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
   MEDIAL_CHECK(a.Ok && radius && a.Output->GetNumberOfPoints() == 3 && radius->GetTuple1(2) == 1.5 &&
       a.Output->GetPoint(2)[1] == 2.0 && CellsOf(a.Output->GetPolys()) == Cells({ { 0, 1, 2, 0 } }),
@@ -219,16 +202,16 @@ int ForeignFiles(const TempDir& dir)
   be += BigEndian(1.5f) + BigEndian(-2.0f) + BigEndian(0.25f) + BigEndian(0.1) + BigEndian16(7);
   be += BigEndian(3.0f) + BigEndian(4.0f) + BigEndian(5.0f) + BigEndian(2.0) + BigEndian16(8);
   be += BigEndian16(1) + BigEndian16(0);
-  Result b;
-  Read(dir.Write("big.ply", be), vtkMedialFileReader::BALLS, b);
+  Read b;
+  ReadFile(dir.Write("big.ply", be), vtkMedialFileReader::BALLS, b);
   radius = b.Output->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
   MEDIAL_CHECK(b.Ok && radius && radius->GetTuple1(0) == 0.1 && b.Output->GetPoint(0)[1] == -2.0 &&
       b.Output->GetPoint(1)[2] == 5.0 && CellsOf(b.Output->GetLines()) == Cells({ { 1, 0 } }),
     "big-endian PLY: %s", b.Log.Text.c_str());
 
   // A spreadsheet's CSV: semicolons, other columns, another order, quotes.
-  Result c;
-  Read(dir.Write("sheet.csv", "\"id\";\"Radius\";\"X\";\"Y\";\"Z\"\n1;0.5;1;2;3\n\n2;0.25;-1;-2;-3\n"),
+  Read c;
+  ReadFile(dir.Write("sheet.csv", "\"id\";\"Radius\";\"X\";\"Y\";\"Z\"\n1;0.5;1;2;3\n\n2;0.25;-1;-2;-3\n"),
     vtkMedialFileReader::BALLS, c);
   radius = c.Output->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
   MEDIAL_CHECK(c.Ok && radius && c.Output->GetNumberOfPoints() == 2 && radius->GetTuple1(1) == 0.25 &&
@@ -265,8 +248,8 @@ int BadFiles(const TempDir& dir)
   };
   for (const auto& c : cases)
   {
-    Result r;
-    Read(dir.Write(c.Name, c.Content), vtkMedialFileReader::BALLS, r);
+    Read r;
+    ReadFile(dir.Write(c.Name, c.Content), vtkMedialFileReader::BALLS, r);
     std::printf("%-22s %s\n", c.Name, r.Log.LineWith(c.Expected).c_str());
     MEDIAL_CHECK(!r.Ok && r.Log.LineWith(c.Expected) != "" && r.Output->GetNumberOfPoints() == 0,
       "%s: expected '%s', got: %s", c.Name, c.Expected, r.Log.LineWith("Cannot").c_str());
@@ -313,8 +296,8 @@ int Surfaces(const TempDir& dir)
   {
     EventLog log;
     MEDIAL_CHECK(Write(surface, dir.File(name), vtkMedialFileWriter::SURFACE, log), "%s: %s", name, log.Text.c_str());
-    Result r;
-    Read(dir.File(name), vtkMedialFileReader::SURFACE, r);
+    Read r;
+    ReadFile(dir.File(name), vtkMedialFileReader::SURFACE, r);
     double bounds[6];
     r.Output->GetBounds(bounds);
     MEDIAL_CHECK(r.Ok && r.Output->GetNumberOfPolys() == surface->GetNumberOfPolys(), "%s: %lld polygons, %s", name,
