@@ -127,6 +127,8 @@ for args in (["--samples=10k", "--threads=2"], ["-n=10k"], ["-n", "10k"], ["-n",
     check('"samples": 10000, "medial_points": 10000' in out.stdout, f"{' '.join(args)}: 10000 samples")
 out = run("-n", "1.5k", "--stats", "--quiet", "--seed=3")
 check('"samples": 1500' in out.stdout, "-n 1.5k: 1500 samples")
+out = run("-n", "0.002M", "--stats", "--quiet")
+check('"samples": 2000' in out.stdout, "-n 0.002M: 2000 samples (the M suffix, cheaply)")
 version = run("--version")
 check(re.match(r"^medial-axis [0-9]+\.[0-9]+\.[0-9]+ \(VTK [0-9.]+\)$", version.stdout.strip()) is not None,
       "--version: " + version.stdout.strip())

@@ -2,7 +2,7 @@
 """The Python examples do what they say (issue 17):
 
  1. Each example reads .obj, .ply, .stl and .off input (and .vtp, .vtk) and gives the
-    same answer as on the shape it was made from; an unknown input extension and an
+    answer of the shape in the file (twice the size of the example's default shape); an unknown input extension and an
     unknown output extension are refused with exit 1 and nothing written.
  2. Each example writes the format its output name says (read back by VTK's reader
     for that format).
@@ -21,6 +21,8 @@ import numpy as np
 import medialaxis
 from checks import check, finish
 from vtkmodules.vtkCommonCore import vtkIdList
+from vtkmodules.vtkCommonTransforms import vtkTransform
+from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkSTLReader
 from vtkmodules.vtkIOImage import vtkPNGReader
@@ -41,11 +43,18 @@ def run(script, *args, code=0):
     return result
 
 
-def shape(name, setter):
+def shape(setter, scale=1.0):
+    """A generated shape, scaled: the examples' own default shapes are not scaled, so
+    the answers tell whether the file was read."""
     source = medialaxis.vtkMedialShapeSource()
     getattr(source, setter)()
-    source.Update()
-    return source.GetOutput()
+    transform = vtkTransform()
+    transform.Scale(scale, scale, scale)
+    scaled = vtkTransformPolyDataFilter()
+    scaled.SetTransform(transform)
+    scaled.SetInputConnection(source.GetOutputPort())
+    scaled.Update()
+    return scaled.GetOutput()
 
 
 def write_off(data, name):
@@ -102,10 +111,10 @@ def balls_back(name):
 
 formats = ["obj", "ply", "stl", "off", "vtp", "vtk"]
 
-# structure_3d.py: the box's four junction vertices from every format; OUT in each ball format.
-junction = r"4 junction vertices\njunction \(-1\.000000, -0\.500000, \+0\.000000\)  radius 0\.500000  governors 4"
-reference = run("structure_3d.py").stdout
-for name in write_all(shape("box", "SetShapeToBox"), "box", formats):
+# structure_3d.py: the four junction vertices of a box twice the default one's size
+# (6 x 4 x 2) from every format; OUT in each ball format.
+junction = r"4 junction vertices\njunction \(-2\.000000, -1\.000000, \+0\.000000\)  radius 1\.000000  governors 4"
+for name in write_all(shape("SetShapeToBox", 2.0), "box", formats):
     out = path(f"box-exact-from-{name.rsplit('.', 1)[1]}.ma")
     result = run("structure_3d.py", name, out)
     check(re.search(junction, result.stdout) is not None, f"structure_3d.py {os.path.basename(name)}: the 4 junctions")
@@ -118,8 +127,9 @@ for ext in ("vtp", "vtk", "ply", "ma", "csv"):
 
 # junction_graph.py: a square frame (a hole) in every format that holds polygons, a
 # triangle in STL (triangles only).
-frame_junction = r"junction \(-1\.414214, -1\.414214\)  radius 0\.585786  governors 3.*4 end points, 8 linear and 8 parabolic arcs"
-for name in write_all(shape("frame", "SetShapeToSquareFrame"), "frame", ["obj", "ply", "off", "vtp", "vtk"]):
+# The frame is twice the default one's size: junctions at (+-2 sqrt 2, +-2 sqrt 2), radius 4 - 2 sqrt 2.
+frame_junction = r"junction \(-2\.828427, -2\.828427\)  radius 1\.171573  governors 3.*4 end points, 8 linear and 8 parabolic arcs"
+for name in write_all(shape("SetShapeToSquareFrame", 2.0), "frame", ["obj", "ply", "off", "vtp", "vtk"]):
     result = run("junction_graph.py", name, path("frame-graph.vtk"))
     check(re.search(frame_junction, result.stdout, re.S) is not None, f"junction_graph.py {os.path.basename(name)}")
 with open(path("triangle.stl"), "w") as f:
@@ -132,7 +142,7 @@ with open(path("triangle-graph.ma")) as f:
     check(f.readline().split()[0] == "4", "junction_graph.py OUT.ma writes the .ma format")
 
 # reconstruct.py: the jack from every format, the same figures; OUT in each surface format.
-jack = shape("jack", "SetShapeToJack")
+jack = shape("SetShapeToJack", 2.0)
 figures = {}
 for name in write_all(jack, "jack", ["obj", "ply", "stl", "off"]):
     ext = name.rsplit(".", 1)[1]
@@ -140,9 +150,11 @@ for name in write_all(jack, "jack", ["obj", "ply", "stl", "off"]):
     result = run("reconstruct.py", name, out)
     figures[ext] = re.search(r"reconstruction to original: max ([0-9.]+)%", result.stdout)
     rebuilt = read_back(out)
-    check(figures[ext] is not None and float(figures[ext].group(1)) < 0.5 and rebuilt.GetNumberOfPolys() > 1000,
+    width = rebuilt.GetBounds()[1] - rebuilt.GetBounds()[0]
+    check(figures[ext] is not None and float(figures[ext].group(1)) < 0.5 and rebuilt.GetNumberOfPolys() > 1000
+          and abs(width - 2 * 3.797) < 0.05,
           f"reconstruct.py {os.path.basename(name)}: {result.stdout.splitlines()[0] if result.stdout else ''}; "
-          f"{os.path.basename(out)} read back with {rebuilt.GetNumberOfPolys()} triangles")
+          f"{os.path.basename(out)} read back with {rebuilt.GetNumberOfPolys()} triangles, {width:.3f} wide (the input 7.595)")
 with open(path("jack-rebuilt-from-stl.stl"), "rb") as f:
     check(not f.read(5).startswith(b"<?xml"), "reconstruct.py OUT.stl is not XML")
 with open(path("jack-rebuilt-from-off.vtp"), "rb") as f:
