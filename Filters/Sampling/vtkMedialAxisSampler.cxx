@@ -9,6 +9,7 @@
 #include "vtkMedialIterativeSampling.h"
 #include "vtkMedialPlane.h"
 #include "vtkMedialPolygon.h"
+#include "vtkMedialProgress.h"
 #include "vtkMedialRandom.h"
 #include "vtkMedialSampleRecord.h"
 #include "vtkMedialSurfaceQuery.h"
@@ -125,6 +126,8 @@ int vtkMedialAxisSampler::RequestData(
   // pieces skip even the preparation.
   const vtkMedialPieces pieces = vtkMedialPieces::FromRequest(outInfo);
   vtkInternals passes(this);
+  // Progress: each stage its share and its name (vtkMedialProgress.h).
+  vtkMedialStages stages(this);
 
   // Planar polygons or closed polylines: the 2D mode (vtkMedialAxisSampler2D.cxx).
   if (IsPlanarInput(input))
@@ -134,7 +137,7 @@ int vtkMedialAxisSampler::RequestData(
       vtkWarningMacro(<< "SamplingStrategy " << GetSamplingStrategyName(this->SamplingStrategy)
                       << " is for 3D surfaces; planar input is sampled at random.");
     }
-    return passes.Sample2D(input, pieces, output);
+    return passes.Sample2D(input, pieces, output, stages);
   }
   if ((this->SamplingStrategy != RANDOM || this->CoverageTolerance > 0.0) && !pieces.IsFirst())
   {
@@ -144,25 +147,29 @@ int vtkMedialAxisSampler::RequestData(
   vtkMedialTriangleMesh mesh;
   vtkMedialSurfaceQuery query;
   int status = 0;
-  if (!passes.PrepareSurface(input, mesh, query, status))
+  if (!passes.PrepareSurface(input, mesh, query, status, stages))
   {
     return status;
   }
   if (this->SamplingStrategy != RANDOM)
   {
+    stages.Begin(this->SamplingStrategy == CLOSEST_NEIGHBOR ? "Sampling (closest-neighbor strategy)"
+                                                            : "Sampling (face-distance strategy)",
+      0.1, 1.0);
     return passes.SampleIterative(mesh, query, output);
   }
-  return passes.SampleRandom(mesh, query, pieces, output);
+  return passes.SampleRandom(mesh, query, pieces, output, stages);
 }
 
 //------------------------------------------------------------------------------
-bool vtkMedialAxisSampler::vtkInternals::PrepareSurface(
-  vtkPolyData* input, vtkMedialTriangleMesh& mesh, vtkMedialSurfaceQuery& query, int& status)
+bool vtkMedialAxisSampler::vtkInternals::PrepareSurface(vtkPolyData* input, vtkMedialTriangleMesh& mesh,
+  vtkMedialSurfaceQuery& query, int& status, vtkMedialStages& stages)
 {
   vtkMedialAxisSampler* self = this->Self;
   // Preparation takes seconds on big meshes: the abort flag is polled between stages.
   auto aborted = [self]() { return self->GetAbortExecute() != 0; };
   std::string error;
+  stages.Begin("Preparing the surface", 0.0, 0.05);
   if (!mesh.Build(input, error, aborted))
   {
     status = aborted() ? 1 : 0; // aborted: leave the output empty
@@ -178,6 +185,7 @@ bool vtkMedialAxisSampler::vtkInternals::PrepareSurface(
   {
     vtkWarningWithObjectMacro(self, << warning);
   }
+  stages.Begin("Building the surface queries", 0.05, 0.1);
   if (!query.Build(&mesh, error, aborted))
   {
     status = aborted() ? 1 : 0;
@@ -210,7 +218,7 @@ void vtkMedialAxisSampler::vtkInternals::ReportAllocationFailure(vtkIdType count
 }
 
 int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh& mesh,
-  const vtkMedialSurfaceQuery& query, const vtkMedialPieces& pieces, vtkPolyData* output)
+  const vtkMedialSurfaceQuery& query, const vtkMedialPieces& pieces, vtkPolyData* output, vtkMedialStages& stages)
 {
   vtkMedialAxisSampler* self = this->Self;
   const vtkIdType total = self->NumberOfSamples;
@@ -260,6 +268,7 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh
   // enough that threads rarely wait at the block's end, short enough (about
   // 30 ms on a 1.5M-triangle mesh) that an abort is honoured at once.
   const vtkIdType block = coverage ? 1024 : 1024 * threads;
+  stages.Begin("Drawing the samples", 0.1, 0.15);
   this->DrawSamples(mesh, index, threads, triangles, results);
   if (self->GetAbortExecute())
   {
@@ -269,6 +278,7 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh
   {
     SortByLeaf(query, triangles, block, order);
   }
+  stages.Begin("Sampling", 0.15, 1.0);
   const vtkIdType used =
     this->SolveBlocks(mesh, query, threads, block, triangles, order, results, coverage.get());
   if (self->GetAbortExecute())
@@ -343,12 +353,20 @@ void vtkMedialAxisSampler::vtkInternals::DrawSamples(const vtkMedialTriangleMesh
   const std::vector<vtkIdType>& index, int threads, std::vector<vtkIdType>& triangles,
   std::vector<vtkMedialSampleRecord>& results) const
 {
+  vtkMedialAxisSampler* self = this->Self;
   const vtkIdType count = static_cast<vtkIdType>(results.size());
-  const std::uint64_t seed = static_cast<std::uint64_t>(this->Self->RandomSeed);
-#pragma omp parallel for num_threads(threads) schedule(static)
-  for (vtkIdType i = 0; i < count; ++i)
+  const std::uint64_t seed = static_cast<std::uint64_t>(self->RandomSeed);
+  // Blocks: progress, and an abort honoured while millions of samples are drawn.
+  const vtkIdType block = 1 << 18;
+  for (vtkIdType begin = 0; begin < count && !self->GetAbortExecute(); begin += block)
   {
-    vtkMedialDrawSurfacePoint(mesh, seed, index[i], triangles[i], results[i].Surface);
+    const vtkIdType end = std::min(count, begin + block);
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      vtkMedialDrawSurfacePoint(mesh, seed, index[i], triangles[i], results[i].Surface);
+    }
+    self->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
   }
 }
 

@@ -21,6 +21,7 @@
 
 class vtkMedialCoverage;
 class vtkMedialPieces;
+class vtkMedialStages;
 struct vtkMedialIterativeResult;
 struct vtkMedialIterativeSettings;
 class vtkMedialSurfaceQuery;
@@ -36,16 +37,17 @@ public:
 
   /// The 3D surface: mesh preparation (with its warnings) and the queries. False
   /// when RequestData must return `status` (0 on error, 1 when aborted).
-  bool PrepareSurface(vtkPolyData* input, vtkMedialTriangleMesh& mesh, vtkMedialSurfaceQuery& query, int& status);
+  bool PrepareSurface(vtkPolyData* input, vtkMedialTriangleMesh& mesh, vtkMedialSurfaceQuery& query, int& status,
+    vtkMedialStages& stages);
   /// RANDOM: this piece's share of the samples, drawn, sorted by BVH leaf, solved in
   /// blocks; with a coverage stop (RequestData runs it in piece 0 only) all of them.
   int SampleRandom(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
-    const vtkMedialPieces& pieces, vtkPolyData* output);
+    const vtkMedialPieces& pieces, vtkPolyData* output, vtkMedialStages& stages);
   /// CLOSEST_NEIGHBOR and FACE_DISTANCE (vtkMedialIterativeSampling); RequestData runs
   /// them in piece 0 only.
   int SampleIterative(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, vtkPolyData* output);
   /// The 2D mode, for planar polygons or closed polylines (vtkMedialAxisSampler2D.cxx).
-  int Sample2D(vtkPolyData* input, const vtkMedialPieces& pieces, vtkPolyData* output);
+  int Sample2D(vtkPolyData* input, const vtkMedialPieces& pieces, vtkPolyData* output, vtkMedialStages& stages);
 
   /// Refuses up front what cannot fit in this machine's memory: `count` samples of
   /// about `bytesPerSample` each. `advice` ends the error message.
