@@ -26,7 +26,8 @@ LoadPlugin(plugin, remote=False, ns=globals())
 check(all(name in globals() for name in (
     "MedialAxisSampler", "MedialJunctionFilter", "MedialBallUnion", "MedialShapeSource",
     "MedialReconstructionError", "MedialBallProtrusion", "MedialBallClassifier", "MedialThickness",
-    "MedialMeshReader", "MedialOFFReader")), "the plugin defines every proxy")
+    "MedialMeshReader", "MedialOFFReader", "MedialBallPLYReader", "MedialBallCSVReader")),
+      "the plugin defines every proxy")
 
 # Sampler -> reconstruction on the demo shape.
 demo = MedialShapeSource()  # noqa: F821 (defined by the plugin)
@@ -126,6 +127,23 @@ check(reader is not None and reader.GetXMLName() == "MedialMeshReader",
 reader.UpdatePipeline()
 check(reader.GetDataInformation().GetNumberOfPoints() == 200 and "Radius" in reader.PointData.keys(),
       ".ma round trip: %d balls" % reader.GetDataInformation().GetNumberOfPoints())
+# PLY and CSV balls: the plugin's writers (chosen explicitly: ParaView has its own PLY and
+# CSV writers and readers for these extensions) and readers give back the same balls;
+# the PLY writer's File Type reaches the writer.
+few = MedialAxisSampler(Input=demo, NumberOfSamples=200)  # noqa: F821
+written = servermanager.Fetch(few)
+for ext, writer, reader, settings in (("ply", "MedialBallPLYWriter", MedialBallPLYReader, {"FileType": "ASCII"}),  # noqa: F821
+                                      ("csv", "MedialBallCSVWriter", MedialBallCSVReader, {})):  # noqa: F821
+    path = os.path.join(scratch, "balls." + ext)
+    getattr(servermanager.writers, writer)(Input=few, FileName=path, **settings).UpdatePipeline()
+    back = servermanager.Fetch(reader(FileName=path))
+    radii, radii_back = written.GetPointData().GetArray("Radius"), back.GetPointData().GetArray("Radius")
+    same = back.GetNumberOfPoints() == 200 and radii_back is not None and all(
+        written.GetPoint(i) == back.GetPoint(i) and radii.GetValue(i) == radii_back.GetValue(i) for i in range(200))
+    check(same, ".%s balls round trip exactly (%d balls)" % (ext, back.GetNumberOfPoints()))
+with open(os.path.join(scratch, "balls.ply"), "rb") as f:
+    check(b"format ascii 1.0" in f.read(200), "PLY writer: File Type ASCII reaches the writer")
+
 off = os.path.join(scratch, "cube.off")
 with open(off, "w") as f:
     f.write("OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
