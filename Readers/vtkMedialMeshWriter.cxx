@@ -21,10 +21,12 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <limits>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 vtkStandardNewMacro(vtkMedialMeshWriter);
@@ -207,6 +209,32 @@ void vtkMedialMeshWriter::WriteData()
   if (badIndex)
   {
     return reject("a cell refers to a point id outside [0, " + std::to_string(nv) + ")");
+  }
+  // Q-MAT's form: every triangle side is an edge record too, and no edge is written twice.
+  {
+    std::unordered_set<std::uint64_t> seen;
+    const auto key = [nv](vtkIdType a, vtkIdType b) {
+      return static_cast<std::uint64_t>(std::min(a, b)) * static_cast<std::uint64_t>(nv) +
+        static_cast<std::uint64_t>(std::max(a, b));
+    };
+    std::vector<std::array<vtkIdType, 2>> unique;
+    auto add = [&](vtkIdType a, vtkIdType b) {
+      if (a != b && seen.insert(key(a, b)).second)
+      {
+        unique.push_back({ a, b });
+      }
+    };
+    for (const auto& e : edges)
+    {
+      add(e[0], e[1]);
+    }
+    for (const auto& f : faces)
+    {
+      add(f[0], f[1]);
+      add(f[1], f[2]);
+      add(f[2], f[0]);
+    }
+    edges.swap(unique);
   }
   if (skipped > 0)
   {
