@@ -12,6 +12,8 @@
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialBallUnion.h"
 #include "vtkMedialJunctionFilter.h"
+#include "vtkMedialMeshFilter.h"
+#include "vtkMedialMeshWriter.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkOFFReader.h"
 
@@ -78,7 +80,7 @@ const char* Usage =
   "                   [--strategy random|closest-neighbor|face-distance] [--coverage E]\n"
   "                   [--threads T] [--tolerance E] [--min-angle DEG] [-o OUT.vtp]\n"
   "                   [--render OUT.png] [--stats] [--reconstruct OUT.vtp|.stl|.ply]\n"
-  "                   [--resolution N] [--junctions OUT.vtp]\n"
+  "                   [--resolution N] [--junctions OUT.vtp] [--medial-mesh OUT.vtp|OUT.ma]\n"
   "  INPUT        closed surface: .vtp .vtk .ply .stl .obj .off; or planar polygons / closed\n"
   "               polylines (any plane, holes allowed) for the 2D medial axis;\n"
   "               or a demo: demo:jack (3D, the default with no INPUT), demo:l-shape,\n"
@@ -107,7 +109,14 @@ const char* Usage =
   "  --resolution N  grid points per axis of the reconstruction (default 128)\n"
   "  --junctions OUT.vtp  2D input only: write the medial graph (junctions, end points,\n"
   "               linear and parabolic arcs; point data Radius, MedialPointType,\n"
-  "               GovernorCount; cell data ArcType). --render then draws it too.\n";
+  "               GovernorCount; cell data ArcType). --render then draws it too.\n"
+  "  --medial-mesh OUT  3D input only: write the medial mesh (the balls joined by edges and\n"
+  "               triangles, with the solid's topology) as .vtp (point data Radius,\n"
+  "               MedialPointType, ...; cell data MedialCellType) or .ma (Q-MAT's form);\n"
+  "               with --stats adds medial_vertices, medial_edges (triangle sides\n"
+  "               included), medial_faces, seams and junctions (vertices of those\n"
+  "               MedialPointTypes), euler_characteristic, components and\n"
+  "               medial_mesh_seconds; --render then draws it coloured by MedialPointType\n";
 
 struct Options
 {
@@ -123,6 +132,7 @@ struct Options
   std::string Output;
   std::string Render;
   std::string Junctions;
+  std::string MedialMesh;
   bool Stats = false;
   std::string Reconstruct;
   int Resolution = 128;
@@ -347,6 +357,10 @@ Options Parse(int argc, char* argv[])
     {
       o.Junctions = need(i);
     }
+    else if (a == "--medial-mesh")
+    {
+      o.MedialMesh = need(i);
+    }
     else if (!a.empty() && a[0] == '-')
     {
       Fail("unknown option '" + a + "' (see --help)");
@@ -561,8 +575,114 @@ void WritePng(vtkRenderWindow* window, const std::string& path, MessageSink& sin
   }
 }
 
+// --medial-mesh: the medial mesh of the sampled balls (vtkMedialMeshFilter).
+vtkSmartPointer<vtkPolyData> RunMedialMesh(
+  vtkPolyData* surface, vtkPolyData* balls, int threads, MessageSink& sink)
+{
+  vtkNew<vtkMedialMeshFilter> filter;
+  filter->SetInputData(surface);
+  filter->SetBallsData(balls);
+  filter->SetNumberOfThreads(threads);
+  filter->Update();
+  if (!sink.LastError.empty())
+  {
+    Fail(sink.LastError);
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(filter->GetOutput());
+  return mesh;
+}
+
+void CheckMedialMeshPath(const std::string& path)
+{
+  const std::string ext = Extension(path);
+  if (ext != ".vtp" && ext != ".ma")
+  {
+    Fail("--medial-mesh writes .vtp or .ma (Q-MAT's form), got '" + path + "'");
+  }
+  CheckWritable(path, "--medial-mesh");
+}
+
+void WriteMedialMesh(vtkPolyData* mesh, const std::string& path, MessageSink& sink)
+{
+  int written = 0;
+  if (Extension(path) == ".ma")
+  {
+    vtkNew<vtkMedialMeshWriter> w;
+    w->SetInputData(mesh);
+    w->SetFileName(path.c_str());
+    written = w->Write();
+  }
+  else
+  {
+    vtkNew<vtkXMLPolyDataWriter> w;
+    w->SetInputData(mesh);
+    w->SetFileName(path.c_str());
+    w->SetDataModeToBinary();
+    written = w->Write();
+  }
+  if (!written || !sink.LastError.empty())
+  {
+    Fail("cannot write '" + path + "': " + sink.LastError);
+  }
+}
+
+// JSON members for --medial-mesh: sizes, point types, topology and time.
+std::string MedialMeshStats(vtkPolyData* mesh, double seconds)
+{
+  if (!mesh)
+  {
+    return "";
+  }
+  vtkIdType perType[4] = { 0, 0, 0, 0 };
+  vtkDataArray* types = mesh->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
+  for (vtkIdType i = 0; types && i < types->GetNumberOfTuples(); ++i)
+  {
+    const int t = static_cast<int>(types->GetTuple1(i));
+    perType[std::min(3, std::max(0, t))]++;
+  }
+  auto field = [mesh](const char* name) -> long long {
+    vtkDataArray* a = mesh->GetFieldData()->GetArray(name);
+    return a ? static_cast<long long>(a->GetTuple1(0)) : 0;
+  };
+  const long long vertices = mesh->GetNumberOfPoints(), faces = mesh->GetNumberOfPolys();
+  const long long euler = field(vtkMedialArrayNames::EulerCharacteristic);
+  std::ostringstream js;
+  js.precision(6);
+  js << ", \"medial_vertices\": " << vertices << ", \"medial_edges\": " << vertices + faces - euler
+     << ", \"medial_faces\": " << faces << ", \"seams\": " << perType[2]
+     << ", \"junctions\": " << perType[3] << ", \"euler_characteristic\": " << euler
+     << ", \"components\": " << field(vtkMedialArrayNames::Components)
+     << ", \"medial_mesh_seconds\": " << seconds;
+  return js.str();
+}
+
+// The medial mesh coloured by MedialPointType (rim, sheet, seam, junction) through a
+// four-entry table, and its legend.
+void ColourByPointType(vtkPolyDataMapper* mapper, vtkLookupTable* lut, vtkScalarBarActor* bar)
+{
+  const double colours[4][3] = { { 0.20, 0.45, 0.85 }, { 0.75, 0.75, 0.72 }, { 0.95, 0.55, 0.10 },
+    { 0.85, 0.10, 0.10 } };
+  const char* names[4] = { "rim", "sheet", "seam", "junction" };
+  lut->SetNumberOfTableValues(4);
+  lut->SetTableRange(0, 3);
+  for (int t = 0; t < 4; ++t)
+  {
+    lut->SetTableValue(t, colours[t][0], colours[t][1], colours[t][2]);
+    lut->SetAnnotation(t, names[t]);
+  }
+  lut->IndexedLookupOn();
+  mapper->SetLookupTable(lut);
+  mapper->SetScalarModeToUsePointFieldData();
+  mapper->SelectColorArray(vtkMedialArrayNames::MedialPointType);
+  mapper->SetScalarRange(0, 3);
+  mapper->ScalarVisibilityOn();
+  bar->SetLookupTable(lut);
+  bar->SetTitle(vtkMedialArrayNames::MedialPointType);
+}
+
 void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, MessageSink& sink,
-  vtkPolyData* reconstruction = nullptr)
+  vtkPolyData* reconstruction = nullptr, vtkPolyData* medialMesh = nullptr)
 {
   vtkNew<vtkPolyDataMapper> surfaceMapper;
   surfaceMapper->SetInputData(surface);
@@ -599,6 +719,13 @@ void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, 
   vtkNew<vtkScalarBarActor> bar;
   bar->SetLookupTable(lut);
   bar->SetTitle(vtkMedialArrayNames::Radius);
+  vtkNew<vtkLookupTable> typeColours;
+  if (medialMesh)
+  {
+    medialMapper->SetInputData(medialMesh);
+    ColourByPointType(medialMapper, typeColours, bar);
+    medialActor->GetProperty()->SetLineWidth(1.5);
+  }
   bar->SetNumberOfLabels(5);
   bar->SetWidth(0.09);
   bar->SetHeight(0.6);
@@ -967,6 +1094,10 @@ int main(int argc, char* argv[])
     CheckReconstructPath(opt.Reconstruct);
   }
 
+  if (!opt.MedialMesh.empty())
+  {
+    CheckMedialMeshPath(opt.MedialMesh);
+  }
   if (!opt.Junctions.empty())
   {
     if (Extension(opt.Junctions) != ".vtp")
@@ -993,6 +1124,10 @@ int main(int argc, char* argv[])
     surface = ReadSurface(opt.Input, sink);
   }
   const bool planar = IsPlanarInput(surface);
+  if (!opt.MedialMesh.empty() && planar)
+  {
+    Fail("--medial-mesh needs a closed surface; '" + opt.Input + "' is planar (see --junctions)");
+  }
   if (!opt.Junctions.empty() && !planar)
   {
     Fail("--junctions needs planar polygons or closed polylines; '" + opt.Input + "' is not planar");
@@ -1098,6 +1233,15 @@ int main(int argc, char* argv[])
       Fail("cannot write '" + opt.Output + "': " + sink.LastError);
     }
   }
+  vtkSmartPointer<vtkPolyData> medialMesh;
+  double medialMeshSeconds = 0.0;
+  if (!opt.MedialMesh.empty())
+  {
+    const auto meshStart = std::chrono::steady_clock::now();
+    medialMesh = RunMedialMesh(surface, medial, opt.Threads, sink);
+    medialMeshSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - meshStart).count();
+    WriteMedialMesh(medialMesh, opt.MedialMesh, sink);
+  }
   vtkSmartPointer<vtkPolyData> reconstruction;
   double reconstructionSeconds = 0.0;
   if (!opt.Reconstruct.empty())
@@ -1116,7 +1260,7 @@ int main(int argc, char* argv[])
     }
     else
     {
-      Render(surface, medial, opt.Render, sink, reconstruction);
+      Render(surface, medial, opt.Render, sink, reconstruction, medialMesh);
     }
   }
   if (opt.Stats)
@@ -1142,7 +1286,8 @@ int main(int argc, char* argv[])
          << ", \"max_coverage_gap\": " << sampler->GetMaxCoverageGap();
     }
     js << ", \"seconds\": " << seconds
-       << ReconstructionStats(surface, reconstruction, reconstructionSeconds, sampler, opt);
+       << ReconstructionStats(surface, reconstruction, reconstructionSeconds, sampler, opt)
+       << MedialMeshStats(medialMesh, medialMeshSeconds);
     if (graph)
     {
       vtkIdType junctions = 0, ends = 0;
