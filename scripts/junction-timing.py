@@ -16,7 +16,7 @@ import time
 
 import vtk
 import medialaxis  # noqa: F401 (registers the classes)
-from medialaxis.vtkMedialAxisFilters import vtkMedialJunctionFilter, vtkMedialShapeSource
+from medialaxis import vtkMedialJunctionFilter, vtkMedialShapeSource
 
 threads = int(sys.argv[1]) if len(sys.argv) > 1 else 2
 
