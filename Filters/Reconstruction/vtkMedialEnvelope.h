@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file vtkMedialEnvelope.h
+ * @brief Internal: the balls interpolated along a medial mesh's edges and triangles
+ * (the primitives of sphere-meshes: cones and slabs), and their distance-like function.
+ *
+ * A primitive with vertex balls (c_j, r_j) is the union of the balls
+ * B(c(l), r(l)) whose centre and radius are interpolated with barycentric weights l
+ * (an edge: a cone between two spheres; a triangle: a slab between three). Its field
+ *     g(x) = min over l of (|x - c(l)| - r(l))
+ * is negative inside, zero on the envelope and, outside, the Euclidean distance to it
+ * (each ball lies in the union, and at the minimiser x is at distance g from its
+ * ball along the normal of the envelope). g is convex in l, so
+ *  - an edge's minimum is at the stationary point of the axis, t = (a + k h / s) / L
+ *    with a the axial and h the radial coordinate of x, k = (r1 - r0) / L and
+ *    s = sqrt(1 - k^2), where g = h s - k a - r0; or at an end (a sphere); when
+ *    |k| >= 1 one ball contains the other and only the ends count;
+ *  - a triangle's minimum inside is on the tangent plane u.y = u.c_j + r_j common to
+ *    the three spheres (u unit, u.(c_j - c_0) = -(r_j - r_0)), on x's side, where
+ *    g = u.(x - c_0) - r_0, provided x's foot on that plane is the tangent point of a
+ *    ball inside the triangle; otherwise the minimum is on an edge, which its own
+ *    primitive gives (TriangleField then returns +inf).
+ * Pruning bounds: a primitive lies in the ball (C, R) with C the mean of its centres
+ * and R = max_j (|C - c_j| + r_j), so g(x) >= |x - C| - R; and g(x) <= |x - c_j| - r_j
+ * for each vertex ball. See vtkMedialBallUnion's MEDIAL_MESH primitives.
+ */
+#ifndef vtkMedialEnvelope_h
+#define vtkMedialEnvelope_h
+
+#include <algorithm>
+#include <cmath>
+
+namespace vtkMedialEnvelope
+{
+inline double Dot3(const double a[3], const double b[3])
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/// |x - c| - r: a sphere.
+inline double BallField(const double x[3], const double c[3], double r)
+{
+  const double d[3] = { x[0] - c[0], x[1] - c[1], x[2] - c[2] };
+  return std::sqrt(Dot3(d, d)) - r;
+}
+
+/// The cone between balls (c0, r0) and (c1, r1), ends included.
+inline double EdgeField(const double x[3], const double c0[3], double r0, const double c1[3], double r1)
+{
+  const double e[3] = { c1[0] - c0[0], c1[1] - c0[1], c1[2] - c0[2] };
+  const double w[3] = { x[0] - c0[0], x[1] - c0[1], x[2] - c0[2] };
+  const double length2 = Dot3(e, e);
+  const double ends = std::min(std::sqrt(Dot3(w, w)) - r0, BallField(x, c1, r1));
+  if (!(length2 > 0.0))
+  {
+    return ends;
+  }
+  const double length = std::sqrt(length2);
+  const double k = (r1 - r0) / length;
+  if (!(std::fabs(k) < 1.0))
+  {
+    return ends; // one ball contains the other
+  }
+  const double a = Dot3(w, e) / length;
+  const double h = std::sqrt(std::max(0.0, Dot3(w, w) - a * a));
+  const double s = std::sqrt(1.0 - k * k);
+  const double t = (a + k * h / s) / length;
+  if (t <= 0.0 || t >= 1.0)
+  {
+    return ends; // convex in t: the nearer end
+  }
+  return std::min(ends, h * s - k * a - r0);
+}
+
+/// The slab of the triangle of balls (c_j, r_j) where its minimum is inside the
+/// triangle; +inf where it is on an edge (or for a degenerate triangle).
+inline double TriangleField(const double x[3], const double* const c[3], const double r[3])
+{
+  double e1[3], e2[3], w[3], n[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    e1[k] = c[1][k] - c[0][k];
+    e2[k] = c[2][k] - c[0][k];
+    w[k] = x[k] - c[0][k];
+  }
+  n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+  n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+  n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+  const double g11 = Dot3(e1, e1), g12 = Dot3(e1, e2), g22 = Dot3(e2, e2);
+  const double det = g11 * g22 - g12 * g12;
+  const double n2 = Dot3(n, n);
+  if (!(det > 1e-24 * g11 * g22) || !(n2 > 0.0))
+  {
+    return HUGE_VAL;
+  }
+  // In-plane part of u from u.e_j = -(r_j - r_0); it must be shorter than 1.
+  const double d1 = -(r[1] - r[0]), d2 = -(r[2] - r[0]);
+  const double alpha = (d1 * g22 - d2 * g12) / det, beta = (d2 * g11 - d1 * g12) / det;
+  double u[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    u[k] = alpha * e1[k] + beta * e2[k];
+  }
+  const double inPlane2 = Dot3(u, u);
+  if (!(inPlane2 < 1.0))
+  {
+    return HUGE_VAL;
+  }
+  const double side = Dot3(w, n) >= 0.0 ? 1.0 : -1.0;
+  const double gamma = side * std::sqrt((1.0 - inPlane2) / n2);
+  for (int k = 0; k < 3; ++k)
+  {
+    u[k] += gamma * n[k];
+  }
+  const double g = Dot3(u, w) - r[0];
+  // The foot x - g u is the tangent point c(l) + r(l) u: solve for l in the frame
+  // f_j = e_j + (r_j - r_0) u (least squares; the foot lies in their span).
+  double f1[3], f2[3], q[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    f1[k] = e1[k] + (r[1] - r[0]) * u[k];
+    f2[k] = e2[k] + (r[2] - r[0]) * u[k];
+    q[k] = w[k] - (g + r[0]) * u[k];
+  }
+  const double h11 = Dot3(f1, f1), h12 = Dot3(f1, f2), h22 = Dot3(f2, f2);
+  const double hdet = h11 * h22 - h12 * h12;
+  if (!(hdet > 0.0))
+  {
+    return HUGE_VAL;
+  }
+  const double q1 = Dot3(f1, q), q2 = Dot3(f2, q);
+  const double l1 = (q1 * h22 - q2 * h12) / hdet, l2 = (q2 * h11 - q1 * h12) / hdet;
+  if (l1 < 0.0 || l2 < 0.0 || l1 + l2 > 1.0)
+  {
+    return HUGE_VAL;
+  }
+  return g;
+}
+}
+
+#endif
