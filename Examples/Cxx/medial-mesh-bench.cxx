@@ -5,13 +5,21 @@
 // one-pass) on T threads (default 2), then vtkMedialMeshFilter on those balls, both
 // timed (wall); the mesh's V, E, F, Euler characteristic and components beside the
 // solid's; the balls dropped and the largest radius reduction (inscribing). Prints a
-// table. Not a test: it checks nothing.
+// table. Then the shape rebuilt from the mesh by vtkMedialBallUnion at N^3 grid points:
+// the interpolated envelope (MEDIAL_MESH primitives) and, for comparison, the union of
+// the same (inscribed) balls, each against the original with the error measure of
+// MedialReconstructionError.h (vertex to surface, both directions, % of the diagonal).
+// Not a test: it checks nothing.
 //
-// usage: medial-mesh-bench [--threads T] [--samples N] [MESH...]
+// usage: medial-mesh-bench [--threads T] [--samples N] [--resolution N] [--protrusion E] [MESH...]
+//        (--protrusion: the filter's ProtrusionTolerance; -1 turns the pruning off)
 //        (default: the five meshes of ../shared/data/meshes)
+
+#include "MedialReconstructionError.h"
 
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialBallUnion.h"
 #include "vtkMedialMeshFilter.h"
 
 #include "vtkDataArray.h"
@@ -74,6 +82,8 @@ int main(int argc, char* argv[])
 {
   int threads = 2;
   vtkIdType samples = 10000;
+  int resolution = 128;
+  double protrusion = -2.0; // below -1: the filter's default
   std::vector<std::string> meshes;
   for (int i = 1; i < argc; ++i)
   {
@@ -86,9 +96,18 @@ int main(int argc, char* argv[])
     {
       samples = std::atoll(argv[++i]);
     }
+    else if (a == "--resolution" && i + 1 < argc)
+    {
+      resolution = std::atoi(argv[++i]);
+    }
+    else if (a == "--protrusion" && i + 1 < argc)
+    {
+      protrusion = std::atof(argv[++i]);
+    }
     else if (!a.empty() && a[0] == '-')
     {
-      std::printf("usage: medial-mesh-bench [--threads T] [--samples N] [MESH...]\n");
+      std::printf("usage: medial-mesh-bench [--threads T] [--samples N] [--resolution N] [--protrusion E] "
+                  "[MESH...]\n");
       return a == "-h" || a == "--help" ? 0 : 1;
     }
     else
@@ -123,6 +142,13 @@ int main(int argc, char* argv[])
   std::printf("%-20s %6s %6s %6s %4s %5s %8s %5s %6s %6s %7s %9s %8s %8s %8s\n", "mesh", "V", "E", "F",
     "chi", "comp", "solid_chi", "solid", "seams", "junct", "dropped", "shrink%", "sample_s", "mesh_s",
     "total_s");
+  struct ErrorRow
+  {
+    std::string Name;
+    medialbench::ReconstructionError Envelope, Union;
+    double EnvelopeSeconds, UnionSeconds;
+  };
+  std::vector<ErrorRow> errors;
   for (const std::string& path : meshes)
   {
     vtkSmartPointer<vtkPolyData> surface = Read(path);
@@ -138,6 +164,10 @@ int main(int argc, char* argv[])
     filter->SetInputData(surface);
     filter->SetBallsConnection(sampler->GetOutputPort());
     filter->SetNumberOfThreads(threads);
+    if (protrusion >= -1.0)
+    {
+      filter->SetProtrusionTolerance(protrusion);
+    }
     start = std::chrono::steady_clock::now();
     filter->Update();
     const double meshSeconds = Seconds(start);
@@ -153,6 +183,39 @@ int main(int argc, char* argv[])
       static_cast<long long>(filter->GetDroppedBalls()), 100 * filter->GetMaximumRadiusReduction(),
       sampleSeconds, meshSeconds, sampleSeconds + meshSeconds);
     std::fflush(stdout);
+
+    ErrorRow row{ name, {}, {}, 0.0, 0.0 };
+    for (int primitives : { vtkMedialBallUnion::MEDIAL_MESH, vtkMedialBallUnion::BALLS })
+    {
+      vtkNew<vtkMedialBallUnion> rebuild;
+      rebuild->SetInputData(mesh);
+      rebuild->SetPrimitives(primitives);
+      rebuild->SetSampleDimensions(resolution, resolution, resolution);
+      rebuild->SetNumberOfThreads(threads);
+      start = std::chrono::steady_clock::now();
+      rebuild->Update();
+      const double seconds = Seconds(start);
+      const medialbench::ReconstructionError e =
+        medialbench::MeasureReconstruction(surface, rebuild->GetOutput(), threads);
+      (primitives == vtkMedialBallUnion::BALLS ? row.Union : row.Envelope) = e;
+      (primitives == vtkMedialBallUnion::BALLS ? row.UnionSeconds : row.EnvelopeSeconds) = seconds;
+    }
+    errors.push_back(row);
+  }
+  std::printf("\nreconstruction at %d^3, %% of the diagonal (max / mean), rebuilt -> original and "
+              "original -> rebuilt\n",
+    resolution);
+  std::printf("%-20s %-9s %9s %9s %9s %9s %8s\n", "mesh", "shape", "rec>max", "rec>mean", "orig>max",
+    "orig>mean", "seconds");
+  for (const ErrorRow& row : errors)
+  {
+    for (int k = 0; k < 2; ++k)
+    {
+      const medialbench::ReconstructionError& e = k == 0 ? row.Envelope : row.Union;
+      std::printf("%-20s %-9s %9.3f %9.4f %9.3f %9.4f %8.2f\n", row.Name.c_str(), k == 0 ? "envelope" : "balls",
+        100 * e.ToOriginal.Max, 100 * e.ToOriginal.Mean, 100 * e.ToReconstruction.Max,
+        100 * e.ToReconstruction.Mean, k == 0 ? row.EnvelopeSeconds : row.UnionSeconds);
+    }
   }
   return 0;
 }

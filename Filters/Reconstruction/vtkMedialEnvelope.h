@@ -23,6 +23,20 @@
  * Pruning bounds: a primitive lies in the ball (C, R) with C the mean of its centres
  * and R = max_j (|C - c_j| + r_j), so g(x) >= |x - C| - R; and g(x) <= |x - c_j| - r_j
  * for each vertex ball. See vtkMedialBallUnion's MEDIAL_MESH primitives.
+ *
+ * Excess (EdgeExcess, TriangleExcess): how far a primitive reaches beyond the union of
+ * its vertex balls (the one-sided Hausdorff distance). In a dense medial mesh, where
+ * neighbouring balls overlap deeply, it is a tiny fraction of a voxel, and the
+ * primitive can be left out with the shape moving by at most that much.
+ *  - Edge: the cone leaves the two spheres only in the sliver between its generator
+ *    and the circle where the spheres meet; the sliver is thickest there, so the excess
+ *    is the distance from that circle to the generator. 0 when one ball contains the
+ *    other, +inf when they are disjoint.
+ *  - Triangle: beyond its three cones, the slab only fills the slivers under each
+ *    tangent plane, over the triangle T of the tangent points; a point of T at
+ *    distance d from a side lies at most r - sqrt(r^2 - d^2) above the sphere touching
+ *    the plane at the foot on that side (r >= the smallest vertex radius), and d is at
+ *    most T's inradius. Its excess is at most that plus its sides' largest.
  */
 #ifndef vtkMedialEnvelope_h
 #define vtkMedialEnvelope_h
@@ -135,6 +149,103 @@ inline double TriangleField(const double x[3], const double* const c[3], const d
     return HUGE_VAL;
   }
   return g;
+}
+
+/// Upper bound of how far the cone of an edge reaches beyond its two balls.
+inline double EdgeExcess(const double c0[3], double r0, const double c1[3], double r1)
+{
+  const double e[3] = { c1[0] - c0[0], c1[1] - c0[1], c1[2] - c0[2] };
+  const double length = std::sqrt(Dot3(e, e));
+  if (length <= std::fabs(r1 - r0))
+  {
+    return 0.0; // one ball contains the other: the cone is the larger one
+  }
+  if (length >= r0 + r1)
+  {
+    return HUGE_VAL; // disjoint balls
+  }
+  const double k = (r1 - r0) / length, s = std::sqrt(1.0 - k * k);
+  // Where the spheres meet, in (axial, radial) coordinates from c0; the generator is the
+  // line at distance r0 from c0 along the normal (-k, s).
+  const double a = (length * length + r0 * r0 - r1 * r1) / (2.0 * length);
+  const double h = std::sqrt(std::max(0.0, r0 * r0 - a * a));
+  return std::max(0.0, r0 + k * a - s * h);
+}
+
+/// Upper bound of how far the slab of a triangle reaches beyond its three balls.
+inline double TriangleExcess(const double* const c[3], const double r[3])
+{
+  double sides = 0.0;
+  for (int j = 0; j < 3; ++j)
+  {
+    sides = std::max(sides, EdgeExcess(c[j], r[j], c[(j + 1) % 3], r[(j + 1) % 3]));
+  }
+  double e1[3], e2[3], n[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    e1[k] = c[1][k] - c[0][k];
+    e2[k] = c[2][k] - c[0][k];
+  }
+  n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+  n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+  n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+  const double g11 = Dot3(e1, e1), g12 = Dot3(e1, e2), g22 = Dot3(e2, e2);
+  const double det = g11 * g22 - g12 * g12, n2 = Dot3(n, n);
+  if (!(det > 1e-24 * g11 * g22) || !(n2 > 0.0))
+  {
+    return sides; // degenerate: the union of its sides
+  }
+  const double d1 = -(r[1] - r[0]), d2 = -(r[2] - r[0]);
+  const double alpha = (d1 * g22 - d2 * g12) / det, beta = (d2 * g11 - d1 * g12) / det;
+  double w[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    w[k] = alpha * e1[k] + beta * e2[k];
+  }
+  const double inPlane2 = Dot3(w, w);
+  if (!(inPlane2 < 1.0))
+  {
+    return sides; // no common tangent plane: the slab is the union of its cones
+  }
+  const double rMin = std::min({ r[0], r[1], r[2] });
+  double sliver = 0.0;
+  for (double side : { 1.0, -1.0 })
+  {
+    const double gamma = side * std::sqrt((1.0 - inPlane2) / n2);
+    double t[3][3];
+    for (int j = 0; j < 3; ++j)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        t[j][k] = c[j][k] + r[j] * (w[k] + gamma * n[k]);
+      }
+    }
+    double ab[3], ac[3], cross[3], perimeter = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      ab[k] = t[1][k] - t[0][k];
+      ac[k] = t[2][k] - t[0][k];
+    }
+    cross[0] = ab[1] * ac[2] - ab[2] * ac[1];
+    cross[1] = ab[2] * ac[0] - ab[0] * ac[2];
+    cross[2] = ab[0] * ac[1] - ab[1] * ac[0];
+    for (int j = 0; j < 3; ++j)
+    {
+      double d[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        d[k] = t[(j + 1) % 3][k] - t[j][k];
+      }
+      perimeter += std::sqrt(Dot3(d, d));
+    }
+    const double inradius = perimeter > 0.0 ? std::sqrt(Dot3(cross, cross)) / perimeter : 0.0;
+    if (!(inradius < rMin))
+    {
+      return HUGE_VAL;
+    }
+    sliver = std::max(sliver, rMin - std::sqrt(rMin * rMin - inradius * inradius));
+  }
+  return sliver + sides;
 }
 }
 

@@ -79,12 +79,11 @@ struct DisjointSets
 }
 
 bool vtkMedialMeshComplex::Build(const vtkMedialPowerComplex& power, const vtkMedialSurfaceQuery& query,
-  const std::vector<double>& centres, const std::vector<vtkIdType>& solidComponents, int threads,
-  const std::function<bool()>& aborted)
+  const Balls& balls, double protrusionTolerance, int threads, const std::function<bool()>& aborted)
 {
   this->Power = &power;
   this->Query = &query;
-  this->Centres = &centres;
+  this->BallData = balls;
   this->Threads = std::max(1, threads);
   this->Stats = Statistics();
   this->EdgeState.assign(power.GetNumberOfEdges(), UNKNOWN);
@@ -108,8 +107,12 @@ bool vtkMedialMeshComplex::Build(const vtkMedialPowerComplex& power, const vtkMe
   {
     return false;
   }
-  this->DropDetachedComponents(solidComponents);
+  this->DropDetachedComponents(*balls.SolidComponents);
   this->Collapse();
+  if (protrusionTolerance >= 0.0)
+  {
+    this->PruneProtrusions(protrusionTolerance);
+  }
   this->Extract();
   return true;
 }
@@ -545,6 +548,167 @@ void vtkMedialMeshComplex::Collapse()
     }
   }
   this->Stats.RemainingTetrahedra = std::count(this->TetIn.begin(), this->TetIn.end(), 1);
+}
+
+double vtkMedialMeshComplex::Protrusion(const vtkIdType* ids, const double* weights, int n) const
+{
+  double c[3] = { 0, 0, 0 }, r = 0.0;
+  for (int j = 0; j < n; ++j)
+  {
+    G::AddScaled(c, weights[j], this->Centre(ids[j]), c);
+    r += weights[j] * (*this->BallData.Radii)[ids[j]];
+  }
+  vtkMedialSurfaceQuery::ClosestHit hit;
+  return r > 0.0 && this->Query->ClosestPoint(c, r, hit) ? r - hit.Distance : 0.0;
+}
+
+void vtkMedialMeshComplex::PruneProtrusions(double tolerance)
+{
+  const vtkMedialPowerComplex& p = *this->Power;
+  const vtkIdType nf = p.GetNumberOfTriangles(), ne = p.GetNumberOfEdges();
+  const vtkIdType nb = static_cast<vtkIdType>(p.BallIsVertex.size());
+  // Triangles on each edge (CSR over the triangles left) and edges on each ball.
+  std::vector<vtkIdType> triangles;
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    if (this->TriangleIn[f])
+    {
+      triangles.push_back(f);
+    }
+  }
+  std::vector<vtkIdType> edgeStart(ne + 1, 0), edgeTriangles, alive(ne, 0), degree(nb, 0);
+  for (vtkIdType f : triangles)
+  {
+    for (vtkIdType e : p.TriangleEdges[f])
+    {
+      ++edgeStart[e + 1];
+      ++alive[e];
+    }
+  }
+  std::partial_sum(edgeStart.begin(), edgeStart.end(), edgeStart.begin());
+  edgeTriangles.resize(edgeStart.back());
+  {
+    std::vector<vtkIdType> fill(edgeStart.begin(), edgeStart.end() - 1);
+    for (vtkIdType f : triangles)
+    {
+      for (vtkIdType e : p.TriangleEdges[f])
+      {
+        edgeTriangles[fill[e]++] = f;
+      }
+    }
+  }
+  std::vector<std::vector<vtkIdType>> ballEdges(nb);
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    if (this->EdgeIn[e])
+    {
+      for (vtkIdType b : p.EdgeVertices[e])
+      {
+        ++degree[b];
+        ballEdges[b].push_back(e);
+      }
+    }
+  }
+  // Protrusions of every triangle (centroid and side midpoints) and edge (midpoint).
+  std::vector<double> triangleProtrusion(nf, 0.0), edgeProtrusion(ne, 0.0);
+  const vtkIdType nt = static_cast<vtkIdType>(triangles.size());
+#pragma omp parallel for schedule(dynamic, 64) num_threads(this->Threads)
+  for (vtkIdType k = 0; k < nt; ++k)
+  {
+    const vtkIdType* v = p.TriangleVertices[triangles[k]].data();
+    const double third[3] = { 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 }, half[2] = { 0.5, 0.5 };
+    double worst = this->Protrusion(v, third, 3);
+    for (vtkIdType e : p.TriangleEdges[triangles[k]])
+    {
+      worst = std::max(worst, this->Protrusion(p.EdgeVertices[e].data(), half, 2));
+    }
+    triangleProtrusion[triangles[k]] = worst;
+  }
+#pragma omp parallel for schedule(dynamic, 256) num_threads(this->Threads)
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    const double half[2] = { 0.5, 0.5 };
+    edgeProtrusion[e] = this->EdgeIn[e] && alive[e] == 0 ? this->Protrusion(p.EdgeVertices[e].data(), half, 2) : 0.0;
+  }
+  // Collapses, in a fixed order: a triangle through a free side, an edge through a free end.
+  std::vector<vtkIdType> queue(triangles.begin(), triangles.end());
+  auto freeSide = [&](vtkIdType f) {
+    for (vtkIdType e : p.TriangleEdges[f])
+    {
+      if (alive[e] == 1)
+      {
+        return e;
+      }
+    }
+    return vtkIdType(-1);
+  };
+  auto removeEdge = [&](vtkIdType e) {
+    this->EdgeIn[e] = 0;
+    for (vtkIdType b : p.EdgeVertices[e])
+    {
+      if (--degree[b] == 0)
+      {
+        this->VertexIn[b] = 0;
+      }
+    }
+  };
+  std::vector<vtkIdType> bareEdges;
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    if (this->EdgeIn[e] && alive[e] == 0)
+    {
+      bareEdges.push_back(e);
+    }
+  }
+  for (size_t head = 0, bare = 0; head < queue.size() || bare < bareEdges.size();)
+  {
+    if (head < queue.size())
+    {
+      const vtkIdType f = queue[head++];
+      const vtkIdType side = this->TriangleIn[f] ? freeSide(f) : -1;
+      if (side < 0 || triangleProtrusion[f] <= tolerance)
+      {
+        continue;
+      }
+      this->TriangleIn[f] = 0;
+      removeEdge(side);
+      ++this->Stats.PrunedTriangles;
+      for (vtkIdType e : p.TriangleEdges[f])
+      {
+        if (--alive[e] == 1)
+        {
+          for (vtkIdType g = edgeStart[e]; g < edgeStart[e + 1]; ++g)
+          {
+            queue.push_back(edgeTriangles[g]); // its other triangle may now have a free side
+          }
+        }
+        else if (alive[e] == 0 && e != side)
+        {
+          const double half[2] = { 0.5, 0.5 };
+          edgeProtrusion[e] = this->Protrusion(p.EdgeVertices[e].data(), half, 2);
+          bareEdges.push_back(e);
+        }
+      }
+      continue;
+    }
+    const vtkIdType e = bareEdges[bare++];
+    const auto& v = p.EdgeVertices[e];
+    if (!this->EdgeIn[e] || alive[e] != 0 || edgeProtrusion[e] <= tolerance ||
+      (degree[v[0]] != 1 && degree[v[1]] != 1))
+    {
+      continue;
+    }
+    const vtkIdType inner = degree[v[0]] == 1 ? v[1] : v[0];
+    removeEdge(e);
+    ++this->Stats.PrunedEdges;
+    for (vtkIdType next : ballEdges[inner])
+    {
+      if (this->EdgeIn[next] && alive[next] == 0)
+      {
+        bareEdges.push_back(next); // may now have a free end
+      }
+    }
+  }
 }
 
 void vtkMedialMeshComplex::Extract()

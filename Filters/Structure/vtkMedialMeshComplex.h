@@ -35,6 +35,13 @@
  *     dropped and counted.
  *  7. Collapse: tetrahedra are removed with a free face (a triangle of exactly one
  *     of them), oldest first, until none has one. Collapses keep the homotopy type.
+ *  8. PruneProtrusions: the triangles left are faces of thin layers of tetrahedra,
+ *     some of them fins standing out of the sheet, whose interpolated balls (the
+ *     envelope's) cross the surface. A triangle with a free side (an edge of no other
+ *     triangle) is removed with that side when a ball interpolated at its centroid or
+ *     a side's midpoint protrudes through the surface by more than the tolerance; an
+ *     edge of no triangle with a free end, with that end, likewise. These are
+ *     collapses too; they go on as long as any applies.
  * The result: the vertices (ball ids), every edge (triangle sides included) and the
  * triangles; tetrahedra left without a free face (none on every shape measured) are
  * counted and dropped.
@@ -61,15 +68,24 @@ public:
     vtkIdType ConnectingEdges = 0;   // by ConnectComponents
     vtkIdType EmptyTriangles = 0;    // by FillEmptyTriangles
     vtkIdType DetachedBalls = 0;     // dropped by DropDetachedComponents
+    vtkIdType PrunedTriangles = 0;   // by PruneProtrusions
+    vtkIdType PrunedEdges = 0;       // edges of no triangle, by PruneProtrusions
     vtkIdType RemainingTetrahedra = 0; // not collapsible, dropped
   };
 
-  /// Runs the passes. `centres` holds 3 coordinates per ball, `solidComponents` the
-  /// component of the solid each ball lies in. Returns false when `aborted` (polled
-  /// between passes) returns true.
-  bool Build(const vtkMedialPowerComplex& power, const vtkMedialSurfaceQuery& query,
-    const std::vector<double>& centres, const std::vector<vtkIdType>& solidComponents, int threads,
-    const std::function<bool()>& aborted = {});
+  /// The balls: 3 coordinates per centre, radii, and the component of the solid each
+  /// lies in.
+  struct Balls
+  {
+    const std::vector<double>* Centres = nullptr;
+    const std::vector<double>* Radii = nullptr;
+    const std::vector<vtkIdType>* SolidComponents = nullptr;
+  };
+
+  /// Runs the passes; `protrusionTolerance` (absolute; negative: no pruning) is that of
+  /// PruneProtrusions. Returns false when `aborted` (polled between passes) returns true.
+  bool Build(const vtkMedialPowerComplex& power, const vtkMedialSurfaceQuery& query, const Balls& balls,
+    double protrusionTolerance, int threads, const std::function<bool()>& aborted = {});
 
   std::vector<vtkIdType> Vertices;                 // ball ids, increasing
   std::vector<std::array<vtkIdType, 2>> Edges;     // ball ids; every edge, triangle sides too
@@ -94,16 +110,20 @@ private:
   void FillEmptyTriangles();
   void DropDetachedComponents(const std::vector<vtkIdType>& solidComponents);
   void Collapse();
+  void PruneProtrusions(double tolerance);
+  // Largest protrusion through the surface of the balls interpolated at the given
+  // barycentric weights over the balls `ids`.
+  double Protrusion(const vtkIdType* ids, const double* weights, int n) const;
   void Extract();
 
   // Containment tests, memoised: 0 unknown, 1 inside, 2 crosses the surface.
   bool EdgeInside(vtkIdType e);
   bool TriangleInside(vtkIdType t);
-  const double* Centre(vtkIdType ball) const { return &(*this->Centres)[3 * ball]; }
+  const double* Centre(vtkIdType ball) const { return &(*this->BallData.Centres)[3 * ball]; }
 
   const vtkMedialPowerComplex* Power = nullptr;
   const vtkMedialSurfaceQuery* Query = nullptr;
-  const std::vector<double>* Centres = nullptr;
+  Balls BallData;
   int Threads = 1;
   vtkIdType Components = 0;
 

@@ -165,7 +165,7 @@ int vtkMedialMeshFilter::RequestData(
   this->EulerCharacteristic = this->NumberOfComponents = this->NumberOfEdges = 0;
   this->HasSolidTopology = false;
   this->SolidEulerCharacteristic = this->SolidComponents = 0;
-  this->DroppedBalls = this->DetachedBalls = this->RemainingTetrahedra = 0;
+  this->DroppedBalls = this->DetachedBalls = this->RemainingTetrahedra = this->PrunedTriangles = 0;
   this->MaximumRadiusReduction = 0.0;
   const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
   auto aborted = [this]() { return this->GetAbortExecute() != 0; };
@@ -238,7 +238,13 @@ int vtkMedialMeshFilter::RequestData(
 
   // 4. The complex.
   vtkMedialMeshComplex complex;
-  if (!complex.Build(power, query, set.Centres, set.SolidComponent, threads, aborted))
+  vtkMedialMeshComplex::Balls ballData;
+  ballData.Centres = &set.Centres;
+  ballData.Radii = &set.Radii;
+  ballData.SolidComponents = &set.SolidComponent;
+  const double tolerance =
+    this->ProtrusionTolerance >= 0.0 ? this->ProtrusionTolerance * mesh.Diagonal : -1.0;
+  if (!complex.Build(power, query, ballData, tolerance, threads, aborted))
   {
     return 1; // aborted: empty output
   }
@@ -251,6 +257,7 @@ int vtkMedialMeshFilter::RequestData(
   this->NumberOfEdges = static_cast<vtkIdType>(complex.Edges.size());
   this->RemainingTetrahedra = complex.Stats.RemainingTetrahedra;
   this->DetachedBalls = complex.Stats.DetachedBalls;
+  this->PrunedTriangles = complex.Stats.PrunedTriangles;
   vtkFieldData* fd = output->GetFieldData();
   AddCount(fd, vtkMedialArrayNames::EulerCharacteristic, this->EulerCharacteristic);
   AddCount(fd, vtkMedialArrayNames::Components, this->NumberOfComponents);
@@ -486,6 +493,8 @@ void vtkMedialMeshFilter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Sampler: " << this->Sampler << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "ProtrusionTolerance: " << this->ProtrusionTolerance << "\n";
+  os << indent << "PrunedTriangles: " << this->PrunedTriangles << "\n";
   os << indent << "EulerCharacteristic: " << this->EulerCharacteristic << "\n";
   os << indent << "NumberOfComponents: " << this->NumberOfComponents << "\n";
   os << indent << "NumberOfEdges: " << this->NumberOfEdges << "\n";

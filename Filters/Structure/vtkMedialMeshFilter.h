@@ -21,7 +21,9 @@
  *     components joined by edges inside the shape, triangles inside the shape
  *     spanning three edges of the complex added, and pieces that no edge inside the
  *     shape can join dropped (DetachedBalls); then tetrahedra are collapsed through
- *     free triangles, which keeps the homotopy type.
+ *     free triangles, which keeps the homotopy type, and fins whose interpolated balls
+ *     cross the surface by more than ProtrusionTolerance are pruned from their free
+ *     sides (collapses too).
  *  5. Output assembly and classification.
  *
  * Guarantees:
@@ -114,6 +116,14 @@ public:
   ///@}
 
   ///@{
+  /// Fins whose interpolated balls cross the surface by more than this (relative to the
+  /// diagonal; default 1e-3) are pruned by collapses from their free sides (step 4);
+  /// negative: no pruning.
+  vtkSetClampMacro(ProtrusionTolerance, double, -1.0, 1.0);
+  vtkGetMacro(ProtrusionTolerance, double);
+  ///@}
+
+  ///@{
   /// Figures from the last execution (see the class comment). The solid's figures are
   /// known (HasSolidTopology) only for a closed, manifold surface.
   vtkGetMacro(EulerCharacteristic, vtkIdType);
@@ -131,6 +141,8 @@ public:
   vtkGetMacro(MaximumRadiusReduction, double);
   /// Tetrahedra that could not be collapsed (dropped; 0 on every shape measured).
   vtkGetMacro(RemainingTetrahedra, vtkIdType);
+  /// Triangles removed by the protrusion pruning.
+  vtkGetMacro(PrunedTriangles, vtkIdType);
   ///@}
 
   /// Includes the sampler's modification time.
@@ -156,6 +168,7 @@ protected:
 
   vtkMedialAxisSampler* Sampler = nullptr;
   int NumberOfThreads = 0;
+  double ProtrusionTolerance = 1e-3;
 
   vtkIdType EulerCharacteristic = 0;
   vtkIdType NumberOfComponents = 0;
@@ -167,6 +180,7 @@ protected:
   vtkIdType DetachedBalls = 0;
   double MaximumRadiusReduction = 0.0;
   vtkIdType RemainingTetrahedra = 0;
+  vtkIdType PrunedTriangles = 0;
 
 private:
   vtkMedialMeshFilter(const vtkMedialMeshFilter&) = delete;

@@ -2,7 +2,9 @@
 // The interpolated envelope of a medial mesh (vtkMedialBallUnion with MEDIAL_MESH
 // primitives):
 //  1. the closed-form cone and slab fields (vtkMedialEnvelope.h) equal a brute-force
-//     minimum over the interpolated balls, at random points around random primitives;
+//     minimum over the interpolated balls, at random points around random primitives,
+//     and no point of a primitive lies further from its vertex balls than its excess
+//     bound (EdgeExcess, TriangleExcess);
 //  2. two balls joined by an edge give the cone between them (not two spheres): the
 //     surface's vertices lie on the exact cone-sphere within a voxel, and its waist is
 //     filled where the union of the two balls has none;
@@ -14,6 +16,7 @@
 #include "vtkMedialEnvelope.h"
 
 #include "vtkCellArray.h"
+#include "vtkImageData.h"
 
 #include <cstdio>
 #include <random>
@@ -100,11 +103,143 @@ int CheckClosedForms()
       triangleTruth);
   }
   std::printf("closed forms: worst difference from brute force %.2g over 400 cases\n", worst);
+
+  // Excess bounds: overlapping balls, points of the primitive on a grid.
+  std::uniform_real_distribution<double> near(-0.15, 0.15), big(0.2, 0.4);
+  int tight = 0;
+  for (int trial = 0; trial < 60; ++trial)
+  {
+    double centres[3][3], r[3];
+    for (int j = 0; j < 3; ++j)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        centres[j][k] = near(random);
+      }
+      r[j] = big(random);
+    }
+    const double* c[3] = { centres[0], centres[1], centres[2] };
+    const double edgeBound = E::EdgeExcess(c[0], r[0], c[1], r[1]);
+    const double triangleBound = E::TriangleExcess(c, r);
+    double edgeWorst = 0.0, triangleWorst = 0.0;
+    for (int i = 0; i < 40; ++i)
+    {
+      for (int j = 0; j < 40; ++j)
+      {
+        for (int k = 0; k < 40; ++k)
+        {
+          const double x[3] = { -0.6 + 0.03 * i, -0.6 + 0.03 * j, -0.6 + 0.03 * k };
+          double outside = HUGE_VAL; // distance to the union of the vertex balls
+          for (int v = 0; v < 3; ++v)
+          {
+            outside = std::min(outside, E::BallField(x, c[v], r[v]));
+          }
+          const double twoBalls = std::min(E::BallField(x, c[0], r[0]), E::BallField(x, c[1], r[1]));
+          if (E::EdgeField(x, c[0], r[0], c[1], r[1]) <= 0.0)
+          {
+            edgeWorst = std::max(edgeWorst, twoBalls);
+          }
+          // The triangle's field, closed form (checked against brute force above).
+          const double slab = std::min({ E::TriangleField(x, c, r), E::EdgeField(x, c[0], r[0], c[1], r[1]),
+            E::EdgeField(x, c[1], r[1], c[2], r[2]), E::EdgeField(x, c[0], r[0], c[2], r[2]) });
+          if (slab <= 0.0)
+          {
+            triangleWorst = std::max(triangleWorst, outside);
+          }
+        }
+      }
+    }
+    MEDIAL_CHECK(edgeWorst <= edgeBound + 1e-12 && triangleWorst <= triangleBound + 1e-12,
+      "trial %d: excess edge %.3g (bound %.3g), triangle %.3g (bound %.3g)", trial, edgeWorst, edgeBound,
+      triangleWorst, triangleBound);
+    tight += triangleWorst > 0.25 * triangleBound;
+  }
+  std::printf("excess bounds hold on 60 primitives (%d triangles within a factor 4)\n", tight);
+  return EXIT_SUCCESS;
+}
+
+// Reconstructs `mesh` and returns the largest |field| of `exact` over the surface's
+// vertices, in voxels.
+template <class Exact>
+double WorstVertex(vtkPolyData* mesh, int primitives, Exact exact, vtkIdType& vertices)
+{
+  vtkNew<vtkMedialBallUnion> envelope;
+  envelope->SetInputData(mesh);
+  envelope->SetPrimitives(primitives);
+  envelope->SetDimension(vtkMedialBallUnion::DIMENSION_3D);
+  envelope->SetSampleDimensions(96, 96, 96);
+  envelope->Update();
+  vtkPolyData* surface = envelope->GetOutput();
+  vertices = surface->GetNumberOfPoints();
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    surface->GetPoint(i, x);
+    worst = std::max(worst, std::fabs(exact(x)));
+  }
+  return worst / envelope->GetVoxelSize();
+}
+
+int CheckShapes()
+{
+  // An edge: the cone-sphere between the two balls, not their union.
+  vtkSmartPointer<vtkPolyData> edge = medialtest::MakeBalls({ { 0, 0, 0, 0.5 }, { 2, 0.1, 0, 0.3 } });
+  vtkNew<vtkCellArray> line;
+  const vtkIdType ends[2] = { 0, 1 };
+  line->InsertNextCell(2, ends);
+  edge->SetLines(line);
+  const double c0[3] = { 0, 0, 0 }, c1[3] = { 2, 0.1, 0 };
+  auto cone = [&](const double x[3]) { return E::EdgeField(x, c0, 0.5, c1, 0.3); };
+  vtkIdType n = 0;
+  const double coneError = WorstVertex(edge, vtkMedialBallUnion::MEDIAL_MESH, cone, n);
+  const double unionError = WorstVertex(edge, vtkMedialBallUnion::BALLS, cone, n);
+  std::printf("edge: %lld vertices within %.3f voxels of the cone (the union of its balls: %.1f)\n",
+    static_cast<long long>(n), coneError, unionError);
+  MEDIAL_CHECK(coneError < 1.0 && unionError > 5.0, "the edge's envelope is not the cone");
+
+  // A triangle: the slab between three balls.
+  vtkSmartPointer<vtkPolyData> slab =
+    medialtest::MakeBalls({ { 0, 0, 0, 0.4 }, { 2, 0, 0.2, 0.25 }, { 0.5, 1.8, 0, 0.3 } });
+  vtkNew<vtkCellArray> triangle;
+  const vtkIdType corners[3] = { 0, 1, 2 };
+  triangle->InsertNextCell(3, corners);
+  slab->SetPolys(triangle);
+  const double a[3] = { 0, 0, 0 }, b[3] = { 2, 0, 0.2 }, c[3] = { 0.5, 1.8, 0 };
+  const double* centres[3] = { a, b, c };
+  const double radii[3] = { 0.4, 0.25, 0.3 };
+  auto field = [&](const double x[3]) {
+    return std::min({ E::TriangleField(x, centres, radii), E::EdgeField(x, a, 0.4, b, 0.25),
+      E::EdgeField(x, b, 0.25, c, 0.3), E::EdgeField(x, a, 0.4, c, 0.3) });
+  };
+  const double slabError = WorstVertex(slab, vtkMedialBallUnion::MEDIAL_MESH, field, n);
+  std::printf("triangle: %lld vertices within %.3f voxels of the slab\n", static_cast<long long>(n), slabError);
+  MEDIAL_CHECK(slabError < 1.0, "the triangle's envelope is not the slab");
+
+  // Points without cells: the same field image as the union of balls.
+  vtkSmartPointer<vtkPolyData> loose =
+    medialtest::MakeBalls({ { 0, 0, 0, 0.5 }, { 1, 0.2, 0, 0.4 }, { 0.3, 1, 0.4, 0.3 } });
+  vtkNew<vtkMedialBallUnion> asBalls, asMesh;
+  for (vtkMedialBallUnion* u : { asBalls.Get(), asMesh.Get() })
+  {
+    u->SetInputData(loose);
+    u->SetSampleDimensions(48, 48, 48);
+    u->SetPrimitives(u == asMesh.Get() ? vtkMedialBallUnion::MEDIAL_MESH : vtkMedialBallUnion::BALLS);
+    u->Update();
+  }
+  vtkDataArray* f = asBalls->GetFieldOutput()->GetPointData()->GetScalars();
+  vtkDataArray* g = asMesh->GetFieldOutput()->GetPointData()->GetScalars();
+  double difference = 0.0;
+  for (vtkIdType i = 0; i < f->GetNumberOfTuples(); ++i)
+  {
+    difference = std::max(difference, std::fabs(f->GetTuple1(i) - g->GetTuple1(i)));
+  }
+  MEDIAL_CHECK(difference <= 1e-12, "balls without cells: the fields differ by %g", difference);
   return EXIT_SUCCESS;
 }
 }
 
 int TestMedialBallUnionEnvelope(int, char*[])
 {
-  return CheckClosedForms();
+  return CheckClosedForms() == EXIT_SUCCESS ? CheckShapes() : EXIT_FAILURE;
 }
