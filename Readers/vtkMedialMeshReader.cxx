@@ -34,7 +34,8 @@ struct MedialMesh
 class MedialMeshParser : public medialreaders::RecordParser
 {
 public:
-  bool Parse(const std::string& path, MedialMesh& mesh)
+  /// Opens the file and reads the header 'nv ne nf'.
+  bool ParseHeader(const std::string& path)
   {
     if (!this->Open(path))
     {
@@ -50,17 +51,26 @@ public:
       return this->Fail("expected the header 'nv ne nf' (3 counts), found " +
         std::to_string(header.size()) + " token(s) starting with " + Quote(header[0]));
     }
-    vtkIdType counts[3];
     const char* names[3] = { "nv", "ne", "nf" };
     for (int i = 0; i < 3; ++i)
     {
-      if (!medialreaders::ParseIndex(header[i], VTK_ID_MAX, counts[i]))
+      if (!medialreaders::ParseIndex(header[i], VTK_ID_MAX, this->Counts[i]))
       {
         return this->Fail(std::string("header count ") + names[i] + " " + Quote(header[i]) +
           " is not a non-negative integer");
       }
     }
-    const vtkIdType nv = counts[0], ne = counts[1], nf = counts[2];
+    return true;
+  }
+
+  /// The whole file: the header, then the v, e and f records.
+  bool Parse(const std::string& path, MedialMesh& mesh)
+  {
+    if (!this->ParseHeader(path))
+    {
+      return false;
+    }
+    const vtkIdType nv = this->Counts[0], ne = this->Counts[1], nf = this->Counts[2];
     // Header counts only bound the reservation by what the file can hold.
     // Shortest records: "v 0 0 0 0\n", "e 0 0\n", "f 0 0 0\n".
     mesh.Coordinates.reserve(3 * this->Lines.CapReserve(nv, 10));
@@ -158,17 +168,13 @@ private:
     return true;
   }
 
+  vtkIdType Counts[3] = { 0, 0, 0 }; // nv ne nf
 };
 }
 
-vtkMedialMeshReader::vtkMedialMeshReader()
+int vtkMedialMeshReader::CanReadFile(const char* fileName)
 {
-  this->SetNumberOfInputPorts(0);
-}
-
-vtkMedialMeshReader::~vtkMedialMeshReader()
-{
-  this->SetFileName(nullptr);
+  return medialreaders::CanReadHeader<MedialMeshParser>(fileName);
 }
 
 int vtkMedialMeshReader::RequestData(
@@ -176,16 +182,9 @@ int vtkMedialMeshReader::RequestData(
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
-  if (!this->FileName || !*this->FileName)
-  {
-    vtkErrorMacro("No FileName set.");
-    return 0;
-  }
   MedialMesh mesh;
-  MedialMeshParser parser;
-  if (!parser.Parse(this->FileName, mesh))
+  if (!medialreaders::ParseFile<MedialMeshParser>(this, this->FileName, "medial mesh", mesh))
   {
-    vtkErrorMacro(<< parser.Describe("medial mesh", this->FileName));
     return 0;
   }
 
@@ -223,6 +222,5 @@ int vtkMedialMeshReader::RequestData(
 
 void vtkMedialMeshReader::PrintSelf(ostream& os, vtkIndent indent)
 {
-  this->Superclass::PrintSelf(os, indent);
-  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  this->Superclass::PrintSelf(os, indent); // FileName
 }

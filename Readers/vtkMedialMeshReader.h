@@ -24,34 +24,29 @@
  * output. Header counts are not trusted for allocation: storage grows with the
  * records actually read.
  *
- * @sa vtkMedialMeshWriter vtkOFFReader
+ * @sa vtkMedialMeshWriter vtkMedialOFFReader vtkMedialFileReader
  */
 #ifndef vtkMedialMeshReader_h
 #define vtkMedialMeshReader_h
 
 #include "vtkMedialAxisReadersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkAbstractPolyDataReader.h"
 
-class VTKMEDIALAXISREADERS_EXPORT vtkMedialMeshReader : public vtkPolyDataAlgorithm
+class VTKMEDIALAXISREADERS_EXPORT vtkMedialMeshReader : public vtkAbstractPolyDataReader
 {
 public:
   static vtkMedialMeshReader* New();
-  vtkTypeMacro(vtkMedialMeshReader, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkMedialMeshReader, vtkAbstractPolyDataReader);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  ///@{
-  /// The .ma file to read.
-  vtkSetFilePathMacro(FileName);
-  vtkGetFilePathMacro(FileName);
-  ///@}
+  /// 1 when the file opens and starts with a valid header 'nv ne nf'; 0 otherwise.
+  static int CanReadFile(const char* fileName);
 
 protected:
-  vtkMedialMeshReader();
-  ~vtkMedialMeshReader() override;
+  vtkMedialMeshReader() = default;
+  ~vtkMedialMeshReader() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-
-  char* FileName = nullptr;
 
 private:
   vtkMedialMeshReader(const vtkMedialMeshReader&) = delete;

@@ -7,6 +7,8 @@
 #ifndef vtkMedialTextParsing_h
 #define vtkMedialTextParsing_h
 
+#include "vtkObject.h"
+#include "vtkSetGet.h"
 #include "vtkType.h"
 
 #include <sys/stat.h>
@@ -228,6 +230,34 @@ protected:
 
   TextLines Lines;
 };
+
+/// The parse step of a reader's RequestData: reads `fileName` with a new Parser into
+/// `mesh`. False, with the error reported on `reader` ("No FileName set.", or the
+/// parser's "Cannot read WHAT 'FILE', line N: ..."), when it cannot.
+template <class Parser, class Mesh>
+bool ParseFile(vtkObject* reader, const char* fileName, const char* what, Mesh& mesh)
+{
+  if (!fileName || !*fileName)
+  {
+    vtkErrorWithObjectMacro(reader, "No FileName set.");
+    return false;
+  }
+  Parser parser;
+  if (!parser.Parse(fileName, mesh))
+  {
+    vtkErrorWithObjectMacro(reader, << parser.Describe(what, fileName));
+    return false;
+  }
+  return true;
+}
+
+/// A reader's CanReadFile: 1 when the file opens and its header parses with a new Parser.
+template <class Parser>
+int CanReadHeader(const char* fileName)
+{
+  Parser parser;
+  return fileName && parser.ParseHeader(fileName) ? 1 : 0;
+}
 
 /// Quotes a token for an error message, shortened so binary junk stays readable.
 inline std::string Quote(std::string_view token)

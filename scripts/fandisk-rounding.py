@@ -17,17 +17,14 @@ import numpy as np
 
 import medialaxis
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonCore import reference
-from vtkmodules.vtkCommonDataModel import vtkStaticCellLocator
 from vtkmodules.vtkFiltersCore import vtkCleanPolyData, vtkFeatureEdges, vtkTriangleFilter
-from vtkmodules.vtkIOGeometry import vtkOBJReader
 
 MESH = sys.argv[1] if len(sys.argv) > 1 else "/work/shared/data/meshes/fandisk.obj"
 SAMPLES = [int(s) for s in sys.argv[2].split(",")] if len(sys.argv) > 2 else [10000, 100000]
 MIN_ANGLE = float(sys.argv[3]) if len(sys.argv) > 3 else None
 RESOLUTIONS = [128, 256]
 
-reader = vtkOBJReader()
+reader = medialaxis.vtkMedialFileReader()
 reader.SetFileName(MESH)
 clean = vtkCleanPolyData()
 clean.SetInputConnection(reader.GetOutputPort())
@@ -52,17 +49,14 @@ sharp_set = {tuple(p) for p in sharp_points}
 sharp = np.array([tuple(p) in sharp_set for p in points])
 
 
-def distances_to(surface, query):
-    locator = vtkStaticCellLocator()
-    locator.SetDataSet(surface)
-    locator.BuildLocator()
-    closest = [0.0, 0.0, 0.0]
-    cell, sub, d2 = reference(0), reference(0), reference(0.0)
-    out = np.empty(len(query))
-    for i, p in enumerate(query):
-        locator.FindClosestPoint(p, closest, cell, sub, d2)
-        out[i] = float(d2) ** 0.5
-    return out
+def distances_to(reconstruction):
+    """Distance from every vertex of the mesh to the reconstruction (vtkMedialReconstructionError)."""
+    error = medialaxis.vtkMedialReconstructionError()
+    error.SetOriginalData(mesh)
+    error.SetReconstructionData(reconstruction)
+    error.SetNumberOfAreaSamples(0)  # the vertex distances only
+    error.Update()
+    return vtk_to_numpy(error.GetOutput(1).GetPointData().GetArray("SurfaceDistance"))
 
 
 theta = MIN_ANGLE if MIN_ANGLE is not None else medialaxis.vtkMedialAxisSampler().GetMinimumSeparationAngle()
@@ -82,7 +76,7 @@ for count in SAMPLES:
         union.SetInputConnection(sampler.GetOutputPort())
         union.SetSampleDimensions(n, n, n)
         union.Update()
-        d = distances_to(union.GetOutput(), points) / diagonal * 100
+        d = distances_to(union.GetOutput()) / diagonal * 100
         voxel = union.GetVoxelSize() / diagonal * 100
         print(f"| {count} | {n}^3 | {voxel:.3f} | {d[sharp].max():.3f} | {np.median(d[sharp]):.3f} | "
               f"{d[sharp].max() / voxel:.1f} | {d[~sharp].max():.3f} | {np.median(d[~sharp]):.4f} |")

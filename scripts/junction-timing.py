@@ -113,5 +113,5 @@ for name, make in (("STAR shape (1024 spikes)", shape_star), ("random star", ran
         best = dt if best is None else min(best, dt)
     print(f"{name}: {data.GetNumberOfPoints()} vertices, {threads} threads: {best:.3f} s, "
           f"{f.GetNumberOfJunctions()} junctions, {f.GetNumberOfEndPoints()} ends, "
-          f"{f.GetNumberOfSamples()} samples, unresolved {f.GetUnresolvedIntervals()}, "
+          f"{f.GetNumberOfBoundarySamples()} samples, unresolved {f.GetUnresolvedIntervals()}, "
           f"{f.GetOutput().GetNumberOfLines()} arcs, (cycles, components) = {graph_cycles(f.GetOutput())}")

@@ -5,56 +5,33 @@
 // Reads a mesh or polygon (or generates a demo shape), runs vtkMedialAxisSampler
 // (and, for 2D input, vtkMedialJunctionFilter), and writes the medial balls, the
 // medial graph, a picture and a JSON line of figures. Only wiring lives here;
-// every algorithm is in a filter.
+// every algorithm is in a filter, every picture in vtkMedialScene.
 
 #include "vtkMedialArrayNames.h"
-#include "MedialReconstructionError.h"
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialBallUnion.h"
+#include "vtkMedialFileReader.h"
 #include "vtkMedialJunctionFilter.h"
 #include "vtkMedialMeshFilter.h"
 #include "vtkMedialMeshWriter.h"
+#include "vtkMedialReconstructionError.h"
+#include "vtkMedialScene.h"
 #include "vtkMedialShapeSource.h"
-#include "vtkOFFReader.h"
 
-#include "vtkActor.h"
 #include "vtkCallbackCommand.h"
-#include "vtkCamera.h"
 #include "vtkCommand.h"
-#include "vtkDataSetSurfaceFilter.h"
-#include "vtkDataSetReader.h"
-#include "vtkFieldData.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkLogger.h"
-#include "vtkCellData.h"
-#include "vtkGlyph3D.h"
-#include "vtkLookupTable.h"
 #include "vtkMath.h"
-#include "vtkPoints.h"
-#include "vtkCellArray.h"
-#include "vtkRegularPolygonSource.h"
-#include "vtkSphereSource.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
-#include "vtkPLYReader.h"
 #include "vtkPLYWriter.h"
-#include "vtkPolyDataNormals.h"
-#include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
-#include "vtkSTLReader.h"
 #include "vtkSTLWriter.h"
-#include "vtkScalarBarActor.h"
 #include "vtkSmartPointer.h"
-#include "vtkTextProperty.h"
-#include "vtkWindowToImageFilter.h"
-#include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
 
 #include <omp.h>
@@ -63,9 +40,9 @@
 
 #include <algorithm>
 #include <cctype>
-#include <csignal>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -230,6 +207,32 @@ bool ParseNumber(const char* text, double& value)
   return end != text && *end == '\0' && std::isfinite(value);
 }
 
+// --method NAME.
+int ParseMethod(const std::string& name)
+{
+  for (int m : { vtkMedialAxisSampler::BISECTION, vtkMedialAxisSampler::SHRINKING_BALL, vtkMedialAxisSampler::ONE_PASS })
+  {
+    if (name == vtkMedialAxisSampler::GetMethodName(m))
+    {
+      return m;
+    }
+  }
+  Fail("unknown --method '" + name + "' (bisection, shrinking-ball, one-pass)");
+}
+
+// --strategy NAME.
+int ParseStrategy(const std::string& name)
+{
+  for (int k = vtkMedialAxisSampler::RANDOM; k <= vtkMedialAxisSampler::FACE_DISTANCE; ++k)
+  {
+    if (name == vtkMedialAxisSampler::GetSamplingStrategyName(k))
+    {
+      return k;
+    }
+  }
+  Fail("unknown --strategy '" + name + "' (random, closest-neighbor, face-distance)");
+}
+
 Options Parse(int argc, char* argv[])
 {
   Options o;
@@ -275,43 +278,11 @@ Options Parse(int argc, char* argv[])
     }
     else if (a == "--method")
     {
-      const std::string m = need(i);
-      if (m == "bisection")
-      {
-        o.Method = vtkMedialAxisSampler::BISECTION;
-      }
-      else if (m == "shrinking-ball")
-      {
-        o.Method = vtkMedialAxisSampler::SHRINKING_BALL;
-      }
-      else if (m == "one-pass")
-      {
-        o.Method = vtkMedialAxisSampler::ONE_PASS;
-      }
-      else
-      {
-        Fail("unknown --method '" + m + "' (bisection, shrinking-ball, one-pass)");
-      }
+      o.Method = ParseMethod(need(i));
     }
     else if (a == "--strategy")
     {
-      const std::string m = need(i);
-      if (m == "random")
-      {
-        o.Strategy = vtkMedialAxisSampler::RANDOM;
-      }
-      else if (m == "closest-neighbor")
-      {
-        o.Strategy = vtkMedialAxisSampler::CLOSEST_NEIGHBOR;
-      }
-      else if (m == "face-distance")
-      {
-        o.Strategy = vtkMedialAxisSampler::FACE_DISTANCE;
-      }
-      else
-      {
-        Fail("unknown --strategy '" + m + "' (random, closest-neighbor, face-distance)");
-      }
+      o.Strategy = ParseStrategy(need(i));
     }
     else if (a == "--coverage")
     {
@@ -349,10 +320,6 @@ Options Parse(int argc, char* argv[])
     {
       o.Reconstruct = need(i);
     }
-    else if (a == "--resolution")
-    {
-      o.Resolution = static_cast<int>(integer(i, 8, 2048));
-    }
     else if (a == "--junctions")
     {
       o.Junctions = need(i);
@@ -360,6 +327,10 @@ Options Parse(int argc, char* argv[])
     else if (a == "--medial-mesh")
     {
       o.MedialMesh = need(i);
+    }
+    else if (a == "--resolution")
+    {
+      o.Resolution = static_cast<int>(integer(i, 8, 2048));
     }
     else if (!a.empty() && a[0] == '-')
     {
@@ -379,10 +350,7 @@ Options Parse(int argc, char* argv[])
 
 std::string Extension(const std::string& path)
 {
-  const size_t dot = path.find_last_of('.');
-  std::string e = dot == std::string::npos ? "" : path.substr(dot);
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
-  return e;
+  return vtkMedialFileReader::GetExtension(path.c_str());
 }
 
 // Fails unless `path` can be created as a file.
@@ -401,14 +369,6 @@ void CheckWritable(const std::string& path, const char* what)
   }
 }
 
-template <class Reader>
-vtkSmartPointer<vtkAlgorithm> FileReader(const std::string& path)
-{
-  auto reader = vtkSmartPointer<Reader>::New();
-  reader->SetFileName(path.c_str());
-  return reader;
-}
-
 vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, MessageSink& sink)
 {
   struct stat st;
@@ -424,49 +384,17 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, MessageSink& s
   {
     Fail("input '" + path + "' is empty");
   }
-  const std::string ext = Extension(path);
-  vtkSmartPointer<vtkAlgorithm> reader, legacy;
-  if (ext == ".vtp")
-  {
-    reader = FileReader<vtkXMLPolyDataReader>(path);
-  }
-  else if (ext == ".vtk")
-  {
-    // Any legacy dataset; its surface is extracted.
-    legacy = FileReader<vtkDataSetReader>(path); // kept alive: the connection does not own it
-    auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
-    surface->SetInputConnection(legacy->GetOutputPort());
-    reader = surface;
-  }
-  else if (ext == ".ply")
-  {
-    reader = FileReader<vtkPLYReader>(path);
-  }
-  else if (ext == ".stl")
-  {
-    reader = FileReader<vtkSTLReader>(path);
-  }
-  else if (ext == ".obj")
-  {
-    reader = FileReader<vtkOBJReader>(path);
-  }
-  else if (ext == ".off")
-  {
-    reader = FileReader<vtkOFFReader>(path);
-  }
-  else
-  {
-    Fail("unsupported input extension '" + ext + "' (.vtp .vtk .ply .stl .obj .off)");
-  }
+  vtkNew<vtkMedialFileReader> reader;
+  reader->SetFileName(path.c_str());
   reader->Update();
   if (!sink.LastError.empty())
   {
     Fail("cannot read '" + path + "': " + sink.LastError);
   }
-  vtkPolyData* data = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (!data || data->GetNumberOfPoints() == 0)
+  vtkPolyData* data = reader->GetOutput();
+  if (data->GetNumberOfPoints() == 0)
   {
-    Fail("cannot read '" + path + "': no points (empty or not a " + ext + " file)");
+    Fail("cannot read '" + path + "': no points (empty or not a " + Extension(path) + " file)");
   }
   auto copy = vtkSmartPointer<vtkPolyData>::New();
   copy->ShallowCopy(data);
@@ -501,9 +429,28 @@ vtkSmartPointer<vtkPolyData> Reconstruct(vtkPolyData* medial, const Options& opt
   return result;
 }
 
+// Writes binary VTK XML polydata; fails with the writer's reason.
+void WriteVtp(vtkPolyData* data, const std::string& path, MessageSink& sink)
+{
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(data);
+  writer->SetFileName(path.c_str());
+  writer->SetDataModeToBinary();
+  if (!writer->Write() || !sink.LastError.empty())
+  {
+    Fail("cannot write '" + path + "': " + sink.LastError);
+  }
+}
+
+// The reconstruction, written by the extension of `path` (.stl, .ply or .vtp).
 void WriteReconstruction(vtkPolyData* reconstruction, const std::string& path, MessageSink& sink)
 {
   const std::string ext = Extension(path);
+  if (ext != ".stl" && ext != ".ply")
+  {
+    WriteVtp(reconstruction, path, sink);
+    return;
+  }
   int written = 0;
   if (ext == ".stl")
   {
@@ -513,7 +460,7 @@ void WriteReconstruction(vtkPolyData* reconstruction, const std::string& path, M
     w->SetFileTypeToBinary();
     written = w->Write();
   }
-  else if (ext == ".ply")
+  else
   {
     vtkNew<vtkPLYWriter> w;
     w->SetInputData(reconstruction);
@@ -521,243 +468,15 @@ void WriteReconstruction(vtkPolyData* reconstruction, const std::string& path, M
     w->SetFileTypeToBinary();
     written = w->Write();
   }
-  else
-  {
-    vtkNew<vtkXMLPolyDataWriter> w;
-    w->SetInputData(reconstruction);
-    w->SetFileName(path.c_str());
-    w->SetDataModeToBinary();
-    written = w->Write();
-  }
   if (!written || !sink.LastError.empty())
   {
     Fail("cannot write '" + path + "': " + sink.LastError);
   }
 }
 
-// Splits the window: the input and medial points on the left, the reconstruction on
-// the right with the same camera.
-void AddReconstructionView(vtkRenderWindow* window, vtkRenderer* left, vtkPolyData* reconstruction)
-{
-  left->SetViewport(0.0, 0.0, 0.5, 1.0);
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputData(reconstruction);
-  normals->SplittingOff();
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(normals->GetOutputPort());
-  mapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(0.90, 0.62, 0.40);
-  vtkNew<vtkRenderer> right;
-  right->SetViewport(0.5, 0.0, 1.0, 1.0);
-  right->SetBackground(1, 1, 1);
-  right->AddActor(actor);
-  right->SetActiveCamera(left->GetActiveCamera());
-  window->AddRenderer(right);
-  int* size = window->GetSize();
-  window->SetSize(2 * size[0], size[1]);
-}
-
-// Saves what the window shows as a PNG; fails with the writer's reason.
-void WritePng(vtkRenderWindow* window, const std::string& path, MessageSink& sink)
-{
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff();
-  vtkNew<vtkPNGWriter> png;
-  png->SetInputConnection(grab->GetOutputPort());
-  png->SetFileName(path.c_str());
-  png->Write();
-  if (!sink.LastError.empty())
-  {
-    Fail("cannot write '" + path + "': " + sink.LastError);
-  }
-}
-
-// --medial-mesh: the medial mesh of the sampled balls (vtkMedialMeshFilter).
-vtkSmartPointer<vtkPolyData> RunMedialMesh(
-  vtkPolyData* surface, vtkPolyData* balls, int threads, MessageSink& sink)
-{
-  vtkNew<vtkMedialMeshFilter> filter;
-  filter->SetInputData(surface);
-  filter->SetBallsData(balls);
-  filter->SetNumberOfThreads(threads);
-  filter->Update();
-  if (!sink.LastError.empty())
-  {
-    Fail(sink.LastError);
-  }
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->ShallowCopy(filter->GetOutput());
-  return mesh;
-}
-
-void CheckMedialMeshPath(const std::string& path)
-{
-  const std::string ext = Extension(path);
-  if (ext != ".vtp" && ext != ".ma")
-  {
-    Fail("--medial-mesh writes .vtp or .ma (Q-MAT's form), got '" + path + "'");
-  }
-  CheckWritable(path, "--medial-mesh");
-}
-
-void WriteMedialMesh(vtkPolyData* mesh, const std::string& path, MessageSink& sink)
-{
-  int written = 0;
-  if (Extension(path) == ".ma")
-  {
-    vtkNew<vtkMedialMeshWriter> w;
-    w->SetInputData(mesh);
-    w->SetFileName(path.c_str());
-    written = w->Write();
-  }
-  else
-  {
-    vtkNew<vtkXMLPolyDataWriter> w;
-    w->SetInputData(mesh);
-    w->SetFileName(path.c_str());
-    w->SetDataModeToBinary();
-    written = w->Write();
-  }
-  if (!written || !sink.LastError.empty())
-  {
-    Fail("cannot write '" + path + "': " + sink.LastError);
-  }
-}
-
-// JSON members for --medial-mesh: sizes, point types, topology and time.
-std::string MedialMeshStats(vtkPolyData* mesh, double seconds)
-{
-  if (!mesh)
-  {
-    return "";
-  }
-  vtkIdType perType[4] = { 0, 0, 0, 0 };
-  vtkDataArray* types = mesh->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
-  for (vtkIdType i = 0; types && i < types->GetNumberOfTuples(); ++i)
-  {
-    const int t = static_cast<int>(types->GetTuple1(i));
-    perType[std::min(3, std::max(0, t))]++;
-  }
-  auto field = [mesh](const char* name) -> long long {
-    vtkDataArray* a = mesh->GetFieldData()->GetArray(name);
-    return a ? static_cast<long long>(a->GetTuple1(0)) : 0;
-  };
-  const long long vertices = mesh->GetNumberOfPoints(), faces = mesh->GetNumberOfPolys();
-  const long long euler = field(vtkMedialArrayNames::EulerCharacteristic);
-  std::ostringstream js;
-  js.precision(6);
-  js << ", \"medial_vertices\": " << vertices << ", \"medial_edges\": " << vertices + faces - euler
-     << ", \"medial_faces\": " << faces << ", \"seams\": " << perType[2]
-     << ", \"junctions\": " << perType[3] << ", \"euler_characteristic\": " << euler
-     << ", \"components\": " << field(vtkMedialArrayNames::Components)
-     << ", \"medial_mesh_seconds\": " << seconds;
-  return js.str();
-}
-
-// The medial mesh coloured by MedialPointType (rim, sheet, seam, junction) through a
-// four-entry table, and its legend.
-void ColourByPointType(vtkPolyDataMapper* mapper, vtkLookupTable* lut, vtkScalarBarActor* bar)
-{
-  const double colours[4][3] = { { 0.20, 0.45, 0.85 }, { 0.75, 0.75, 0.72 }, { 0.95, 0.55, 0.10 },
-    { 0.85, 0.10, 0.10 } };
-  const char* names[4] = { "rim", "sheet", "seam", "junction" };
-  lut->SetNumberOfTableValues(4);
-  lut->SetTableRange(0, 3);
-  for (int t = 0; t < 4; ++t)
-  {
-    lut->SetTableValue(t, colours[t][0], colours[t][1], colours[t][2]);
-    lut->SetAnnotation(t, names[t]);
-  }
-  lut->IndexedLookupOn();
-  mapper->SetLookupTable(lut);
-  mapper->SetScalarModeToUsePointFieldData();
-  mapper->SelectColorArray(vtkMedialArrayNames::MedialPointType);
-  mapper->SetScalarRange(0, 3);
-  mapper->ScalarVisibilityOn();
-  bar->SetLookupTable(lut);
-  bar->SetTitle(vtkMedialArrayNames::MedialPointType);
-}
-
-void Render(vtkPolyData* surface, vtkPolyData* medial, const std::string& path, MessageSink& sink,
-  vtkPolyData* reconstruction = nullptr, vtkPolyData* medialMesh = nullptr)
-{
-  vtkNew<vtkPolyDataMapper> surfaceMapper;
-  surfaceMapper->SetInputData(surface);
-  surfaceMapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> surfaceActor;
-  surfaceActor->SetMapper(surfaceMapper);
-  surfaceActor->GetProperty()->SetColor(0.80, 0.82, 0.86);
-  surfaceActor->GetProperty()->SetOpacity(0.22);
-
-  double range[2] = { 0.0, 1.0 };
-  if (auto* r = medial->GetPointData()->GetArray(vtkMedialArrayNames::Radius))
-  {
-    if (r->GetNumberOfTuples() > 0)
-    {
-      r->GetRange(range);
-    }
-  }
-  vtkNew<vtkLookupTable> lut;
-  lut->SetHueRange(0.667, 0.0); // blue (thin) to red (thick)
-  lut->SetTableRange(range);
-  lut->Build();
-  vtkNew<vtkPolyDataMapper> medialMapper;
-  medialMapper->SetInputData(medial);
-  medialMapper->SetLookupTable(lut);
-  medialMapper->SetScalarModeToUsePointFieldData();
-  medialMapper->SelectColorArray(vtkMedialArrayNames::Radius);
-  medialMapper->SetScalarRange(range);
-  medialMapper->ScalarVisibilityOn();
-  vtkNew<vtkActor> medialActor;
-  medialActor->SetMapper(medialMapper);
-  medialActor->GetProperty()->SetPointSize(4);
-  medialActor->GetProperty()->RenderPointsAsSpheresOn();
-
-  vtkNew<vtkScalarBarActor> bar;
-  bar->SetLookupTable(lut);
-  bar->SetTitle(vtkMedialArrayNames::Radius);
-  vtkNew<vtkLookupTable> typeColours;
-  if (medialMesh)
-  {
-    medialMapper->SetInputData(medialMesh);
-    ColourByPointType(medialMapper, typeColours, bar);
-    medialActor->GetProperty()->SetLineWidth(1.5);
-  }
-  bar->SetNumberOfLabels(5);
-  bar->SetWidth(0.09);
-  bar->SetHeight(0.6);
-  bar->SetPosition(0.89, 0.2);
-  bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
-  bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
-
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(1, 1, 1);
-  renderer->AddActor(surfaceActor);
-  renderer->AddActor(medialActor);
-  renderer->AddActor2D(bar);
-  renderer->ResetCamera();
-  renderer->GetActiveCamera()->Azimuth(30);
-  renderer->GetActiveCamera()->Elevation(20);
-  renderer->ResetCamera();
-  renderer->GetActiveCamera()->Zoom(1.6);
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetSize(900, 640);
-  window->AddRenderer(renderer);
-  if (reconstruction)
-  {
-    AddReconstructionView(window, renderer, reconstruction);
-  }
-  window->Render();
-  WritePng(window, path, sink);
-}
-
-// JSON members for --reconstruct; the Hausdorff figures only for a closed input.
+// JSON members for --reconstruct; the error figures only for a closed input.
 std::string ReconstructionStats(vtkPolyData* surface, vtkPolyData* reconstruction, double seconds,
-  vtkMedialAxisSampler* sampler, const Options& opt)
+  vtkMedialAxisSampler* sampler, const Options& opt, MessageSink& sink)
 {
   if (!reconstruction)
   {
@@ -766,17 +485,24 @@ std::string ReconstructionStats(vtkPolyData* surface, vtkPolyData* reconstructio
   std::ostringstream js;
   js.precision(6);
   js << ", \"reconstruction_seconds\": " << seconds << ", \"resolution\": " << opt.Resolution;
-  if (sampler->GetBoundaryEdges() == 0)
+  if (sampler->GetBoundaryEdges() == 0 && reconstruction->GetNumberOfCells() > 0)
   {
-    const int threads = opt.Threads > 0 ? opt.Threads : omp_get_num_procs();
-    const medialbench::ReconstructionError e =
-      medialbench::MeasureReconstruction(surface, reconstruction, threads);
-    js << ", \"hausdorff_max_rel\": " << e.MaxRel() << ", \"hausdorff_mean_rel\": " << e.MeanRel();
+    vtkNew<vtkMedialReconstructionError> error;
+    error->SetOriginalData(surface);
+    error->SetReconstructionData(reconstruction);
+    error->SetNumberOfThreads(opt.Threads);
+    error->Update();
+    if (!sink.LastError.empty())
+    {
+      Fail(sink.LastError);
+    }
+    js << ", \"hausdorff_max_rel\": " << error->GetVertexHausdorff()
+       << ", \"hausdorff_mean_rel\": " << error->GetVertexMeanHausdorff()
+       << ", \"hausdorff_area_max_rel\": " << error->GetAreaHausdorff()
+       << ", \"hausdorff_area_mean_rel\": " << error->GetAreaMeanHausdorff();
   }
   return js.str();
 }
-
-// ---- 2D input: demo shapes, planarity, the medial graph and its picture ----
 
 // demo:NAME inputs; returns false for an unknown name.
 bool MakeDemo(const std::string& name, vtkSmartPointer<vtkPolyData>& out)
@@ -812,75 +538,6 @@ bool MakeDemo(const std::string& name, vtkSmartPointer<vtkPolyData>& out)
   return true;
 }
 
-// Plane of the points (centroid and the normal of least variance); the returned
-// value is the largest distance of a point from it, relative to the diagonal.
-double FitPlane(vtkPolyData* pd, double centre[3], double normal[3])
-{
-  const vtkIdType n = pd->GetNumberOfPoints();
-  centre[0] = centre[1] = centre[2] = 0.0;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double p[3];
-    pd->GetPoint(i, p);
-    for (int k = 0; k < 3; ++k)
-    {
-      centre[k] += p[k] / n;
-    }
-  }
-  if (!std::isfinite(centre[0] + centre[1] + centre[2]))
-  {
-    return HUGE_VAL; // NaN or infinite coordinates: not a plane (the sampler says why)
-  }
-  double cov[3][3] = {}, row0[3], row1[3], row2[3];
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double p[3];
-    pd->GetPoint(i, p);
-    for (int a = 0; a < 3; ++a)
-    {
-      for (int b = 0; b < 3; ++b)
-      {
-        cov[a][b] += (p[a] - centre[a]) * (p[b] - centre[b]);
-      }
-    }
-  }
-  double* rows[3] = { row0, row1, row2 };
-  double* in[3] = { cov[0], cov[1], cov[2] };
-  double values[3], vecs[3][3];
-  double* v[3] = { vecs[0], vecs[1], vecs[2] };
-  for (int a = 0; a < 3; ++a)
-  {
-    std::copy(cov[a], cov[a] + 3, rows[a]);
-  }
-  vtkMath::Jacobi(in, values, v);
-  // Eigenvalues come sorted in decreasing order; vectors are the columns.
-  for (int k = 0; k < 3; ++k)
-  {
-    normal[k] = vecs[k][2];
-  }
-  double worst = 0.0;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double p[3];
-    pd->GetPoint(i, p);
-    worst = std::max(worst,
-      std::abs((p[0] - centre[0]) * normal[0] + (p[1] - centre[1]) * normal[1] + (p[2] - centre[2]) * normal[2]));
-  }
-  const double diag = pd->GetLength();
-  return diag > 0 ? worst / diag : 0.0;
-}
-
-// 2D input: planar loops as polygons or polylines (a closed surface is never planar).
-bool IsPlanarInput(vtkPolyData* pd)
-{
-  if (pd->GetNumberOfStrips() > 0 || (pd->GetNumberOfPolys() == 0 && pd->GetNumberOfLines() == 0))
-  {
-    return false;
-  }
-  double c[3], n[3];
-  return pd->GetNumberOfPoints() >= 3 && FitPlane(pd, c, n) <= 1e-6;
-}
-
 vtkSmartPointer<vtkPolyData> RunJunctions(vtkPolyData* polygon, int threads, MessageSink& sink)
 {
   vtkNew<vtkMedialJunctionFilter> junctions;
@@ -894,147 +551,6 @@ vtkSmartPointer<vtkPolyData> RunJunctions(vtkPolyData* polygon, int threads, Mes
   auto graph = vtkSmartPointer<vtkPolyData>::New();
   graph->ShallowCopy(junctions->GetOutput());
   return graph;
-}
-
-// Points of the graph with one MedialPointType, as spheres.
-vtkSmartPointer<vtkActor> NodeActor(vtkPolyData* graph, int type, double size, const double rgb[3])
-{
-  vtkNew<vtkPoints> pts;
-  auto* types = graph->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
-  for (vtkIdType i = 0; types && i < graph->GetNumberOfPoints(); ++i)
-  {
-    if (static_cast<int>(types->GetTuple1(i)) == type)
-    {
-      pts->InsertNextPoint(graph->GetPoint(i));
-    }
-  }
-  vtkNew<vtkPolyData> cloud;
-  cloud->SetPoints(pts);
-  vtkNew<vtkSphereSource> ball;
-  ball->SetRadius(size);
-  ball->SetThetaResolution(16);
-  ball->SetPhiResolution(12);
-  vtkNew<vtkGlyph3D> glyphs;
-  glyphs->SetInputData(cloud);
-  glyphs->SetSourceConnection(ball->GetOutputPort());
-  glyphs->ScalingOff();
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(glyphs->GetOutputPort());
-  mapper->ScalarVisibilityOff();
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(rgb[0], rgb[1], rgb[2]);
-  return actor;
-}
-
-// Picture of a 2D medial axis: the polygon (black), the graph's arcs (blue linear,
-// orange parabolic), junctions (red), end points (green) and the maximal disks of
-// the largest junctions (grey circles).
-void Render2D(vtkPolyData* polygon, vtkPolyData* graph, const std::string& path, MessageSink& sink)
-{
-  double centre[3], normal[3];
-  FitPlane(polygon, centre, normal);
-  const double diag = polygon->GetLength();
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(1, 1, 1);
-
-  vtkNew<vtkPolyData> outline;
-  outline->SetPoints(polygon->GetPoints());
-  vtkNew<vtkCellArray> edges;
-  for (vtkCellArray* cells : { polygon->GetPolys(), polygon->GetLines() })
-  {
-    vtkIdType npts;
-    const vtkIdType* ids;
-    for (cells->InitTraversal(); cells->GetNextCell(npts, ids);)
-    {
-      std::vector<vtkIdType> loop(ids, ids + npts);
-      if (cells == polygon->GetPolys())
-      {
-        loop.push_back(ids[0]);
-      }
-      edges->InsertNextCell(static_cast<vtkIdType>(loop.size()), loop.data());
-    }
-  }
-  outline->SetLines(edges);
-  vtkNew<vtkPolyDataMapper> outlineMapper;
-  outlineMapper->SetInputData(outline);
-  outlineMapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> outlineActor;
-  outlineActor->SetMapper(outlineMapper);
-  outlineActor->GetProperty()->SetColor(0.1, 0.1, 0.1);
-  outlineActor->GetProperty()->SetLineWidth(3);
-  renderer->AddActor(outlineActor);
-
-  // Arcs coloured by ArcType through a two-entry table.
-  vtkNew<vtkLookupTable> arcColours;
-  arcColours->SetNumberOfTableValues(2);
-  arcColours->SetTableValue(0, 0.15, 0.35, 0.85);
-  arcColours->SetTableValue(1, 0.95, 0.55, 0.1);
-  arcColours->SetTableRange(0, 1);
-  arcColours->Build();
-  vtkNew<vtkPolyDataMapper> arcMapper;
-  arcMapper->SetInputData(graph);
-  arcMapper->SetScalarModeToUseCellFieldData();
-  arcMapper->SelectColorArray(vtkMedialArrayNames::ArcType);
-  arcMapper->SetLookupTable(arcColours);
-  arcMapper->SetScalarRange(0, 1);
-  arcMapper->ScalarVisibilityOn();
-  vtkNew<vtkActor> arcActor;
-  arcActor->SetMapper(arcMapper);
-  arcActor->GetProperty()->SetLineWidth(3);
-  renderer->AddActor(arcActor);
-
-  // Maximal disks of the (up to) six largest junctions.
-  std::vector<std::pair<double, vtkIdType>> junctions;
-  auto* types = graph->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
-  auto* radius = graph->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
-  for (vtkIdType i = 0; types && i < graph->GetNumberOfPoints(); ++i)
-  {
-    if (static_cast<int>(types->GetTuple1(i)) == vtkMedialJunctionFilter::JUNCTION_POINT)
-    {
-      junctions.emplace_back(-radius->GetTuple1(i), i);
-    }
-  }
-  std::sort(junctions.begin(), junctions.end());
-  for (size_t k = 0; k < junctions.size() && k < 6; ++k)
-  {
-    vtkNew<vtkRegularPolygonSource> circle;
-    circle->SetNumberOfSides(96);
-    circle->GeneratePolygonOff();
-    circle->SetRadius(-junctions[k].first);
-    circle->SetCenter(graph->GetPoint(junctions[k].second));
-    circle->SetNormal(normal);
-    vtkNew<vtkPolyDataMapper> m;
-    m->SetInputConnection(circle->GetOutputPort());
-    vtkNew<vtkActor> a;
-    a->SetMapper(m);
-    a->GetProperty()->SetColor(0.55, 0.55, 0.6);
-    a->GetProperty()->SetLineWidth(1.5);
-    renderer->AddActor(a);
-  }
-  const double red[3] = { 0.85, 0.1, 0.1 }, green[3] = { 0.1, 0.65, 0.2 };
-  renderer->AddActor(NodeActor(graph, vtkMedialJunctionFilter::JUNCTION_POINT, 0.012 * diag, red));
-  renderer->AddActor(NodeActor(graph, vtkMedialJunctionFilter::END_POINT, 0.009 * diag, green));
-
-  // Look straight at the plane.
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetFocalPoint(centre);
-  camera->SetPosition(centre[0] + normal[0], centre[1] + normal[1], centre[2] + normal[2]);
-  double up[3] = { 0, 1, 0 };
-  if (std::abs(vtkMath::Dot(up, normal)) > 0.9)
-  {
-    up[0] = 1;
-    up[1] = 0;
-  }
-  camera->SetViewUp(up);
-  renderer->ResetCamera();
-  camera->Zoom(1.3);
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetSize(900, 700);
-  window->AddRenderer(renderer);
-  window->Render();
-  WritePng(window, path, sink);
 }
 
 std::string JsonString(const std::string& s)
@@ -1060,17 +576,20 @@ std::string JsonString(const std::string& s)
   }
   return out + "\"";
 }
+
+// Fails unless `path` is a writable .vtp name.
+void CheckVtpPath(const std::string& path, const char* flag)
+{
+  if (Extension(path) != ".vtp")
+  {
+    Fail(std::string(flag) + " writes VTK XML polydata and needs a .vtp name, got '" + path + "'");
+  }
+  CheckWritable(path, flag);
 }
 
-int main(int argc, char* argv[])
+// Fails before any work when an output cannot be written or rendered.
+void CheckOutputs(const Options& opt)
 {
-  const Options opt = Parse(argc, argv);
-  std::signal(SIGINT, OnInterrupt);
-  vtkNew<MessageSink> sinkWindow;
-  vtkOutputWindow::SetInstance(sinkWindow);
-  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // the sink prints instead
-  MessageSink& sink = *sinkWindow;
-
   if (!opt.Render.empty())
   {
     const char* display = std::getenv("DISPLAY");
@@ -1083,30 +602,29 @@ int main(int argc, char* argv[])
   }
   if (!opt.Output.empty())
   {
-    if (Extension(opt.Output) != ".vtp")
-    {
-      Fail("-o writes VTK XML polydata and needs a .vtp name, got '" + opt.Output + "'");
-    }
-    CheckWritable(opt.Output, "-o");
+    CheckVtpPath(opt.Output, "-o");
   }
   if (!opt.Reconstruct.empty())
   {
     CheckReconstructPath(opt.Reconstruct);
   }
-
-  if (!opt.MedialMesh.empty())
-  {
-    CheckMedialMeshPath(opt.MedialMesh);
-  }
   if (!opt.Junctions.empty())
   {
-    if (Extension(opt.Junctions) != ".vtp")
-    {
-      Fail("--junctions writes VTK XML polydata and needs a .vtp name, got '" + opt.Junctions + "'");
-    }
-    CheckWritable(opt.Junctions, "--junctions");
+    CheckVtpPath(opt.Junctions, "--junctions");
   }
+  if (!opt.MedialMesh.empty())
+  {
+    if (Extension(opt.MedialMesh) != ".vtp" && Extension(opt.MedialMesh) != ".ma")
+    {
+      Fail("--medial-mesh writes .vtp or .ma (Q-MAT's form), got '" + opt.MedialMesh + "'");
+    }
+    CheckWritable(opt.MedialMesh, "--medial-mesh");
+  }
+}
 
+// The input surface: a demo shape (none given: demo:jack) or a file.
+vtkSmartPointer<vtkPolyData> LoadInput(const Options& opt, MessageSink& sink)
+{
   vtkSmartPointer<vtkPolyData> surface;
   if (opt.Input.empty())
   {
@@ -1123,7 +641,236 @@ int main(int argc, char* argv[])
   {
     surface = ReadSurface(opt.Input, sink);
   }
-  const bool planar = IsPlanarInput(surface);
+  return surface;
+}
+
+// Progress bar on stderr: only on a terminal, and only once a run has lasted a second.
+struct Progress
+{
+  std::chrono::steady_clock::time_point Start;
+  bool Shown = false;
+
+  static void Show(vtkObject*, unsigned long, void* client, void* data)
+  {
+    auto* p = static_cast<Progress*>(client);
+    const double fraction = *static_cast<double*>(data);
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - p->Start).count();
+    if (elapsed < 1.0 && !p->Shown)
+    {
+      return;
+    }
+    p->Shown = true;
+    const int width = 40, filled = static_cast<int>(fraction * width + 0.5);
+    std::fprintf(stderr, "\r[%s%s] %3d%%  %.1fs", std::string(filled, '#').c_str(),
+      std::string(width - filled, ' ').c_str(), static_cast<int>(fraction * 100 + 0.5), elapsed);
+    std::fflush(stderr);
+  }
+};
+
+// Ctrl-C while sampling: abort at the next block, then exit with 130 (OnInterrupt).
+void AbortOnInterrupt(vtkObject* caller, unsigned long, void*, void* data)
+{
+  // The pipeline reports 0 before RequestData starts; blocks report more than 0.
+  if (*static_cast<double*>(data) > 0.0)
+  {
+    AbortWatched = 1;
+  }
+  if (Interrupted)
+  {
+    static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+  }
+}
+
+// Runs the sampler on `surface` with the command line's settings; `seconds` is its wall time.
+vtkSmartPointer<vtkMedialAxisSampler> Sample(vtkPolyData* surface, const Options& opt, MessageSink& sink, double& seconds)
+{
+  auto sampler = vtkSmartPointer<vtkMedialAxisSampler>::New();
+  sampler->SetInputData(surface);
+  sampler->SetNumberOfSamples(static_cast<vtkIdType>(opt.Samples));
+  sampler->SetMethod(opt.Method);
+  sampler->SetSamplingStrategy(opt.Strategy);
+  sampler->SetCoverageTolerance(opt.Coverage);
+  sampler->SetRandomSeed(opt.Seed);
+  sampler->SetNumberOfThreads(opt.Threads);
+  sampler->SetTolerance(opt.Tolerance);
+  sampler->SetMinimumSeparationAngle(opt.MinAngle);
+
+  const auto start = std::chrono::steady_clock::now();
+  Progress progress{ start };
+  vtkNew<vtkCallbackCommand> progressCommand;
+  if (isatty(STDERR_FILENO))
+  {
+    progressCommand->SetClientData(&progress);
+    progressCommand->SetCallback(&Progress::Show);
+    sampler->AddObserver(vtkCommand::ProgressEvent, progressCommand);
+  }
+  vtkNew<vtkCallbackCommand> interruptCommand;
+  interruptCommand->SetCallback(&AbortOnInterrupt);
+  sampler->AddObserver(vtkCommand::ProgressEvent, interruptCommand);
+
+  sampler->Update();
+  AbortWatched = 0;
+  if (Interrupted)
+  {
+    std::cerr << (progress.Shown ? "\n" : "") << "medial-axis: interrupted\n";
+    std::exit(130);
+  }
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (progress.Shown)
+  {
+    std::fprintf(stderr, "\n");
+  }
+  if (!sink.LastError.empty())
+  {
+    Fail(sink.LastError);
+  }
+  sampler->RemoveAllObservers(); // the progress state lives on this stack
+  return sampler;
+}
+
+// --medial-mesh: the medial mesh of the sampled balls (given on port 1, so the sampling
+// is not repeated), written as .vtp or .ma.
+vtkSmartPointer<vtkPolyData> RunMedialMesh(vtkPolyData* surface, vtkPolyData* balls, const Options& opt,
+  MessageSink& sink)
+{
+  vtkNew<vtkMedialMeshFilter> filter;
+  filter->SetInputData(surface);
+  filter->SetBallsData(balls);
+  filter->SetNumberOfThreads(opt.Threads);
+  filter->Update();
+  if (!sink.LastError.empty())
+  {
+    Fail(sink.LastError);
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(filter->GetOutput());
+  if (Extension(opt.MedialMesh) == ".ma")
+  {
+    vtkNew<vtkMedialMeshWriter> writer;
+    writer->SetInputData(mesh);
+    writer->SetFileName(opt.MedialMesh.c_str());
+    if (!writer->Write() || !sink.LastError.empty())
+    {
+      Fail("cannot write '" + opt.MedialMesh + "': " + sink.LastError);
+    }
+  }
+  else
+  {
+    WriteVtp(mesh, opt.MedialMesh, sink);
+  }
+  return mesh;
+}
+
+// JSON members of the medial mesh: sizes, point types, topology and time.
+std::string MedialMeshStats(vtkPolyData* mesh, double seconds)
+{
+  if (!mesh)
+  {
+    return "";
+  }
+  vtkIdType perType[4] = { 0, 0, 0, 0 };
+  vtkDataArray* types = mesh->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
+  for (vtkIdType i = 0; types && i < types->GetNumberOfTuples(); ++i)
+  {
+    perType[std::min(3, std::max(0, static_cast<int>(types->GetTuple1(i))))]++;
+  }
+  auto field = [mesh](const char* name) -> long long {
+    vtkDataArray* a = mesh->GetFieldData()->GetArray(name);
+    return a ? static_cast<long long>(a->GetTuple1(0)) : 0;
+  };
+  const long long vertices = mesh->GetNumberOfPoints(), faces = mesh->GetNumberOfPolys();
+  const long long euler = field(vtkMedialArrayNames::EulerCharacteristic);
+  std::ostringstream js;
+  js.precision(6);
+  js << ", \"medial_vertices\": " << vertices << ", \"medial_edges\": " << vertices + faces - euler
+     << ", \"medial_faces\": " << faces << ", \"seams\": " << perType[2] << ", \"junctions\": " << perType[3]
+     << ", \"euler_characteristic\": " << euler
+     << ", \"components\": " << field(vtkMedialArrayNames::Components) << ", \"medial_mesh_seconds\": " << seconds;
+  return js.str();
+}
+
+// --render: the 2D graph scene for planar input, else the 3D scene (with the
+// reconstruction beside it when there is one, and the medial mesh coloured by point
+// type instead of the balls when there is one).
+void RenderPicture(vtkPolyData* surface, vtkPolyData* medial, vtkPolyData* graph, vtkPolyData* reconstruction,
+  vtkPolyData* medialMesh, const std::string& path, MessageSink& sink)
+{
+  vtkNew<vtkMedialScene> scene;
+  scene->SetSurface(surface);
+  if (graph)
+  {
+    scene->SetGraph(graph);
+  }
+  else
+  {
+    scene->SetMedial(medialMesh ? medialMesh : medial);
+    scene->SetColorBy(medialMesh ? vtkMedialScene::POINT_TYPE : vtkMedialScene::RADIUS);
+    scene->SetReconstruction(reconstruction);
+  }
+  if (!scene->WritePNG(path.c_str()) || !sink.LastError.empty())
+  {
+    Fail("cannot write '" + path + "': " + sink.LastError);
+  }
+}
+
+// JSON members of the sampler's run (the line's opening brace included).
+std::string SamplerStats(
+  const Options& opt, vtkMedialAxisSampler* sampler, vtkPolyData* medial, bool planar, double seconds)
+{
+  const int threads = opt.Threads > 0 ? opt.Threads : omp_get_num_procs();
+  std::ostringstream js;
+  js.precision(6);
+  js << "{\"input\": " << JsonString(opt.Input.empty() ? "demo:jack" : opt.Input)
+     << ", \"triangles\": " << sampler->GetNumberOfTriangles() << ", \"samples\": " << opt.Samples
+     << ", \"medial_points\": " << medial->GetNumberOfPoints()
+     << ", \"discarded\": " << sampler->GetDiscardedSamples() << ", \"method\": "
+     << JsonString(vtkMedialAxisSampler::GetMethodName(opt.Method)) << ", \"threads\": " << threads
+     << ", \"min_angle\": " << opt.MinAngle << ", \"tolerance\": " << opt.Tolerance
+     << ", \"iterations_mean\": " << sampler->GetMeanIterations()
+     << ", \"capped\": " << sampler->GetCappedSamples()
+     << ", \"strategy\": "
+     << JsonString(vtkMedialAxisSampler::GetSamplingStrategyName(planar ? vtkMedialAxisSampler::RANDOM : opt.Strategy));
+  if (!planar && (opt.Strategy != vtkMedialAxisSampler::RANDOM || opt.Coverage > 0.0))
+  {
+    js << ", \"evaluated\": " << sampler->GetEvaluatedSamples() << ", \"seeds\": " << sampler->GetSeedSamples()
+       << ", \"links\": " << medial->GetNumberOfLines() << ", \"coverage\": " << opt.Coverage
+       << ", \"coverage_reached\": " << (sampler->GetCoverageReached() ? "true" : "false")
+       << ", \"max_coverage_gap\": " << sampler->GetMaxCoverageGap();
+  }
+  js << ", \"seconds\": " << seconds;
+  return js.str();
+}
+
+// JSON members of the 2D medial graph.
+std::string GraphStats(vtkPolyData* graph)
+{
+  vtkIdType junctions = 0, ends = 0;
+  vtkDataArray* types = graph->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
+  for (vtkIdType i = 0; i < graph->GetNumberOfPoints(); ++i)
+  {
+    const int t = static_cast<int>(types->GetTuple1(i));
+    junctions += t == vtkMedialJunctionFilter::JUNCTION_POINT ? 1 : 0;
+    ends += t == vtkMedialJunctionFilter::END_POINT ? 1 : 0;
+  }
+  std::ostringstream js;
+  js << ", \"junctions\": " << junctions << ", \"end_points\": " << ends << ", \"arcs\": " << graph->GetNumberOfLines();
+  return js.str();
+}
+
+}
+
+int main(int argc, char* argv[])
+{
+  const Options opt = Parse(argc, argv);
+  std::signal(SIGINT, OnInterrupt);
+  vtkNew<MessageSink> sinkWindow;
+  vtkOutputWindow::SetInstance(sinkWindow);
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // the sink prints instead
+  MessageSink& sink = *sinkWindow;
+  CheckOutputs(opt);
+
+  vtkSmartPointer<vtkPolyData> surface = LoadInput(opt, sink);
+  const bool planar = vtkMedialAxisSampler::IsPlanarInput(surface);
   if (!opt.MedialMesh.empty() && planar)
   {
     Fail("--medial-mesh needs a closed surface; '" + opt.Input + "' is planar (see --junctions)");
@@ -1139,170 +886,43 @@ int main(int argc, char* argv[])
   }
   if (!opt.Junctions.empty())
   {
-    vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetInputData(graph);
-    writer->SetFileName(opt.Junctions.c_str());
-    writer->SetDataModeToBinary();
-    if (!writer->Write() || !sink.LastError.empty())
-    {
-      Fail("cannot write '" + opt.Junctions + "': " + sink.LastError);
-    }
+    WriteVtp(graph, opt.Junctions, sink);
   }
 
-  vtkNew<vtkMedialAxisSampler> sampler;
-  sampler->SetInputData(surface);
-  sampler->SetNumberOfSamples(static_cast<vtkIdType>(opt.Samples));
-  sampler->SetMethod(opt.Method);
-  sampler->SetSamplingStrategy(opt.Strategy);
-  sampler->SetCoverageTolerance(opt.Coverage);
-  sampler->SetRandomSeed(opt.Seed);
-  sampler->SetNumberOfThreads(opt.Threads);
-  sampler->SetTolerance(opt.Tolerance);
-  sampler->SetMinimumSeparationAngle(opt.MinAngle);
-
-  // Progress bar: only on a terminal, and only once a run has lasted a second.
-  const auto start = std::chrono::steady_clock::now();
-  struct Progress
-  {
-    std::chrono::steady_clock::time_point Start;
-    bool Shown = false;
-  } progress{ start };
-  vtkNew<vtkCallbackCommand> progressCommand;
-  if (isatty(STDERR_FILENO))
-  {
-    progressCommand->SetClientData(&progress);
-    progressCommand->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
-      auto* p = static_cast<Progress*>(client);
-      const double fraction = *static_cast<double*>(data);
-      const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - p->Start).count();
-      if (elapsed < 1.0 && !p->Shown)
-      {
-        return;
-      }
-      p->Shown = true;
-      const int width = 40, filled = static_cast<int>(fraction * width + 0.5);
-      std::fprintf(stderr, "\r[%s%s] %3d%%  %.1fs", std::string(filled, '#').c_str(),
-        std::string(width - filled, ' ').c_str(), static_cast<int>(fraction * 100 + 0.5), elapsed);
-      std::fflush(stderr);
-    });
-    sampler->AddObserver(vtkCommand::ProgressEvent, progressCommand);
-  }
-
-  // Ctrl-C while sampling: abort at the next block, then exit with 130 (OnInterrupt).
-  vtkNew<vtkCallbackCommand> interruptCommand;
-  interruptCommand->SetCallback([](vtkObject* caller, unsigned long, void*, void* data) {
-    // The pipeline reports 0 before RequestData starts; blocks report more than 0.
-    if (*static_cast<double*>(data) > 0.0)
-    {
-      AbortWatched = 1;
-    }
-    if (Interrupted)
-    {
-      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
-    }
-  });
-  sampler->AddObserver(vtkCommand::ProgressEvent, interruptCommand);
-
-  sampler->Update();
-  AbortWatched = 0;
-  if (Interrupted)
-  {
-    std::cerr << (progress.Shown ? "\n" : "") << "medial-axis: interrupted\n";
-    return 130;
-  }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (progress.Shown)
-  {
-    std::fprintf(stderr, "\n");
-  }
-  if (!sink.LastError.empty())
-  {
-    Fail(sink.LastError);
-  }
+  double seconds = 0.0;
+  vtkSmartPointer<vtkMedialAxisSampler> sampler = Sample(surface, opt, sink, seconds);
   vtkPolyData* medial = sampler->GetOutput();
-
   if (!opt.Output.empty())
   {
-    vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetInputData(medial);
-    writer->SetFileName(opt.Output.c_str());
-    writer->SetDataModeToBinary();
-    if (!writer->Write() || !sink.LastError.empty())
-    {
-      Fail("cannot write '" + opt.Output + "': " + sink.LastError);
-    }
+    WriteVtp(medial, opt.Output, sink);
   }
   vtkSmartPointer<vtkPolyData> medialMesh;
   double medialMeshSeconds = 0.0;
   if (!opt.MedialMesh.empty())
   {
-    const auto meshStart = std::chrono::steady_clock::now();
-    medialMesh = RunMedialMesh(surface, medial, opt.Threads, sink);
-    medialMeshSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - meshStart).count();
-    WriteMedialMesh(medialMesh, opt.MedialMesh, sink);
+    const auto start = std::chrono::steady_clock::now();
+    medialMesh = RunMedialMesh(surface, medial, opt, sink);
+    medialMeshSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   vtkSmartPointer<vtkPolyData> reconstruction;
   double reconstructionSeconds = 0.0;
   if (!opt.Reconstruct.empty())
   {
-    const auto reconstructStart = std::chrono::steady_clock::now();
+    const auto start = std::chrono::steady_clock::now();
     reconstruction = Reconstruct(medial, opt, sink);
-    reconstructionSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - reconstructStart).count();
+    reconstructionSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     WriteReconstruction(reconstruction, opt.Reconstruct, sink);
   }
   if (!opt.Render.empty())
   {
-    if (planar)
-    {
-      Render2D(surface, graph, opt.Render, sink);
-    }
-    else
-    {
-      Render(surface, medial, opt.Render, sink, reconstruction, medialMesh);
-    }
+    RenderPicture(surface, medial, planar ? graph.Get() : nullptr, reconstruction, medialMesh, opt.Render, sink);
   }
   if (opt.Stats)
   {
-    const int threads = opt.Threads > 0 ? opt.Threads : omp_get_num_procs();
-    std::ostringstream js;
-    js.precision(6);
-    js << "{\"input\": " << JsonString(opt.Input.empty() ? "demo:jack" : opt.Input)
-       << ", \"triangles\": " << sampler->GetNumberOfTriangles() << ", \"samples\": " << opt.Samples
-       << ", \"medial_points\": " << medial->GetNumberOfPoints()
-       << ", \"discarded\": " << sampler->GetDiscardedSamples() << ", \"method\": "
-       << JsonString(vtkMedialAxisSampler::GetMethodName(opt.Method)) << ", \"threads\": " << threads
-       << ", \"min_angle\": " << opt.MinAngle << ", \"tolerance\": " << opt.Tolerance
-       << ", \"iterations_mean\": " << sampler->GetMeanIterations()
-       << ", \"capped\": " << sampler->GetCappedSamples()
-       << ", \"strategy\": "
-       << JsonString(vtkMedialAxisSampler::GetSamplingStrategyName(planar ? vtkMedialAxisSampler::RANDOM : opt.Strategy));
-    if (!planar && (opt.Strategy != vtkMedialAxisSampler::RANDOM || opt.Coverage > 0.0))
-    {
-      js << ", \"evaluated\": " << sampler->GetEvaluatedSamples() << ", \"seeds\": " << sampler->GetSeedSamples()
-         << ", \"links\": " << medial->GetNumberOfLines() << ", \"coverage\": " << opt.Coverage
-         << ", \"coverage_reached\": " << (sampler->GetCoverageReached() ? "true" : "false")
-         << ", \"max_coverage_gap\": " << sampler->GetMaxCoverageGap();
-    }
-    js << ", \"seconds\": " << seconds
-       << ReconstructionStats(surface, reconstruction, reconstructionSeconds, sampler, opt)
-       << MedialMeshStats(medialMesh, medialMeshSeconds);
-    if (graph)
-    {
-      vtkIdType junctions = 0, ends = 0;
-      auto* types = graph->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
-      for (vtkIdType i = 0; i < graph->GetNumberOfPoints(); ++i)
-      {
-        const int t = static_cast<int>(types->GetTuple1(i));
-        junctions += t == vtkMedialJunctionFilter::JUNCTION_POINT ? 1 : 0;
-        ends += t == vtkMedialJunctionFilter::END_POINT ? 1 : 0;
-      }
-      js << ", \"junctions\": " << junctions << ", \"end_points\": " << ends
-         << ", \"arcs\": " << graph->GetNumberOfLines();
-    }
-    js << "}";
-    std::cout << js.str() << std::endl;
+    std::cout << SamplerStats(opt, sampler, medial, planar, seconds)
+              << ReconstructionStats(surface, reconstruction, reconstructionSeconds, sampler, opt, sink)
+              << MedialMeshStats(medialMesh, medialMeshSeconds) << (graph ? GraphStats(graph) : std::string())
+              << "}" << std::endl;
   }
   return 0;
 }

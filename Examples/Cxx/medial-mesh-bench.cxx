@@ -7,25 +7,24 @@
 // solid's; the balls dropped and the largest radius reduction (inscribing). Prints a
 // table. Then the shape rebuilt from the mesh by vtkMedialBallUnion at N^3 grid points:
 // the interpolated envelope (MEDIAL_MESH primitives) and, for comparison, the union of
-// the same (inscribed) balls, each against the original with the error measure of
-// MedialReconstructionError.h (vertex to surface, both directions, % of the diagonal).
+// the same (inscribed) balls, each against the original with vtkMedialReconstructionError
+// (vertex to surface, both directions, and the two-sided area measure; % of the
+// diagonal).
 // Not a test: it checks nothing.
 //
 // usage: medial-mesh-bench [--threads T] [--samples N] [--resolution N] [--protrusion E] [MESH...]
 //        (--protrusion: the filter's ProtrusionTolerance; -1 turns the pruning off)
 //        (default: the five meshes of ../shared/data/meshes)
 
-#include "MedialReconstructionError.h"
-
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialBallUnion.h"
+#include "vtkMedialFileReader.h"
 #include "vtkMedialMeshFilter.h"
+#include "vtkMedialReconstructionError.h"
 
 #include "vtkDataArray.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
-#include "vtkPLYReader.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
@@ -40,26 +39,6 @@
 
 namespace
 {
-vtkSmartPointer<vtkPolyData> Read(const std::string& path)
-{
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  if (path.size() > 4 && path.substr(path.size() - 4) == ".ply")
-  {
-    vtkNew<vtkPLYReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    mesh->ShallowCopy(reader->GetOutput());
-  }
-  else
-  {
-    vtkNew<vtkOBJReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    mesh->ShallowCopy(reader->GetOutput());
-  }
-  return mesh;
-}
-
 double Seconds(std::chrono::steady_clock::time_point since)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
@@ -142,16 +121,22 @@ int main(int argc, char* argv[])
   std::printf("%-20s %6s %6s %6s %4s %5s %8s %5s %6s %6s %7s %9s %8s %8s %8s\n", "mesh", "V", "E", "F",
     "chi", "comp", "solid_chi", "solid", "seams", "junct", "dropped", "shrink%", "sample_s", "mesh_s",
     "total_s");
+  struct Error
+  {
+    double Max[2], Mean[2], Area, Seconds;
+  };
   struct ErrorRow
   {
     std::string Name;
-    medialbench::ReconstructionError Envelope, Union;
-    double EnvelopeSeconds, UnionSeconds;
+    Error Envelope, Union;
   };
   std::vector<ErrorRow> errors;
   for (const std::string& path : meshes)
   {
-    vtkSmartPointer<vtkPolyData> surface = Read(path);
+    vtkNew<vtkMedialFileReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    vtkPolyData* surface = reader->GetOutput();
     const std::string name = path.substr(path.find_last_of('/') + 1);
     vtkNew<vtkMedialAxisSampler> sampler;
     sampler->SetInputData(surface);
@@ -184,7 +169,7 @@ int main(int argc, char* argv[])
       sampleSeconds, meshSeconds, sampleSeconds + meshSeconds);
     std::fflush(stdout);
 
-    ErrorRow row{ name, {}, {}, 0.0, 0.0 };
+    ErrorRow row{ name, {}, {} };
     for (int primitives : { vtkMedialBallUnion::MEDIAL_MESH, vtkMedialBallUnion::BALLS })
     {
       vtkNew<vtkMedialBallUnion> rebuild;
@@ -194,27 +179,34 @@ int main(int argc, char* argv[])
       rebuild->SetNumberOfThreads(threads);
       start = std::chrono::steady_clock::now();
       rebuild->Update();
-      const double seconds = Seconds(start);
-      const medialbench::ReconstructionError e =
-        medialbench::MeasureReconstruction(surface, rebuild->GetOutput(), threads);
-      (primitives == vtkMedialBallUnion::BALLS ? row.Union : row.Envelope) = e;
-      (primitives == vtkMedialBallUnion::BALLS ? row.UnionSeconds : row.EnvelopeSeconds) = seconds;
+      Error& e = primitives == vtkMedialBallUnion::BALLS ? row.Union : row.Envelope;
+      e.Seconds = Seconds(start);
+      vtkNew<vtkMedialReconstructionError> measure;
+      measure->SetOriginalData(surface);
+      measure->SetReconstructionConnection(rebuild->GetOutputPort());
+      measure->SetNumberOfThreads(threads);
+      measure->Update();
+      for (int k = 0; k < 2; ++k)
+      {
+        e.Max[k] = measure->GetVertexMaxError()[k];
+        e.Mean[k] = measure->GetVertexMeanError()[k];
+      }
+      e.Area = measure->GetAreaHausdorff();
     }
     errors.push_back(row);
   }
   std::printf("\nreconstruction at %d^3, %% of the diagonal (max / mean), rebuilt -> original and "
               "original -> rebuilt\n",
     resolution);
-  std::printf("%-20s %-9s %9s %9s %9s %9s %8s\n", "mesh", "shape", "rec>max", "rec>mean", "orig>max",
-    "orig>mean", "seconds");
+  std::printf("%-20s %-9s %9s %9s %9s %9s %9s %8s\n", "mesh", "shape", "rec>max", "rec>mean", "orig>max",
+    "orig>mean", "area_hd", "seconds");
   for (const ErrorRow& row : errors)
   {
     for (int k = 0; k < 2; ++k)
     {
-      const medialbench::ReconstructionError& e = k == 0 ? row.Envelope : row.Union;
-      std::printf("%-20s %-9s %9.3f %9.4f %9.3f %9.4f %8.2f\n", row.Name.c_str(), k == 0 ? "envelope" : "balls",
-        100 * e.ToOriginal.Max, 100 * e.ToOriginal.Mean, 100 * e.ToReconstruction.Max,
-        100 * e.ToReconstruction.Mean, k == 0 ? row.EnvelopeSeconds : row.UnionSeconds);
+      const Error& e = k == 0 ? row.Envelope : row.Union;
+      std::printf("%-20s %-9s %9.3f %9.4f %9.3f %9.4f %9.3f %8.2f\n", row.Name.c_str(), k == 0 ? "envelope" : "balls",
+        100 * e.Max[0], 100 * e.Mean[0], 100 * e.Max[1], 100 * e.Mean[1], 100 * e.Area, e.Seconds);
     }
   }
   return 0;

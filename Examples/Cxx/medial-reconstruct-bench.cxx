@@ -2,29 +2,37 @@
 // medial-reconstruct-bench: how well the union of medial balls reconstructs a mesh.
 //
 // For each mesh, sampling strategy and sample count: vtkMedialAxisSampler (default
-// settings, bisection, all cores), then vtkMedialBallUnion at each resolution (N^3
-// sample dimensions), and the vertex-to-surface distance between reconstruction and
-// original in both directions, relative to the original's bounding-box diagonal.
-// Prints a table: "used" is the samples the strategy evaluated (ClosestNeighbor may
-// stop before the budget), "hd_max" / "hd_mean" the larger of the two directions.
+// settings, bisection, all cores), vtkMedialBallProtrusion, then vtkMedialBallUnion at
+// each resolution (N^3 sample dimensions) and vtkMedialReconstructionError: the
+// distance between reconstruction and original in both directions, relative to the
+// original's bounding-box diagonal. Prints a table: "used" is the samples the strategy
+// evaluated (ClosestNeighbor may stop before the budget), "hd_max" / "hd_mean" the
+// larger of the two directions from the vertices, "ar_max" / "ar_mean" the same from
+// points spread over the surfaces by area.
+//
+// --compare-locator adds two timings of vtkMedialReconstructionError's vertex measure
+// alone (both directions, builds included): "vertex_s" with its default engine, the
+// project's BVH, and "locator_s" with vtkStaticCellLocator.
 //
 // usage: medial-reconstruct-bench [--samples 10000,100000] [--resolutions 128,256]
 //                                 [--strategies random,closest-neighbor,face-distance]
-//                                 [--threads T] [--min-angle DEG] MESH...
-
-#include "MedialReconstructionError.h"
+//                                 [--threads T] [--min-angle DEG] [--compare-locator] MESH...
 
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialBallProtrusion.h"
 #include "vtkMedialBallUnion.h"
+#include "vtkMedialFileReader.h"
+#include "vtkMedialReconstructionError.h"
 
-#include "vtkAlgorithm.h"
-#include "vtkOBJReader.h"
-#include "vtkPLYReader.h"
-#include "vtkSTLReader.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
-#include "vtkXMLPolyDataReader.h"
 
+#include <omp.h>
+
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -59,35 +67,11 @@ std::vector<long long> ParseList(const char* text)
 
 vtkSmartPointer<vtkPolyData> Read(const std::string& path)
 {
-  const std::string ext = path.substr(path.find_last_of('.') + 1);
-  vtkSmartPointer<vtkAlgorithm> reader;
-  if (ext == "ply")
-  {
-    auto r = vtkSmartPointer<vtkPLYReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  }
-  else if (ext == "obj")
-  {
-    auto r = vtkSmartPointer<vtkOBJReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  }
-  else if (ext == "stl")
-  {
-    auto r = vtkSmartPointer<vtkSTLReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  }
-  else
-  {
-    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  }
+  vtkNew<vtkMedialFileReader> reader;
+  reader->SetFileName(path.c_str());
   reader->Update();
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->ShallowCopy(vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0)));
+  mesh->ShallowCopy(reader->GetOutput());
   return mesh;
 }
 
@@ -105,6 +89,7 @@ int main(int argc, char* argv[])
   double minAngle = -1.0; // negative: the sampler's default
   std::vector<std::string> meshes;
   std::vector<int> strategies = { vtkMedialAxisSampler::RANDOM };
+  bool compareLocator = false;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -138,6 +123,10 @@ int main(int argc, char* argv[])
     {
       minAngle = std::atof(argv[++i]);
     }
+    else if (a == "--compare-locator")
+    {
+      compareLocator = true;
+    }
     else if (a == "--threads" && i + 1 < argc)
     {
       threads = std::atoi(argv[++i]);
@@ -145,7 +134,8 @@ int main(int argc, char* argv[])
     else if (a == "-h" || a == "--help" || (!a.empty() && a[0] == '-'))
     {
       std::printf("usage: medial-reconstruct-bench [--samples 10000,100000] [--resolutions 128,256] "
-                  "[--strategies random,closest-neighbor,face-distance] [--threads T] [--min-angle DEG] MESH...\n");
+                  "[--strategies random,closest-neighbor,face-distance] [--threads T] [--min-angle DEG] "
+                  "[--compare-locator] MESH...\n");
       return a == "-h" || a == "--help" ? 0 : 1;
     }
     else
@@ -169,9 +159,14 @@ int main(int argc, char* argv[])
                 "original's bounding-box diagonal, vertex to surface; times in seconds (wall)\n",
       used, minAngle >= 0.0 ? minAngle : defaults->GetMinimumSeparationAngle(), load[0], load[1], load[2]);
   }
-  std::printf("%-16s %-16s %8s %8s %5s %9s %9s %9s %9s %9s %9s %9s %9s %8s %8s %8s\n", "mesh", "strategy",
-    "samples", "used", "res", "hd_max", "hd_mean", "rec>orig", "mean", "orig>rec", "mean", "voxel%", "protrude",
-    "sample_s", "union_s", "measure_s");
+  std::printf("%-16s %-16s %8s %8s %5s %9s %9s %9s %9s %9s %9s %9s %9s %9s %9s %8s %8s %9s", "mesh", "strategy",
+    "samples", "used", "res", "hd_max", "hd_mean", "ar_max", "ar_mean", "rec>orig", "mean", "orig>rec", "mean",
+    "voxel%", "protrude", "sample_s", "union_s", "measure_s");
+  if (compareLocator)
+  {
+    std::printf(" %8s %9s", "vertex_s", "locator_s");
+  }
+  std::printf("\n");
   for (const std::string& path : meshes)
   {
     vtkSmartPointer<vtkPolyData> mesh = Read(path);
@@ -200,8 +195,11 @@ int main(int argc, char* argv[])
         const double sampleSeconds = Seconds(start);
         // Balls crossing the surface (the sampler's separation angle allows it): the
         // reconstruction cannot be closer than this.
-        const double protrusion =
-          medialbench::BallProtrusion(sampler->GetOutput(), mesh, mesh->GetLength(), used);
+        vtkNew<vtkMedialBallProtrusion> protrusion;
+        protrusion->SetSurfaceData(mesh);
+        protrusion->SetBallsConnection(sampler->GetOutputPort());
+        protrusion->SetNumberOfThreads(threads);
+        protrusion->Update();
         for (long long n : resolutions)
         {
           vtkNew<vtkMedialBallUnion> ballUnion;
@@ -211,16 +209,45 @@ int main(int argc, char* argv[])
           start = std::chrono::steady_clock::now();
           ballUnion->Update();
           const double unionSeconds = Seconds(start);
+          vtkNew<vtkMedialReconstructionError> e;
+          e->SetOriginalData(mesh);
+          e->SetReconstructionConnection(ballUnion->GetOutputPort());
+          e->SetNumberOfThreads(threads);
           start = std::chrono::steady_clock::now();
-          const medialbench::ReconstructionError e =
-            medialbench::MeasureReconstruction(mesh, ballUnion->GetOutput(), used);
+          e->Update();
           const double measureSeconds = Seconds(start);
-          std::printf("%-16s %-16s %8lld %8lld %5lld %9.3f %9.4f %9.3f %9.4f %9.3f %9.4f %9.3f %9.3f %8.2f %8.2f %8.2f\n",
+          const double* vertexMax = e->GetVertexMaxError();
+          const double* vertexMean = e->GetVertexMeanError();
+          std::printf("%-16s %-16s %8lld %8lld %5lld %9.3f %9.4f %9.3f %9.4f %9.3f %9.4f %9.3f %9.4f %9.3f %9.3f "
+                      "%8.2f %8.2f %9.2f",
             name.c_str(), vtkMedialAxisSampler::GetSamplingStrategyName(strategy), count,
-            static_cast<long long>(sampler->GetEvaluatedSamples()), n, 100 * e.MaxRel(), 100 * e.MeanRel(),
-            100 * e.ToOriginal.Max, 100 * e.ToOriginal.Mean, 100 * e.ToReconstruction.Max,
-            100 * e.ToReconstruction.Mean, 100 * ballUnion->GetVoxelSize() / mesh->GetLength(),
-            100 * protrusion, sampleSeconds, unionSeconds, measureSeconds);
+            static_cast<long long>(sampler->GetEvaluatedSamples()), n, 100 * e->GetVertexHausdorff(),
+            100 * e->GetVertexMeanHausdorff(), 100 * e->GetAreaHausdorff(), 100 * e->GetAreaMeanHausdorff(),
+            100 * vertexMax[0], 100 * vertexMean[0], 100 * vertexMax[1], 100 * vertexMean[1],
+            100 * ballUnion->GetVoxelSize() / mesh->GetLength(), 100 * protrusion->GetMaxProtrusion(),
+            sampleSeconds, unionSeconds, measureSeconds);
+          if (compareLocator)
+          {
+            // The vertex measure alone (both directions, build included) with each engine.
+            double engineSeconds[2];
+            double hausdorff[2];
+            for (int engine : { vtkMedialReconstructionError::BVH, vtkMedialReconstructionError::CELL_LOCATOR })
+            {
+              vtkNew<vtkMedialReconstructionError> vertexOnly;
+              vertexOnly->SetOriginalData(mesh);
+              vertexOnly->SetReconstructionConnection(ballUnion->GetOutputPort());
+              vertexOnly->SetNumberOfThreads(threads);
+              vertexOnly->SetNumberOfAreaSamples(0);
+              vertexOnly->SetDistanceEngine(engine);
+              start = std::chrono::steady_clock::now();
+              vertexOnly->Update();
+              engineSeconds[engine] = Seconds(start);
+              hausdorff[engine] = vertexOnly->GetVertexHausdorff();
+            }
+            const bool same = std::fabs(hausdorff[0] - hausdorff[1]) <= 1e-12;
+            std::printf(" %8.2f %9.2f%s", engineSeconds[0], engineSeconds[1], same ? "" : " (DIFFERENT)");
+          }
+          std::printf("\n");
           std::fflush(stdout);
         }
       }

@@ -3,64 +3,36 @@
 
 Usage (from the build tree; needs an X display, e.g. under xvfb-run):
   PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 \\
-      Examples/Python/medial_axis_png.py [MESH.ply|.stl|.obj|.vtp] OUT.png
-Without a mesh it uses the built-in demo shape.
+      Examples/Python/medial_axis_png.py [MESH.ply|.stl|.obj|.off|.vtp|.vtk] OUT.png
+Without a mesh it uses the built-in demo shape. The picture is vtkMedialScene's, the
+same as `medial-axis --render`.
 """
 import sys
 
 import medialaxis
-from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkSTLReader
-from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkIOPLY import vtkPLYReader
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderWindow,
-                                         vtkRenderer, vtkWindowToImageFilter)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL backend)
-
-READERS = {".ply": vtkPLYReader, ".stl": vtkSTLReader, ".obj": vtkOBJReader, ".vtp": vtkXMLPolyDataReader}
 
 
 def surface_source(path):
     if path is None:
         return medialaxis.vtkMedialShapeSource()
-    reader = READERS[path[path.rfind("."):].lower()]()
+    reader = medialaxis.vtkMedialFileReader()  # the reader for the file's extension
     reader.SetFileName(path)
     return reader
 
 
-def render(surface_port, medial, out_png, size=(800, 600)):
-    surface_mapper = vtkPolyDataMapper()
-    surface_mapper.SetInputConnection(surface_port)
-    surface_mapper.ScalarVisibilityOff()
-    surface = vtkActor()
-    surface.SetMapper(surface_mapper)
-    surface.GetProperty().SetOpacity(0.2)
-    medial_mapper = vtkPolyDataMapper()
-    medial_mapper.SetInputData(medial)
-    medial_mapper.SetScalarRange(medial.GetPointData().GetArray("Radius").GetRange())
-    points = vtkActor()
-    points.SetMapper(medial_mapper)
-    points.GetProperty().SetPointSize(4)
-    points.GetProperty().RenderPointsAsSpheresOn()
-    renderer = vtkRenderer()
-    renderer.SetBackground(1, 1, 1)
-    renderer.AddActor(surface)
-    renderer.AddActor(points)
-    renderer.ResetCamera()
-    renderer.GetActiveCamera().Zoom(1.5)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetSize(*size)
-    window.AddRenderer(renderer)
-    window.Render()
+def render(surface, medial, out_png=None, size=(800, 600)):
+    """Renders the translucent surface and the medial points coloured by radius; writes
+    out_png when given. Returns the render window."""
+    scene = medialaxis.vtkMedialScene()
+    scene.SetSurface(surface)
+    scene.SetMedial(medial)
+    scene.SetWindowSize(*size)
     if out_png:
-        grab = vtkWindowToImageFilter()
-        grab.SetInput(window)
-        writer = vtkPNGWriter()
-        writer.SetInputConnection(grab.GetOutputPort())
-        writer.SetFileName(out_png)
-        writer.Write()
-    return window
+        if not scene.WritePNG(out_png):
+            raise RuntimeError(f"cannot write {out_png}")
+    else:
+        scene.Render()
+    return scene.GetRenderWindow()
 
 
 def main(argv):
@@ -73,7 +45,7 @@ def main(argv):
     sampler.SetInputConnection(source.GetOutputPort())
     sampler.SetNumberOfSamples(20000)
     sampler.Update()
-    render(source.GetOutputPort(), sampler.GetOutput(), argv[-1])
+    render(source.GetOutputDataObject(0), sampler.GetOutput(), argv[-1])
     print(f"{sampler.GetOutput().GetNumberOfPoints()} medial points -> {argv[-1]}")
     return 0
 

@@ -3,88 +3,51 @@
 
 Usage (from the build tree; the picture needs an X display, e.g. under xvfb-run):
   PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 \\
-      Examples/Python/medial_mesh.py [MESH.ply|.obj|.stl|.vtp] [OUT.ma] [OUT.png]
+      Examples/Python/medial_mesh.py [MESH.ply|.obj|.stl|.off|.vtp|.vtk] [OUT.ma] [OUT.png] [--by-type]
 Without a mesh it uses the built-in demo shape. Prints the mesh's size and topology next
-to the solid's. The picture shows the mesh coloured by ball radius inside the
-translucent surface, seen along the surface's shortest bounding-box axis.
+to the solid's. The picture (vtkMedialScene) shows the mesh inside the translucent
+surface, coloured by ball radius (or, with --by-type, by MedialPointType), seen along
+the surface's shortest bounding-box side with the middle one up.
 """
 import sys
 
 import medialaxis
-from vtkmodules.vtkCommonCore import vtkLookupTable
-from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkSTLReader
-from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkIOPLY import vtkPLYReader
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderWindow,
-                                         vtkRenderer, vtkWindowToImageFilter)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL backend)
-
-READERS = {".ply": vtkPLYReader, ".stl": vtkSTLReader, ".obj": vtkOBJReader, ".vtp": vtkXMLPolyDataReader}
 
 
 def surface_source(path):
     if path is None:
         return medialaxis.vtkMedialShapeSource()
-    reader = READERS[path[path.rfind("."):].lower()]()
+    reader = medialaxis.vtkMedialFileReader()  # the reader for the file's extension
     reader.SetFileName(path)
     return reader
 
 
-def render(surface, mesh, out_png, size=(1000, 760)):
-    surface_mapper = vtkPolyDataMapper()
-    surface_mapper.SetInputData(surface)
-    surface_mapper.ScalarVisibilityOff()
-    shell = vtkActor()
-    shell.SetMapper(surface_mapper)
-    shell.GetProperty().SetColor(0.80, 0.82, 0.86)
-    shell.GetProperty().SetOpacity(0.18)
-    colours = vtkLookupTable()
-    colours.SetHueRange(0.667, 0.0)  # blue (thin) to red (thick)
-    colours.Build()
-    mesh_mapper = vtkPolyDataMapper()
-    mesh_mapper.SetInputData(mesh)
-    mesh_mapper.SetLookupTable(colours)
-    mesh_mapper.SetScalarModeToUsePointFieldData()
-    mesh_mapper.SelectColorArray("Radius")
-    mesh_mapper.SetScalarRange(mesh.GetPointData().GetArray("Radius").GetRange())
-    medial = vtkActor()
-    medial.SetMapper(mesh_mapper)
-    renderer = vtkRenderer()
-    renderer.SetBackground(1, 1, 1)
-    renderer.AddActor(shell)
-    renderer.AddActor(medial)
-    # Look along the shortest side of the box, with the middle one up.
+def render(surface, mesh, out_png, by_type=False):
+    scene = medialaxis.vtkMedialScene()
+    scene.SetSurface(surface)
+    scene.SetMedial(mesh)
+    scene.SetSurfaceOpacity(0.18)
+    scene.SetWindowSize(1000, 760)
+    if by_type:
+        scene.SetColorByToPointType()
     b = surface.GetBounds()
     sides = sorted(range(3), key=lambda k: b[2 * k + 1] - b[2 * k])
-    camera = renderer.GetActiveCamera()
     centre = [(b[2 * k] + b[2 * k + 1]) / 2 for k in range(3)]
-    camera.SetFocalPoint(centre)
-    camera.SetPosition([centre[k] + (1.0 if k == sides[0] else 0.0) for k in range(3)])
-    camera.SetViewUp([1.0 if k == sides[1] else 0.0 for k in range(3)])
-    renderer.ResetCamera()
-    camera.Azimuth(25)
-    camera.Elevation(15)
-    renderer.ResetCamera()
-    camera.Zoom(1.35)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetSize(*size)
-    window.AddRenderer(renderer)
-    window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    writer = vtkPNGWriter()
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.SetFileName(out_png)
-    writer.Write()
+    # Look along the shortest side, a little from the front and above.
+    position = [centre[k] + (1.0 if k == sides[0] else 0.0) for k in range(3)]
+    position[sides[2]] += 0.45
+    position[sides[1]] += 0.25
+    scene.SetView(position, centre, [1.0 if k == sides[1] else 0.0 for k in range(3)])
+    scene.SetZoom(1.2)
+    if not scene.WritePNG(out_png):
+        raise RuntimeError(f"cannot write {out_png}")
 
 
 def main(argv):
-    paths = argv[1:]
-    mesh_path = paths.pop(0) if paths and not paths[0].endswith((".ma", ".png")) else None
-    ma_path = next((p for p in paths if p.endswith(".ma")), None)
-    png_path = next((p for p in paths if p.endswith(".png")), None)
+    args = [a for a in argv[1:] if a != "--by-type"]
+    mesh_path = args.pop(0) if args and not args[0].endswith((".ma", ".png")) else None
+    ma_path = next((a for a in args if a.endswith(".ma")), None)
+    png_path = next((a for a in args if a.endswith(".png")), None)
     source = surface_source(mesh_path)
     source.Update()
     medial_mesh = medialaxis.vtkMedialMeshFilter()
@@ -102,7 +65,7 @@ def main(argv):
         writer.SetFileName(ma_path)
         writer.Write()
     if png_path:
-        render(source.GetOutput(), mesh, png_path)
+        render(source.GetOutputDataObject(0), mesh, png_path, "--by-type" in argv)
     return 0
 
 

@@ -3,9 +3,10 @@
 
 Usage (from the build tree):
   PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 Examples/Python/reconstruct.py \\
-      [MESH.ply] [OUT.stl]
-Without a mesh it uses the built-in demo shape. Prints the largest distance from the
-reconstruction's vertices to the original surface, relative to its bounding-box diagonal.
+      [MESH.ply|.obj|.stl|.off|.vtp|.vtk] [OUT.stl]
+Without a mesh it uses the built-in demo shape. Prints the distance between the
+reconstruction and the original in both directions (from the vertices, and from points
+spread over the surfaces by area), relative to the original's bounding-box diagonal.
 """
 import sys
 
@@ -13,43 +14,38 @@ import numpy as np
 
 import medialaxis
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonCore import reference
-from vtkmodules.vtkCommonDataModel import vtkStaticCellLocator
-from vtkmodules.vtkFiltersCore import vtkTriangleFilter
 from vtkmodules.vtkIOGeometry import vtkSTLWriter
-from vtkmodules.vtkIOPLY import vtkPLYReader
 
-if len(sys.argv) > 1 and sys.argv[1].lower().endswith(".ply"):
-    source = vtkPLYReader()
+if len(sys.argv) > 1:
+    source = medialaxis.vtkMedialFileReader()
     source.SetFileName(sys.argv[1])
 else:
     source = medialaxis.vtkMedialShapeSource()
-surface = vtkTriangleFilter()
-surface.SetInputConnection(source.GetOutputPort())
-surface.Update()
 
 sampler = medialaxis.vtkMedialAxisSampler()
-sampler.SetInputConnection(surface.GetOutputPort())
+sampler.SetInputConnection(source.GetOutputPort())
 sampler.SetNumberOfSamples(20000)
 sampler.SetMinimumSeparationAngle(0)  # exact polyhedral balls: no protrusion
 union = medialaxis.vtkMedialBallUnion()
 union.SetInputConnection(sampler.GetOutputPort())
 union.SetSampleDimensions(128, 128, 128)
-union.Update()
-rebuilt = union.GetOutput()
 
-locator = vtkStaticCellLocator()
-locator.SetDataSet(surface.GetOutput())
-locator.BuildLocator()
-closest, cell, sub, dist2 = [0.0, 0.0, 0.0], reference(0), reference(0), reference(0.0)
-distances = []
-for p in vtk_to_numpy(rebuilt.GetPoints().GetData()):
-    locator.FindClosestPoint(p, closest, cell, sub, dist2)
-    distances.append(dist2.get() ** 0.5)
-diagonal = surface.GetOutput().GetLength()
+error = medialaxis.vtkMedialReconstructionError()
+error.SetOriginalConnection(source.GetOutputPort())
+error.SetReconstructionConnection(union.GetOutputPort())
+error.Update()
+E = medialaxis.vtkMedialReconstructionError
+to_original, to_rebuilt = E.RECONSTRUCTION_TO_ORIGINAL, E.ORIGINAL_TO_RECONSTRUCTION
+rebuilt = error.GetOutput(0)  # the reconstruction, with each vertex's SurfaceDistance
+distance = vtk_to_numpy(rebuilt.GetPointData().GetArray("SurfaceDistance"))
 print(f"{rebuilt.GetNumberOfCells()} triangles; reconstruction to original: "
-      f"max {100 * max(distances) / diagonal:.3f}%, mean {100 * np.mean(distances) / diagonal:.4f}% "
-      "of the diagonal")
+      f"max {100 * error.GetVertexMaxError()[to_original]:.3f}%, "
+      f"mean {100 * error.GetVertexMeanError()[to_original]:.4f}% of the diagonal "
+      f"(by area: max {100 * error.GetAreaMaxError()[to_original]:.3f}%); "
+      f"{np.count_nonzero(distance > 0.001 * error.GetDiagonal())} vertices farther than 0.1%")
+print(f"original to reconstruction: max {100 * error.GetVertexMaxError()[to_rebuilt]:.3f}%, "
+      f"mean {100 * error.GetVertexMeanError()[to_rebuilt]:.4f}% "
+      f"(by area: max {100 * error.GetAreaMaxError()[to_rebuilt]:.3f}%)")
 
 if len(sys.argv) > 2:
     writer = vtkSTLWriter()

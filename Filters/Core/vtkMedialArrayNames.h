@@ -29,6 +29,12 @@
  * SolidComponents.
  *
  * The distance field of a reconstruction (vtkMedialBallUnion output 1): Distance.
+ *
+ * Measures (vtkMedialReconstructionError, vtkMedialBallProtrusion): point data
+ * SurfaceDistance (a vertex's distance to the other shape) and Protrusion (a ball's
+ * radius minus its centre's distance to the surface); field data VertexMaxError,
+ * VertexMeanError, AreaMaxError, AreaMeanError (two components: reconstruction to
+ * original, original to reconstruction) and MaxProtrusion, relative to the diagonal.
  */
 #ifndef vtkMedialArrayNames_h
 #define vtkMedialArrayNames_h
@@ -76,6 +82,15 @@ constexpr const char* SolidComponents = "SolidComponents";
 
 // The reconstruction's field image.
 constexpr const char* Distance = "Distance";
+
+// Measures of a reconstruction and of the balls.
+constexpr const char* SurfaceDistance = "SurfaceDistance";
+constexpr const char* Protrusion = "Protrusion";
+constexpr const char* VertexMaxError = "VertexMaxError";
+constexpr const char* VertexMeanError = "VertexMeanError";
+constexpr const char* AreaMaxError = "AreaMaxError";
+constexpr const char* AreaMeanError = "AreaMeanError";
+constexpr const char* MaxProtrusion = "MaxProtrusion";
 }
 
 #endif

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialPolygon.h"
+#include "vtkMedialPlane.h"
 
 #include "vtkCellArray.h"
 #include "vtkIdList.h"
@@ -66,181 +67,105 @@ bool InsideLoop(const std::vector<double>& pts, const std::vector<int>& loop, co
 }
 }
 
-bool vtkMedialPolygon::LooksPlanarLoops(vtkPolyData* input)
+// Loops as the passes of Build see them: merged 3D points, then vertex indices per
+// loop with the input cell each came from.
+struct vtkMedialPolygon::LoopSet
 {
-  if (!input || input->GetNumberOfPoints() < 3 || input->GetNumberOfStrips() > 0)
-  {
-    return false;
-  }
-  if (input->GetNumberOfLines() > 0)
-  {
-    if (input->GetNumberOfPolys() > 0)
-    {
-      return false;
-    }
-    // Loops: a closed polyline, or several pieces that may chain into loops (a
-    // single open piece is not a 2D shape at all and gets the surface error).
-    vtkIdType npts;
-    const vtkIdType* ids;
-    vtkCellArray* lines = input->GetLines();
-    for (lines->InitTraversal(); lines->GetNextCell(npts, ids);)
-    {
-      double a[3], b[3];
-      if (npts >= 2)
-      {
-        input->GetPoint(ids[0], a);
-        input->GetPoint(ids[npts - 1], b);
-        if (a[0] == b[0] && a[1] == b[1] && a[2] == b[2])
-        {
-          return true;
-        }
-      }
-    }
-    return input->GetNumberOfLines() >= 3;
-  }
-  // Polygons: 2D only when all points lie in one plane.
-  double bounds[6];
-  input->GetBounds(bounds);
-  const double diag = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
-    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) + (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
-  // A closed surface is never planar; a quick plane fit decides.
-  double n[3] = { 0, 0, 0 }, c[3] = { 0, 0, 0 };
-  const vtkIdType np = input->GetNumberOfPoints();
-  for (vtkIdType i = 0; i < np; ++i)
-  {
-    double p[3];
-    input->GetPoint(i, p);
-    for (int k = 0; k < 3; ++k)
-    {
-      c[k] += p[k] / np;
-    }
-  }
-  vtkIdType npts;
-  const vtkIdType* ids;
-  vtkCellArray* polys = input->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
-  {
-    for (vtkIdType i = 0; i < npts; ++i)
-    {
-      double p[3], q[3];
-      input->GetPoint(ids[i], p);
-      input->GetPoint(ids[(i + 1) % npts], q);
-      n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-      n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-      n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-    }
-    // A loop whose signed area cancels (a symmetric bow tie) has no Newell normal:
-    // take the first corner that is not straight instead.
-    for (vtkIdType i = 0; i + 2 < npts && n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0; ++i)
-    {
-      double p[3], q[3], r[3];
-      input->GetPoint(ids[i], p);
-      input->GetPoint(ids[i + 1], q);
-      input->GetPoint(ids[i + 2], r);
-      const double u[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
-      const double v[3] = { r[0] - p[0], r[1] - p[1], r[2] - p[2] };
-      n[0] = u[1] * v[2] - u[2] * v[1];
-      n[1] = u[2] * v[0] - u[0] * v[2];
-      n[2] = u[0] * v[1] - u[1] * v[0];
-    }
-    break; // the first polygon's plane
-  }
-  const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  if (!(len > 0.0))
-  {
-    return false;
-  }
-  for (vtkIdType i = 0; i < np; ++i)
-  {
-    double p[3];
-    input->GetPoint(i, p);
-    const double d = ((p[0] - c[0]) * n[0] + (p[1] - c[1]) * n[1] + (p[2] - c[2]) * n[2]) / len;
-    if (std::abs(d) > 1e-6 * diag)
-    {
-      return false;
-    }
-  }
-  return true;
-}
+  std::vector<std::array<double, 3>> XYZ; // merged points
+  std::vector<int> Canonical;             // input point -> merged point
+  std::vector<std::vector<int>> Loops;
+  std::vector<vtkIdType> LoopCells;
+  std::vector<std::vector<int>> Open; // open polylines, chained into loops
+  std::vector<vtkIdType> OpenCells;
+  double Diagonal3D = 0.0;      // of the loops' bounding box
+  std::vector<double> Points2D; // merged points in the plane's frame
+};
 
 bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
 {
   this->Points.clear();
   this->Edges.clear();
   this->LoopEdges.clear();
+  LoopSet set;
+  // The passes of the class comment, in order; each one stops at the first problem.
+  return this->MergePoints(input, set, error) && this->ReadLoops(input, set, error) &&
+    this->ChainOpenPolylines(set, error) && this->FitFrame(set, error) && this->ProjectLoops(set, error) &&
+    this->CleanLoops(set, error) && this->OrientLoops(set, error) && this->CheckNesting(error);
+}
+
+// 1. Merges coincident points; keeps the 3D coordinates of the canonical points.
+bool vtkMedialPolygon::MergePoints(vtkPolyData* input, LoopSet& set, std::string& error) const
+{
   const vtkIdType np = input ? input->GetNumberOfPoints() : 0;
   if (np == 0)
   {
     error = "input has no points";
     return false;
   }
-  // 1. Merge coincident points; keep 3D coordinates of the canonical points.
-  std::vector<std::array<double, 3>> xyz;
-  std::vector<int> canonical(static_cast<size_t>(np));
+  set.Canonical.resize(static_cast<size_t>(np));
+  std::map<std::array<double, 3>, int> seen;
+  for (vtkIdType i = 0; i < np; ++i)
   {
-    std::map<std::array<double, 3>, int> seen;
-    for (vtkIdType i = 0; i < np; ++i)
+    std::array<double, 3> p;
+    input->GetPoint(i, p.data());
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
     {
-      std::array<double, 3> p;
-      input->GetPoint(i, p.data());
-      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-      {
-        error = "input has NaN or infinite coordinates";
-        return false;
-      }
-      auto it = seen.emplace(p, static_cast<int>(xyz.size())).first;
-      if (it->second == static_cast<int>(xyz.size()))
-      {
-        xyz.push_back(p);
-      }
-      canonical[i] = it->second;
+      error = "input has NaN or infinite coordinates";
+      return false;
     }
+    auto it = seen.emplace(p, static_cast<int>(set.XYZ.size())).first;
+    if (it->second == static_cast<int>(set.XYZ.size()))
+    {
+      set.XYZ.push_back(p);
+    }
+    set.Canonical[i] = it->second;
   }
+  return true;
+}
 
-  // 2. Loops: polygon cells, closed polylines, and open polylines chained end to end.
-  std::vector<std::vector<int>> loops;
-  std::vector<vtkIdType> loopCells;
+// 2. Loops: polygon cells and closed polylines; open polylines are kept for chaining.
+// Polygons that share edges are a planar mesh (e.g. a triangulated polygon): its
+// region is bounded by the edges used once, which join the open polylines.
+bool vtkMedialPolygon::ReadLoops(vtkPolyData* input, LoopSet& set, std::string& error) const
+{
   vtkIdType cellId = 0;
   vtkIdType npts;
   const vtkIdType* ids;
   vtkCellArray* verts = input->GetVerts();
   cellId += verts ? verts->GetNumberOfCells() : 0;
-  std::vector<std::vector<int>> open;
-  std::vector<vtkIdType> openCells;
+  auto cellLoop = [&]() {
+    std::vector<int> l;
+    for (vtkIdType i = 0; i < npts; ++i)
+    {
+      l.push_back(set.Canonical[ids[i]]);
+    }
+    return l;
+  };
   if (vtkCellArray* lines = input->GetLines())
   {
     for (lines->InitTraversal(); lines->GetNextCell(npts, ids); ++cellId)
     {
-      std::vector<int> l;
-      for (vtkIdType i = 0; i < npts; ++i)
-      {
-        l.push_back(canonical[ids[i]]);
-      }
+      std::vector<int> l = cellLoop();
       if (l.size() >= 2 && l.front() == l.back())
       {
         l.pop_back();
-        loops.push_back(l);
-        loopCells.push_back(cellId);
+        set.Loops.push_back(l);
+        set.LoopCells.push_back(cellId);
       }
       else if (l.size() >= 2)
       {
-        open.push_back(l);
-        openCells.push_back(cellId);
+        set.Open.push_back(l);
+        set.OpenCells.push_back(cellId);
       }
     }
   }
-  const size_t firstPolygon = loops.size();
+  const size_t firstPolygon = set.Loops.size();
   if (vtkCellArray* polys = input->GetPolys())
   {
     for (polys->InitTraversal(); polys->GetNextCell(npts, ids); ++cellId)
     {
-      std::vector<int> l;
-      for (vtkIdType i = 0; i < npts; ++i)
-      {
-        l.push_back(canonical[ids[i]]);
-      }
-      loops.push_back(l);
-      loopCells.push_back(cellId);
+      set.Loops.push_back(cellLoop());
+      set.LoopCells.push_back(cellId);
     }
   }
   if (input->GetNumberOfStrips() > 0)
@@ -248,126 +173,135 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
     error = "input has triangle strips, not planar loops";
     return false;
   }
+  SharedEdgesToPolylines(set, firstPolygon);
+  return true;
+}
+
+// Polygons from `firstPolygon` on that share an edge become their boundary: the
+// edges used once, as two-point open polylines.
+void vtkMedialPolygon::SharedEdgesToPolylines(LoopSet& set, size_t firstPolygon)
+{
+  std::map<std::pair<int, int>, int> uses;
+  bool shared = false;
+  for (size_t i = firstPolygon; i < set.Loops.size(); ++i)
   {
-    // Polygons sharing edges are a planar mesh (e.g. a triangulated polygon): its
-    // region is bounded by the edges used once, chained below like polylines.
-    std::map<std::pair<int, int>, int> uses;
-    bool shared = false;
-    for (size_t i = firstPolygon; i < loops.size(); ++i)
+    // An edge counts once per polygon (a 2-point polygon runs it both ways).
+    std::set<std::pair<int, int>> own;
+    const auto& l = set.Loops[i];
+    for (size_t k = 0; k < l.size(); ++k)
     {
-      // An edge counts once per polygon (a 2-point polygon runs it both ways).
-      std::set<std::pair<int, int>> own;
-      const auto& l = loops[i];
-      for (size_t k = 0; k < l.size(); ++k)
+      const int a = l[k], b = l[(k + 1) % l.size()];
+      if (a != b)
       {
-        const int a = l[k], b = l[(k + 1) % l.size()];
-        if (a != b)
-        {
-          own.insert({ std::min(a, b), std::max(a, b) });
-        }
-      }
-      for (const auto& e : own)
-      {
-        shared = ++uses[e] > 1 || shared;
+        own.insert({ std::min(a, b), std::max(a, b) });
       }
     }
-    if (shared)
+    for (const auto& e : own)
     {
-      for (size_t i = firstPolygon; i < loops.size(); ++i)
-      {
-        const auto& l = loops[i];
-        for (size_t k = 0; k < l.size(); ++k)
-        {
-          const int a = l[k], b = l[(k + 1) % l.size()];
-          if (a != b && uses[{ std::min(a, b), std::max(a, b) }] == 1)
-          {
-            open.push_back({ a, b });
-            openCells.push_back(loopCells[i]);
-          }
-        }
-      }
-      loops.resize(firstPolygon);
-      loopCells.resize(firstPolygon);
+      shared = ++uses[e] > 1 || shared;
     }
   }
-  if (!open.empty())
+  if (!shared)
   {
-    // Chain open polylines sharing end points; every end must meet exactly one other end.
-    std::map<int, std::vector<int>> ends;
-    for (size_t i = 0; i < open.size(); ++i)
+    return;
+  }
+  for (size_t i = firstPolygon; i < set.Loops.size(); ++i)
+  {
+    const auto& l = set.Loops[i];
+    for (size_t k = 0; k < l.size(); ++k)
     {
-      ends[open[i].front()].push_back(static_cast<int>(i));
-      ends[open[i].back()].push_back(static_cast<int>(i));
-    }
-    for (const auto& kv : ends)
-    {
-      if (kv.second.size() != 2)
+      const int a = l[k], b = l[(k + 1) % l.size()];
+      if (a != b && uses[{ std::min(a, b), std::max(a, b) }] == 1)
       {
-        std::ostringstream os;
-        os << (kv.second.size() < 2 ? "open polyline: an end point meets no other polyline"
-                                    : "polylines branch at a point")
-           << " (point " << kv.first << ")";
-        error = os.str();
+        set.Open.push_back({ a, b });
+        set.OpenCells.push_back(set.LoopCells[i]);
+      }
+    }
+  }
+  set.Loops.resize(firstPolygon);
+  set.LoopCells.resize(firstPolygon);
+}
+
+// 2. Chains open polylines sharing end points into loops; every end must meet exactly
+// one other end.
+bool vtkMedialPolygon::ChainOpenPolylines(LoopSet& set, std::string& error) const
+{
+  const auto& open = set.Open;
+  std::map<int, std::vector<int>> ends;
+  for (size_t i = 0; i < open.size(); ++i)
+  {
+    ends[open[i].front()].push_back(static_cast<int>(i));
+    ends[open[i].back()].push_back(static_cast<int>(i));
+  }
+  for (const auto& kv : ends)
+  {
+    if (kv.second.size() != 2)
+    {
+      std::ostringstream os;
+      os << (kv.second.size() < 2 ? "open polyline: an end point meets no other polyline"
+                                  : "polylines branch at a point")
+         << " (point " << kv.first << ")";
+      error = os.str();
+      return false;
+    }
+  }
+  std::vector<bool> used(open.size(), false);
+  for (size_t s = 0; s < open.size(); ++s)
+  {
+    if (used[s])
+    {
+      continue;
+    }
+    used[s] = true;
+    std::vector<int> chain = open[s];
+    while (chain.back() != chain.front())
+    {
+      int next = -1;
+      for (int c : ends[chain.back()])
+      {
+        if (!used[c])
+        {
+          next = c;
+        }
+      }
+      if (next < 0)
+      {
+        error = "open polyline: chained polylines do not close";
         return false;
       }
-    }
-    std::vector<bool> used(open.size(), false);
-    for (size_t s = 0; s < open.size(); ++s)
-    {
-      if (used[s])
+      used[next] = true;
+      std::vector<int> piece = open[next];
+      if (piece.front() != chain.back())
       {
-        continue;
+        std::reverse(piece.begin(), piece.end());
       }
-      used[s] = true;
-      std::vector<int> chain = open[s];
-      while (chain.back() != chain.front())
-      {
-        const auto& cand = ends[chain.back()];
-        int next = -1;
-        for (int c : cand)
-        {
-          if (!used[c])
-          {
-            next = c;
-          }
-        }
-        if (next < 0)
-        {
-          error = "open polyline: chained polylines do not close";
-          return false;
-        }
-        used[next] = true;
-        std::vector<int> piece = open[next];
-        if (piece.front() != chain.back())
-        {
-          std::reverse(piece.begin(), piece.end());
-        }
-        chain.insert(chain.end(), piece.begin() + 1, piece.end());
-      }
-      chain.pop_back();
-      loops.push_back(chain);
-      loopCells.push_back(openCells[s]);
+      chain.insert(chain.end(), piece.begin() + 1, piece.end());
     }
+    chain.pop_back();
+    set.Loops.push_back(chain);
+    set.LoopCells.push_back(set.OpenCells[s]);
   }
-  if (loops.empty())
+  if (set.Loops.empty())
   {
     error = "input has no polygons or closed polylines";
     return false;
   }
+  return true;
+}
 
-  // 3. Plane: Newell normal of the loop with the largest one.
+// 3. The plane: Newell normal of the loop with the largest one (or, with no net area,
+// the plane of the widest vertex triangle), sign made canonical; the frame's origin
+// is the loops' bounding-box centre moved onto the plane, U = axis x N, V = N x U
+// with `axis` the world axis most perpendicular to N.
+bool vtkMedialPolygon::FitFrame(LoopSet& set, std::string& error)
+{
+  const auto& xyz = set.XYZ;
   double best = -1.0, normal[3] = { 0, 0, 1 };
-  for (const auto& l : loops)
+  for (const auto& l : set.Loops)
   {
-    double n[3] = { 0, 0, 0 };
-    for (size_t i = 0; i < l.size(); ++i)
-    {
-      const auto& p = xyz[l[i]];
-      const auto& q = xyz[l[(i + 1) % l.size()]];
-      n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-      n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-      n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-    }
+    double n[3];
+    vtkMedialPlane::NewellNormal(static_cast<vtkIdType>(l.size()),
+      [&](vtkIdType i, double p[3]) { std::copy(xyz[l[i]].begin(), xyz[l[i]].end(), p); }, n);
     const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     if (len > best)
     {
@@ -379,7 +313,7 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
     }
   }
   double lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
-  for (const auto& l : loops)
+  for (const auto& l : set.Loops)
   {
     for (int v : l)
     {
@@ -397,66 +331,12 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
     error = "a loop has fewer than 3 distinct vertices";
     return false;
   }
-  if (!(best > 1e-12 * diag3 * diag3))
+  if (!(best > 1e-12 * diag3 * diag3) && !(WidestTriangleNormal(set, normal) > 1e-12 * diag3 * diag3))
   {
-    // No net area (e.g. a bow tie): take the plane of the widest vertex triangle, so
-    // that the validation below names the real problem.
-    const auto& p0 = xyz[loops[0][0]];
-    std::array<double, 3> far = p0;
-    double farthest = 0.0;
-    for (const auto& l : loops)
-    {
-      for (int v : l)
-      {
-        const double d = std::hypot(std::hypot(xyz[v][0] - p0[0], xyz[v][1] - p0[1]), xyz[v][2] - p0[2]);
-        if (d > farthest)
-        {
-          farthest = d;
-          far = xyz[v];
-        }
-      }
-    }
-    best = 0.0;
-    for (const auto& l : loops)
-    {
-      for (int v : l)
-      {
-        const double a[3] = { far[0] - p0[0], far[1] - p0[1], far[2] - p0[2] };
-        const double b[3] = { xyz[v][0] - p0[0], xyz[v][1] - p0[1], xyz[v][2] - p0[2] };
-        const double n[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-        const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        if (len > best)
-        {
-          best = len;
-          for (int k = 0; k < 3; ++k)
-          {
-            normal[k] = n[k] / len;
-          }
-        }
-      }
-    }
-    if (!(best > 1e-12 * diag3 * diag3))
-    {
-      error = "a loop has fewer than 3 distinct vertices (all points collinear)";
-      return false;
-    }
+    error = "a loop has fewer than 3 distinct vertices (all points collinear)";
+    return false;
   }
-  // Canonical sign: reversing every loop must not mirror the frame.
-  int major = 0;
-  for (int k = 1; k < 3; ++k)
-  {
-    if (std::abs(normal[k]) > std::abs(normal[major]))
-    {
-      major = k;
-    }
-  }
-  if (normal[major] < 0)
-  {
-    for (double& c : normal)
-    {
-      c = -c;
-    }
-  }
+  vtkMedialPlane::CanonicalSign(normal);
   double* origin = this->Frame[0];
   double* u = this->Frame[1];
   double* v = this->Frame[2];
@@ -466,35 +346,30 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
     this->Frame[3][k] = normal[k];
   }
   // Put the origin on the plane (through the mean of the vertices).
+  double mean[3] = { 0, 0, 0 };
+  size_t count = 0;
+  for (const auto& l : set.Loops)
   {
-    double mean[3] = { 0, 0, 0 };
-    size_t count = 0;
-    for (const auto& l : loops)
+    for (int p : l)
     {
-      for (int p : l)
+      for (int k = 0; k < 3; ++k)
       {
-        for (int k = 0; k < 3; ++k)
-        {
-          mean[k] += xyz[p][k];
-        }
-        ++count;
+        mean[k] += xyz[p][k];
       }
-    }
-    double off = 0.0;
-    for (int k = 0; k < 3; ++k)
-    {
-      off += (mean[k] / count - origin[k]) * normal[k];
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      origin[k] += off * normal[k];
+      ++count;
     }
   }
-  const int minor = std::abs(normal[0]) <= std::abs(normal[1])
-    ? (std::abs(normal[0]) <= std::abs(normal[2]) ? 0 : 2)
-    : (std::abs(normal[1]) <= std::abs(normal[2]) ? 1 : 2);
+  double off = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    off += (mean[k] / count - origin[k]) * normal[k];
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    origin[k] += off * normal[k];
+  }
   double axis[3] = { 0, 0, 0 };
-  axis[minor] = 1.0;
+  axis[vtkMedialPlane::LeastAxis(normal)] = 1.0;
   // u = axis x n, v = n x u: (u, v, n) is right-handed.
   u[0] = axis[1] * normal[2] - axis[2] * normal[1];
   u[1] = axis[2] * normal[0] - axis[0] * normal[2];
@@ -507,16 +382,72 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
   v[0] = normal[1] * u[2] - normal[2] * u[1];
   v[1] = normal[2] * u[0] - normal[0] * u[2];
   v[2] = normal[0] * u[1] - normal[1] * u[0];
+  set.Diagonal3D = diag3;
+  return true;
+}
 
+// Loops with no net area (e.g. a bow tie): the unit normal of the widest triangle of
+// the first vertex, the farthest vertex from it and any other vertex, so that the
+// validation names the real problem. Returns that triangle's doubled area.
+double vtkMedialPolygon::WidestTriangleNormal(const LoopSet& set, double normal[3])
+{
+  const auto& xyz = set.XYZ;
+  const auto& p0 = xyz[set.Loops[0][0]];
+  std::array<double, 3> far = p0;
+  double farthest = 0.0;
+  for (const auto& l : set.Loops)
+  {
+    for (int v : l)
+    {
+      const double d = std::hypot(std::hypot(xyz[v][0] - p0[0], xyz[v][1] - p0[1]), xyz[v][2] - p0[2]);
+      if (d > farthest)
+      {
+        farthest = d;
+        far = xyz[v];
+      }
+    }
+  }
+  double best = 0.0;
+  for (const auto& l : set.Loops)
+  {
+    for (int v : l)
+    {
+      const double a[3] = { far[0] - p0[0], far[1] - p0[1], far[2] - p0[2] };
+      const double b[3] = { xyz[v][0] - p0[0], xyz[v][1] - p0[1], xyz[v][2] - p0[2] };
+      const double n[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+      const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      if (len > best)
+      {
+        best = len;
+        for (int k = 0; k < 3; ++k)
+        {
+          normal[k] = n[k] / len;
+        }
+      }
+    }
+  }
+  return best;
+}
+
+// 3. The points in the plane's frame; every point of a loop must lie within 1e-6 of the
+// diagonal from the plane.
+bool vtkMedialPolygon::ProjectLoops(LoopSet& set, std::string& error) const
+{
+  const auto& xyz = set.XYZ;
+  const double* origin = this->Frame[0];
+  const double* u = this->Frame[1];
+  const double* v = this->Frame[2];
+  const double* normal = this->Frame[3];
   std::vector<bool> inLoop(xyz.size(), false);
-  for (const auto& l : loops)
+  for (const auto& l : set.Loops)
   {
     for (int p : l)
     {
       inLoop[p] = true;
     }
   }
-  std::vector<double> pts2(2 * xyz.size());
+  auto& pts2 = set.Points2D;
+  pts2.resize(2 * xyz.size());
   for (size_t i = 0; i < xyz.size(); ++i)
   {
     double d[3], h = 0.0;
@@ -527,22 +458,24 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
     }
     pts2[2 * i] = d[0] * u[0] + d[1] * u[1] + d[2] * u[2];
     pts2[2 * i + 1] = d[0] * v[0] + d[1] * v[1] + d[2] * v[2];
-    if (std::abs(h) > 1e-6 * diag3)
+    if (std::abs(h) > 1e-6 * set.Diagonal3D && inLoop[i]) // only points used by a loop matter
     {
-      // Only points used by a loop matter.
-      if (inLoop[i])
-      {
-        std::ostringstream os;
-        os << "loops are not coplanar (a point lies " << std::abs(h) / diag3
-           << " diagonals off their plane)";
-        error = os.str();
-        return false;
-      }
+      std::ostringstream os;
+      os << "loops are not coplanar (a point lies " << std::abs(h) / set.Diagonal3D
+         << " diagonals off their plane)";
+      error = os.str();
+      return false;
     }
   }
+  return true;
+}
 
-  // 4. Clean loops: drop repeated points and straight vertices.
-  for (auto& l : loops)
+// 4. Drops repeated points and straight (180 degree) vertices; a loop needs 3
+// distinct vertices.
+bool vtkMedialPolygon::CleanLoops(LoopSet& set, std::string& error)
+{
+  const auto& pts2 = set.Points2D;
+  for (auto& l : set.Loops)
   {
     bool changed = true;
     while (changed && l.size() >= 3)
@@ -571,8 +504,16 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
       return false;
     }
   }
+  return true;
+}
 
-  // 5. Nesting and orientation.
+// 5. Orientation: the loop of largest area is the outer boundary, made counter-
+// clockwise, the holes clockwise; then the edges, vertex kinds and the grid, and the
+// check that no two edges touch.
+bool vtkMedialPolygon::OrientLoops(LoopSet& set, std::string& error)
+{
+  const auto& loops = set.Loops;
+  const auto& pts2 = set.Points2D;
   std::vector<double> areas;
   int outer = 0;
   for (size_t i = 0; i < loops.size(); ++i)
@@ -583,7 +524,6 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
       outer = static_cast<int>(i);
     }
   }
-
   // Vertices: one per loop corner (a point shared by two loops is a touch and rejected below).
   std::vector<std::vector<int>> ordered(loops.size());
   for (size_t i = 0; i < loops.size(); ++i)
@@ -608,32 +548,54 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
   this->LoopEdges.assign(loops.size(), {});
   for (int li = 0; li < this->NumberOfLoops; ++li)
   {
-    const auto& l = ordered[order[li]];
-    const int first = static_cast<int>(this->Points.size() / 2);
-    for (int p : l)
-    {
-      this->Points.push_back(pts2[2 * p]);
-      this->Points.push_back(pts2[2 * p + 1]);
-    }
-    const int n = static_cast<int>(l.size());
-    for (int i = 0; i < n; ++i)
-    {
-      Edge e;
-      e.A = first + i;
-      e.B = first + (i + 1) % n;
-      e.Loop = li;
-      e.SourceCell = loopCells[order[li]];
-      const double* a = this->GetPoint(e.A);
-      const double* b = this->GetPoint(e.B);
-      const double dx = b[0] - a[0], dy = b[1] - a[1];
-      e.Length = std::sqrt(dx * dx + dy * dy);
-      e.Normal[0] = -dy / e.Length;
-      e.Normal[1] = dx / e.Length;
-      e.Offset = -(e.Normal[0] * a[0] + e.Normal[1] * a[1]);
-      this->LoopEdges[li].push_back(static_cast<int>(this->Edges.size()));
-      this->Edges.push_back(e);
-    }
+    this->AddLoop(pts2, ordered[order[li]], li, set.LoopCells[order[li]]);
   }
+  this->ClassifyVertices();
+  this->BuildGrid();
+  if (!this->CheckTouchingEdges(error))
+  {
+    return false;
+  }
+  if (!(std::abs(areas[outer]) > 0.0))
+  {
+    error = "loops enclose no area";
+    return false;
+  }
+  return true;
+}
+
+// Appends loop `li` (vertices in boundary order, interior on the left) and its edges.
+void vtkMedialPolygon::AddLoop(const std::vector<double>& pts2, const std::vector<int>& l, int li, vtkIdType cell)
+{
+  const int first = static_cast<int>(this->Points.size() / 2);
+  for (int p : l)
+  {
+    this->Points.push_back(pts2[2 * p]);
+    this->Points.push_back(pts2[2 * p + 1]);
+  }
+  const int n = static_cast<int>(l.size());
+  for (int i = 0; i < n; ++i)
+  {
+    Edge e;
+    e.A = first + i;
+    e.B = first + (i + 1) % n;
+    e.Loop = li;
+    e.SourceCell = cell;
+    const double* a = this->GetPoint(e.A);
+    const double* b = this->GetPoint(e.B);
+    const double dx = b[0] - a[0], dy = b[1] - a[1];
+    e.Length = std::sqrt(dx * dx + dy * dy);
+    e.Normal[0] = -dy / e.Length;
+    e.Normal[1] = dx / e.Length;
+    e.Offset = -(e.Normal[0] * a[0] + e.Normal[1] * a[1]);
+    this->LoopEdges[li].push_back(static_cast<int>(this->Edges.size()));
+    this->Edges.push_back(e);
+  }
+}
+
+// Incoming and outgoing edges, convex or reflex, and the diagonal of the 2D points.
+void vtkMedialPolygon::ClassifyVertices()
+{
   const int nv = this->GetNumberOfVertices();
   this->Kinds.assign(nv, CONVEX);
   this->Incoming.assign(nv, -1);
@@ -660,18 +622,22 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
     }
   }
   this->Diagonal = std::sqrt((hi2[0] - lo2[0]) * (hi2[0] - lo2[0]) + (hi2[1] - lo2[1]) * (hi2[1] - lo2[1]));
-  this->BuildGrid();
+}
 
-  // 6. No edge may touch another, except neighbours at their shared vertex. Two
-  // touching edges share the grid cell of the touching point.
-  for (int cell = 0; cell + 1 < static_cast<int>(this->CellStart.size()); ++cell)
+// No edge may touch another, except neighbours at their shared vertex. Two touching
+// edges share the grid cell of the touching point.
+bool vtkMedialPolygon::CheckTouchingEdges(std::string& error) const
+{
+  for (vtkIdType cell = 0; cell < this->Grid.GetNumberOfCells(); ++cell)
   {
-    for (int i = this->CellStart[cell]; i < this->CellStart[cell + 1]; ++i)
+    const vtkIdType* first = this->Grid.CellBegin(cell);
+    const vtkIdType* last = this->Grid.CellEnd(cell);
+    for (const vtkIdType* i = first; i < last; ++i)
     {
-      for (int j = i + 1; j < this->CellStart[cell + 1]; ++j)
+      for (const vtkIdType* j = i + 1; j < last; ++j)
       {
-        const int e = std::min(this->CellEdges[i], this->CellEdges[j]);
-        const int f = std::max(this->CellEdges[i], this->CellEdges[j]);
+        const int e = static_cast<int>(std::min(*i, *j));
+        const int f = static_cast<int>(std::max(*i, *j));
         if (e == f || !this->EdgesTouch(e, f))
         {
           continue;
@@ -688,33 +654,31 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
       }
     }
   }
-  if (!(std::abs(areas[outer]) > 0.0))
-  {
-    error = "loops enclose no area";
-    return false;
-  }
-  // Every hole inside the outer loop and in no other hole.
+  return true;
+}
+
+// 6. Every hole inside the outer loop and in no other hole.
+bool vtkMedialPolygon::CheckNesting(std::string& error) const
+{
+  auto loopVertices = [this](int loop) {
+    std::vector<int> ids;
+    for (int e : this->LoopEdges[loop])
+    {
+      ids.push_back(this->Edges[e].A);
+    }
+    return ids;
+  };
   for (int li = 1; li < this->NumberOfLoops; ++li)
   {
     const double* p = this->GetPoint(this->Edges[this->LoopEdges[li][0]].A);
-    std::vector<int> outerIds;
-    for (int e : this->LoopEdges[0])
-    {
-      outerIds.push_back(this->Edges[e].A);
-    }
-    if (!InsideLoop(this->Points, outerIds, p))
+    if (!InsideLoop(this->Points, loopVertices(0), p))
     {
       error = "a loop lies outside the outer boundary (only one outer boundary is supported)";
       return false;
     }
     for (int lj = 1; lj < this->NumberOfLoops; ++lj)
     {
-      std::vector<int> hole;
-      for (int e : this->LoopEdges[lj])
-      {
-        hole.push_back(this->Edges[e].A);
-      }
-      if (lj != li && InsideLoop(this->Points, hole, p))
+      if (lj != li && InsideLoop(this->Points, loopVertices(lj), p))
       {
         error = "a loop lies inside a hole (nested islands are not supported)";
         return false;
@@ -763,88 +727,53 @@ void vtkMedialPolygon::BuildGrid()
   const double w = std::max(hi[0] - lo[0], 1e-300), h = std::max(hi[1] - lo[1], 1e-300);
   const double ne = std::max<double>(1, this->Edges.size());
   // About two cells per edge.
-  this->CellSize = std::max(std::sqrt(w * h / (2.0 * ne)), 1e-3 * std::max(w, h));
+  const double size = std::max(std::sqrt(w * h / (2.0 * ne)), 1e-3 * std::max(w, h));
+  double origin[3] = { 0, 0, 0 };
+  const double cellSize[3] = { size, size, size };
+  int dims[3] = { 1, 1, 1 };
   for (int k = 0; k < 2; ++k)
   {
     const double ext = (k == 0 ? w : h);
-    this->Dims[k] = std::max(1, std::min(4096, static_cast<int>(std::ceil(ext / this->CellSize)) + 1));
-    this->GridOrigin[k] = lo[k] - 0.5 * (this->Dims[k] * this->CellSize - ext);
+    dims[k] = std::max(1, std::min(4096, static_cast<int>(std::ceil(ext / size)) + 1));
+    origin[k] = lo[k] - 0.5 * (dims[k] * size - ext);
   }
-  const int cells = this->Dims[0] * this->Dims[1];
-  std::vector<std::vector<int>> bins(static_cast<size_t>(cells));
-  const double halfDiag = this->CellSize * 0.7072;
-  for (int e = 0; e < this->GetNumberOfEdges(); ++e)
-  {
+  this->Grid.Initialize(origin, cellSize, dims);
+  // An edge goes into every cell whose centre lies within half a cell diagonal of it.
+  const double halfDiag = size * 0.7072;
+  this->Grid.Build(this->GetNumberOfEdges(), [&](vtkIdType item, auto&& add) {
+    const int e = static_cast<int>(item);
     const double* a = this->GetPoint(this->Edges[e].A);
     const double* b = this->GetPoint(this->Edges[e].B);
-    int i0, i1, j0, j1;
-    this->CellRange(std::min(a[0], b[0]), std::max(a[0], b[0]), 0, i0, i1);
-    this->CellRange(std::min(a[1], b[1]), std::max(a[1], b[1]), 1, j0, j1);
+    const int i0 = this->Grid.Coordinate(std::min(a[0], b[0]), 0);
+    const int i1 = this->Grid.Coordinate(std::max(a[0], b[0]), 0);
+    const int j0 = this->Grid.Coordinate(std::min(a[1], b[1]), 1);
+    const int j1 = this->Grid.Coordinate(std::max(a[1], b[1]), 1);
     for (int j = j0; j <= j1; ++j)
     {
       for (int i = i0; i <= i1; ++i)
       {
-        const double c[2] = { this->GridOrigin[0] + (i + 0.5) * this->CellSize,
-          this->GridOrigin[1] + (j + 0.5) * this->CellSize };
+        const double c[2] = { this->Grid.GetOrigin(0) + (i + 0.5) * size, this->Grid.GetOrigin(1) + (j + 0.5) * size };
         double q[2];
         if (this->ClosestPointOnEdge(e, c, nullptr, q) <= halfDiag * halfDiag)
         {
-          bins[j * this->Dims[0] + i].push_back(e);
+          add(this->Grid.CellId(i, j, 0));
         }
       }
     }
-  }
-  this->CellStart.assign(static_cast<size_t>(cells) + 1, 0);
-  this->CellEdges.clear();
-  for (int c = 0; c < cells; ++c)
-  {
-    this->CellStart[c] = static_cast<int>(this->CellEdges.size());
-    this->CellEdges.insert(this->CellEdges.end(), bins[c].begin(), bins[c].end());
-  }
-  this->CellStart[cells] = static_cast<int>(this->CellEdges.size());
-
-  // Chebyshev distance (in cells) to the nearest cell with edges: closest-point
-  // searches skip that many rings of empty cells (empty disks are large and empty).
-  this->EmptyRings.assign(static_cast<size_t>(cells), -1);
-  std::vector<int> front;
-  for (int c = 0; c < cells; ++c)
-  {
-    if (this->CellStart[c + 1] > this->CellStart[c])
-    {
-      this->EmptyRings[c] = 0;
-      front.push_back(c);
-    }
-  }
-  for (size_t head = 0; head < front.size(); ++head)
-  {
-    const int c = front[head];
-    const int ci = c % this->Dims[0], cj = c / this->Dims[0];
-    for (int dj = -1; dj <= 1; ++dj)
-    {
-      for (int di = -1; di <= 1; ++di)
-      {
-        const int i = ci + di, j = cj + dj;
-        if (i < 0 || j < 0 || i >= this->Dims[0] || j >= this->Dims[1])
-        {
-          continue;
-        }
-        const int n = j * this->Dims[0] + i;
-        if (this->EmptyRings[n] < 0)
-        {
-          this->EmptyRings[n] = this->EmptyRings[c] + 1;
-          front.push_back(n);
-        }
-      }
-    }
-  }
+  });
+  // Closest-point searches skip the rings of empty cells around x (empty disks are
+  // large and empty).
+  this->EmptyRings = this->Grid.DistanceToItems();
 }
 
-void vtkMedialPolygon::CellRange(double lo, double hi, int axis, int& first, int& last) const
+void vtkMedialPolygon::CellBox(const double x[2], double reach, int lo[3], int hi[3]) const
 {
-  const double f = std::floor((lo - this->GridOrigin[axis]) / this->CellSize);
-  const double l = std::floor((hi - this->GridOrigin[axis]) / this->CellSize);
-  first = static_cast<int>(std::max(0.0, std::min(f, this->Dims[axis] - 1.0)));
-  last = static_cast<int>(std::max(0.0, std::min(l, this->Dims[axis] - 1.0)));
+  for (int k = 0; k < 2; ++k)
+  {
+    lo[k] = this->Grid.Coordinate(x[k] - reach, k);
+    hi[k] = this->Grid.Coordinate(x[k] + reach, k);
+  }
+  lo[2] = hi[2] = 0;
 }
 
 void vtkMedialPolygon::To3D(const double p[2], double x[3]) const
@@ -922,15 +851,16 @@ bool vtkMedialPolygon::ClosestPoint(const double x[2], double upperBound, const 
   }
   double best2 = upperBound * upperBound;
   bool found = false;
-  const int ci = static_cast<int>(
-    std::max(0.0, std::min(std::floor((x[0] - this->GridOrigin[0]) / this->CellSize), this->Dims[0] - 1.0)));
-  const int cj = static_cast<int>(
-    std::max(0.0, std::min(std::floor((x[1] - this->GridOrigin[1]) / this->CellSize), this->Dims[1] - 1.0)));
+  const vtkMedialUniformGrid& grid = this->Grid;
+  const double size = grid.GetCellSize(0);
+  const int centre[3] = { grid.Coordinate(x[0], 0), grid.Coordinate(x[1], 1), 0 };
   // Distance from x to the grid box; rings closer than that are empty.
-  const double gx = std::max({ 0.0, this->GridOrigin[0] - x[0], x[0] - (this->GridOrigin[0] + this->Dims[0] * this->CellSize) });
-  const double gy = std::max({ 0.0, this->GridOrigin[1] - x[1], x[1] - (this->GridOrigin[1] + this->Dims[1] * this->CellSize) });
+  const double gx =
+    std::max({ 0.0, grid.GetOrigin(0) - x[0], x[0] - grid.CellLow(0, grid.GetDimension(0)) });
+  const double gy =
+    std::max({ 0.0, grid.GetOrigin(1) - x[1], x[1] - grid.CellLow(1, grid.GetDimension(1)) });
   const double outside = std::sqrt(gx * gx + gy * gy);
-  const int maxRing = std::max(this->Dims[0], this->Dims[1]);
+  const int maxRing = std::max(grid.GetDimension(0), grid.GetDimension(1));
   // Long edges sit in many cells: test each once per query.
   thread_local std::vector<unsigned> stamps;
   thread_local unsigned stamp = 0;
@@ -939,23 +869,21 @@ bool vtkMedialPolygon::ClosestPoint(const double x[2], double upperBound, const 
     stamps.assign(this->Edges.size(), 0);
     stamp = 1;
   }
-  auto visitCell = [&](int i, int j) {
+  auto visitCell = [&](const int* ijk, vtkIdType cell) {
     // Skip cells that lie entirely beyond the best distance so far.
-    const double x0 = this->GridOrigin[0] + i * this->CellSize - x[0];
-    const double y0 = this->GridOrigin[1] + j * this->CellSize - x[1];
-    const double dx = std::max({ 0.0, x0, -(x0 + this->CellSize) });
-    const double dy = std::max({ 0.0, y0, -(y0 + this->CellSize) });
+    const double x0 = grid.CellLow(0, ijk[0]) - x[0];
+    const double y0 = grid.CellLow(1, ijk[1]) - x[1];
+    const double dx = std::max({ 0.0, x0, -(x0 + size) });
+    const double dy = std::max({ 0.0, y0, -(y0 + size) });
     if (dx * dx + dy * dy >= best2)
     {
       return;
     }
-    const int c = j * this->Dims[0] + i;
-    for (int k = this->CellStart[c]; k < this->CellStart[c + 1]; ++k)
-    {
-      const int e = this->CellEdges[k];
+    grid.ForEachItemInCell(cell, [&](vtkIdType item) {
+      const int e = static_cast<int>(item);
       if (stamps[e] == stamp || (filter && (e == filter->IgnoreEdge[0] || e == filter->IgnoreEdge[1])))
       {
-        continue;
+        return;
       }
       stamps[e] = stamp;
       double q[2];
@@ -968,39 +896,17 @@ bool vtkMedialPolygon::ClosestPoint(const double x[2], double upperBound, const 
         edge = e;
         found = true;
       }
-    }
+    });
   };
-  for (int ring = std::max(0, this->EmptyRings[cj * this->Dims[0] + ci]); ring <= maxRing; ++ring)
+  for (int ring = std::max(0, this->EmptyRings[grid.CellId(centre[0], centre[1], 0)]); ring <= maxRing; ++ring)
   {
     // Cells of ring k are at least (k - 1) * CellSize away from x (or the grid's distance).
-    const double reach = std::max(outside, (ring - 1) * this->CellSize);
+    const double reach = std::max(outside, (ring - 1) * size);
     if (reach * reach >= best2)
     {
       break;
     }
-    const int i0 = ci - ring, i1 = ci + ring, j0 = cj - ring, j1 = cj + ring;
-    for (int i = std::max(0, i0); i <= std::min(this->Dims[0] - 1, i1); ++i)
-    {
-      if (j0 >= 0)
-      {
-        visitCell(i, j0);
-      }
-      if (j1 < this->Dims[1] && j1 != j0)
-      {
-        visitCell(i, j1);
-      }
-    }
-    for (int j = std::max(0, j0 + 1); j <= std::min(this->Dims[1] - 1, j1 - 1); ++j)
-    {
-      if (i0 >= 0)
-      {
-        visitCell(i0, j);
-      }
-      if (i1 < this->Dims[0] && i1 != i0)
-      {
-        visitCell(i1, j);
-      }
-    }
+    grid.ForEachCellInShell(centre, ring, visitCell);
   }
   if (found)
   {
@@ -1042,7 +948,7 @@ bool vtkMedialPolygon::Intersect(const double origin[2], const double direction[
     double t0 = 0.0, t1 = HUGE_VAL;
     for (int k = 0; k < 2; ++k)
     {
-      const double lo = this->GridOrigin[k], hi = lo + this->Dims[k] * this->CellSize;
+      const double lo = this->Grid.GetOrigin(k), hi = this->Grid.CellLow(k, this->Grid.GetDimension(k));
       if (direction[k] == 0.0)
       {
         if (origin[k] < lo || origin[k] > hi)
@@ -1071,8 +977,7 @@ bool vtkMedialPolygon::Intersect(const double origin[2], const double direction[
   double tNext[2], tDelta[2];
   for (int k = 0; k < 2; ++k)
   {
-    cell[k] = static_cast<int>(std::max(0.0,
-      std::min(std::floor((p[k] - this->GridOrigin[k]) / this->CellSize), this->Dims[k] - 1.0)));
+    cell[k] = this->Grid.Coordinate(p[k], k);
     step[k] = direction[k] > 0 ? 1 : -1;
     if (direction[k] == 0.0)
     {
@@ -1081,21 +986,19 @@ bool vtkMedialPolygon::Intersect(const double origin[2], const double direction[
     }
     else
     {
-      const double boundary = this->GridOrigin[k] + (cell[k] + (direction[k] > 0 ? 1 : 0)) * this->CellSize;
+      const double boundary = this->Grid.CellLow(k, cell[k] + (direction[k] > 0 ? 1 : 0));
       tNext[k] = (boundary - origin[k]) / direction[k];
-      tDelta[k] = this->CellSize / std::abs(direction[k]);
+      tDelta[k] = this->Grid.GetCellSize(k) / std::abs(direction[k]);
     }
   }
   (void)tEnter;
   for (;;)
   {
-    const int c = cell[1] * this->Dims[0] + cell[0];
-    for (int k = this->CellStart[c]; k < this->CellStart[c + 1]; ++k)
-    {
-      const int e = this->CellEdges[k];
+    this->Grid.ForEachItemInCell(this->Grid.CellId(cell[0], cell[1], 0), [&](vtkIdType item) {
+      const int e = static_cast<int>(item);
       if (filter && (e == filter->IgnoreEdge[0] || e == filter->IgnoreEdge[1]))
       {
-        continue;
+        return;
       }
       const double* a = this->GetPoint(this->Edges[e].A);
       const double* b = this->GetPoint(this->Edges[e].B);
@@ -1103,7 +1006,7 @@ bool vtkMedialPolygon::Intersect(const double origin[2], const double direction[
       const double denom = direction[0] * s[1] - direction[1] * s[0];
       if (denom == 0.0)
       {
-        continue;
+        return;
       }
       const double w[2] = { a[0] - origin[0], a[1] - origin[1] };
       const double t = (w[0] * s[1] - w[1] * s[0]) / denom;
@@ -1115,7 +1018,7 @@ bool vtkMedialPolygon::Intersect(const double origin[2], const double direction[
         edgeHit = e;
         found = true;
       }
-    }
+    });
     const int axis = tNext[0] < tNext[1] ? 0 : 1;
     if (found && best <= tNext[axis])
     {
@@ -1126,7 +1029,7 @@ bool vtkMedialPolygon::Intersect(const double origin[2], const double direction[
       break;
     }
     cell[axis] += step[axis];
-    if (cell[axis] < 0 || cell[axis] >= this->Dims[axis])
+    if (cell[axis] < 0 || cell[axis] >= this->Grid.GetDimension(axis))
     {
       break;
     }

@@ -9,19 +9,24 @@
  * end to end into closed loops, e.g. vtkCutter output), lying in any plane.
  * Polygons that share edges (a triangulated planar region) stand for the region
  * bounded by their edges used once.
- *  1. coincident points are merged; the plane is fitted (Newell normal of the
- *     largest loop, sign made canonical so that reversed loops give the same
- *     frame) and every point must lie within 1e-6 * diagonal of it;
- *  2. points are expressed in an orthonormal frame (U, V) of that plane,
- *     centred on the bounding box;
- *  3. repeated points and straight (180 degree) vertices are dropped; a loop needs
- *     3 distinct vertices;
- *  4. loops must not cross or touch themselves or each other (uniform grid over
- *     the edges, double-precision orientation tests);
- *  5. the loop of largest area is the outer boundary, every other loop must lie
- *     inside it and not inside another hole; the outer loop is made counter-
- *     clockwise and the holes clockwise, so the interior is always on the left of
- *     an edge whatever the input point order.
+ * Build() runs these passes, each stopping at the first problem with its reason:
+ *  1. MergePoints: coincident points are merged;
+ *  2. ReadLoops, ChainOpenPolylines: the loops are gathered (shared polygon edges
+ *     replaced by the region's boundary, open polylines chained);
+ *  3. FitFrame, ProjectLoops: the plane is fitted (Newell normal of the largest
+ *     loop, sign made canonical so that reversed loops give the same frame; see
+ *     vtkMedialPlane.h), points are expressed in an orthonormal frame (U, V) of it,
+ *     centred on the bounding box, and every point must lie within 1e-6 * diagonal
+ *     of it;
+ *  4. CleanLoops: repeated points and straight (180 degree) vertices are dropped;
+ *     a loop needs 3 distinct vertices;
+ *  5. OrientLoops: the loop of largest area is the outer boundary, made counter-
+ *     clockwise, the holes clockwise, so the interior is always on the left of an
+ *     edge whatever the input point order; then the edges, the vertex kinds and the
+ *     grid, and loops must not cross or touch themselves or each other
+ *     (CheckTouchingEdges: the grid, double-precision orientation tests);
+ *  6. CheckNesting: every other loop lies inside the outer one and not inside
+ *     another hole.
  *
  * Queries (const, thread-safe after Build) run on a uniform grid over the edges
  * and decide in double precision: ray cast, bounded closest point, contains-ball,
@@ -34,6 +39,7 @@
 #ifndef vtkMedialPolygon_h
 #define vtkMedialPolygon_h
 
+#include "vtkMedialUniformGrid.h"
 #include "vtkType.h"
 
 #include <algorithm>
@@ -70,11 +76,6 @@ public:
   /// Prepares the polygon. Returns false with a reason when the input is not valid planar loops.
   bool Build(vtkPolyData* input, std::string& error);
 
-  /// True when the data looks like planar loops (the 2D mode of vtkMedialAxisSampler):
-  /// polygons all in one plane, or polylines of which one is closed or which come in
-  /// 3 or more pieces. Build() then validates them.
-  static bool LooksPlanarLoops(vtkPolyData* input);
-
   int GetNumberOfEdges() const { return static_cast<int>(this->Edges.size()); }
   int GetNumberOfVertices() const { return static_cast<int>(this->Points.size()) / 2; }
   const Edge& GetEdge(int e) const { return this->Edges[e]; }
@@ -110,9 +111,26 @@ public:
   double ClosestPointOnEdge(int e, const double x[2], const ContactFilter* filter, double out[2]) const;
 
 private:
+  // The passes of Build (see the class comment), on the loops being prepared.
+  struct LoopSet;
+  bool MergePoints(vtkPolyData* input, LoopSet& set, std::string& error) const;
+  bool ReadLoops(vtkPolyData* input, LoopSet& set, std::string& error) const;
+  static void SharedEdgesToPolylines(LoopSet& set, size_t firstPolygon);
+  bool ChainOpenPolylines(LoopSet& set, std::string& error) const;
+  bool FitFrame(LoopSet& set, std::string& error);
+  static double WidestTriangleNormal(const LoopSet& set, double normal[3]);
+  bool ProjectLoops(LoopSet& set, std::string& error) const;
+  static bool CleanLoops(LoopSet& set, std::string& error);
+  bool OrientLoops(LoopSet& set, std::string& error);
+  void AddLoop(const std::vector<double>& pts2, const std::vector<int>& loop, int index, vtkIdType cell);
+  void ClassifyVertices();
+  bool CheckTouchingEdges(std::string& error) const;
+  bool CheckNesting(std::string& error) const;
+
   void BuildGrid();
   bool EdgesTouch(int e, int f) const;
-  void CellRange(double lo, double hi, int axis, int& first, int& last) const;
+  // The grid cells covering [x - reach, x + reach].
+  void CellBox(const double x[2], double reach, int lo[3], int hi[3]) const;
 
   std::vector<double> Points; // 2D, interleaved
   std::vector<Edge> Edges;
@@ -122,60 +140,37 @@ private:
   double Diagonal = 0.0;
   double Frame[4][3] = {}; // origin, U, V, normal
 
-  // Uniform grid over the edges, compressed rows.
-  double GridOrigin[2] = { 0, 0 };
-  double CellSize = 1.0;
-  int Dims[2] = { 1, 1 };
-  std::vector<int> CellStart, CellEdges;
-  std::vector<int> EmptyRings;
+  // Uniform grid over the edges (one layer); an edge lies in every cell it comes near.
+  vtkMedialUniformGrid Grid;
+  std::vector<int> EmptyRings; // per cell, rings of empty cells around it
+
 };
 
 template <typename F>
 void vtkMedialPolygon::VisitEdgesNear(const double x[2], double reach, F&& visit) const
 {
-  int i0, i1, j0, j1;
-  this->CellRange(x[0] - reach, x[0] + reach, 0, i0, i1);
-  this->CellRange(x[1] - reach, x[1] + reach, 1, j0, j1);
-  for (int j = j0; j <= j1; ++j)
-  {
-    for (int i = i0; i <= i1; ++i)
-    {
-      const int c = j * this->Dims[0] + i;
-      for (int k = this->CellStart[c]; k < this->CellStart[c + 1]; ++k)
-      {
-        visit(this->CellEdges[k]);
-      }
-    }
-  }
+  int lo[3], hi[3];
+  this->CellBox(x, reach, lo, hi);
+  this->Grid.ForEachItemInBox(lo, hi, [&](vtkIdType e) { visit(static_cast<int>(e)); });
 }
 
 template <typename F>
 void vtkMedialPolygon::VisitEdgesInRing(const double x[2], double inner, double reach, F&& visit) const
 {
-  int i0, i1, j0, j1;
-  this->CellRange(x[0] - reach, x[0] + reach, 0, i0, i1);
-  this->CellRange(x[1] - reach, x[1] + reach, 1, j0, j1);
+  int lo[3], hi[3];
+  this->CellBox(x, reach, lo, hi);
   const double inner2 = inner > 0.0 ? inner * inner : -1.0;
-  for (int j = j0; j <= j1; ++j)
-  {
-    const double y0 = this->GridOrigin[1] + j * this->CellSize - x[1];
-    const double y1 = y0 + this->CellSize;
-    const double fy = std::max(y0 * y0, y1 * y1);
-    for (int i = i0; i <= i1; ++i)
+  this->Grid.ForEachCellInBox(lo, hi, [&](const int* ijk, vtkIdType cell) {
+    const double y0 = this->Grid.CellLow(1, ijk[1]) - x[1];
+    const double y1 = y0 + this->Grid.GetCellSize(1);
+    const double x0 = this->Grid.CellLow(0, ijk[0]) - x[0];
+    const double x1 = x0 + this->Grid.GetCellSize(0);
+    if (std::max(x0 * x0, x1 * x1) + std::max(y0 * y0, y1 * y1) < inner2)
     {
-      const double x0 = this->GridOrigin[0] + i * this->CellSize - x[0];
-      const double x1 = x0 + this->CellSize;
-      if (std::max(x0 * x0, x1 * x1) + fy < inner2)
-      {
-        continue; // the whole cell lies inside the inner disk
-      }
-      const int c = j * this->Dims[0] + i;
-      for (int k = this->CellStart[c]; k < this->CellStart[c + 1]; ++k)
-      {
-        visit(this->CellEdges[k]);
-      }
+      return; // the whole cell lies inside the inner disk
     }
-  }
+    this->Grid.ForEachItemInCell(cell, [&](vtkIdType e) { visit(static_cast<int>(e)); });
+  });
 }
 
 #endif

@@ -6,11 +6,17 @@
  * Each sample i draws from a stream seeded by (seed, i) through SplitMix64, so
  * a sample's random numbers do not depend on which thread runs it or in which
  * order. That is what makes the filters' output identical for any thread count.
+ * vtkMedialDrawSurfacePoint draws sample i's point on a triangle mesh from its stream:
+ * the sampler's random surface points, and the area-sampled error measure's.
  * Internal header; not installed.
  */
 #ifndef vtkMedialRandom_h
 #define vtkMedialRandom_h
 
+#include "vtkMedialTriangleMesh.h"
+
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 class vtkMedialSampleRandom
@@ -40,5 +46,29 @@ private:
   }
   std::uint64_t State;
 };
+
+/// Surface point of sample `index` of stream `seed`: a triangle picked by area, a uniform
+/// point on it. The vertex order of the triangle does not matter (vertices are taken in
+/// id order), so re-wound input gives the same point.
+inline void vtkMedialDrawSurfacePoint(const vtkMedialTriangleMesh& mesh, std::uint64_t seed,
+  vtkIdType index, vtkIdType& triangle, double p[3])
+{
+  vtkMedialSampleRandom random(seed, static_cast<std::uint64_t>(index));
+  triangle = mesh.PickTriangleByArea(random.Uniform());
+  vtkIdType v[3] = { mesh.GetTriangle(triangle)[0], mesh.GetTriangle(triangle)[1],
+    mesh.GetTriangle(triangle)[2] };
+  std::sort(v, v + 3);
+  // Uniform on the triangle: sqrt warping of two uniforms.
+  const double s = std::sqrt(random.Uniform());
+  const double t = random.Uniform();
+  const double wa = 1.0 - s, wb = s * (1.0 - t), wc = s * t;
+  const double* a = mesh.GetPoint(v[0]);
+  const double* b = mesh.GetPoint(v[1]);
+  const double* c = mesh.GetPoint(v[2]);
+  for (int k = 0; k < 3; ++k)
+  {
+    p[k] = wa * a[k] + wb * b[k] + wc * c[k];
+  }
+}
 
 #endif

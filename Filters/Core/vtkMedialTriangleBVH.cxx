@@ -208,6 +208,66 @@ void TangentCandidates(const double p[3], const double n[3], const double* a, co
   }
 }
 
+// A bin of the SAH split: the box of its triangles and their number.
+struct SahBin
+{
+  double Lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
+  double Hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+  std::int32_t Count = 0;
+};
+
+double HalfArea(const double lo[3], const double hi[3])
+{
+  const double d[3] = { hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] };
+  return d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
+}
+
+// The bin after which splitting costs least (surface area heuristic), -1 when every
+// split leaves a side empty. Sweeps from the right, then from the left, to price
+// every split plane.
+int CheapestSplit(const SahBin bins[Bins], std::int32_t count)
+{
+  double rightCost[Bins];
+  {
+    double lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+    std::int32_t n = 0;
+    for (int b = Bins - 1; b > 0; --b)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        lo[k] = std::min(lo[k], bins[b].Lo[k]);
+        hi[k] = std::max(hi[k], bins[b].Hi[k]);
+      }
+      n += bins[b].Count;
+      rightCost[b] = n > 0 ? n * HalfArea(lo, hi) : 0.0;
+    }
+  }
+  double lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+  std::int32_t n = 0;
+  double bestCost = HUGE_VAL;
+  int bestSplit = -1;
+  for (int b = 0; b + 1 < Bins; ++b)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min(lo[k], bins[b].Lo[k]);
+      hi[k] = std::max(hi[k], bins[b].Hi[k]);
+    }
+    n += bins[b].Count;
+    if (n == 0 || n == count)
+    {
+      continue;
+    }
+    const double cost = n * HalfArea(lo, hi) + rightCost[b + 1];
+    if (cost < bestCost)
+    {
+      bestCost = cost;
+      bestSplit = b;
+    }
+  }
+  return bestSplit;
+}
+
 // Scratch space reused by every query on a thread: no allocation per sample.
 struct Scratch
 {
@@ -347,9 +407,34 @@ void vtkMedialTriangleBVH::BuildNode(std::vector<Node>& nodes, std::int32_t node
     later->push_back({ nodeIndex, begin, end });
     return;
   }
+  double cLo[3], cHi[3];
+  Node node = this->BoundNode(begin, end, order, centroids, boxes, mesh, cLo, cHi);
+  const std::int32_t count = end - begin;
+  node.Start = begin;
+  node.Count = count;
+  if (count <= LeafSize)
+  {
+    nodes[nodeIndex] = node;
+    return;
+  }
+  const std::int32_t mid = SplitNode(begin, end, order, centroids, boxes, cLo, cHi);
+  const std::int32_t left = static_cast<std::int32_t>(nodes.size());
+  nodes.emplace_back();
+  nodes.emplace_back();
+  node.Start = left;
+  node.Count = 0;
+  nodes[nodeIndex] = node;
+  this->BuildNode(nodes, left, begin, mid, order, centroids, boxes, mesh, later, grain);
+  this->BuildNode(nodes, left + 1, mid, end, order, centroids, boxes, mesh, later, grain);
+}
+
+vtkMedialTriangleBVH::Node vtkMedialTriangleBVH::BoundNode(std::int32_t begin, std::int32_t end,
+  const std::vector<std::int32_t>& order, const std::vector<double>& centroids, const std::vector<double>& boxes,
+  const vtkMedialTriangleMesh& mesh, double cLo[3], double cHi[3]) const
+{
   // Bounds: the box of the triangles and of their centroids, and the area vector sum.
   Node node{};
-  double lo[3], hi[3], cLo[3], cHi[3], area[3] = { 0, 0, 0 }, totalArea = 0.0;
+  double lo[3], hi[3], area[3] = { 0, 0, 0 }, totalArea = 0.0;
   for (int k = 0; k < 3; ++k)
   {
     lo[k] = cLo[k] = HUGE_VAL;
@@ -401,17 +486,14 @@ void vtkMedialTriangleBVH::BuildNode(std::vector<Node>& nodes, std::int32_t node
     node.Lo[k] = Down(lo[k] - this->Origin[k], this->RoundingPad);
     node.Hi[k] = Up(hi[k] - this->Origin[k], this->RoundingPad);
   }
+  return node;
+}
 
-  const std::int32_t count = end - begin;
-  node.Start = begin;
-  node.Count = count;
-  if (count <= LeafSize)
-  {
-    nodes[nodeIndex] = node;
-    return;
-  }
-
+std::int32_t vtkMedialTriangleBVH::SplitNode(std::int32_t begin, std::int32_t end, std::vector<std::int32_t>& order,
+  const std::vector<double>& centroids, const std::vector<double>& boxes, const double cLo[3], const double cHi[3])
+{
   // Binned SAH along the widest centroid axis.
+  const std::int32_t count = end - begin;
   int axis = 0;
   for (int k = 1; k < 3; ++k)
   {
@@ -424,12 +506,7 @@ void vtkMedialTriangleBVH::BuildNode(std::vector<Node>& nodes, std::int32_t node
   const double extent = cHi[axis] - cLo[axis];
   if (extent > 0.0)
   {
-    struct Bin
-    {
-      double Lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
-      double Hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
-      std::int32_t Count = 0;
-    } bins[Bins];
+    SahBin bins[Bins];
     const double scale = Bins / extent;
     auto binOf = [&](std::int32_t t) {
       return std::min(Bins - 1, static_cast<int>((centroids[3 * t + axis] - cLo[axis]) * scale));
@@ -437,7 +514,7 @@ void vtkMedialTriangleBVH::BuildNode(std::vector<Node>& nodes, std::int32_t node
     for (std::int32_t i = begin; i < end; ++i)
     {
       const std::int32_t t = order[i];
-      Bin& b = bins[binOf(t)];
+      SahBin& b = bins[binOf(t)];
       ++b.Count;
       for (int k = 0; k < 3; ++k)
       {
@@ -445,49 +522,7 @@ void vtkMedialTriangleBVH::BuildNode(std::vector<Node>& nodes, std::int32_t node
         b.Hi[k] = std::max(b.Hi[k], boxes[6 * t + 3 + k]);
       }
     }
-    auto halfArea = [](const double lo[3], const double hi[3]) {
-      const double d[3] = { hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] };
-      return d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
-    };
-    // Sweep from the right, then from the left, to price every split plane.
-    double rightCost[Bins];
-    {
-      double lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
-      std::int32_t n = 0;
-      for (int b = Bins - 1; b > 0; --b)
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          lo[k] = std::min(lo[k], bins[b].Lo[k]);
-          hi[k] = std::max(hi[k], bins[b].Hi[k]);
-        }
-        n += bins[b].Count;
-        rightCost[b] = n > 0 ? n * halfArea(lo, hi) : 0.0;
-      }
-    }
-    double lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
-    std::int32_t n = 0;
-    double bestCost = HUGE_VAL;
-    int bestSplit = -1;
-    for (int b = 0; b + 1 < Bins; ++b)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        lo[k] = std::min(lo[k], bins[b].Lo[k]);
-        hi[k] = std::max(hi[k], bins[b].Hi[k]);
-      }
-      n += bins[b].Count;
-      if (n == 0 || n == count)
-      {
-        continue;
-      }
-      const double cost = n * halfArea(lo, hi) + rightCost[b + 1];
-      if (cost < bestCost)
-      {
-        bestCost = cost;
-        bestSplit = b;
-      }
-    }
+    const int bestSplit = CheapestSplit(bins, count);
     if (bestSplit >= 0)
     {
       mid = static_cast<std::int32_t>(
@@ -506,124 +541,174 @@ void vtkMedialTriangleBVH::BuildNode(std::vector<Node>& nodes, std::int32_t node
         return ca < cb || (ca == cb && a < b);
       });
   }
-  const std::int32_t left = static_cast<std::int32_t>(nodes.size());
-  nodes.emplace_back();
-  nodes.emplace_back();
-  node.Start = left;
-  node.Count = 0;
-  nodes[nodeIndex] = node;
-  this->BuildNode(nodes, left, begin, mid, order, centroids, boxes, mesh, later, grain);
-  this->BuildNode(nodes, left + 1, mid, end, order, centroids, boxes, mesh, later, grain);
+  return mid;
 }
 
-void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[3],
-  vtkIdType ownTriangle, double cosMinAngle, double slack, TangentBall& result) const
+// The one-pass search of MaximalTangentBall: the shrinking ball and its culling
+// state, with the passes ShrinkOn (one triangle), Traverse (a subtree) and Run.
+class vtkMedialTriangleBVH::TangentSearch
 {
-  const bool capped = cosMinAngle < 1.0;
-  const double lift = 1.0 - cosMinAngle;                            // admissible: n.(q - p) >= r * lift
-  const double coneSin = capped ? std::sqrt(0.5 * lift) : 0.0;     // sin(theta / 2)
-  double radius = result.Radius;
-  double centre[3];
-  G::AddScaled(p, radius, n, centre);
-  // The same two points relative to the origin, for the node bounds.
-  double pRel[3], centreRel[3];
-  G::Sub(p, this->Origin, pRel);
-  G::AddScaled(pRel, radius, n, centreRel);
-  Scratch& scratch = ThreadScratch();
+public:
+  TangentSearch(const vtkMedialTriangleBVH& bvh, const double p[3], const double n[3], vtkIdType ownTriangle,
+    double cosMinAngle, double slack, TangentBall& result)
+    : Tree(bvh)
+    , P(p)
+    , N(n)
+    , OwnTriangle(ownTriangle)
+    , CosMinAngle(cosMinAngle)
+    , Slack(slack)
+    , Capped(cosMinAngle < 1.0)
+    , Lift(1.0 - cosMinAngle)                                      // admissible: n.(q - p) >= r * lift
+    , ConeSin(cosMinAngle < 1.0 ? std::sqrt(0.5 * (1.0 - cosMinAngle)) : 0.0) // sin(theta / 2)
+    , Radius(result.Radius)
+    , Result(result)
+    , Work(ThreadScratch())
+  {
+    G::AddScaled(p, this->Radius, n, this->Centre);
+    // The same two points relative to the origin, for the node bounds.
+    G::Sub(p, bvh.Origin, this->PRel);
+    G::AddScaled(this->PRel, this->Radius, n, this->CentreRel);
+  }
+
+  // First the small subtrees around the far hit and around p: on smooth meshes
+  // the final contacts are usually there, and a ball that is small early culls
+  // most of the rest of the tree. Then the whole tree, without those subtrees.
+  // Last, the triangles that only reached into the cap, until the radius settles.
+  void Run()
+  {
+    std::int32_t seeds[3] = { -1, -1, -1 };
+    const vtkIdType seedTriangles[3] = { this->Result.HintTriangle, this->Result.ContactTriangle, this->OwnTriangle };
+    const std::int32_t none[3] = { -1, -1, -1 };
+    for (int i = 0; i < 3; ++i)
+    {
+      if (seedTriangles[i] >= 0)
+      {
+        std::int32_t node = this->Tree.LeafNode[this->Tree.LeafRank[seedTriangles[i]]];
+        for (int level = 0; level < SeedLevels && this->Tree.Parent[node] >= 0; ++level)
+        {
+          node = this->Tree.Parent[node];
+        }
+        seeds[i] = node;
+        this->Traverse(node, none);
+      }
+    }
+    this->Traverse(0, seeds);
+    for (bool changed = !this->Work.Deferred.empty(); changed;)
+    {
+      changed = false;
+      for (std::int32_t slot : this->Work.Deferred)
+      {
+        const double before = this->Radius;
+        this->ShrinkOn(slot);
+        changed = changed || this->Radius < before;
+      }
+    }
+    this->Result.Radius = this->Radius;
+  }
+
+private:
+  // Closest admissible point q of triangle (a, b, c) strictly inside the ball of
+  // radius r; `touches` tells whether any part of it is inside.
+  bool Blocks(const double* a, const double* b, const double* c, double r, double q[3], bool& touches) const
+  {
+    const double limit = r - this->Slack;
+    touches = false;
+    if (!(limit > 0.0))
+    {
+      return false;
+    }
+    double x[3], u[3];
+    G::AddScaled(this->P, r, this->N, x);
+    touches = G::ClosestPointOnTriangle(x, a, b, c, q) < limit * limit;
+    G::Sub(q, this->P, u);
+    if (!touches || !this->Capped || G::Dot(this->N, u) >= r * this->Lift)
+    {
+      return touches; // the closest point is admissible: it is the answer
+    }
+    // Admissible half-space (q - x).(p - x) <= r^2 cos(theta), written as w.q <= k.
+    const double w[3] = { -r * this->N[0], -r * this->N[1], -r * this->N[2] };
+    const double k = G::Dot(w, x) + r * r * this->CosMinAngle;
+    return G::ClosestPointOnClippedTriangle(x, a, b, c, w, k, q) < limit * limit;
+  }
+
+  // The triangle reaches into the ball only below the cap's plane. A smaller ball
+  // lowers that plane, so it is looked at again at the end (it is inside the cone,
+  // or it would not have got this far).
+  bool InCap(bool touches) const { return this->Capped && touches; }
+
+  void Accept(double r, const double q[3], std::int32_t slot)
+  {
+    this->Radius = r;
+    G::AddScaled(this->P, this->Radius, this->N, this->Centre);
+    G::AddScaled(this->PRel, this->Radius, this->N, this->CentreRel);
+    std::copy(q, q + 3, this->Result.Contact);
+    this->Result.ContactTriangle = this->Tree.TriangleIds[slot];
+    ++this->Result.Steps;
+  }
+
+  // The triangle at `slot` can never block: the ball misses its plane, or it lies
+  // outside the cone where blockers can lie (its box shows it), at any radius. This
+  // drops the cap's triangles around p.
+  bool CannotBlock(std::int32_t slot, const double* a, const double* b, const double* c) const
+  {
+    const double* plane = &this->Tree.Planes[4 * slot];
+    if (std::fabs(G::Dot(plane, this->Centre) - plane[3]) >= this->Radius)
+    {
+      return true;
+    }
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min({ a[k], b[k], c[k] });
+      hi[k] = std::max({ a[k], b[k], c[k] });
+    }
+    const double h = HeightAbove(lo, hi, this->P, this->N);
+    return !(h > 0.0) || h * h < this->ConeSin * this->ConeSin * BoxDistance2(lo, hi, this->P);
+  }
 
   // Shrinks the ball on triangle `slot` until it no longer blocks. Returns true
   // when the triangle still reaches into the ball, but only inside the cap: a
   // smaller ball lowers the cap's plane, so it must be looked at again.
-  auto shrinkOn = [&](std::int32_t slot) {
-    const double* a = &this->Vertices[9 * slot];
+  bool ShrinkOn(std::int32_t slot)
+  {
+    const double* a = &this->Tree.Vertices[9 * slot];
     const double* b = a + 3;
     const double* c = a + 6;
-    // Closest admissible point q of the triangle strictly inside the ball of
-    // radius r; `touches` tells whether any part of it is inside.
-    auto blocks = [&](double r, double q[3], bool& touches) {
-      const double limit = r - slack;
-      touches = false;
-      if (!(limit > 0.0))
-      {
-        return false;
-      }
-      double x[3], u[3];
-      G::AddScaled(p, r, n, x);
-      touches = G::ClosestPointOnTriangle(x, a, b, c, q) < limit * limit;
-      G::Sub(q, p, u);
-      if (!touches || !capped || G::Dot(n, u) >= r * lift)
-      {
-        return touches; // the closest point is admissible: it is the answer
-      }
-      // Admissible half-space (q - x).(p - x) <= r^2 cos(theta), written as w.q <= k.
-      const double w[3] = { -r * n[0], -r * n[1], -r * n[2] };
-      const double k = G::Dot(w, x) + r * r * cosMinAngle;
-      return G::ClosestPointOnClippedTriangle(x, a, b, c, w, k, q) < limit * limit;
-    };
-    // The triangle reaches into the ball only below the cap's plane. A smaller
-    // ball lowers that plane, so it is looked at again at the end (it is inside
-    // the cone, or it would not have got this far).
-    auto inCap = [&](bool touches) { return capped && touches; };
-    auto accept = [&](double r, const double q[3]) {
-      radius = r;
-      G::AddScaled(p, radius, n, centre);
-      G::AddScaled(pRel, radius, n, centreRel);
-      std::copy(q, q + 3, result.Contact);
-      result.ContactTriangle = this->TriangleIds[slot];
-      ++result.Steps;
-    };
-    // The ball misses the triangle's plane: nothing to do (cheap and common).
-    const double* plane = &this->Planes[4 * slot];
-    if (std::fabs(G::Dot(plane, centre) - plane[3]) >= radius)
+    if (this->CannotBlock(slot, a, b, c))
     {
       return false;
-    }
-    // Outside the cone where blockers can lie (its box shows it): it never
-    // blocks, at any radius. This drops the cap's triangles around p.
-    {
-      double lo[3], hi[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        lo[k] = std::min({ a[k], b[k], c[k] });
-        hi[k] = std::max({ a[k], b[k], c[k] });
-      }
-      const double h = HeightAbove(lo, hi, p, n);
-      if (!(h > 0.0) || h * h < coneSin * coneSin * BoxDistance2(lo, hi, p))
-      {
-        return false;
-      }
     }
     double q[3];
     bool touches;
     for (int step = 0; step < StepsBeforeBisection; ++step)
     {
-      if (!blocks(radius, q, touches))
+      if (!this->Blocks(a, b, c, this->Radius, q, touches))
       {
-        return inCap(touches);
+        return this->InCap(touches);
       }
       double u[3];
-      G::Sub(q, p, u);
-      const double along = G::Dot(n, u);
+      G::Sub(q, this->P, u);
+      const double along = G::Dot(this->N, u);
       double next = along > 0.0 ? G::Dot(u, u) / (2.0 * along) : HUGE_VAL;
-      TangentCandidates(p, n, a, b, c, lift, radius, slack, next, q);
-      if (!(next < radius))
+      TangentCandidates(this->P, this->N, a, b, c, this->Lift, this->Radius, this->Slack, next, q);
+      if (!(next < this->Radius))
       {
-        return inCap(touches); // no progress left at double precision
+        return this->InCap(touches); // no progress left at double precision
       }
-      accept(next, q);
+      this->Accept(next, q, slot);
     }
-    if (!blocks(radius, q, touches))
+    if (!this->Blocks(a, b, c, this->Radius, q, touches))
     {
-      return inCap(touches);
+      return this->InCap(touches);
     }
     // Still blocking: the ball is converging (linearly) onto the point where the
     // triangle crosses the cap's cone. For one triangle the blocked radii form an
     // interval that contains the current radius, so bisection below it is exact.
-    double lo = 0.0, hi = radius, hiPoint[3] = { q[0], q[1], q[2] };
+    double lo = 0.0, hi = this->Radius, hiPoint[3] = { q[0], q[1], q[2] };
     for (int i = 0; i < 80 && hi - lo > 4.0 * std::numeric_limits<double>::epsilon() * hi; ++i)
     {
       const double mid = 0.5 * (lo + hi);
-      if (blocks(mid, q, touches))
+      if (this->Blocks(a, b, c, mid, q, touches))
       {
         hi = mid;
         std::copy(q, q + 3, hiPoint);
@@ -633,34 +718,41 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
         lo = mid;
       }
     }
-    accept(lo, hiPoint);
-    blocks(radius, q, touches);
-    return inCap(touches);
-  };
+    this->Accept(lo, hiPoint, slot);
+    this->Blocks(a, b, c, this->Radius, q, touches);
+    return this->InCap(touches);
+  }
 
-  // Depth first, nearer child first; a node is dropped as soon as it cannot
-  // block the current ball (tested again when popped: the ball keeps shrinking).
-  auto culled = [&](const Node& node) {
-    if (MissesBall(node, centreRel, radius))
+  // The node cannot block the current ball.
+  bool Culled(const Node& node) const
+  {
+    if (MissesBall(node, this->CentreRel, this->Radius))
     {
       return true;
     }
     // Only points with n.(q - p) > sin(theta / 2) |q - p| can ever block.
-    const double h = HeightAbove(node.Lo, node.Hi, pRel, n);
+    const double h = HeightAbove(node.Lo, node.Hi, this->PRel, this->N);
     if (!(h > 0.0))
     {
       return true;
     }
-    return coneSin > 0.0 && h * h < coneSin * coneSin * BoxDistance2(node, pRel);
-  };
-  auto traverse = [&](std::int32_t root, const std::int32_t skip[3]) {
-    scratch.Stack.push_back(root);
-    while (!scratch.Stack.empty())
+    return this->ConeSin > 0.0 && h * h < this->ConeSin * this->ConeSin * BoxDistance2(node, this->PRel);
+  }
+
+  // Depth first, nearer child first, from `root` without the `skip` subtrees; a node
+  // is dropped as soon as it cannot block the current ball (tested again when
+  // popped: the ball keeps shrinking).
+  void Traverse(std::int32_t root, const std::int32_t skip[3])
+  {
+    const std::vector<Node>& nodes = this->Tree.Nodes;
+    std::vector<std::int32_t>& stack = this->Work.Stack;
+    stack.push_back(root);
+    while (!stack.empty())
     {
-      const std::int32_t index = scratch.Stack.back();
-      scratch.Stack.pop_back();
-      const Node& node = this->Nodes[index];
-      if (index == skip[0] || index == skip[1] || index == skip[2] || culled(node))
+      const std::int32_t index = stack.back();
+      stack.pop_back();
+      const Node& node = nodes[index];
+      if (index == skip[0] || index == skip[1] || index == skip[2] || this->Culled(node))
       {
         continue;
       }
@@ -668,60 +760,46 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
       {
         for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
         {
-          if (this->TriangleIds[slot] != ownTriangle && shrinkOn(slot))
+          if (this->Tree.TriangleIds[slot] != this->OwnTriangle && this->ShrinkOn(slot))
           {
-            scratch.Deferred.push_back(slot);
+            this->Work.Deferred.push_back(slot);
           }
         }
         continue;
       }
       // Push the farther child first; a child whose box misses the ball is not pushed.
-      const double r2 = radius * radius;
-      const double dl = BoxDistance2(this->Nodes[node.Start], centreRel);
-      const double dr = BoxDistance2(this->Nodes[node.Start + 1], centreRel);
+      const double r2 = this->Radius * this->Radius;
+      const double dl = BoxDistance2(nodes[node.Start], this->CentreRel);
+      const double dr = BoxDistance2(nodes[node.Start + 1], this->CentreRel);
       const std::int32_t nearer = dl <= dr ? node.Start : node.Start + 1;
       if (std::max(dl, dr) < r2)
       {
-        scratch.Stack.push_back(dl <= dr ? node.Start + 1 : node.Start);
+        stack.push_back(dl <= dr ? node.Start + 1 : node.Start);
       }
       if (std::min(dl, dr) < r2)
       {
-        scratch.Stack.push_back(nearer);
+        stack.push_back(nearer);
       }
     }
-  };
-  // First the small subtrees around the far hit and around p: on smooth meshes
-  // the final contacts are usually there, and a ball that is small early culls
-  // most of the rest of the tree. Then the whole tree, without those subtrees.
-  std::int32_t seeds[3] = { -1, -1, -1 };
-  const vtkIdType seedTriangles[3] = { result.HintTriangle, result.ContactTriangle, ownTriangle };
-  const std::int32_t none[3] = { -1, -1, -1 };
-  for (int i = 0; i < 3; ++i)
-  {
-    if (seedTriangles[i] >= 0)
-    {
-      std::int32_t node = this->LeafNode[this->LeafRank[seedTriangles[i]]];
-      for (int level = 0; level < SeedLevels && this->Parent[node] >= 0; ++level)
-      {
-        node = this->Parent[node];
-      }
-      seeds[i] = node;
-      traverse(node, none);
-    }
   }
-  traverse(0, seeds);
-  // Triangles that only reached into the cap: look again until the radius settles.
-  for (bool changed = !scratch.Deferred.empty(); changed;)
-  {
-    changed = false;
-    for (std::int32_t slot : scratch.Deferred)
-    {
-      const double before = radius;
-      shrinkOn(slot);
-      changed = changed || radius < before;
-    }
-  }
-  result.Radius = radius;
+
+  const vtkMedialTriangleBVH& Tree;
+  const double* P;
+  const double* N;
+  const vtkIdType OwnTriangle;
+  const double CosMinAngle, Slack;
+  const bool Capped;
+  const double Lift, ConeSin;
+  double Radius;
+  double Centre[3], PRel[3], CentreRel[3];
+  TangentBall& Result;
+  Scratch& Work;
+};
+
+void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[3],
+  vtkIdType ownTriangle, double cosMinAngle, double slack, TangentBall& result) const
+{
+  TangentSearch(*this, p, n, ownTriangle, cosMinAngle, slack, result).Run();
 }
 
 template <class Visit>

@@ -106,6 +106,8 @@ public:
   };
 
 private:
+  class TangentSearch; // the passes of MaximalTangentBall
+
   struct Subtree
   {
     std::int32_t Node, Begin, End;
@@ -117,6 +119,15 @@ private:
     std::vector<std::int32_t>& order, const std::vector<double>& centroids,
     const std::vector<double>& boxes, const vtkMedialTriangleMesh& mesh,
     std::vector<Subtree>* later, std::int32_t grain) const;
+  // The node over order[begin, end): its box, its slab; and its centroids' box.
+  Node BoundNode(std::int32_t begin, std::int32_t end, const std::vector<std::int32_t>& order,
+    const std::vector<double>& centroids, const std::vector<double>& boxes, const vtkMedialTriangleMesh& mesh,
+    double cLo[3], double cHi[3]) const;
+  // Partitions order[begin, end) for the two children (binned SAH, else the median);
+  // returns where the right child starts.
+  static std::int32_t SplitNode(std::int32_t begin, std::int32_t end, std::vector<std::int32_t>& order,
+    const std::vector<double>& centroids, const std::vector<double>& boxes, const double cLo[3],
+    const double cHi[3]);
 
   // Depth first, nearer child first, over the triangles other than ownTriangle
   // whose admissible part may lie within sqrt(reach2) of x. visit(d2, q, triangle)

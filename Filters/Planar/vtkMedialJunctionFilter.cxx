@@ -297,10 +297,23 @@ public:
     return out;
   }
 
-  // Disks tangent to three governors (at most 2 solutions).
+  // Disks tangent to three governors (at most 2 solutions): the special cases first,
+  // then the general system.
   int SolveTriple(const int f[3], Disk out[2]) const
   {
-    // An edge and its own end vertex: tangent to the edge at that vertex.
+    int count = 0;
+    if (this->SolveTangentAtOwnVertex(f, out, count) || this->SolveFlatCorner(f, out, count))
+    {
+      return count;
+    }
+    return this->SolveGeneral(f, out);
+  }
+
+  // An edge and its own end vertex: the disk is tangent to the edge at that vertex.
+  // False when no such pair is among f.
+  bool SolveTangentAtOwnVertex(const int f[3], Disk out[2], int& count) const
+  {
+    count = 0;
     for (int i = 0; i < 3; ++i)
     {
       if (this->IsVertex(f[i]))
@@ -326,25 +339,33 @@ public:
           const auto& g = this->Poly.GetEdge(h);
           if (g.A == this->VertexOf(f[j]) || g.B == this->VertexOf(f[j]))
           {
-            return 0; // the vertex and both of its edges: no disk
+            return true; // the vertex and both of its edges: no disk
           }
           const double denom = 1.0 - (g.Normal[0] * e.Normal[0] + g.Normal[1] * e.Normal[1]);
           r = denom > 1e-15 ? (g.Normal[0] * v[0] + g.Normal[1] * v[1] + g.Offset) / denom : HUGE_VAL;
         }
         if (!(r > 0.0 && r < HUGE_VAL))
         {
-          return 0;
+          return true;
         }
         out[0].C[0] = v[0] + r * e.Normal[0];
         out[0].C[1] = v[1] + r * e.Normal[1];
         out[0].R = r;
-        return 1;
+        count = 1;
+        return true;
       }
     }
-    // Two edges meeting at a nearly straight convex vertex V: the disk's centre is on
-    // their bisector, c = V + s b with r = s (n1 . b). Solving along it stays exact
-    // however flat the corner, where the general system below loses all precision
-    // (its condition grows as 1 / turn angle). Sharp corners keep the general system.
+    return false;
+  }
+
+  // Two edges meeting at a nearly straight convex vertex V: the disk's centre is on
+  // their bisector, c = V + s b with r = s (n1 . b). Solving along it stays exact
+  // however flat the corner, where the general system loses all precision (its
+  // condition grows as 1 / turn angle). Sharp corners keep the general system.
+  // False when f has no such corner.
+  bool SolveFlatCorner(const int f[3], Disk out[2], int& count) const
+  {
+    count = 0;
     for (int i = 0; i < 3; ++i)
     {
       for (int j = 0; j < 3; ++j)
@@ -366,48 +387,8 @@ public:
         b[0] /= bl;
         b[1] /= bl;
         const double rate = e1.Normal[0] * b[0] + e1.Normal[1] * b[1]; // r per unit of s
-        const int h = f[3 - i - j];
         double roots[2];
-        int nr = 0;
-        if (!this->IsVertex(h))
-        {
-          const auto& g = this->Poly.GetEdge(h);
-          const double denom = rate - (g.Normal[0] * b[0] + g.Normal[1] * b[1]);
-          if (std::abs(denom) > 1e-15)
-          {
-            roots[nr++] = (g.Normal[0] * V[0] + g.Normal[1] * V[1] + g.Offset) / denom;
-          }
-        }
-        else
-        {
-          // |V + s b - q|^2 = (rate s)^2: (1 - rate^2) s^2 + 2 s b.(V - q) + |V - q|^2 = 0.
-          const double* q = this->Poly.GetPoint(this->VertexOf(h));
-          const double w[2] = { V[0] - q[0], V[1] - q[1] };
-          const double qa = half * half; // 1 - rate^2, without cancellation
-          const double qb = 2.0 * (b[0] * w[0] + b[1] * w[1]);
-          const double qc = w[0] * w[0] + w[1] * w[1];
-          if (qa < 1e-30 * (qb * qb + qc))
-          {
-            if (qb != 0.0)
-            {
-              roots[nr++] = -qc / qb;
-            }
-          }
-          else
-          {
-            const double disc = qb * qb - 4.0 * qa * qc;
-            if (disc >= 0.0)
-            {
-              const double t = -0.5 * (qb + std::copysign(std::sqrt(disc), qb));
-              if (t != 0.0)
-              {
-                roots[nr++] = t / qa;
-                roots[nr++] = qc / t;
-              }
-            }
-          }
-        }
-        int count = 0;
+        const int nr = this->BisectorRoots(V, b, rate, half, f[3 - i - j], roots);
         for (int k = 0; k < nr; ++k)
         {
           const double r = rate * roots[k];
@@ -419,11 +400,57 @@ public:
             ++count;
           }
         }
-        return count;
+        return true;
       }
     }
-    // Unknowns X = (cx, cy, r). Edges give n.c - r = -k; vertex pairs give
-    // 2 (vi - v0).c = |vi|^2 - |v0|^2; the first vertex gives |c - v0|^2 = r^2.
+    return false;
+  }
+
+  // Where along the bisector V + s b (radius rate * s) the disk touches governor h.
+  int BisectorRoots(const double V[2], const double b[2], double rate, double half, int h, double roots[2]) const
+  {
+    int nr = 0;
+    if (!this->IsVertex(h))
+    {
+      const auto& g = this->Poly.GetEdge(h);
+      const double denom = rate - (g.Normal[0] * b[0] + g.Normal[1] * b[1]);
+      if (std::abs(denom) > 1e-15)
+      {
+        roots[nr++] = (g.Normal[0] * V[0] + g.Normal[1] * V[1] + g.Offset) / denom;
+      }
+      return nr;
+    }
+    // |V + s b - q|^2 = (rate s)^2: (1 - rate^2) s^2 + 2 s b.(V - q) + |V - q|^2 = 0.
+    const double* q = this->Poly.GetPoint(this->VertexOf(h));
+    const double w[2] = { V[0] - q[0], V[1] - q[1] };
+    const double qa = half * half; // 1 - rate^2, without cancellation
+    const double qb = 2.0 * (b[0] * w[0] + b[1] * w[1]);
+    const double qc = w[0] * w[0] + w[1] * w[1];
+    if (qa < 1e-30 * (qb * qb + qc))
+    {
+      if (qb != 0.0)
+      {
+        roots[nr++] = -qc / qb;
+      }
+      return nr;
+    }
+    const double disc = qb * qb - 4.0 * qa * qc;
+    if (disc >= 0.0)
+    {
+      const double t = -0.5 * (qb + std::copysign(std::sqrt(disc), qb));
+      if (t != 0.0)
+      {
+        roots[nr++] = t / qa;
+        roots[nr++] = qc / t;
+      }
+    }
+    return nr;
+  }
+
+  // The general system. Unknowns X = (cx, cy, r). Edges give n.c - r = -k; vertex
+  // pairs give 2 (vi - v0).c = |vi|^2 - |v0|^2; the first vertex gives |c - v0|^2 = r^2.
+  int SolveGeneral(const int f[3], Disk out[2]) const
+  {
     double rows[3][4];
     int m = 0;
     const double* v0 = nullptr;
@@ -456,27 +483,34 @@ public:
         ++m;
       }
     }
+    return m == 3 ? SolveLinear(rows, out) : SolveLineAndCircle(rows, v0, out);
+  }
+
+  // Three linear rows (three edges): Cramer's rule.
+  static int SolveLinear(const double rows[3][4], Disk out[2])
+  {
     auto det3 = [](const double a[3], const double b[3], const double c[3]) {
       return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
         a[2] * (b[0] * c[1] - b[1] * c[0]);
     };
-    if (m == 3)
+    const double a[3] = { rows[0][0], rows[1][0], rows[2][0] };
+    const double b[3] = { rows[0][1], rows[1][1], rows[2][1] };
+    const double c[3] = { rows[0][2], rows[1][2], rows[2][2] };
+    const double rhs[3] = { rows[0][3], rows[1][3], rows[2][3] };
+    const double det = det3(a, b, c);
+    if (std::abs(det) < 1e-14)
     {
-      const double a[3] = { rows[0][0], rows[1][0], rows[2][0] };
-      const double b[3] = { rows[0][1], rows[1][1], rows[2][1] };
-      const double c[3] = { rows[0][2], rows[1][2], rows[2][2] };
-      const double rhs[3] = { rows[0][3], rows[1][3], rows[2][3] };
-      const double det = det3(a, b, c);
-      if (std::abs(det) < 1e-14)
-      {
-        return 0;
-      }
-      out[0].C[0] = det3(rhs, b, c) / det;
-      out[0].C[1] = det3(a, rhs, c) / det;
-      out[0].R = det3(a, b, rhs) / det;
-      return out[0].R > 0.0 ? 1 : 0;
+      return 0;
     }
-    // Two linear rows: a line X0 + s D, then the quadratic of v0.
+    out[0].C[0] = det3(rhs, b, c) / det;
+    out[0].C[1] = det3(a, rhs, c) / det;
+    out[0].R = det3(a, b, rhs) / det;
+    return out[0].R > 0.0 ? 1 : 0;
+  }
+
+  // Two linear rows: a line X0 + s D, then the quadratic of vertex v0.
+  static int SolveLineAndCircle(const double rows[3][4], const double* v0, Disk out[2])
+  {
     const double* r0 = rows[0];
     const double* r1 = rows[1];
     const double D[3] = { r0[1] * r1[2] - r0[2] * r1[1], r0[2] * r1[0] - r0[0] * r1[2],
@@ -506,41 +540,12 @@ public:
     const double qb = 2.0 * (px * D[0] + py * D[1] - X0[2] * D[2]);
     const double qc = px * px + py * py - X0[2] * X0[2];
     double roots[2];
-    int nr = 0;
-    if (std::abs(qa) < 1e-14 * (D[0] * D[0] + D[1] * D[1] + D[2] * D[2]))
-    {
-      if (qb != 0.0)
-      {
-        roots[nr++] = -qc / qb;
-      }
-    }
-    else
-    {
-      double disc = qb * qb - 4.0 * qa * qc;
-      if (disc < 0.0 && disc > -1e-12 * qb * qb)
-      {
-        disc = 0.0;
-      }
-      if (disc >= 0.0)
-      {
-        // Stable form: no cancellation between -b and sqrt(disc).
-        const double q = -0.5 * (qb + std::copysign(std::sqrt(disc), qb));
-        if (q != 0.0)
-        {
-          roots[nr++] = q / qa;
-          roots[nr++] = qc / q;
-        }
-        else
-        {
-          roots[nr++] = 0.0;
-        }
-      }
-    }
+    const int nr = StableQuadraticRoots(qa, qb, qc, D, roots);
     int count = 0;
     for (int i = 0; i < nr; ++i)
     {
       const double x[3] = { X0[0] + roots[i] * D[0], X0[1] + roots[i] * D[1], X0[2] + roots[i] * D[2] };
-      const double r = m == 2 && rows[0][2] == 0.0 && rows[1][2] == 0.0
+      const double r = rows[0][2] == 0.0 && rows[1][2] == 0.0
         ? std::hypot(x[0] - v0[0], x[1] - v0[1]) // three vertices: r only through the quadratic
         : x[2];
       if (r > 0.0)
@@ -552,6 +557,40 @@ public:
       }
     }
     return count;
+  }
+
+  // Roots of qa s^2 + qb s + qc (linear when qa is negligible against |D|^2).
+  static int StableQuadraticRoots(double qa, double qb, double qc, const double D[3], double roots[2])
+  {
+    int nr = 0;
+    if (std::abs(qa) < 1e-14 * (D[0] * D[0] + D[1] * D[1] + D[2] * D[2]))
+    {
+      if (qb != 0.0)
+      {
+        roots[nr++] = -qc / qb;
+      }
+      return nr;
+    }
+    double disc = qb * qb - 4.0 * qa * qc;
+    if (disc < 0.0 && disc > -1e-12 * qb * qb)
+    {
+      disc = 0.0;
+    }
+    if (disc >= 0.0)
+    {
+      // Stable form: no cancellation between -b and sqrt(disc).
+      const double q = -0.5 * (qb + std::copysign(std::sqrt(disc), qb));
+      if (q != 0.0)
+      {
+        roots[nr++] = q / qa;
+        roots[nr++] = qc / q;
+      }
+      else
+      {
+        roots[nr++] = 0.0;
+      }
+    }
+    return nr;
   }
 
   // The disk touches each of f validly, lies between stations a and b, and is empty.
@@ -699,6 +738,26 @@ public:
     return it;
   }
 
+  // Appends the first disk tangent to governors f that Accept takes between stations
+  // a and b, as an event; false when there is none.
+  bool AddEventOf(const int f[3], const Station& a, const Station& b, std::vector<Item>& items) const
+  {
+    Disk d[2];
+    const int n = this->SolveTriple(f, d);
+    for (int i = 0; i < n; ++i)
+    {
+      if (this->Accept(d[i], f, a, b))
+      {
+        Item it;
+        it.IsEvent = true;
+        it.Ev = this->MakeEvent(d[i]);
+        items.push_back(it);
+        return true;
+      }
+    }
+    return false;
+  }
+
   // Appends the items strictly between samples a and b, in walk order.
   void FindEvents(const Sample& a, const Sample& b, int depth, std::vector<Item>& items, int& unresolved) const
   {
@@ -711,18 +770,9 @@ public:
     if (u.size() == 3)
     {
       const int f[3] = { u[0], u[1], u[2] };
-      Disk d[2];
-      const int n = this->SolveTriple(f, d);
-      for (int i = 0; i < n; ++i)
+      if (this->AddEventOf(f, a.After, b.Before, items))
       {
-        if (this->Accept(d[i], f, a.After, b.Before))
-        {
-          Item it;
-          it.IsEvent = true;
-          it.Ev = this->MakeEvent(d[i]);
-          items.push_back(it);
-          return;
-        }
+        return;
       }
     }
     Station mid;
@@ -737,18 +787,9 @@ public:
           for (size_t k = j + 1; k < u.size(); ++k)
           {
             const int f[3] = { u[i], u[j], u[k] };
-            Disk d[2];
-            const int n = this->SolveTriple(f, d);
-            for (int q = 0; q < n; ++q)
+            if (this->AddEventOf(f, a.After, b.Before, items))
             {
-              if (this->Accept(d[q], f, a.After, b.Before))
-              {
-                Item it;
-                it.IsEvent = true;
-                it.Ev = this->MakeEvent(d[q]);
-                items.push_back(it);
-                return;
-              }
+              return;
             }
           }
         }
@@ -822,204 +863,225 @@ private:
   double Tol;
   std::unordered_map<long long, std::vector<int>> Cells;
 };
-}
 
-vtkMedialJunctionFilter::vtkMedialJunctionFilter() = default;
-
-int vtkMedialJunctionFilter::FillInputPortInformation(int, vtkInformation* info)
+// An arc of the graph between nodes A and B, with the governor pair that traces it.
+struct Arc
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  return 1;
-}
+  int A, B;
+  Governors Pair;
+};
 
-int vtkMedialJunctionFilter::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+// The passes of vtkMedialJunctionFilter::RequestData on one prepared polygon, in the
+// order of the class comment: Walk, SolveSamples, FindAllEvents, Connect. Each
+// parallel pass works in blocks, reporting progress and honouring an abort between them.
+class JunctionPasses
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  this->NumberOfJunctions = 0;
-  this->NumberOfEndPoints = 0;
-  this->NumberOfSamples = 0;
-  this->UnresolvedIntervals = 0;
-
-  vtkMedialPolygon poly;
-  std::string error;
-  if (!poly.Build(input, error))
+public:
+  JunctionPasses(vtkMedialJunctionFilter* self, const vtkMedialPolygon& poly, const Solver& solver, int threads)
+    : Self(self)
+    , Poly(poly)
+    , S(solver)
+    , Threads(threads)
   {
-    vtkErrorMacro(<< "Cannot compute the medial graph: " << error << ".");
-    return 0;
   }
-  const Solver solver(poly, this->Tolerance);
-  const double diagonal = poly.GetDiagonal();
-  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
 
-  // 1. The walk: stations in boundary order, loop by loop.
-  std::vector<std::vector<Sample>> walks(static_cast<size_t>(poly.GetNumberOfLoops()));
-  std::vector<std::pair<int, size_t>> toSolve; // (loop, index)
-  for (int loop = 0; loop < poly.GetNumberOfLoops(); ++loop)
+  // 1. The walk: stations in boundary order, loop by loop. Returns the samples to solve.
+  vtkIdType Walk(double samplesPerUnitLength, int minimumSamplesPerEdge)
   {
-    auto& walk = walks[loop];
-    for (int e : poly.GetLoopEdges(loop))
+    const vtkMedialPolygon& poly = this->Poly;
+    const double diagonal = poly.GetDiagonal();
+    this->Walks.assign(static_cast<size_t>(poly.GetNumberOfLoops()), {});
+    for (int loop = 0; loop < poly.GetNumberOfLoops(); ++loop)
     {
-      const auto& edge = poly.GetEdge(e);
-      if (poly.GetVertexKind(edge.A) == vtkMedialPolygon::CONVEX)
+      auto& walk = this->Walks[loop];
+      for (int e : poly.GetLoopEdges(loop))
       {
-        walk.push_back(solver.EndAt(edge.A));
-      }
-      const int n = std::max(this->MinimumSamplesPerEdge,
-        static_cast<int>(std::ceil(this->SamplesPerUnitLength * edge.Length / diagonal)));
-      for (int k = 0; k < n; ++k)
-      {
-        Sample s;
-        s.Before = s.After = { e, (k + 0.5) / n };
-        toSolve.emplace_back(loop, walk.size());
-        walk.push_back(s);
-      }
-      if (poly.GetVertexKind(edge.B) == vtkMedialPolygon::REFLEX)
-      {
-        const int v = edge.B;
-        const int m = std::max(1, static_cast<int>(std::ceil(solver.ConeAngle(v) / (3.14159265358979323846 / 2))));
-        for (int k = 0; k <= m; ++k)
+        const auto& edge = poly.GetEdge(e);
+        if (poly.GetVertexKind(edge.A) == vtkMedialPolygon::CONVEX)
         {
-          Sample s;
-          s.Before = s.After = { poly.GetNumberOfEdges() + v, static_cast<double>(k) / m };
-          toSolve.emplace_back(loop, walk.size());
-          walk.push_back(s);
+          walk.push_back(this->S.EndAt(edge.A));
         }
-      }
-    }
-  }
-  this->NumberOfSamples = static_cast<vtkIdType>(toSolve.size());
-
-  // 2. Maximal disks of the samples.
-  const vtkIdType count = static_cast<vtkIdType>(toSolve.size());
-  const vtkIdType block = 16384;
-  for (vtkIdType begin = 0; begin < count && !this->GetAbortExecute(); begin += block)
-  {
-    const vtkIdType end = std::min(count, begin + block);
-#pragma omp parallel for num_threads(threads) schedule(dynamic, 64)
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      Sample& s = walks[toSolve[i].first][toSolve[i].second];
-      s = solver.SampleAt(s.Before);
-    }
-    this->UpdateProgress(0.5 * static_cast<double>(end) / static_cast<double>(count));
-  }
-  if (this->GetAbortExecute())
-  {
-    return 1;
-  }
-
-  // 3. Events between neighbouring samples, interval by interval.
-  std::vector<std::pair<int, size_t>> intervals;
-  for (int loop = 0; loop < poly.GetNumberOfLoops(); ++loop)
-  {
-    for (size_t i = 0; i < walks[loop].size(); ++i)
-    {
-      intervals.emplace_back(loop, i);
-    }
-  }
-  std::vector<std::vector<Item>> found(intervals.size());
-  std::vector<int> unresolved(intervals.size(), 0);
-  const vtkIdType nIntervals = static_cast<vtkIdType>(intervals.size());
-  for (vtkIdType begin = 0; begin < nIntervals && !this->GetAbortExecute(); begin += block)
-  {
-    const vtkIdType end = std::min(nIntervals, begin + block);
-#pragma omp parallel for num_threads(threads) schedule(dynamic, 64)
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      const auto& walk = walks[intervals[i].first];
-      const size_t k = intervals[i].second;
-      solver.FindEvents(walk[k], walk[(k + 1) % walk.size()], 0, found[i], unresolved[i]);
-    }
-    this->UpdateProgress(0.5 + 0.4 * static_cast<double>(end) / static_cast<double>(nIntervals));
-  }
-  if (this->GetAbortExecute())
-  {
-    return 1;
-  }
-  for (int u : unresolved)
-  {
-    this->UnresolvedIntervals += u;
-  }
-  // A sample without a disk (its ray found no far side) hides its two intervals.
-  for (const auto& walk : walks)
-  {
-    for (const Sample& s : walk)
-    {
-      this->UnresolvedIntervals += s.Valid ? 0 : 2;
-    }
-  }
-
-  // 4. Nodes and arcs, in walk order.
-  NodeSet nodes(1e-8 * diagonal);
-  struct Arc
-  {
-    int A, B;
-    Governors Pair;
-  };
-  std::vector<Arc> arcs;
-  std::map<std::tuple<int, int, Governors>, bool> seen;
-  size_t next = 0;
-  for (int loop = 0; loop < poly.GetNumberOfLoops(); ++loop)
-  {
-    // Flatten the loop's walk: samples and events in order.
-    std::vector<Item> items;
-    for (size_t i = 0; i < walks[loop].size(); ++i, ++next)
-    {
-      if (walks[loop][i].Valid)
-      {
-        items.push_back(solver.SampleItem(walks[loop][i]));
-      }
-      items.insert(items.end(), found[next].begin(), found[next].end());
-    }
-    std::vector<size_t> eventAt;
-    std::vector<int> nodeOf;
-    for (size_t i = 0; i < items.size(); ++i)
-    {
-      if (items[i].IsEvent)
-      {
-        eventAt.push_back(i);
-        nodeOf.push_back(nodes.Add(items[i].Ev));
-      }
-    }
-    for (size_t j = 0; j < eventAt.size(); ++j)
-    {
-      const size_t from = eventAt[j], to = eventAt[(j + 1) % eventAt.size()];
-      const int a = nodeOf[j], b = nodeOf[(j + 1) % eventAt.size()];
-      if (a == b)
-      {
-        continue;
-      }
-      Governors pair;
-      if (items[from].Ev.IsEnd)
-      {
-        pair = items[from].Gov;
-      }
-      else if (items[to].Ev.IsEnd)
-      {
-        pair = items[to].Gov;
-      }
-      else
-      {
-        for (size_t i = (from + 1) % items.size(); i != to; i = (i + 1) % items.size())
+        const int n = std::max(minimumSamplesPerEdge,
+          static_cast<int>(std::ceil(samplesPerUnitLength * edge.Length / diagonal)));
+        for (int k = 0; k < n; ++k)
         {
-          if (!items[i].IsEvent && items[i].Gov.size() == 2)
+          this->AddStation(loop, { e, (k + 0.5) / n });
+        }
+        if (poly.GetVertexKind(edge.B) == vtkMedialPolygon::REFLEX)
+        {
+          const int v = edge.B;
+          const int m =
+            std::max(1, static_cast<int>(std::ceil(this->S.ConeAngle(v) / (3.14159265358979323846 / 2))));
+          for (int k = 0; k <= m; ++k)
           {
-            pair = items[i].Gov;
-            break;
+            this->AddStation(loop, { poly.GetNumberOfEdges() + v, static_cast<double>(k) / m });
           }
         }
       }
-      auto key = std::make_tuple(std::min(a, b), std::max(a, b), pair);
-      if (seen.emplace(key, true).second)
+    }
+    return static_cast<vtkIdType>(this->ToSolve.size());
+  }
+
+  // 2. The maximal disks of the samples. False when aborted.
+  bool SolveSamples()
+  {
+    const vtkIdType count = static_cast<vtkIdType>(this->ToSolve.size());
+    return this->InBlocks(count, 0.0, 0.5, [this](vtkIdType i) {
+      Sample& s = this->Walks[this->ToSolve[i].first][this->ToSolve[i].second];
+      s = this->S.SampleAt(s.Before);
+    });
+  }
+
+  // 3. The events between neighbouring samples, interval by interval. False when
+  // aborted; `unresolved` counts the intervals without an answer.
+  bool FindAllEvents(vtkIdType& unresolved)
+  {
+    std::vector<std::pair<int, size_t>> intervals;
+    for (int loop = 0; loop < this->Poly.GetNumberOfLoops(); ++loop)
+    {
+      for (size_t i = 0; i < this->Walks[loop].size(); ++i)
       {
-        arcs.push_back({ a, b, pair });
+        intervals.emplace_back(loop, i);
+      }
+    }
+    this->Found.assign(intervals.size(), {});
+    std::vector<int> failed(intervals.size(), 0);
+    const bool done =
+      this->InBlocks(static_cast<vtkIdType>(intervals.size()), 0.5, 0.4, [&](vtkIdType i) {
+        const auto& walk = this->Walks[intervals[i].first];
+        const size_t k = intervals[i].second;
+        this->S.FindEvents(walk[k], walk[(k + 1) % walk.size()], 0, this->Found[i], failed[i]);
+      });
+    if (!done)
+    {
+      return false;
+    }
+    unresolved = 0;
+    for (int u : failed)
+    {
+      unresolved += u;
+    }
+    // A sample without a disk (its ray found no far side) hides its two intervals.
+    for (const auto& walk : this->Walks)
+    {
+      for (const Sample& s : walk)
+      {
+        unresolved += s.Valid ? 0 : 2;
+      }
+    }
+    return true;
+  }
+
+  // 4. Nodes and arcs, in walk order: consecutive events of a loop's walk are joined
+  // by one arc, found once from each side and kept once.
+  void Connect(NodeSet& nodes, std::vector<Arc>& arcs) const
+  {
+    std::map<std::tuple<int, int, Governors>, bool> seen;
+    size_t next = 0;
+    for (int loop = 0; loop < this->Poly.GetNumberOfLoops(); ++loop)
+    {
+      // Flatten the loop's walk: samples and events in order.
+      std::vector<Item> items;
+      for (size_t i = 0; i < this->Walks[loop].size(); ++i, ++next)
+      {
+        if (this->Walks[loop][i].Valid)
+        {
+          items.push_back(this->S.SampleItem(this->Walks[loop][i]));
+        }
+        items.insert(items.end(), this->Found[next].begin(), this->Found[next].end());
+      }
+      std::vector<size_t> eventAt;
+      std::vector<int> nodeOf;
+      for (size_t i = 0; i < items.size(); ++i)
+      {
+        if (items[i].IsEvent)
+        {
+          eventAt.push_back(i);
+          nodeOf.push_back(nodes.Add(items[i].Ev));
+        }
+      }
+      for (size_t j = 0; j < eventAt.size(); ++j)
+      {
+        const int a = nodeOf[j], b = nodeOf[(j + 1) % eventAt.size()];
+        if (a == b)
+        {
+          continue;
+        }
+        const Governors pair = ArcPair(items, eventAt[j], eventAt[(j + 1) % eventAt.size()]);
+        auto key = std::make_tuple(std::min(a, b), std::max(a, b), pair);
+        if (seen.emplace(key, true).second)
+        {
+          arcs.push_back({ a, b, pair });
+        }
       }
     }
   }
 
-  // 5. Output in the input's plane.
+private:
+  void AddStation(int loop, const Station& station)
+  {
+    Sample s;
+    s.Before = s.After = station;
+    this->ToSolve.emplace_back(loop, this->Walks[loop].size());
+    this->Walks[loop].push_back(s);
+  }
+
+  // Runs work(i) for i in [0, count) in parallel blocks; progress goes from `start`
+  // over `share`. False when aborted.
+  template <class Work>
+  bool InBlocks(vtkIdType count, double start, double share, Work&& work) const
+  {
+    const vtkIdType block = 16384;
+    for (vtkIdType begin = 0; begin < count && !this->Self->GetAbortExecute(); begin += block)
+    {
+      const vtkIdType end = std::min(count, begin + block);
+#pragma omp parallel for num_threads(this->Threads) schedule(dynamic, 64)
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        work(i);
+      }
+      this->Self->UpdateProgress(start + share * static_cast<double>(end) / static_cast<double>(count));
+    }
+    return !this->Self->GetAbortExecute();
+  }
+
+  // The governor pair of the arc between the events at `from` and `to`: an end's
+  // edges, or the first two-governor sample between them.
+  static Governors ArcPair(const std::vector<Item>& items, size_t from, size_t to)
+  {
+    if (items[from].Ev.IsEnd)
+    {
+      return items[from].Gov;
+    }
+    if (items[to].Ev.IsEnd)
+    {
+      return items[to].Gov;
+    }
+    for (size_t i = (from + 1) % items.size(); i != to; i = (i + 1) % items.size())
+    {
+      if (!items[i].IsEvent && items[i].Gov.size() == 2)
+      {
+        return items[i].Gov;
+      }
+    }
+    return Governors();
+  }
+
+  vtkMedialJunctionFilter* Self;
+  const vtkMedialPolygon& Poly;
+  const Solver& S;
+  const int Threads;
+  std::vector<std::vector<Sample>> Walks;
+  std::vector<std::pair<int, size_t>> ToSolve; // (loop, index)
+  std::vector<std::vector<Item>> Found;         // per interval
+};
+
+// 5. The output in the input's plane: nodes (a regular node where 3 or more arcs meet
+// becomes a junction), then one line per arc, parabolic arcs sampled at `resolution`
+// inner points. Returns the number of junctions and end points.
+void WriteGraph(const vtkMedialPolygon& poly, NodeSet& nodes, const std::vector<Arc>& arcs, int resolution,
+  vtkPolyData* output, vtkIdType& junctions, vtkIdType& ends)
+{
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkDoubleArray> radius;
@@ -1045,20 +1107,21 @@ int vtkMedialJunctionFilter::RequestData(
     ++degree[arc.A];
     ++degree[arc.B];
   }
+  junctions = ends = 0;
   for (size_t i = 0; i < nodes.Nodes.size(); ++i)
   {
     Node& n = nodes.Nodes[i];
-    if (n.Type == REGULAR_POINT && degree[i] >= 3)
+    if (n.Type == vtkMedialJunctionFilter::REGULAR_POINT && degree[i] >= 3)
     {
-      n.Type = JUNCTION_POINT;
+      n.Type = vtkMedialJunctionFilter::JUNCTION_POINT;
       n.Count = std::max(n.Count, degree[i]);
     }
   }
   for (const Node& n : nodes.Nodes)
   {
     addPoint(n.Centre, n.Radius, n.Type, n.Count);
-    this->NumberOfJunctions += n.Type == JUNCTION_POINT ? 1 : 0;
-    this->NumberOfEndPoints += n.Type == END_POINT ? 1 : 0;
+    junctions += n.Type == vtkMedialJunctionFilter::JUNCTION_POINT ? 1 : 0;
+    ends += n.Type == vtkMedialJunctionFilter::END_POINT ? 1 : 0;
   }
   vtkNew<vtkCellArray> lines;
   vtkNew<vtkIntArray> arcType;
@@ -1066,8 +1129,6 @@ int vtkMedialJunctionFilter::RequestData(
   const int E = poly.GetNumberOfEdges();
   for (const Arc& arc : arcs)
   {
-    const Node& a = nodes.Nodes[arc.A];
-    const Node& b = nodes.Nodes[arc.B];
     const bool parabolic = arc.Pair.size() == 2 && ((arc.Pair[0] < E) != (arc.Pair[1] < E));
     std::vector<vtkIdType> ids = { arc.A };
     if (parabolic)
@@ -1081,10 +1142,10 @@ int vtkMedialJunctionFilter::RequestData(
         const double q[2] = { n.Centre[0] - o[0], n.Centre[1] - o[1] };
         return q[0] * dir[0] + q[1] * dir[1];
       };
-      const double s0 = along(a), s1 = along(b);
-      for (int k = 1; k <= this->ArcResolution; ++k)
+      const double s0 = along(nodes.Nodes[arc.A]), s1 = along(nodes.Nodes[arc.B]);
+      for (int k = 1; k <= resolution; ++k)
       {
-        const double s = s0 + (s1 - s0) * k / (this->ArcResolution + 1.0);
+        const double s = s0 + (s1 - s0) * k / (resolution + 1.0);
         const double F[2] = { o[0] + s * dir[0], o[1] + s * dir[1] };
         const double r = Solver::RadiusThrough(F, e.Normal, v);
         if (!(r < HUGE_VAL))
@@ -1092,12 +1153,12 @@ int vtkMedialJunctionFilter::RequestData(
           continue;
         }
         const double c[2] = { F[0] + r * e.Normal[0], F[1] + r * e.Normal[1] };
-        ids.push_back(addPoint(c, r, REGULAR_POINT, 2));
+        ids.push_back(addPoint(c, r, vtkMedialJunctionFilter::REGULAR_POINT, 2));
       }
     }
     ids.push_back(arc.B);
     lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-    arcType->InsertNextValue(parabolic ? PARABOLIC_ARC : LINEAR_ARC);
+    arcType->InsertNextValue(parabolic ? vtkMedialJunctionFilter::PARABOLIC_ARC : vtkMedialJunctionFilter::LINEAR_ARC);
   }
   output->SetPoints(points);
   output->SetLines(lines);
@@ -1106,6 +1167,46 @@ int vtkMedialJunctionFilter::RequestData(
   output->GetPointData()->AddArray(type);
   output->GetPointData()->AddArray(governors);
   output->GetCellData()->AddArray(arcType);
+}
+}
+
+vtkMedialJunctionFilter::vtkMedialJunctionFilter() = default;
+
+int vtkMedialJunctionFilter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+int vtkMedialJunctionFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  this->NumberOfJunctions = 0;
+  this->NumberOfEndPoints = 0;
+  this->NumberOfBoundarySamples = 0;
+  this->UnresolvedIntervals = 0;
+
+  vtkMedialPolygon poly;
+  std::string error;
+  if (!poly.Build(input, error))
+  {
+    vtkErrorMacro(<< "Cannot compute the medial graph: " << error << ".");
+    return 0;
+  }
+  const Solver solver(poly, this->Tolerance);
+  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  JunctionPasses passes(this, poly, solver, threads);
+  this->NumberOfBoundarySamples = passes.Walk(this->SamplesPerUnitLength, this->MinimumSamplesPerEdge);
+  if (!passes.SolveSamples() || !passes.FindAllEvents(this->UnresolvedIntervals))
+  {
+    return 1; // aborted: leave the output empty
+  }
+  NodeSet nodes(1e-8 * poly.GetDiagonal());
+  std::vector<Arc> arcs;
+  passes.Connect(nodes, arcs);
+  WriteGraph(poly, nodes, arcs, this->ArcResolution, output, this->NumberOfJunctions, this->NumberOfEndPoints);
 
   if (this->UnresolvedIntervals > 0)
   {
@@ -1126,5 +1227,6 @@ void vtkMedialJunctionFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "NumberOfJunctions: " << this->NumberOfJunctions << "\n";
   os << indent << "NumberOfEndPoints: " << this->NumberOfEndPoints << "\n";
+  os << indent << "NumberOfBoundarySamples: " << this->NumberOfBoundarySamples << "\n";
   os << indent << "UnresolvedIntervals: " << this->UnresolvedIntervals << "\n";
 }

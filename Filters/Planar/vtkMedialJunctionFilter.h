@@ -69,7 +69,9 @@ public:
   };
 
   ///@{
-  /// Boundary samples per bounding-box diagonal of boundary length (default 20).
+  /// Boundary samples per diagonal of boundary length (default 100): an edge of length
+  /// L gets max(MinimumSamplesPerEdge, ceil(SamplesPerUnitLength * L / D)) samples,
+  /// D being the diagonal of the polygon's bounding box in its plane.
   vtkSetClampMacro(SamplesPerUnitLength, double, 0.0, 1e9);
   vtkGetMacro(SamplesPerUnitLength, double);
   ///@}
@@ -103,7 +105,9 @@ public:
   /// whose governor change could not be solved (0 on valid input).
   vtkGetMacro(NumberOfJunctions, vtkIdType);
   vtkGetMacro(NumberOfEndPoints, vtkIdType);
-  vtkGetMacro(NumberOfSamples, vtkIdType);
+  /// Boundary samples whose maximal disk was solved (edge and reflex-vertex stations;
+  /// not the sampler's NumberOfSamples, which is an input).
+  vtkGetMacro(NumberOfBoundarySamples, vtkIdType);
   vtkGetMacro(UnresolvedIntervals, vtkIdType);
   ///@}
 
@@ -122,7 +126,7 @@ protected:
 
   vtkIdType NumberOfJunctions = 0;
   vtkIdType NumberOfEndPoints = 0;
-  vtkIdType NumberOfSamples = 0;
+  vtkIdType NumberOfBoundarySamples = 0;
   vtkIdType UnresolvedIntervals = 0;
 
 private:

@@ -2,6 +2,9 @@
 #include "vtkMedialBallUnion.h"
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialEnvelope.h"
+#include "vtkMedialPipeline.h"
+#include "vtkMedialPlane.h"
+#include "vtkMedialUniformGrid.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -31,6 +34,8 @@
 #include <memory>
 #include <set>
 #include <numeric>
+#include <sstream>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkMedialBallUnion);
@@ -421,36 +426,16 @@ struct FieldFiller
   }
 };
 
-// Fits a plane to the centres. Returns 2 when they span exactly one plane, 1 when they
-// are collinear, 0 when they coincide, 3 otherwise; `frame` is the best-fit plane.
+// Fits a plane to the centres (vtkMedialPlane::FitPoints). Returns 2 when they span
+// exactly one plane, 1 when they are collinear, 0 when they coincide, 3 otherwise;
+// `frame` is the best-fit plane, with U the world axis most perpendicular to the
+// normal projected into the plane, so that a z = const plane keeps x and y.
 int FitPlane(const std::vector<Ball>& balls, double tolerance, PlaneFrame& frame)
 {
-  const size_t n = balls.size();
-  double centroid[3] = { 0, 0, 0 };
-  for (const Ball& b : balls)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      centroid[k] += b.C[k] / static_cast<double>(n);
-    }
-  }
-  double cov[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
-  for (const Ball& b : balls)
-  {
-    const double d[3] = { b.C[0] - centroid[0], b.C[1] - centroid[1], b.C[2] - centroid[2] };
-    for (int r = 0; r < 3; ++r)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        cov[r][c] += d[r] * d[c];
-      }
-    }
-  }
-  double* rows[3] = { cov[0], cov[1], cov[2] };
-  double vecStorage[3][3];
-  double* vecs[3] = { vecStorage[0], vecStorage[1], vecStorage[2] };
-  double values[3];
-  vtkMath::Jacobi(rows, values, vecs); // eigenvalues in decreasing order, vectors in columns
+  const vtkIdType n = static_cast<vtkIdType>(balls.size());
+  auto centreOf = [&balls](vtkIdType i, double p[3]) { std::copy(balls[i].C, balls[i].C + 3, p); };
+  double centroid[3], values[3], vecs[3][3];
+  vtkMedialPlane::FitPoints(n, centreOf, centroid, values, vecs); // eigenvalues decreasing, vectors in columns
   double axis[3], normal[3];
   for (int k = 0; k < 3; ++k)
   {
@@ -458,15 +443,8 @@ int FitPlane(const std::vector<Ball>& balls, double tolerance, PlaneFrame& frame
     normal[k] = vecs[k][2];
   }
   // Largest distance from the best line and from the best plane.
-  double fromLine = 0.0, fromPlane = 0.0;
-  for (const Ball& b : balls)
-  {
-    const double d[3] = { b.C[0] - centroid[0], b.C[1] - centroid[1], b.C[2] - centroid[2] };
-    const double along = vtkMath::Dot(d, axis);
-    const double off = vtkMath::Dot(d, normal);
-    fromLine = std::max(fromLine, std::sqrt(std::max(0.0, vtkMath::Dot(d, d) - along * along)));
-    fromPlane = std::max(fromPlane, std::fabs(off));
-  }
+  const double fromLine = vtkMedialPlane::MaxDistanceFromLine(n, centreOf, centroid, axis);
+  const double fromPlane = vtkMedialPlane::MaxDistance(n, centreOf, centroid, normal);
   int rank = 3;
   if (fromPlane <= tolerance)
   {
@@ -495,29 +473,10 @@ int FitPlane(const std::vector<Ball>& balls, double tolerance, PlaneFrame& frame
       normal[k] = 1.0;
     }
   }
-  // Sign: largest component positive, for a reproducible frame.
-  const int big = static_cast<int>(std::max_element(normal, normal + 3,
-                                     [](double a, double b) { return std::fabs(a) < std::fabs(b); }) -
-    normal);
-  if (normal[big] < 0)
-  {
-    for (double& c : normal)
-    {
-      c = -c;
-    }
-  }
+  vtkMedialPlane::CanonicalSign(normal); // a reproducible frame
   vtkMath::Normalize(normal);
-  // U: the world axis most perpendicular to the normal, projected into the plane.
-  int pick = 0;
-  for (int k = 1; k < 3; ++k)
-  {
-    if (std::fabs(normal[k]) < std::fabs(normal[pick]))
-    {
-      pick = k;
-    }
-  }
   double u[3] = { 0, 0, 0 };
-  u[pick] = 1.0;
+  u[vtkMedialPlane::LeastAxis(normal)] = 1.0;
   const double un = vtkMath::Dot(u, normal);
   for (int k = 0; k < 3; ++k)
   {
@@ -719,11 +678,398 @@ double SignedVolume(vtkPolyData* surface)
   }
   return volume;
 }
+
+// The centres binned by superblock on a vtkMedialUniformGrid, each bin's balls
+// largest radius first, with the bin's largest radius: the candidates of a
+// superblock are the balls of the bins that can reach it.
+class CentreBins
+{
+public:
+  CentreBins(const std::vector<Ball>& balls, const Grid& grid, double band)
+    : Balls(balls)
+    , G(grid)
+  {
+    double origin[3], size[3];
+    int dims[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      this->SuperSize[k] = grid.Dims[k] > 1 ? SuperBlock : 1;
+      dims[k] = (grid.Dims[k] + this->SuperSize[k] - 1) / this->SuperSize[k];
+      origin[k] = grid.Origin[k];
+      size[k] = this->SuperSize[k] * grid.Spacing[k];
+    }
+    this->Bins.Initialize(origin, size, dims);
+    this->Bins.Build(static_cast<vtkIdType>(balls.size()),
+      [&](vtkIdType i, auto&& add) { add(this->Bins.CellOf(balls[i].C)); });
+    // Largest radius first, so that a far bin's scan stops early; ties by id keep the
+    // order deterministic.
+    this->Bins.SortCells([&balls](vtkIdType a, vtkIdType b) {
+      return balls[a].R > balls[b].R || (balls[a].R == balls[b].R && a < b);
+    });
+    this->MaxRadius.assign(static_cast<size_t>(this->Bins.GetNumberOfCells()), 0.0);
+    double maxRadius = 0.0;
+    for (vtkIdType bin = 0; bin < this->Bins.GetNumberOfCells(); ++bin)
+    {
+      for (const vtkIdType* b = this->Bins.CellBegin(bin); b < this->Bins.CellEnd(bin); ++b)
+      {
+        this->MaxRadius[bin] = std::max(this->MaxRadius[bin], balls[*b].R);
+        maxRadius = std::max(maxRadius, balls[*b].R);
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Reach[k] = grid.Dims[k] > 1
+        ? static_cast<int>(std::ceil((maxRadius + band) / this->Bins.GetCellSize(k))) + 1
+        : 0;
+    }
+  }
+
+  int GetSuperSize(int k) const { return this->SuperSize[k]; }
+  int GetSupers(int k) const { return this->Bins.GetDimension(k); }
+
+  /// The balls that can reach the clamped field inside superblock sb, whose grid
+  /// points span [slo, shi].
+  void Gather(const int sb[3], const double slo[3], const double shi[3], double band, double slack,
+    std::vector<Candidate>& gathered) const
+  {
+    gathered.clear();
+    const int lo[3] = { sb[0] - this->Reach[0], sb[1] - this->Reach[1], sb[2] - this->Reach[2] };
+    const int hi[3] = { sb[0] + this->Reach[0], sb[1] + this->Reach[1], sb[2] + this->Reach[2] };
+    this->Bins.ForEachCellInBox(lo, hi, [&](const int* b, vtkIdType bin) {
+      if (this->Bins.IsCellEmpty(bin))
+      {
+        return;
+      }
+      // Bins are half-open boxes of superblock size (flat along an axis of one point).
+      double blo[3], bhi[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        blo[k] = this->Bins.CellLow(k, b[k]);
+        bhi[k] = blo[k] + this->Bins.GetCellSize(k);
+        if (this->G.Dims[k] == 1)
+        {
+          blo[k] = bhi[k] = this->G.Origin[k];
+        }
+      }
+      const double gap = BoxBoxDistance(slo, shi, blo, bhi) - band - slack;
+      if (gap - this->MaxRadius[bin] >= 0.0)
+      {
+        return;
+      }
+      for (const vtkIdType* id = this->Bins.CellBegin(bin); id < this->Bins.CellEnd(bin); ++id)
+      {
+        if (gap - this->Balls[*id].R >= 0.0)
+        {
+          break; // this and every smaller ball stay beyond the band
+        }
+        gathered.push_back({ 0.0, *id });
+      }
+    });
+  }
+
+private:
+  const std::vector<Ball>& Balls;
+  const Grid& G;
+  int SuperSize[3];
+  int Reach[3];
+  vtkMedialUniformGrid Bins;
+  std::vector<double> MaxRadius;
+};
+
+// Pass 1: the balls, validated. Returns an error, or an empty string.
+std::string GatherBalls(vtkPointSet* input, vtkDataArray* radii, int association, const char* name,
+  std::vector<Ball>& balls)
+{
+  const std::string quoted = name ? std::string("'") + name + "'" : std::string("the radius array");
+  if (!radii)
+  {
+    return name ? "the input has no point-data array named " + quoted + " (the radius array, see SetInputArrayToProcess)"
+                : std::string("the input has no radius array (see SetInputArrayToProcess)");
+  }
+  if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  {
+    return quoted + " is not point data: the radius array needs one value per ball";
+  }
+  if (radii->GetNumberOfComponents() != 1)
+  {
+    return quoted + " has " + std::to_string(radii->GetNumberOfComponents()) + " components, expected 1";
+  }
+  const vtkIdType count = input->GetNumberOfPoints();
+  balls.resize(static_cast<size_t>(count));
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    Ball& b = balls[i];
+    input->GetPoint(i, b.C);
+    b.R = radii->GetTuple1(i);
+    if (!std::isfinite(b.R))
+    {
+      return "point " + std::to_string(i) + " has a NaN or infinite radius";
+    }
+    if (b.R < 0.0)
+    {
+      std::ostringstream os;
+      os << "point " << i << " has a negative radius (" << b.R << ")";
+      return os.str();
+    }
+    if (!std::isfinite(b.C[0]) || !std::isfinite(b.C[1]) || !std::isfinite(b.C[2]))
+    {
+      return "point " + std::to_string(i) + " has NaN or infinite coordinates";
+    }
+  }
+  return std::string();
+}
+
+// Pass 2: 2D or 3D (see the class comment); in 2D the centres go into the plane's
+// frame (z = 0). Returns an error, or an empty string.
+std::string ChooseDimension(std::vector<Ball>& balls, int requested, PlaneFrame& frame, int& dimension)
+{
+  double worldLo[3], worldHi[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    worldLo[k] = HUGE_VAL;
+    worldHi[k] = -HUGE_VAL;
+  }
+  for (const Ball& b : balls)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      worldLo[k] = std::min(worldLo[k], b.C[k] - b.R);
+      worldHi[k] = std::max(worldHi[k], b.C[k] + b.R);
+    }
+  }
+  const double worldDiagonal = std::sqrt(vtkMath::Distance2BetweenPoints(worldLo, worldHi));
+  const int rank = FitPlane(balls, 1e-9 * worldDiagonal, frame);
+  dimension = requested;
+  if (dimension == vtkMedialBallUnion::DIMENSION_AUTOMATIC)
+  {
+    dimension = rank == 2 ? 2 : 3;
+  }
+  else if (dimension == vtkMedialBallUnion::DIMENSION_2D && rank == 3)
+  {
+    return "the centres do not lie in one plane, so there is no 2D union of disks";
+  }
+  if (dimension == 2)
+  {
+    for (Ball& b : balls)
+    {
+      double d[3];
+      vtkMath::Subtract(b.C, frame.Origin, d);
+      b.C[0] = vtkMath::Dot(d, frame.U);
+      b.C[1] = vtkMath::Dot(d, frame.V);
+      b.C[2] = 0.0;
+    }
+  }
+  return std::string();
+}
+
+// The box of the union (centres +- radii) on the first `axes` axes (0 beyond).
+void UnionBox(const std::vector<Ball>& balls, int axes, double lo[3], double hi[3])
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    lo[k] = k < axes ? HUGE_VAL : 0.0;
+    hi[k] = k < axes ? -HUGE_VAL : 0.0;
+  }
+  for (const Ball& b : balls)
+  {
+    for (int k = 0; k < axes; ++k)
+    {
+      lo[k] = std::min(lo[k], b.C[k] - b.R);
+      hi[k] = std::max(hi[k], b.C[k] + b.R);
+    }
+  }
+}
+
+// ModelBounds in the grid's frame: the box itself in 3D, the extent of its
+// projection onto the plane's axes U, V in 2D.
+void ModelBox(const double bounds[6], int dimension, const PlaneFrame& frame, double lo[3], double hi[3])
+{
+  if (dimension == 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = bounds[2 * k];
+      hi[k] = bounds[2 * k + 1];
+    }
+    return;
+  }
+  lo[0] = lo[1] = HUGE_VAL;
+  hi[0] = hi[1] = -HUGE_VAL;
+  lo[2] = hi[2] = 0.0;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    double d[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      d[k] = bounds[2 * k + ((corner >> k) & 1)] - frame.Origin[k];
+    }
+    const double uv[2] = { vtkMath::Dot(d, frame.U), vtkMath::Dot(d, frame.V) };
+    for (int k = 0; k < 2; ++k)
+    {
+      lo[k] = std::min(lo[k], uv[k]);
+      hi[k] = std::max(hi[k], uv[k]);
+    }
+  }
+}
+
+// Pass 4: the clamped field over the grid, superblock by superblock, in z-slabs
+// (parallel within a slab); `balls` are the envelope's bounding balls when there is one.
+// False when aborted.
+bool FillField(vtkMedialBallUnion* self, const std::vector<Ball>& balls, const Grid& grid, double band,
+  double slack, int threads, double* values, const Envelope* envelope)
+{
+  const CentreBins bins(balls, grid, band);
+  const vtkIdType sliceSize = static_cast<vtkIdType>(grid.Dims[0]) * grid.Dims[1];
+  const FieldFiller filler{ balls, grid, band, slack, values, sliceSize, envelope };
+  const int superPerLayer = bins.GetSupers(0) * bins.GetSupers(1);
+  for (int sz = 0; sz < bins.GetSupers(2) && !self->GetAbortExecute(); ++sz)
+  {
+#pragma omp parallel num_threads(threads)
+    {
+      std::vector<Candidate> gathered;
+      std::vector<std::vector<Candidate>> levels(FieldFiller::MaximumDepth);
+#pragma omp for schedule(dynamic, 1)
+      for (int s = 0; s < superPerLayer; ++s)
+      {
+        const int sb[3] = { s % bins.GetSupers(0), s / bins.GetSupers(0), sz };
+        int first[3], last[3];
+        double slo[3], shi[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          first[k] = sb[k] * bins.GetSuperSize(k);
+          last[k] = std::min(grid.Dims[k] - 1, first[k] + bins.GetSuperSize(k) - 1);
+          slo[k] = filler.PointOf(k, first[k]);
+          shi[k] = filler.PointOf(k, last[k]);
+        }
+        bins.Gather(sb, slo, shi, band, slack, gathered);
+        filler.Refine(gathered, first, last, 0, levels);
+      }
+    }
+    self->UpdateProgress(0.9 * (sz + 1) / bins.GetSupers(2));
+  }
+  return !self->GetAbortExecute();
+}
+
+// Output 1: the field image; in 2D its direction matrix holds (u, v, n) and its
+// origin is the grid's origin placed in the plane.
+void WriteFieldImage(vtkImageData* image, vtkInformation* imageInfo, const Grid& grid, int dimension,
+  const PlaneFrame& frame, vtkDoubleArray* field)
+{
+  image->SetDimensions(grid.Dims);
+  image->SetOrigin(grid.Origin);
+  image->SetSpacing(grid.Spacing);
+  if (dimension == 2)
+  {
+    const double m[9] = { frame.U[0], frame.V[0], frame.N[0], frame.U[1], frame.V[1], frame.N[1],
+      frame.U[2], frame.V[2], frame.N[2] };
+    image->SetDirectionMatrix(m);
+    double worldOrigin[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      worldOrigin[k] = frame.Origin[k] + grid.Origin[0] * frame.U[k] + grid.Origin[1] * frame.V[k];
+    }
+    image->SetOrigin(worldOrigin);
+  }
+  image->GetPointData()->SetScalars(field);
+  int wholeExtent[6] = { 0, grid.Dims[0] - 1, 0, grid.Dims[1] - 1, 0, grid.Dims[2] - 1 };
+  imageInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent, 6);
+}
+
+// Output 0 in 3D: the zero level by flying edges, triangles facing outward.
+void ContourSurface(vtkImageData* local, vtkPolyData* output)
+{
+  vtkNew<vtkFlyingEdges3D> contour;
+  contour->SetInputData(local);
+  contour->SetValue(0, 0.0);
+  contour->ComputeNormalsOff();
+  contour->ComputeGradientsOff();
+  contour->ComputeScalarsOff();
+  contour->Update();
+  output->ShallowCopy(contour->GetOutput());
+  output->GetPointData()->Initialize();
+  // Flying edges winds triangles by the scalar gradient; make them face outward.
+  if (SignedVolume(output) < 0.0)
+  {
+    vtkNew<vtkCellArray> flipped;
+    auto it = vtk::TakeSmartPointer(output->GetPolys()->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType npts;
+      const vtkIdType* ids;
+      it->GetCurrentCell(npts, ids);
+      std::vector<vtkIdType> reversed(ids, ids + npts);
+      std::reverse(reversed.begin(), reversed.end());
+      flipped->InsertNextCell(npts, reversed.data());
+    }
+    output->SetPolys(flipped);
+  }
+}
+
+// Output 0 in 2D: the zero level by flying edges 2D, chained into polylines and
+// mapped back into the balls' plane.
+void ContourCurves(vtkImageData* local, const PlaneFrame& frame, vtkPolyData* output)
+{
+  vtkNew<vtkFlyingEdges2D> contour;
+  contour->SetInputData(local);
+  contour->SetValue(0, 0.0);
+  contour->ComputeScalarsOff();
+  contour->Update();
+  vtkPolyData* curves = contour->GetOutput();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  const vtkIdType np = curves->GetNumberOfPoints();
+  points->SetNumberOfPoints(np);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    double p[3], w[3];
+    curves->GetPoint(i, p);
+    for (int k = 0; k < 3; ++k)
+    {
+      w[k] = frame.Origin[k] + p[0] * frame.U[k] + p[1] * frame.V[k];
+    }
+    points->SetPoint(i, w);
+  }
+  output->SetPoints(points);
+  output->SetLines(ChainSegments(curves));
+}
 }
 
 vtkMedialBallUnion::vtkMedialBallUnion()
 {
   this->SetNumberOfOutputPorts(2);
+  // The radius: point data named Radius unless chosen otherwise.
+  this->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkMedialArrayNames::Radius);
+}
+
+void vtkMedialBallUnion::SetSampleDimensions(int i, int j, int k)
+{
+  const int dims[3] = { std::max(8, i), std::max(8, j), std::max(8, k) };
+  if (dims[0] != this->SampleDimensions[0] || dims[1] != this->SampleDimensions[1] ||
+    dims[2] != this->SampleDimensions[2])
+  {
+    std::copy(dims, dims + 3, this->SampleDimensions);
+    this->Modified();
+  }
+}
+
+void vtkMedialBallUnion::SetSampleDimensions(const int dims[3])
+{
+  this->SetSampleDimensions(dims[0], dims[1], dims[2]);
+}
+
+bool vtkMedialBallUnion::HasModelBounds() const
+{
+  bool extent = false;
+  for (int k = 0; k < 3; ++k)
+  {
+    if (!(this->ModelBounds[2 * k] <= this->ModelBounds[2 * k + 1]))
+    {
+      return false;
+    }
+    extent = extent || this->ModelBounds[2 * k] < this->ModelBounds[2 * k + 1];
+  }
+  return extent;
 }
 
 vtkImageData* vtkMedialBallUnion::GetFieldOutput()
@@ -743,13 +1089,107 @@ int vtkMedialBallUnion::FillOutputPortInformation(int port, vtkInformation* info
   return 1;
 }
 
+std::string vtkMedialBallUnion::PlanGrid(const double lo[3], const double hi[3], int axes, bool exact,
+  double gridOrigin[3], double gridSpacing[3], int gridDims[3]) const
+{
+  const double diagonal = std::sqrt(vtkMath::Distance2BetweenPoints(lo, hi));
+  for (int k = 0; k < 3; ++k)
+  {
+    gridDims[k] = 1;
+    gridOrigin[k] = 0.0;
+    gridSpacing[k] = 1.0;
+  }
+  vtkIdType voxels = 1;
+  for (int k = 0; k < axes; ++k)
+  {
+    const double extent = hi[k] - lo[k];
+    if (exact && !(extent > 0.0))
+    {
+      return std::string("ModelBounds has no extent along ") + (axes == 2 ? "uv"[k] : "xyz"[k]) +
+        (axes == 2 ? " (the balls' plane)" : "");
+    }
+    if (this->ResolutionMode == USE_SPACING)
+    {
+      const double h = this->Spacing * diagonal;
+      const double pad = exact ? 0.0 : std::max(this->Padding * diagonal, 2.0 * h);
+      const double points = std::ceil((extent + 2.0 * pad) / h) + 1.0;
+      if (points > static_cast<double>(this->MaximumNumberOfVoxels) || points > VTK_INT_MAX)
+      {
+        std::ostringstream os;
+        os << "the spacing " << this->Spacing << " needs more than MaximumNumberOfVoxels ("
+           << this->MaximumNumberOfVoxels << ") grid points";
+        return os.str();
+      }
+      gridDims[k] = static_cast<int>(points);
+      gridSpacing[k] = h;
+      // Centre the box in the grid.
+      gridOrigin[k] = lo[k] - 0.5 * ((gridDims[k] - 1) * h - extent);
+    }
+    else
+    {
+      const int n = std::max(8, this->SampleDimensions[k]);
+      gridDims[k] = n;
+      if (exact)
+      {
+        gridSpacing[k] = extent / (n - 1);
+        gridOrigin[k] = lo[k];
+      }
+      else
+      {
+        // The padding p must be two voxels at least: p >= 2 (extent + 2p) / (n - 1).
+        const double pad = std::max(
+          { this->Padding * diagonal, 2.0 * extent / (n - 5) * (1.0 + 1e-9), 1e-3 * diagonal });
+        gridSpacing[k] = (extent + 2.0 * pad) / (n - 1);
+        gridOrigin[k] = lo[k] - pad;
+      }
+    }
+    voxels *= gridDims[k];
+    if (voxels > this->MaximumNumberOfVoxels)
+    {
+      std::ostringstream os;
+      os << "the grid would exceed MaximumNumberOfVoxels (" << this->MaximumNumberOfVoxels << ")";
+      return os.str();
+    }
+  }
+  return std::string();
+}
+
 int vtkMedialBallUnion::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  // The grid depends on the balls, which are not known yet: the extent is set in
-  // RequestData. Drop any stale extent so that downstream filters take the data's.
+  // Publish what does not depend on the balls: with ModelBounds in 3D the whole
+  // grid, with SampleDimensions and a fixed Dimension its extent. Anything else is
+  // set by RequestData; stale keys are dropped so that downstream takes the data's.
   vtkInformation* imageInfo = outputVector->GetInformationObject(1);
   imageInfo->Remove(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
+  imageInfo->Remove(vtkDataObject::ORIGIN());
+  imageInfo->Remove(vtkDataObject::SPACING());
+  double origin[3], spacing[3];
+  int dims[3];
+  if (this->Dimension == DIMENSION_3D && this->HasModelBounds())
+  {
+    const double lo[3] = { this->ModelBounds[0], this->ModelBounds[2], this->ModelBounds[4] };
+    const double hi[3] = { this->ModelBounds[1], this->ModelBounds[3], this->ModelBounds[5] };
+    if (!this->PlanGrid(lo, hi, 3, true, origin, spacing, dims).empty())
+    {
+      return 1; // RequestData reports it
+    }
+    imageInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
+    imageInfo->Set(vtkDataObject::SPACING(), spacing, 3);
+  }
+  else if (this->Dimension != DIMENSION_AUTOMATIC && this->ResolutionMode == USE_SAMPLE_DIMENSIONS)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      dims[k] = k < this->Dimension ? std::max(8, this->SampleDimensions[k]) : 1;
+    }
+  }
+  else
+  {
+    return 1;
+  }
+  const int wholeExtent[6] = { 0, dims[0] - 1, 0, dims[1] - 1, 0, dims[2] - 1 };
+  imageInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent, 6);
   return 1;
 }
 
@@ -757,10 +1197,7 @@ int vtkMedialBallUnion::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // Every ball can reach every part of the union: always ask for all of them.
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  vtkMedialRequestWholeInput(inputVector);
   return 1;
 }
 
@@ -773,166 +1210,69 @@ int vtkMedialBallUnion::RequestData(
   vtkImageData* image = vtkImageData::GetData(outputVector, 1);
   this->OutputDimension = 0;
   this->VoxelSize = 0.0;
+  auto fail = [this](const std::string& why) {
+    vtkErrorMacro(<< "Cannot build the union of balls: " << why << ".");
+    return 0;
+  };
 
-  // 1. Validation.
-  const vtkIdType count = input ? input->GetNumberOfPoints() : 0;
-  if (count == 0)
+  // 1. The balls.
+  if (!input || input->GetNumberOfPoints() == 0)
   {
-    vtkErrorMacro(<< "Cannot build the union of balls: the input has no points.");
-    return 0;
+    return fail("the input has no points");
   }
-  vtkDataArray* radii = input->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
-  if (!radii)
+  int association = -1;
+  vtkDataArray* radii = this->GetInputArrayToProcess(0, inputVector, association);
+  vtkInformation* arrayInfo = this->GetInputArrayInformation(0);
+  const char* name = arrayInfo->Has(vtkDataObject::FIELD_NAME()) ? arrayInfo->Get(vtkDataObject::FIELD_NAME()) : nullptr;
+  std::vector<Ball> balls;
+  std::string error = GatherBalls(input, radii, association, name, balls);
+  if (!error.empty())
   {
-    vtkErrorMacro(<< "Cannot build the union of balls: the input has no point-data array "
-                     "named 'Radius'.");
-    return 0;
-  }
-  if (radii->GetNumberOfComponents() != 1)
-  {
-    vtkErrorMacro(<< "Cannot build the union of balls: 'Radius' has "
-                  << radii->GetNumberOfComponents() << " components, expected 1.");
-    return 0;
-  }
-  std::vector<Ball> balls(static_cast<size_t>(count));
-  for (vtkIdType i = 0; i < count; ++i)
-  {
-    Ball& b = balls[i];
-    input->GetPoint(i, b.C);
-    b.R = radii->GetTuple1(i);
-    if (!std::isfinite(b.R))
-    {
-      vtkErrorMacro(<< "Cannot build the union of balls: point " << i
-                    << " has a NaN or infinite radius.");
-      return 0;
-    }
-    if (b.R < 0.0)
-    {
-      vtkErrorMacro(<< "Cannot build the union of balls: point " << i << " has a negative radius ("
-                    << b.R << ").");
-      return 0;
-    }
-    if (!std::isfinite(b.C[0]) || !std::isfinite(b.C[1]) || !std::isfinite(b.C[2]))
-    {
-      vtkErrorMacro(<< "Cannot build the union of balls: point " << i
-                    << " has NaN or infinite coordinates.");
-      return 0;
-    }
+    return fail(error);
   }
 
   // 2. Dimension.
-  double worldLo[3], worldHi[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    worldLo[k] = HUGE_VAL;
-    worldHi[k] = -HUGE_VAL;
-  }
-  for (const Ball& b : balls)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      worldLo[k] = std::min(worldLo[k], b.C[k] - b.R);
-      worldHi[k] = std::max(worldHi[k], b.C[k] + b.R);
-    }
-  }
-  const double worldDiagonal = std::sqrt(vtkMath::Distance2BetweenPoints(worldLo, worldHi));
   PlaneFrame frame;
-  const int rank = FitPlane(balls, 1e-9 * worldDiagonal, frame);
-  int dimension = this->Dimension;
-  if (dimension == DIMENSION_AUTOMATIC)
+  int dimension = 3;
+  error = ChooseDimension(balls, this->Dimension, frame, dimension);
+  if (!error.empty())
   {
-    dimension = rank == 2 ? 2 : 3;
+    return fail(error);
   }
-  else if (dimension == DIMENSION_2D && rank == 3)
-  {
-    vtkErrorMacro(<< "Cannot build a 2D union of disks: the centres do not lie in one plane.");
-    return 0;
-  }
-  if (dimension == 2)
-  {
-    // Centres into the plane's frame (z = 0).
-    for (Ball& b : balls)
-    {
-      double d[3];
-      vtkMath::Subtract(b.C, frame.Origin, d);
-      b.C[0] = vtkMath::Dot(d, frame.U);
-      b.C[1] = vtkMath::Dot(d, frame.V);
-      b.C[2] = 0.0;
-    }
-  }
-  const int axes = dimension; // active axes: x, y (and z)
 
-  // 3. Grid.
-  double lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
-  for (int k = 0; k < axes; ++k)
-  {
-    lo[k] = HUGE_VAL;
-    hi[k] = -HUGE_VAL;
-  }
-  for (const Ball& b : balls)
-  {
-    for (int k = 0; k < axes; ++k)
-    {
-      lo[k] = std::min(lo[k], b.C[k] - b.R);
-      hi[k] = std::max(hi[k], b.C[k] + b.R);
-    }
-  }
+  // 3. Grid: over the union's box, padded, or over ModelBounds.
+  double lo[3], hi[3];
+  UnionBox(balls, dimension, lo, hi);
   const double diagonal = std::sqrt(vtkMath::Distance2BetweenPoints(lo, hi));
   if (!(diagonal > 0.0))
   {
-    vtkErrorMacro(<< "Cannot build the union of balls: every ball has radius 0 at one point, "
-                     "so the union has no extent.");
-    return 0;
+    return fail("every ball has radius 0 at one point, so the union has no extent");
   }
   Grid grid;
-  for (int k = 0; k < 3; ++k)
+  if (this->HasModelBounds())
   {
-    grid.Dims[k] = 1;
-    grid.Origin[k] = 0.0;
-    grid.Spacing[k] = 1.0;
-  }
-  vtkIdType voxels = 1;
-  for (int k = 0; k < axes; ++k)
-  {
-    const double extent = hi[k] - lo[k];
-    if (this->ResolutionMode == USE_SPACING)
+    double blo[3], bhi[3];
+    ModelBox(this->ModelBounds, dimension, frame, blo, bhi);
+    error = this->PlanGrid(blo, bhi, dimension, true, grid.Origin, grid.Spacing, grid.Dims);
+    for (int k = 0; k < dimension && error.empty(); ++k)
     {
-      const double h = this->Spacing * diagonal;
-      const double pad = std::max(this->Padding * diagonal, 2.0 * h);
-      const double points = std::ceil((extent + 2.0 * pad) / h) + 1.0;
-      if (points > static_cast<double>(this->MaximumNumberOfVoxels) || points > VTK_INT_MAX)
+      if (lo[k] < grid.Origin[k] || hi[k] > grid.Origin[k] + (grid.Dims[k] - 1) * grid.Spacing[k])
       {
-        vtkErrorMacro(<< "Cannot build the union of balls: the spacing " << this->Spacing
-                      << " needs more than MaximumNumberOfVoxels ("
-                      << this->MaximumNumberOfVoxels << ") grid points.");
-        return 0;
+        vtkWarningMacro(<< "The union of balls reaches beyond ModelBounds: its surface is cut open there.");
+        break;
       }
-      grid.Dims[k] = static_cast<int>(points);
-      grid.Spacing[k] = h;
-      // Centre the union in the grid.
-      grid.Origin[k] = lo[k] - 0.5 * ((grid.Dims[k] - 1) * h - extent);
     }
-    else
-    {
-      const int n = std::max(8, this->SampleDimensions[k]);
-      // The padding p must be two voxels at least: p >= 2 (extent + 2p) / (n - 1).
-      const double pad = std::max(
-        { this->Padding * diagonal, 2.0 * extent / (n - 5) * (1.0 + 1e-9), 1e-3 * diagonal });
-      grid.Dims[k] = n;
-      grid.Spacing[k] = (extent + 2.0 * pad) / (n - 1);
-      grid.Origin[k] = lo[k] - pad;
-    }
-    voxels *= grid.Dims[k];
-    if (voxels > this->MaximumNumberOfVoxels)
-    {
-      vtkErrorMacro(<< "Cannot build the union of balls: the grid would exceed "
-                       "MaximumNumberOfVoxels ("
-                    << this->MaximumNumberOfVoxels << ").");
-      return 0;
-    }
+  }
+  else
+  {
+    error = this->PlanGrid(lo, hi, dimension, false, grid.Origin, grid.Spacing, grid.Dims);
+  }
+  if (!error.empty())
+  {
+    return fail(error);
   }
   double voxelSize = 0.0;
-  for (int k = 0; k < axes; ++k)
+  for (int k = 0; k < dimension; ++k)
   {
     voxelSize = std::max(voxelSize, grid.Spacing[k]);
   }
@@ -940,8 +1280,8 @@ int vtkMedialBallUnion::RequestData(
   // Rounding margin for the bounds so that pruning never drops the minimising ball.
   const double slack = 1e-12 * (diagonal + std::fabs(lo[0]) + std::fabs(lo[1]) + std::fabs(lo[2]));
 
-  // 4. Field: bin the centres by superblock, then superblock -> blocks -> voxels. The
-  // envelope's primitives are binned and pruned by their bounding balls.
+  // 4. Field. The envelope's primitives are binned and pruned through their bounding
+  // balls.
   std::unique_ptr<Envelope> envelope;
   if (this->Primitives == MEDIAL_MESH)
   {
@@ -949,167 +1289,19 @@ int vtkMedialBallUnion::RequestData(
     envelope->Vertices = balls;
     GatherPrimitives(vtkPolyData::SafeDownCast(input), EnvelopeTolerance * voxelSize, *envelope);
   }
-  const std::vector<Ball>& fieldBalls = envelope ? envelope->Bounds : balls;
-  int superSize[3], supers[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    superSize[k] = grid.Dims[k] > 1 ? SuperBlock : 1;
-    supers[k] = (grid.Dims[k] + superSize[k] - 1) / superSize[k];
-  }
-  const vtkIdType binCount = static_cast<vtkIdType>(supers[0]) * supers[1] * supers[2];
-  auto pointOf = [&grid](int k, vtkIdType i) { return grid.Origin[k] + i * grid.Spacing[k]; };
-  auto binOfBall = [&](const Ball& b) {
-    vtkIdType index = 0;
-    for (int k = 2; k >= 0; --k)
-    {
-      const double t = (b.C[k] - grid.Origin[k]) / (superSize[k] * grid.Spacing[k]);
-      const int i = std::min(supers[k] - 1, std::max(0, static_cast<int>(std::floor(t))));
-      index = index * supers[k] + i;
-    }
-    return index;
-  };
-  std::vector<vtkIdType> binStart(binCount + 1, 0);
-  std::vector<double> binMaxRadius(binCount, 0.0);
-  std::vector<vtkIdType> ballBin(fieldBalls.size());
-  double maxRadius = 0.0;
-  for (size_t i = 0; i < fieldBalls.size(); ++i)
-  {
-    ballBin[i] = binOfBall(fieldBalls[i]);
-    ++binStart[ballBin[i] + 1];
-    binMaxRadius[ballBin[i]] = std::max(binMaxRadius[ballBin[i]], fieldBalls[i].R);
-    maxRadius = std::max(maxRadius, fieldBalls[i].R);
-  }
-  std::partial_sum(binStart.begin(), binStart.end(), binStart.begin());
-  std::vector<vtkIdType> binBalls(fieldBalls.size());
-  {
-    std::vector<vtkIdType> fill(binStart.begin(), binStart.end() - 1);
-    for (size_t i = 0; i < fieldBalls.size(); ++i)
-    {
-      binBalls[fill[ballBin[i]]++] = static_cast<vtkIdType>(i);
-    }
-    // Largest radius first in each bin, so that a far bin's scan stops early; ties by
-    // id keep the order deterministic.
-    for (vtkIdType bin = 0; bin < binCount; ++bin)
-    {
-      std::sort(binBalls.begin() + binStart[bin], binBalls.begin() + binStart[bin + 1],
-        [&fieldBalls](vtkIdType a, vtkIdType b) {
-          return fieldBalls[a].R > fieldBalls[b].R || (fieldBalls[a].R == fieldBalls[b].R && a < b);
-        });
-    }
-  }
-  // Centre bins are half-open boxes of superblock size.
-  auto binBox = [&](const int b[3], double blo[3], double bhi[3]) {
-    for (int k = 0; k < 3; ++k)
-    {
-      const double w = superSize[k] * grid.Spacing[k];
-      blo[k] = grid.Origin[k] + b[k] * w;
-      bhi[k] = blo[k] + w;
-      if (grid.Dims[k] == 1)
-      {
-        blo[k] = bhi[k] = grid.Origin[k];
-      }
-    }
-  };
-  int reach[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    reach[k] = grid.Dims[k] > 1
-      ? static_cast<int>(std::ceil((maxRadius + band) / (superSize[k] * grid.Spacing[k]))) + 1
-      : 0;
-  }
-
   vtkNew<vtkDoubleArray> field;
   field->SetName(vtkMedialArrayNames::Distance);
-  field->SetNumberOfTuples(voxels);
-  double* values = field->GetPointer(0);
-  const vtkIdType sliceSize = static_cast<vtkIdType>(grid.Dims[0]) * grid.Dims[1];
+  field->SetNumberOfTuples(static_cast<vtkIdType>(grid.Dims[0]) * grid.Dims[1] * grid.Dims[2]);
   const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
-  const int superPerLayer = supers[0] * supers[1];
-  const FieldFiller filler{ fieldBalls, grid, band, slack, values, sliceSize, envelope.get() };
-
-  for (int sz = 0; sz < supers[2] && !this->GetAbortExecute(); ++sz)
-  {
-#pragma omp parallel num_threads(threads)
-    {
-      std::vector<Candidate> gathered;
-      std::vector<std::vector<Candidate>> levels(FieldFiller::MaximumDepth);
-#pragma omp for schedule(dynamic, 1)
-      for (int s = 0; s < superPerLayer; ++s)
-      {
-        const int sb[3] = { s % supers[0], s / supers[0], sz };
-        int first[3], last[3];
-        double slo[3], shi[3];
-        for (int k = 0; k < 3; ++k)
-        {
-          first[k] = sb[k] * superSize[k];
-          last[k] = std::min(grid.Dims[k] - 1, first[k] + superSize[k] - 1);
-          slo[k] = pointOf(k, first[k]);
-          shi[k] = pointOf(k, last[k]);
-        }
-        // Candidates: fieldBalls in the bins that can reach this superblock.
-        gathered.clear();
-        int b[3];
-        for (b[2] = std::max(0, sb[2] - reach[2]); b[2] <= std::min(supers[2] - 1, sb[2] + reach[2]); ++b[2])
-        {
-          for (b[1] = std::max(0, sb[1] - reach[1]); b[1] <= std::min(supers[1] - 1, sb[1] + reach[1]); ++b[1])
-          {
-            for (b[0] = std::max(0, sb[0] - reach[0]); b[0] <= std::min(supers[0] - 1, sb[0] + reach[0]); ++b[0])
-            {
-              const vtkIdType bin = (static_cast<vtkIdType>(b[2]) * supers[1] + b[1]) * supers[0] + b[0];
-              if (binStart[bin] == binStart[bin + 1])
-              {
-                continue;
-              }
-              double blo[3], bhi[3];
-              binBox(b, blo, bhi);
-              const double gap = BoxBoxDistance(slo, shi, blo, bhi) - band - slack;
-              if (gap - binMaxRadius[bin] >= 0.0)
-              {
-                continue;
-              }
-              for (vtkIdType j = binStart[bin]; j < binStart[bin + 1]; ++j)
-              {
-                if (gap - fieldBalls[binBalls[j]].R >= 0.0)
-                {
-                  break; // this and every smaller ball stay beyond the band
-                }
-                gathered.push_back({ 0.0, binBalls[j] });
-              }
-            }
-          }
-        }
-        filler.Refine(gathered, first, last, 0, levels);
-      }
-    }
-    this->UpdateProgress(0.9 * (sz + 1) / supers[2]);
-  }
-  if (this->GetAbortExecute())
+  if (!FillField(this, envelope ? envelope->Bounds : balls, grid, band, slack, threads,
+        field->GetPointer(0), envelope.get()))
   {
     return 1; // aborted: leave the outputs empty
   }
 
-  // Output 1: the field image.
-  image->SetDimensions(grid.Dims);
-  image->SetOrigin(grid.Origin);
-  image->SetSpacing(grid.Spacing);
-  if (dimension == 2)
-  {
-    // Columns u, v, n; the origin is given in the plane's frame around frame.Origin.
-    const double m[9] = { frame.U[0], frame.V[0], frame.N[0], frame.U[1], frame.V[1], frame.N[1],
-      frame.U[2], frame.V[2], frame.N[2] };
-    image->SetDirectionMatrix(m);
-    double worldOrigin[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      worldOrigin[k] = frame.Origin[k] + grid.Origin[0] * frame.U[k] + grid.Origin[1] * frame.V[k];
-    }
-    image->SetOrigin(worldOrigin);
-  }
-  image->GetPointData()->SetScalars(field);
-  int wholeExtent[6] = { 0, grid.Dims[0] - 1, 0, grid.Dims[1] - 1, 0, grid.Dims[2] - 1 };
-  imageInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent, 6);
-
-  // Output 0: the zero level, contoured on an axis-aligned copy in the grid's frame.
+  // 5. Outputs: the field image, and its zero level contoured on an axis-aligned
+  // copy in the grid's frame.
+  WriteFieldImage(image, imageInfo, grid, dimension, frame, field);
   vtkNew<vtkImageData> local;
   local->SetDimensions(grid.Dims);
   local->SetOrigin(grid.Origin);
@@ -1117,56 +1309,11 @@ int vtkMedialBallUnion::RequestData(
   local->GetPointData()->SetScalars(field);
   if (dimension == 3)
   {
-    vtkNew<vtkFlyingEdges3D> contour;
-    contour->SetInputData(local);
-    contour->SetValue(0, 0.0);
-    contour->ComputeNormalsOff();
-    contour->ComputeGradientsOff();
-    contour->ComputeScalarsOff();
-    contour->Update();
-    output->ShallowCopy(contour->GetOutput());
-    output->GetPointData()->Initialize();
-    // Flying edges winds triangles by the scalar gradient; make them face outward.
-    if (SignedVolume(output) < 0.0)
-    {
-      vtkNew<vtkCellArray> flipped;
-      auto it = vtk::TakeSmartPointer(output->GetPolys()->NewIterator());
-      for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-      {
-        vtkIdType npts;
-        const vtkIdType* ids;
-        it->GetCurrentCell(npts, ids);
-        std::vector<vtkIdType> reversed(ids, ids + npts);
-        std::reverse(reversed.begin(), reversed.end());
-        flipped->InsertNextCell(npts, reversed.data());
-      }
-      output->SetPolys(flipped);
-    }
+    ContourSurface(local, output);
   }
   else
   {
-    vtkNew<vtkFlyingEdges2D> contour;
-    contour->SetInputData(local);
-    contour->SetValue(0, 0.0);
-    contour->ComputeScalarsOff();
-    contour->Update();
-    vtkPolyData* curves = contour->GetOutput();
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    const vtkIdType np = curves->GetNumberOfPoints();
-    points->SetNumberOfPoints(np);
-    for (vtkIdType i = 0; i < np; ++i)
-    {
-      double p[3], w[3];
-      curves->GetPoint(i, p);
-      for (int k = 0; k < 3; ++k)
-      {
-        w[k] = frame.Origin[k] + p[0] * frame.U[k] + p[1] * frame.V[k];
-      }
-      points->SetPoint(i, w);
-    }
-    output->SetPoints(points);
-    output->SetLines(ChainSegments(curves));
+    ContourCurves(local, frame, output);
   }
   this->OutputDimension = dimension;
   this->VoxelSize = voxelSize;
@@ -1183,6 +1330,9 @@ void vtkMedialBallUnion::PrintSelf(ostream& os, vtkIndent indent)
      << this->SampleDimensions[1] << " " << this->SampleDimensions[2] << "\n";
   os << indent << "Spacing: " << this->Spacing << "\n";
   os << indent << "Padding: " << this->Padding << "\n";
+  os << indent << "ModelBounds: " << this->ModelBounds[0] << " " << this->ModelBounds[1] << " "
+     << this->ModelBounds[2] << " " << this->ModelBounds[3] << " " << this->ModelBounds[4] << " "
+     << this->ModelBounds[5] << (this->HasModelBounds() ? "" : " (not set: the union's box)") << "\n";
   os << indent << "BandWidth: " << this->BandWidth << "\n";
   os << indent << "Dimension: " << this->Dimension << "\n";
   os << indent << "Primitives: " << (this->Primitives == MEDIAL_MESH ? "MedialMesh" : "Balls") << "\n";

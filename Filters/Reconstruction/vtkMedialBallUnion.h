@@ -10,8 +10,10 @@
  * (outside it is the exact Euclidean distance to the union).
  *
  * Algorithm:
- *  1. Validation: every point needs a finite, non-negative `Radius` (the
- *     active scalars are not used; the array is looked up by name).
+ *  1. Validation: every point needs a finite, non-negative radius, taken from
+ *     input array 0 (SetInputArrayToProcess; by default the point-data array
+ *     `Radius`, not the active scalars). A missing array, cell data or an array of
+ *     more than one component is an error.
  *  2. Dimension: with DIMENSION_AUTOMATIC the balls are treated as disks when the
  *     centres span exactly a plane (three or more centres, not collinear, all
  *     within 1e-9 of the diagonal of that plane); any plane, not only z = 0.
@@ -19,8 +21,12 @@
  *  3. Grid: the bounding box of the union (centres +- radii) plus Padding (relative
  *     to the union's bounding-box diagonal, at least two voxels on every side so
  *     that the surface is closed) is sampled either with SampleDimensions points
- *     per axis or with an isotropic Spacing relative to that diagonal. In 2D the
- *     grid lies in the balls' plane, in a frame (origin, u, v) fitted to it.
+ *     per axis or with an isotropic Spacing relative to that diagonal. With
+ *     ModelBounds set, the grid covers that box instead (no padding), so that
+ *     reconstructions of different balls share one grid. In 2D the grid lies in the
+ *     balls' plane, in a frame (origin, u, v) fitted to it (u along the world axis
+ *     most perpendicular to the plane's normal, projected; a z = const plane keeps x
+ *     and y).
  *  4. Field: the centres are binned into a grid of 16^d-voxel superblocks, each bin
  *     remembering its largest radius. For a superblock the bins that can reach it
  *     give the candidate balls. Over a box of grid points a ball has the bounds
@@ -46,7 +52,13 @@
  * frame and its DirectionMatrix holds (u, v, normal) as columns, which most VTK
  * 9.1 filters ignore: output 0 is already placed in the balls' plane.
  *
- * Input: any vtkPointSet with a point-data array `Radius`.
+ * Pipeline information: RequestInformation publishes output 1's WHOLE_EXTENT,
+ * ORIGIN and SPACING when they do not depend on the balls, i.e. with ModelBounds
+ * set and Dimension DIMENSION_3D, and its WHOLE_EXTENT alone with
+ * USE_SAMPLE_DIMENSIONS and a fixed Dimension (2D: one slice). Otherwise (the
+ * default DIMENSION_AUTOMATIC decides from the centres) they are set in RequestData.
+ *
+ * Input: any vtkPointSet with a point-data radius array (`Radius` by default).
  * Output 0: vtkPolyData, closed triangle surface (3D) or closed polylines (2D).
  * Output 1: vtkImageData, the clamped field as point scalars named `Distance`.
  *
@@ -65,6 +77,8 @@
 
 #include "vtkMedialAxisReconstructionModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+
+#include <string> // for std::string
 
 class vtkImageData;
 
@@ -101,10 +115,26 @@ public:
   ///@}
 
   ///@{
-  /// Grid points per axis, padding included (default 128^3; each at least 8). In 2D the
-  /// first two are used along the plane's axes u and v.
-  vtkSetVector3Macro(SampleDimensions, int);
+  /// Grid points per axis, padding included (default 128^3), used with
+  /// USE_SAMPLE_DIMENSIONS. Each is clamped to at least 8 when set: the padding takes
+  /// two voxels on every side, which leaves a smaller grid no room for the union. In
+  /// 2D the first two are used along the plane's axes u and v.
+  virtual void SetSampleDimensions(int i, int j, int k);
+  virtual void SetSampleDimensions(const int dims[3]);
   vtkGetVector3Macro(SampleDimensions, int);
+  ///@}
+
+  ///@{
+  /// The box the grid covers (xmin, xmax, ymin, ymax, zmin, zmax; default unset, all
+  /// 0: the union's padded box). It is used when min <= max on every axis and it has
+  /// an extent; the grid then spans it exactly (USE_SAMPLE_DIMENSIONS) or is centred
+  /// on it (USE_SPACING, the spacing relative to the box's diagonal), without
+  /// padding, so that two reconstructions can share a grid voxel for voxel. In 2D the
+  /// grid spans the box's projection onto the balls' plane. Balls reaching beyond it
+  /// are cut (with a warning: the surface is open there).
+  vtkSetVector6Macro(ModelBounds, double);
+  vtkGetVector6Macro(ModelBounds, double);
+  bool HasModelBounds() const;
   ///@}
 
   ///@{
@@ -186,10 +216,16 @@ protected:
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  // The grid over [lo, hi] on the first `axes` axes: exactly (ModelBounds), or padded
+  // (the union's box). Returns an error, or an empty string.
+  std::string PlanGrid(const double lo[3], const double hi[3], int axes, bool exact, double origin[3],
+    double spacing[3], int dims[3]) const;
+
   int ResolutionMode = USE_SAMPLE_DIMENSIONS;
   int SampleDimensions[3] = { 128, 128, 128 };
   double Spacing = 1.0 / 128.0;
   double Padding = 0.02;
+  double ModelBounds[6] = { 0, 0, 0, 0, 0, 0 };
   double BandWidth = 3.0;
   int Dimension = DIMENSION_AUTOMATIC;
   int Primitives = BALLS;

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialAxisSamplerInternals.h"
 #include "vtkMedialArrayNames.h"
+#include "vtkMedialPipeline.h"
 
 #include "vtkMedialBallSolver.h"
 #include "vtkMedialIterativeSampling.h"
+#include "vtkMedialPlane.h"
 #include "vtkMedialPolygon.h"
 #include "vtkMedialRandom.h"
 #include "vtkMedialSampleRecord.h"
@@ -35,12 +38,17 @@
 
 vtkStandardNewMacro(vtkMedialAxisSampler);
 
-namespace
+vtkMedialAxisSampler::vtkMedialAxisSampler() = default;
+
+bool vtkMedialAxisSampler::IsPlanarInput(vtkPolyData* input)
 {
-using SampleResult = vtkMedialSampleRecord;
+  return vtkMedialPlane::IsPlanarLoops(input);
 }
 
-vtkMedialAxisSampler::vtkMedialAxisSampler() = default;
+bool vtkMedialAxisSampler::IsPlanarInput(vtkPolyData* input, double centre[3], double normal[3])
+{
+  return vtkMedialPlane::IsPlanarLoops(input, centre, normal);
+}
 
 const char* vtkMedialAxisSampler::GetMethodName(int method)
 {
@@ -82,10 +90,7 @@ int vtkMedialAxisSampler::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // Rays need the whole surface whatever piece is requested downstream.
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  vtkMedialRequestWholeInput(inputVector);
   return 1;
 }
 
@@ -104,59 +109,6 @@ int vtkMedialAxisSampler::RequestData(
   this->SeedSamples = 0;
   this->CoverageReached = false;
   this->MaxCoverageGap = -1.0;
-
-  // Planar polygons or closed polylines: the 2D mode (vtkMedialAxisSampler2D.cxx).
-  if (vtkMedialPolygon::LooksPlanarLoops(input))
-  {
-    if (this->SamplingStrategy != RANDOM)
-    {
-      vtkWarningMacro(<< "SamplingStrategy " << GetSamplingStrategyName(this->SamplingStrategy)
-                      << " is for 3D surfaces; planar input is sampled at random.");
-    }
-    return this->RequestData2D(input, outInfo, output);
-  }
-
-  // Preparation takes seconds on big meshes: the abort flag is polled between stages.
-  auto aborted = [this]() { return this->GetAbortExecute() != 0; };
-  vtkMedialTriangleMesh mesh;
-  std::string error;
-  if (!mesh.Build(input, error, aborted))
-  {
-    if (aborted())
-    {
-      return 1; // aborted: leave the output empty
-    }
-    vtkErrorMacro(<< "Cannot sample the medial axis: " << error << ".");
-    return 0;
-  }
-  this->BoundaryEdges = mesh.BoundaryEdges;
-  this->NumberOfTriangles = mesh.GetNumberOfTriangles();
-  if (mesh.DuplicateTriangles > 0)
-  {
-    vtkWarningMacro(<< "Input has " << mesh.DuplicateTriangles << " duplicate triangles; they were ignored.");
-  }
-  if (mesh.NonManifoldEdges > 0)
-  {
-    vtkWarningMacro(<< "Input has " << mesh.NonManifoldEdges
-                    << " non-manifold edges; inside and outside may be ambiguous there.");
-  }
-  if (mesh.NonOrientableComponents > 0)
-  {
-    vtkWarningMacro(<< mesh.NonOrientableComponents
-                    << " component(s) cannot be oriented consistently (non-orientable surface).");
-  }
-
-  vtkMedialSurfaceQuery query;
-  if (!query.Build(&mesh, error, aborted))
-  {
-    if (aborted())
-    {
-      return 1;
-    }
-    vtkErrorMacro(<< "Cannot build the surface queries: " << error << ".");
-    return 0;
-  }
-
   // This piece's share of the samples; sample indices stay global so that the
   // union of all pieces equals a single-piece run.
   const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
@@ -165,50 +117,122 @@ int vtkMedialAxisSampler::RequestData(
   const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
     ? std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
     : 1;
+  vtkInternals passes(this);
+
+  // Planar polygons or closed polylines: the 2D mode (vtkMedialAxisSampler2D.cxx).
+  if (IsPlanarInput(input))
+  {
+    if (this->SamplingStrategy != RANDOM)
+    {
+      vtkWarningMacro(<< "SamplingStrategy " << GetSamplingStrategyName(this->SamplingStrategy)
+                      << " is for 3D surfaces; planar input is sampled at random.");
+    }
+    return passes.Sample2D(input, piece, pieces, output);
+  }
+
+  vtkMedialTriangleMesh mesh;
+  vtkMedialSurfaceQuery query;
+  int status = 0;
+  if (!passes.PrepareSurface(input, mesh, query, status))
+  {
+    return status;
+  }
   if (this->SamplingStrategy != RANDOM)
   {
-    return this->RequestDataIterative(mesh, query, piece, output);
+    return passes.SampleIterative(mesh, query, piece, output);
   }
-  const vtkIdType total = this->NumberOfSamples;
-  const vtkIdType first = total * piece / pieces;
-  const vtkIdType last = total * (piece + 1) / pieces;
-  const vtkIdType count = last - first;
+  return passes.SampleRandom(mesh, query, piece, pieces, output);
+}
 
-  // Refuse up front what cannot fit: the per-sample results plus the output arrays.
-  const double bytesPerSample = sizeof(SampleResult) + 12 * sizeof(double) + 3 * sizeof(vtkIdType);
+//------------------------------------------------------------------------------
+bool vtkMedialAxisSampler::vtkInternals::PrepareSurface(
+  vtkPolyData* input, vtkMedialTriangleMesh& mesh, vtkMedialSurfaceQuery& query, int& status)
+{
+  vtkMedialAxisSampler* self = this->Self;
+  // Preparation takes seconds on big meshes: the abort flag is polled between stages.
+  auto aborted = [self]() { return self->GetAbortExecute() != 0; };
+  std::string error;
+  if (!mesh.Build(input, error, aborted))
+  {
+    status = aborted() ? 1 : 0; // aborted: leave the output empty
+    if (!aborted())
+    {
+      vtkErrorWithObjectMacro(self, << "Cannot sample the medial axis: " << error << ".");
+    }
+    return false;
+  }
+  self->BoundaryEdges = mesh.BoundaryEdges;
+  self->NumberOfTriangles = mesh.GetNumberOfTriangles();
+  if (mesh.DuplicateTriangles > 0)
+  {
+    vtkWarningWithObjectMacro(
+      self, << "Input has " << mesh.DuplicateTriangles << " duplicate triangles; they were ignored.");
+  }
+  if (mesh.NonManifoldEdges > 0)
+  {
+    vtkWarningWithObjectMacro(self, << "Input has " << mesh.NonManifoldEdges
+                                    << " non-manifold edges; inside and outside may be ambiguous there.");
+  }
+  if (mesh.NonOrientableComponents > 0)
+  {
+    vtkWarningWithObjectMacro(self, << mesh.NonOrientableComponents
+                                    << " component(s) cannot be oriented consistently (non-orientable surface).");
+  }
+  if (!query.Build(&mesh, error, aborted))
+  {
+    status = aborted() ? 1 : 0;
+    if (!aborted())
+    {
+      vtkErrorWithObjectMacro(self, << "Cannot build the surface queries: " << error << ".");
+    }
+    return false;
+  }
+  return true;
+}
+
+bool vtkMedialAxisSampler::vtkInternals::CheckMemory(vtkIdType count, double bytesPerSample, const char* advice) const
+{
   const double needed = bytesPerSample * static_cast<double>(count);
   const double available = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
   if (available > 0 && needed > 0.8 * available)
   {
-    vtkErrorMacro(<< "NumberOfSamples " << count << " needs about " << needed / (1 << 30)
-                  << " GiB, more than this machine's memory allows (" << available / (1 << 30)
-                  << " GiB); use fewer samples or several pieces.");
+    vtkErrorWithObjectMacro(this->Self, << "NumberOfSamples " << count << " needs about " << needed / (1 << 30)
+                                        << " GiB, more than this machine's memory allows ("
+                                        << available / (1 << 30) << " GiB); " << advice << ".");
+    return false;
+  }
+  return true;
+}
+
+void vtkMedialAxisSampler::vtkInternals::ReportAllocationFailure(vtkIdType count) const
+{
+  vtkErrorWithObjectMacro(this->Self, << "Cannot allocate memory for " << count << " samples.");
+}
+
+int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh& mesh,
+  const vtkMedialSurfaceQuery& query, int piece, int pieces, vtkPolyData* output)
+{
+  vtkMedialAxisSampler* self = this->Self;
+  const vtkIdType total = self->NumberOfSamples;
+  const vtkIdType first = total * piece / pieces;
+  const vtkIdType count = total * (piece + 1) / pieces - first;
+  // The per-sample results plus the output arrays.
+  const double bytesPerSample = sizeof(vtkMedialSampleRecord) + 12 * sizeof(double) + 3 * sizeof(vtkIdType);
+  std::vector<vtkMedialSampleRecord> results;
+  std::vector<vtkIdType> triangles, order;
+  if (!this->CheckMemory(count, bytesPerSample, "use fewer samples or several pieces") ||
+    !this->Allocate(count, results, triangles, order))
+  {
     return 0;
   }
-  std::vector<SampleResult> results;
-  try
-  {
-    results.resize(static_cast<size_t>(count));
-  }
-  catch (const std::bad_alloc&)
-  {
-    vtkErrorMacro(<< "Cannot allocate memory for " << count << " samples.");
-    return 0;
-  }
-
-  const vtkMedialBallParameters param = this->MakeBallParameters(mesh.Diagonal);
-  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
-
+  const int threads = self->NumberOfThreads > 0 ? self->NumberOfThreads : omp_get_num_procs();
   // Optional coverage stop: checked after fixed blocks of 1024 samples, so the
   // stopping point does not depend on the thread count.
-  const double coverageTolerance = this->CoverageTolerance * mesh.Diagonal;
   std::unique_ptr<vtkMedialCoverage> coverage;
-  if (this->CoverageTolerance > 0.0)
+  if (self->CoverageTolerance > 0.0)
   {
     coverage.reset(new vtkMedialCoverage(mesh));
   }
-  vtkIdType used = count;
-
   // Draw every sample first, then solve them in the BVH's leaf order: samples
   // close on the surface touch the same nodes, so the caches stay warm. Each
   // result still goes to its own index, so the order cannot change the output.
@@ -218,59 +242,98 @@ int vtkMedialAxisSampler::RequestData(
   // enough that threads rarely wait at the block's end, short enough (about
   // 30 ms on a 1.5M-triangle mesh) that an abort is honoured at once.
   const vtkIdType block = coverage ? 1024 : 1024 * threads;
-  std::vector<vtkIdType> triangles;
-  std::vector<vtkIdType> order;
-  try
-  {
-    triangles.resize(static_cast<size_t>(count));
-    order.resize(static_cast<size_t>(count));
-  }
-  catch (const std::bad_alloc&)
-  {
-    vtkErrorMacro(<< "Cannot allocate memory for " << count << " samples.");
-    return 0;
-  }
-#pragma omp parallel for num_threads(threads) schedule(static)
-  for (vtkIdType i = 0; i < count; ++i)
-  {
-    vtkMedialDrawSurfacePoint(mesh, this->RandomSeed, first + i, triangles[i], results[i].Surface);
-    order[i] = i;
-  }
-  if (this->GetAbortExecute())
+  this->DrawSamples(mesh, first, threads, triangles, results);
+  if (self->GetAbortExecute())
   {
     return 1;
   }
-  const std::vector<std::int32_t>& rank = query.GetLeafRanks();
+  SortByLeaf(query, triangles, coverage ? block : 0, order);
+  const vtkIdType used =
+    this->SolveBlocks(mesh, query, threads, block, triangles, order, results, coverage.get());
+  if (self->GetAbortExecute())
+  {
+    return 1; // aborted: leave the output empty
+  }
+  results.resize(static_cast<size_t>(used));
+  self->EvaluatedSamples = used;
+
+  try
+  {
+    this->WriteSamples(output, used, results);
+  }
+  catch (const std::bad_alloc&) // the memory check above does not see ulimit -v
+  {
+    output->Initialize();
+    vtkErrorWithObjectMacro(self, << "Cannot allocate memory for the output of " << used << " samples.");
+    return 0;
+  }
   if (coverage)
+  {
+    output->GetFieldData()->GetArray(vtkMedialArrayNames::RequestedSamples)->SetTuple1(0, static_cast<double>(count));
+    this->WriteCoverage(output);
+  }
+  this->WarnDiscarded(mesh, count);
+  return 1;
+}
+
+void vtkMedialAxisSampler::vtkInternals::DrawSamples(const vtkMedialTriangleMesh& mesh, vtkIdType first,
+  int threads, std::vector<vtkIdType>& triangles, std::vector<vtkMedialSampleRecord>& results) const
+{
+  const vtkIdType count = static_cast<vtkIdType>(results.size());
+  const vtkTypeUInt64 seed = this->Self->RandomSeed;
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    vtkMedialDrawSurfacePoint(mesh, seed, first + i, triangles[i], results[i].Surface);
+  }
+}
+
+void vtkMedialAxisSampler::vtkInternals::SortByLeaf(const vtkMedialSurfaceQuery& query,
+  const std::vector<vtkIdType>& triangles, vtkIdType block, std::vector<vtkIdType>& order)
+{
+  const vtkIdType count = static_cast<vtkIdType>(triangles.size());
+  const std::vector<std::int32_t>& rank = query.GetLeafRanks();
+  if (block > 0)
   {
     auto leafOrder = [&](vtkIdType a, vtkIdType b) {
       const std::int32_t ra = rank[triangles[a]], rb = rank[triangles[b]];
       return ra < rb || (ra == rb && a < b);
     };
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      order[i] = i;
+    }
     for (vtkIdType begin = 0; begin < count; begin += block)
     {
       std::sort(order.begin() + begin, order.begin() + std::min(count, begin + block), leafOrder);
     }
+    return;
   }
-  else
+  // Counting sort by leaf rank: linear, and stable, so ties keep index order.
+  std::vector<vtkIdType> next(rank.size() + 1, 0);
+  for (vtkIdType i = 0; i < count; ++i)
   {
-    // Counting sort by leaf rank: linear, and stable, so ties keep index order.
-    std::vector<vtkIdType> next(rank.size() + 1, 0);
-    for (vtkIdType i = 0; i < count; ++i)
-    {
-      ++next[rank[triangles[i]] + 1];
-    }
-    for (size_t r = 1; r < next.size(); ++r)
-    {
-      next[r] += next[r - 1];
-    }
-    for (vtkIdType i = 0; i < count; ++i)
-    {
-      order[next[rank[triangles[i]]]++] = i;
-    }
+    ++next[rank[triangles[i]] + 1];
   }
+  for (size_t r = 1; r < next.size(); ++r)
+  {
+    next[r] += next[r - 1];
+  }
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    order[next[rank[triangles[i]]]++] = i;
+  }
+}
 
-  for (vtkIdType begin = 0; begin < count && !this->GetAbortExecute(); begin += block)
+vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangleMesh& mesh,
+  const vtkMedialSurfaceQuery& query, int threads, vtkIdType block, const std::vector<vtkIdType>& triangles,
+  const std::vector<vtkIdType>& order, std::vector<vtkMedialSampleRecord>& results, vtkMedialCoverage* coverage)
+{
+  vtkMedialAxisSampler* self = this->Self;
+  const vtkMedialBallParameters param = this->MakeBallParameters(mesh.Diagonal);
+  const double coverageTolerance = self->CoverageTolerance * mesh.Diagonal;
+  const vtkIdType count = static_cast<vtkIdType>(results.size());
+  for (vtkIdType begin = 0; begin < count && !self->GetAbortExecute(); begin += block)
   {
     const vtkIdType end = std::min(count, begin + block);
     // Groups of Chain consecutive samples (in leaf order) run on one thread, each
@@ -292,106 +355,83 @@ int vtkMedialAxisSampler::RequestData(
         vtkMedialSolveBall(query, mesh, param, triangles[i], p, results[i], hint);
       }
     }
-    this->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
-    if (coverage)
+    self->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
+    if (!coverage)
     {
-      if (begin == 0)
+      continue;
+    }
+    if (begin == 0)
+    {
+      coverage->Initialize(std::vector<vtkMedialSampleRecord>(results.begin(), results.begin() + end));
+    }
+    else
+    {
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        coverage->Initialize(std::vector<SampleResult>(results.begin(), results.begin() + end));
-      }
-      else
-      {
-        for (vtkIdType i = begin; i < end; ++i)
+        if (results[i].Valid)
         {
-          if (results[i].Valid)
-          {
-            coverage->AddBall(results[i].Centre, results[i].Radius, nullptr);
-          }
+          coverage->AddBall(results[i].Centre, results[i].Radius, nullptr);
         }
       }
-      const double gap = coverage->MaxGap();
-      this->MaxCoverageGap = gap / mesh.Diagonal;
-      this->CoverageReached = gap <= coverageTolerance;
-      if (this->CoverageReached)
-      {
-        used = end;
-        break;
-      }
+    }
+    const double gap = coverage->MaxGap();
+    self->MaxCoverageGap = gap / mesh.Diagonal;
+    self->CoverageReached = gap <= coverageTolerance;
+    if (self->CoverageReached)
+    {
+      return end;
     }
   }
-  if (this->GetAbortExecute())
-  {
-    return 1; // aborted: leave the output empty
-  }
-  results.resize(static_cast<size_t>(used));
-  this->EvaluatedSamples = used;
-
-  try
-  {
-    this->WriteSamples(output, used, results);
-  }
-  catch (const std::bad_alloc&) // the memory check above does not see ulimit -v
-  {
-    output->Initialize();
-    vtkErrorMacro(<< "Cannot allocate memory for the output of " << used << " samples.");
-    return 0;
-  }
-  if (coverage)
-  {
-    output->GetFieldData()->GetArray(vtkMedialArrayNames::RequestedSamples)->SetTuple1(0, static_cast<double>(count));
-    this->WriteCoverage(output);
-  }
-
-  if (mesh.BoundaryEdges > 0)
-  {
-    vtkWarningMacro(<< "Input surface is open (" << mesh.BoundaryEdges << " boundary edges): "
-                    << this->DiscardedSamples << " of " << count
-                    << " samples were discarded because their ray escaped through a hole.");
-  }
-  else if (this->DiscardedSamples > 0)
-  {
-    // Closed, yet a ray left the solid: a folded-over or self-intersecting patch.
-    vtkWarningMacro(<< this->DiscardedSamples << " of " << count
-                    << " samples were discarded: their inward ray met the surface from outside "
-                       "(folded-over or self-intersecting triangles?).");
-  }
-  return 1;
+  return count;
 }
 
-vtkMedialBallParameters vtkMedialAxisSampler::MakeBallParameters(double diagonal) const
+void vtkMedialAxisSampler::vtkInternals::WarnDiscarded(const vtkMedialTriangleMesh& mesh, vtkIdType count) const
+{
+  vtkMedialAxisSampler* self = this->Self;
+  if (mesh.BoundaryEdges > 0)
+  {
+    vtkWarningWithObjectMacro(self, << "Input surface is open (" << mesh.BoundaryEdges << " boundary edges): "
+                                    << self->DiscardedSamples << " of " << count
+                                    << " samples were discarded because their ray escaped through a hole.");
+  }
+  else if (self->DiscardedSamples > 0)
+  {
+    // Closed, yet a ray left the solid: a folded-over or self-intersecting patch.
+    vtkWarningWithObjectMacro(self, << self->DiscardedSamples << " of " << count
+                                    << " samples were discarded: their inward ray met the surface from outside "
+                                       "(folded-over or self-intersecting triangles?).");
+  }
+}
+
+vtkMedialBallParameters vtkMedialAxisSampler::vtkInternals::MakeBallParameters(double diagonal) const
 {
   vtkMedialBallParameters param;
-  param.Method = this->Method;
-  param.Tolerance = this->Tolerance * diagonal;
-  param.CosMinAngle = this->MinimumSeparationAngle > 0.0
-    ? std::cos(this->MinimumSeparationAngle * 3.14159265358979323846 / 180.0)
+  param.Method = this->Self->Method;
+  param.Tolerance = this->Self->Tolerance * diagonal;
+  param.CosMinAngle = this->Self->MinimumSeparationAngle > 0.0
+    ? std::cos(this->Self->MinimumSeparationAngle * 3.14159265358979323846 / 180.0)
     : 1.0;
-  param.MaximumIterations = this->MaximumIterations;
+  param.MaximumIterations = this->Self->MaximumIterations;
   return param;
 }
 
-int vtkMedialAxisSampler::RequestDataIterative(
+int vtkMedialAxisSampler::vtkInternals::SampleIterative(
   const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int piece, vtkPolyData* output)
 {
+  vtkMedialAxisSampler* self = this->Self;
   vtkMedialIterativeSettings settings;
-  settings.Strategy = this->SamplingStrategy == CLOSEST_NEIGHBOR
-    ? vtkMedialIterativeSettings::CLOSEST_NEIGHBOR
-    : vtkMedialIterativeSettings::FACE_DISTANCE;
+  settings.Strategy = self->SamplingStrategy == CLOSEST_NEIGHBOR ? vtkMedialIterativeSettings::CLOSEST_NEIGHBOR
+                                                                 : vtkMedialIterativeSettings::FACE_DISTANCE;
   // The run is sequential by nature: piece 0 holds all of it.
-  settings.Budget = piece == 0 ? this->NumberOfSamples : 0;
-  settings.SeedFraction = this->SeedFraction;
-  settings.CoverageTolerance = this->CoverageTolerance * mesh.Diagonal;
-  settings.Seed = this->RandomSeed;
-  settings.Threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  settings.Budget = piece == 0 ? self->NumberOfSamples : 0;
+  settings.SeedFraction = self->SeedFraction;
+  settings.CoverageTolerance = self->CoverageTolerance * mesh.Diagonal;
+  settings.Seed = self->RandomSeed;
+  settings.Threads = self->NumberOfThreads > 0 ? self->NumberOfThreads : omp_get_num_procs();
   settings.Ball = this->MakeBallParameters(mesh.Diagonal);
-  const double bytesPerSample = 2.0 * sizeof(vtkMedialSampleRecord) + 12 * sizeof(double) + 8 * sizeof(vtkIdType);
-  const double needed = bytesPerSample * static_cast<double>(settings.Budget);
-  const double available = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
-  if (available > 0 && needed > 0.8 * available)
+  if (!this->CheckMemory(settings.Budget,
+        2.0 * sizeof(vtkMedialSampleRecord) + 12 * sizeof(double) + 8 * sizeof(vtkIdType), "use fewer samples"))
   {
-    vtkErrorMacro(<< "NumberOfSamples " << settings.Budget << " needs about " << needed / (1 << 30)
-                  << " GiB, more than this machine's memory allows (" << available / (1 << 30)
-                  << " GiB); use fewer samples.");
     return 0;
   }
 
@@ -399,26 +439,26 @@ int vtkMedialAxisSampler::RequestDataIterative(
   try
   {
     vtkMedialRunIterativeSampling(mesh, query, settings,
-      [this](double fraction) {
-        this->UpdateProgress(std::min(1.0, fraction));
-        return this->GetAbortExecute() != 0;
+      [self](double fraction) {
+        self->UpdateProgress(std::min(1.0, fraction));
+        return self->GetAbortExecute() != 0;
       },
       result);
   }
   catch (const std::bad_alloc&)
   {
-    vtkErrorMacro(<< "Out of memory while sampling " << settings.Budget << " samples.");
+    vtkErrorWithObjectMacro(self, << "Out of memory while sampling " << settings.Budget << " samples.");
     return 0;
   }
-  if (result.Aborted || this->GetAbortExecute())
+  if (result.Aborted || self->GetAbortExecute())
   {
     return 1; // aborted: leave the output empty
   }
   const vtkIdType evaluated = static_cast<vtkIdType>(result.Records.size());
-  this->EvaluatedSamples = evaluated;
-  this->SeedSamples = result.Seeds;
-  this->CoverageReached = result.CoverageReached;
-  this->MaxCoverageGap = result.MaxGap / mesh.Diagonal;
+  self->EvaluatedSamples = evaluated;
+  self->SeedSamples = result.Seeds;
+  self->CoverageReached = result.CoverageReached;
+  self->MaxCoverageGap = result.MaxGap / mesh.Diagonal;
   this->WriteSamples(output, evaluated, result.Records);
   // RequestedSamples is the budget; the samples used are EvaluatedSamples.
   output->GetFieldData()->GetArray(vtkMedialArrayNames::RequestedSamples)->SetTuple1(0, static_cast<double>(settings.Budget));
@@ -427,72 +467,75 @@ int vtkMedialAxisSampler::RequestDataIterative(
   {
     validSeeds += result.Records[i].Valid ? 1 : 0;
   }
-  auto addField = [output](const char* name, double value) {
-    vtkNew<vtkDoubleArray> a;
-    a->SetName(name);
-    a->InsertNextValue(value);
-    output->GetFieldData()->AddArray(a);
-  };
-  addField(vtkMedialArrayNames::EvaluatedSamples, static_cast<double>(evaluated));
-  addField(vtkMedialArrayNames::SeedSamples, static_cast<double>(validSeeds)); // the first output points
+  AddField(output, vtkMedialArrayNames::EvaluatedSamples, static_cast<double>(evaluated));
+  AddField(output, vtkMedialArrayNames::SeedSamples, static_cast<double>(validSeeds)); // the first output points
   this->WriteCoverage(output);
-
   if (settings.Strategy == vtkMedialIterativeSettings::CLOSEST_NEIGHBOR)
   {
-    // Record index -> output point id (invalid records are not output, nor linked).
-    std::vector<vtkIdType> pointId(result.Records.size(), -1);
-    vtkIdType k = 0;
-    for (size_t i = 0; i < result.Records.size(); ++i)
-    {
-      pointId[i] = result.Records[i].Valid ? k++ : -1;
-    }
-    vtkNew<vtkCellArray> lines;
-    const vtkIdType links = static_cast<vtkIdType>(result.InitialLink.size());
-    lines->AllocateExact(links, 2 * links);
-    vtkNew<vtkIdTypeArray> initial;
-    initial->SetName(vtkMedialArrayNames::InitialLink);
-    initial->SetNumberOfTuples(output->GetNumberOfVerts() + links);
-    for (vtkIdType c = 0; c < output->GetNumberOfVerts(); ++c)
-    {
-      initial->SetValue(c, -1); // vertex cells
-    }
-    for (vtkIdType l = 0; l < links; ++l)
-    {
-      const vtkIdType ends[2] = { pointId[result.LinkEnds[2 * l]], pointId[result.LinkEnds[2 * l + 1]] };
-      lines->InsertNextCell(2, ends);
-      initial->SetValue(output->GetNumberOfVerts() + l, result.InitialLink[l]);
-    }
-    output->SetLines(lines);
-    output->GetCellData()->AddArray(initial);
+    WriteLinks(output, result.Records, result.LinkEnds, result.InitialLink);
   }
   return 1;
 }
 
-void vtkMedialAxisSampler::WriteCoverage(vtkPolyData* output)
+void vtkMedialAxisSampler::vtkInternals::WriteLinks(vtkPolyData* output,
+  const std::vector<vtkMedialSampleRecord>& records, const std::vector<vtkIdType>& linkEnds,
+  const std::vector<vtkIdType>& initialLink)
 {
-  vtkNew<vtkDoubleArray> reached;
-  reached->SetName(vtkMedialArrayNames::CoverageReached);
-  reached->InsertNextValue(this->CoverageReached ? 1.0 : 0.0);
-  output->GetFieldData()->AddArray(reached);
-  vtkNew<vtkDoubleArray> gap;
-  gap->SetName(vtkMedialArrayNames::MaxCoverageGap); // relative to the diagonal
-  gap->InsertNextValue(this->MaxCoverageGap);
-  output->GetFieldData()->AddArray(gap);
+  // Record index -> output point id (invalid records are not output, nor linked).
+  std::vector<vtkIdType> pointId(records.size(), -1);
+  vtkIdType k = 0;
+  for (size_t i = 0; i < records.size(); ++i)
+  {
+    pointId[i] = records[i].Valid ? k++ : -1;
+  }
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType links = static_cast<vtkIdType>(initialLink.size());
+  lines->AllocateExact(links, 2 * links);
+  vtkNew<vtkIdTypeArray> initial;
+  initial->SetName(vtkMedialArrayNames::InitialLink);
+  initial->SetNumberOfTuples(output->GetNumberOfVerts() + links);
+  for (vtkIdType c = 0; c < output->GetNumberOfVerts(); ++c)
+  {
+    initial->SetValue(c, -1); // vertex cells
+  }
+  for (vtkIdType l = 0; l < links; ++l)
+  {
+    const vtkIdType ends[2] = { pointId[linkEnds[2 * l]], pointId[linkEnds[2 * l + 1]] };
+    lines->InsertNextCell(2, ends);
+    initial->SetValue(output->GetNumberOfVerts() + l, initialLink[l]);
+  }
+  output->SetLines(lines);
+  output->GetCellData()->AddArray(initial);
 }
 
-void vtkMedialAxisSampler::WriteSamples(
+void vtkMedialAxisSampler::vtkInternals::AddField(vtkPolyData* output, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  a->InsertNextValue(value);
+  output->GetFieldData()->AddArray(a);
+}
+
+void vtkMedialAxisSampler::vtkInternals::WriteCoverage(vtkPolyData* output) const
+{
+  AddField(output, vtkMedialArrayNames::CoverageReached, this->Self->CoverageReached ? 1.0 : 0.0);
+  AddField(output, vtkMedialArrayNames::MaxCoverageGap, this->Self->MaxCoverageGap); // relative to the diagonal
+}
+
+void vtkMedialAxisSampler::vtkInternals::WriteSamples(
   vtkPolyData* output, vtkIdType requested, const std::vector<vtkMedialSampleRecord>& records)
 {
+  vtkMedialAxisSampler* self = this->Self;
   vtkIdType accepted = 0;
   long long iterations = 0;
   for (const vtkMedialSampleRecord& r : records)
   {
     accepted += r.Valid ? 1 : 0;
     iterations += r.Iterations;
-    this->CappedSamples += r.Capped ? 1 : 0;
+    self->CappedSamples += r.Capped ? 1 : 0;
   }
-  this->DiscardedSamples = requested - accepted;
-  this->MeanIterations = requested > 0 ? static_cast<double>(iterations) / requested : 0.0;
+  self->DiscardedSamples = requested - accepted;
+  self->MeanIterations = requested > 0 ? static_cast<double>(iterations) / requested : 0.0;
 
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -545,17 +588,10 @@ void vtkMedialAxisSampler::WriteSamples(
   output->GetPointData()->AddArray(contact);
   output->GetPointData()->AddArray(angle);
   output->GetPointData()->AddArray(cells);
-
-  auto addField = [output](const char* name, double value) {
-    vtkNew<vtkDoubleArray> a;
-    a->SetName(name);
-    a->InsertNextValue(value);
-    output->GetFieldData()->AddArray(a);
-  };
-  addField(vtkMedialArrayNames::RequestedSamples, static_cast<double>(requested));
-  addField(vtkMedialArrayNames::DiscardedSamples, static_cast<double>(this->DiscardedSamples));
-  addField(vtkMedialArrayNames::MeanIterations, this->MeanIterations);
-  addField(vtkMedialArrayNames::CappedSamples, static_cast<double>(this->CappedSamples));
+  AddField(output, vtkMedialArrayNames::RequestedSamples, static_cast<double>(requested));
+  AddField(output, vtkMedialArrayNames::DiscardedSamples, static_cast<double>(self->DiscardedSamples));
+  AddField(output, vtkMedialArrayNames::MeanIterations, self->MeanIterations);
+  AddField(output, vtkMedialArrayNames::CappedSamples, static_cast<double>(self->CappedSamples));
 }
 
 void vtkMedialAxisSampler::PrintSelf(ostream& os, vtkIndent indent)
@@ -574,6 +610,8 @@ void vtkMedialAxisSampler::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DiscardedSamples: " << this->DiscardedSamples << "\n";
   os << indent << "CappedSamples: " << this->CappedSamples << "\n";
   os << indent << "MeanIterations: " << this->MeanIterations << "\n";
+  os << indent << "BoundaryEdges: " << this->BoundaryEdges << "\n";
+  os << indent << "NumberOfTriangles: " << this->NumberOfTriangles << "\n";
   os << indent << "EvaluatedSamples: " << this->EvaluatedSamples << "\n";
   os << indent << "SeedSamples: " << this->SeedSamples << "\n";
   os << indent << "CoverageReached: " << this->CoverageReached << "\n";

@@ -72,6 +72,11 @@
  * the plane, and the largest empty disk is found by the same two methods and the
  * same separation-angle cap, on an exact 2D edge grid instead of Embree. Output
  * arrays are the same; SourceCellId is the input polygon or polyline cell.
+ * IsPlanarInput() tells which mode an input gets. Methods in 2D: ONE_PASS and
+ * SHRINKING_BALL are one and the same method there, the exact shrinking ball on the
+ * edge grid (the one-pass BVH traversal has no 2D counterpart to fuse with: each
+ * step is already a single closest-edge query), and give bit-identical output;
+ * BISECTION is bisection. No warning is given, since ONE_PASS is the default.
  *
  * Pieces: the filter always requests the whole input (rays need the whole surface)
  * and splits the samples among output pieces.
@@ -83,13 +88,6 @@
 
 #include "vtkMedialAxisSamplingModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
-
-#include <vector> // for std::vector
-
-struct vtkMedialSampleRecord;
-struct vtkMedialBallParameters;
-class vtkMedialSurfaceQuery;
-class vtkMedialTriangleMesh;
 
 class VTKMEDIALAXISSAMPLING_EXPORT vtkMedialAxisSampler : public vtkPolyDataAlgorithm
 {
@@ -120,6 +118,7 @@ public:
 
   ///@{
   /// Ball search method (default ONE_PASS, the fastest; all three agree, see above).
+  /// On 2D input ONE_PASS runs the shrinking ball (see the 2D mode above).
   vtkSetClampMacro(Method, int, BISECTION, ONE_PASS);
   vtkGetMacro(Method, int);
   void SetMethodToBisection() { this->SetMethod(BISECTION); }
@@ -202,6 +201,18 @@ public:
   ///@}
 
   ///@{
+  /// True when `input` is sampled in the 2D mode (see above), which is also the input
+  /// of vtkMedialJunctionFilter: polygons only, whose points all lie within 1e-6 of
+  /// the bounding-box diagonal from their least-squares plane (and not all that close
+  /// to one line), or polylines only, of
+  /// which one is closed or which come in 3 or more pieces (they must then chain into
+  /// coplanar loops, or the sampler reports why not). The second form also gives
+  /// that plane: the points' centroid and unit normal.
+  static bool IsPlanarInput(vtkPolyData* input);
+  static bool IsPlanarInput(vtkPolyData* input, double centre[3], double normal[3]);
+  ///@}
+
+  ///@{
   /// Figures from the last execution.
   vtkGetMacro(DiscardedSamples, vtkIdType);
   vtkGetMacro(CappedSamples, vtkIdType);
@@ -225,20 +236,6 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  /// The 2D mode, for planar polygons or closed polylines (see vtkMedialAxisSampler2D.cxx).
-  int RequestData2D(vtkPolyData* input, vtkInformation* outInfo, vtkPolyData* output);
-
-  // Turns the valid records into output vertices, point data and field data, and
-  // sets DiscardedSamples, CappedSamples and MeanIterations. Shared by 2D and 3D.
-  void WriteSamples(
-    vtkPolyData* output, vtkIdType requested, const std::vector<vtkMedialSampleRecord>& records);
-  // The CLOSEST_NEIGHBOR and FACE_DISTANCE strategies (vtkMedialIterativeSampling).
-  int RequestDataIterative(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
-    int piece, vtkPolyData* output);
-  // Bisection / shrinking-ball settings in absolute units.
-  vtkMedialBallParameters MakeBallParameters(double diagonal) const;
-  // Adds CoverageReached and MaxCoverageGap to the output's field data.
-  void WriteCoverage(vtkPolyData* output);
 
   vtkIdType NumberOfSamples = 10000;
   int Method = ONE_PASS;
@@ -262,6 +259,9 @@ protected:
   double MaxCoverageGap = -1.0;
 
 private:
+  // The passes of RequestData (vtkMedialAxisSamplerInternals.h; not installed).
+  class vtkInternals;
+
   vtkMedialAxisSampler(const vtkMedialAxisSampler&) = delete;
   void operator=(const vtkMedialAxisSampler&) = delete;
 };

@@ -3,6 +3,7 @@
 // its own file, with vtkMedialPolygon as the query backend (the 2D counterpart of
 // vtkMedialSurfaceQuery), so the 3D path in vtkMedialAxisSampler.cxx is untouched.
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialAxisSamplerInternals.h"
 
 #include "vtkMedialGeometry.h"
 #include "vtkMedialPolygon.h"
@@ -28,7 +29,7 @@
 
 namespace
 {
-struct Sample2D
+struct PlanarSample
 {
   double Centre[2];
   double Radius;
@@ -59,7 +60,7 @@ vtkMedialPolygon::ContactFilter MakeFilter(
 }
 
 void Solve2D(const vtkMedialPolygon& poly, int method, double tolerance, double cosMinAngle,
-  int maxIterations, int edge, const double p[2], Sample2D& out)
+  int maxIterations, int edge, const double p[2], PlanarSample& out)
 {
   out.Valid = false;
   out.Capped = false;
@@ -82,7 +83,7 @@ void Solve2D(const vtkMedialPolygon& poly, int method, double tolerance, double 
   double c[2] = { p[0] + r * n[0], p[1] + r * n[1] };
   double blocker[2] = { q[0], q[1] };
   bool haveBlocker = false;
-  if (method != vtkMedialAxisSampler::BISECTION) // one pass is the shrinking ball in 2D
+  if (method != vtkMedialAxisSampler::BISECTION) // ONE_PASS and SHRINKING_BALL: one method in 2D
   {
     for (;;)
     {
@@ -157,25 +158,19 @@ void Solve2D(const vtkMedialPolygon& poly, int method, double tolerance, double 
 }
 }
 
-int vtkMedialAxisSampler::RequestData2D(vtkPolyData* input, vtkInformation* outInfo, vtkPolyData* output)
+int vtkMedialAxisSampler::vtkInternals::Sample2D(vtkPolyData* input, int piece, int pieces, vtkPolyData* output)
 {
+  vtkMedialAxisSampler* self = this->Self;
   vtkMedialPolygon poly;
   std::string error;
   if (!poly.Build(input, error))
   {
-    vtkErrorMacro(<< "Cannot sample the medial axis: " << error << ".");
+    vtkErrorWithObjectMacro(self, << "Cannot sample the medial axis: " << error << ".");
     return 0;
   }
-  this->NumberOfTriangles = 0;
-  this->BoundaryEdges = 0;
-
-  const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    : 0;
-  const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
-    ? std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
-    : 1;
-  const vtkIdType total = this->NumberOfSamples;
+  self->NumberOfTriangles = 0;
+  self->BoundaryEdges = 0;
+  const vtkIdType total = self->NumberOfSamples;
   const vtkIdType first = total * piece / pieces;
   const vtkIdType count = total * (piece + 1) / pieces - first;
 
@@ -187,29 +182,24 @@ int vtkMedialAxisSampler::RequestData2D(vtkPolyData* input, vtkInformation* outI
     length += poly.GetEdge(e).Length;
     cumulative[e] = length;
   }
-  std::vector<Sample2D> results;
-  try
+  std::vector<PlanarSample> results;
+  if (!this->Allocate(count, results))
   {
-    results.resize(static_cast<size_t>(count));
-  }
-  catch (const std::bad_alloc&)
-  {
-    vtkErrorMacro(<< "Cannot allocate memory for " << count << " samples.");
     return 0;
   }
-  const double tolerance = this->Tolerance * poly.GetDiagonal();
-  const double cosMinAngle = this->MinimumSeparationAngle > 0.0
-    ? std::cos(this->MinimumSeparationAngle * 3.14159265358979323846 / 180.0)
+  const double tolerance = self->Tolerance * poly.GetDiagonal();
+  const double cosMinAngle = self->MinimumSeparationAngle > 0.0
+    ? std::cos(self->MinimumSeparationAngle * 3.14159265358979323846 / 180.0)
     : 1.0;
-  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  const int threads = self->NumberOfThreads > 0 ? self->NumberOfThreads : omp_get_num_procs();
   const vtkIdType block = 8192;
-  for (vtkIdType begin = 0; begin < count && !this->GetAbortExecute(); begin += block)
+  for (vtkIdType begin = 0; begin < count && !self->GetAbortExecute(); begin += block)
   {
     const vtkIdType end = std::min(count, begin + block);
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 64)
     for (vtkIdType i = begin; i < end; ++i)
     {
-      vtkMedialSampleRandom random(this->RandomSeed, static_cast<std::uint64_t>(first + i));
+      vtkMedialSampleRandom random(self->RandomSeed, static_cast<std::uint64_t>(first + i));
       const double pick = random.Uniform() * length;
       const int e = static_cast<int>(
         std::min<size_t>(cumulative.size() - 1,
@@ -218,11 +208,11 @@ int vtkMedialAxisSampler::RequestData2D(vtkPolyData* input, vtkInformation* outI
       const double* a = poly.GetPoint(poly.GetEdge(e).A);
       const double* b = poly.GetPoint(poly.GetEdge(e).B);
       const double p[2] = { a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]) };
-      Solve2D(poly, this->Method, tolerance, cosMinAngle, this->MaximumIterations, e, p, results[i]);
+      Solve2D(poly, self->Method, tolerance, cosMinAngle, self->MaximumIterations, e, p, results[i]);
     }
-    this->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
+    self->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
   }
-  if (this->GetAbortExecute())
+  if (self->GetAbortExecute())
   {
     return 1;
   }
@@ -231,7 +221,7 @@ int vtkMedialAxisSampler::RequestData2D(vtkPolyData* input, vtkInformation* outI
   std::vector<vtkMedialSampleRecord> records(results.size());
   for (size_t i = 0; i < results.size(); ++i)
   {
-    const Sample2D& r = results[i];
+    const PlanarSample& r = results[i];
     vtkMedialSampleRecord& record = records[i];
     record.Valid = r.Valid;
     record.Capped = r.Capped;

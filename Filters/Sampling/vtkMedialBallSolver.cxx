@@ -3,7 +3,6 @@
 
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialGeometry.h"
-#include "vtkMedialRandom.h"
 #include "vtkMedialSampleRecord.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
@@ -14,29 +13,6 @@
 namespace
 {
 namespace G = vtkMedialGeometry;
-}
-
-// Draws sample `index` on the surface; the vertex order of the triangle does not
-// matter (vertices are taken in id order), so re-wound input gives the same point.
-void vtkMedialDrawSurfacePoint(const vtkMedialTriangleMesh& mesh, vtkTypeUInt64 seed, vtkIdType index,
-  vtkIdType& triangle, double p[3])
-{
-  vtkMedialSampleRandom random(seed, static_cast<std::uint64_t>(index));
-  triangle = mesh.PickTriangleByArea(random.Uniform());
-  vtkIdType v[3] = { mesh.GetTriangle(triangle)[0], mesh.GetTriangle(triangle)[1],
-    mesh.GetTriangle(triangle)[2] };
-  std::sort(v, v + 3);
-  // Uniform on the triangle: sqrt warping of two uniforms.
-  const double s = std::sqrt(random.Uniform());
-  const double t = random.Uniform();
-  const double wa = 1.0 - s, wb = s * (1.0 - t), wc = s * t;
-  const double* a = mesh.GetPoint(v[0]);
-  const double* b = mesh.GetPoint(v[1]);
-  const double* c = mesh.GetPoint(v[2]);
-  for (int k = 0; k < 3; ++k)
-  {
-    p[k] = wa * a[k] + wb * b[k] + wc * c[k];
-  }
 }
 
 // Finds the maximal admissible ball tangent at p (on `triangle`) along the inward normal.

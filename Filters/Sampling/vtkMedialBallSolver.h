@@ -4,12 +4,11 @@
  * @brief Internal: one medial sample of a triangle mesh, shared by every sampling
  * strategy of vtkMedialAxisSampler.
  *
- * vtkMedialDrawSurfacePoint draws the area-weighted random surface point of sample
- * `index` from the stream (seed, index) (the Random strategy's samples).
  * vtkMedialSolveBall finds the maximal admissible ball tangent at a given surface
  * point p on a given triangle, along the inward normal, by bisection or the
  * shrinking ball or the one-pass traversal (see vtkMedialAxisSampler); any strategy that
- * chooses its own surface points calls it. Both are thread-safe after the mesh and
+ * chooses its own surface points calls it (the Random strategy draws them with
+ * vtkMedialDrawSurfacePoint, vtkMedialRandom.h). It is thread-safe after the mesh and
  * the query are built. Internal header; not installed.
  */
 #ifndef vtkMedialBallSolver_h
@@ -28,10 +27,6 @@ struct vtkMedialBallParameters
   double CosMinAngle;     // cos(theta); 1 for theta = 0
   int MaximumIterations;  // shrinking-ball cap
 };
-
-/// Surface point of sample `index`: a triangle picked by area, a uniform point on it.
-void vtkMedialDrawSurfacePoint(const vtkMedialTriangleMesh& mesh, vtkTypeUInt64 seed,
-  vtkIdType index, vtkIdType& triangle, double p[3]);
 
 /// Maximal admissible ball tangent at p (lying on `triangle`). out.Valid is false when
 /// the inward ray escapes through a hole.

@@ -8,6 +8,7 @@
 #include "vtkMedialRandom.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
+#include "vtkMedialUniformGrid.h"
 
 #include <omp.h>
 
@@ -17,7 +18,6 @@
 #include <cstdint>
 #include <cstring>
 #include <queue>
-#include <unordered_map>
 #include <unordered_set>
 
 namespace
@@ -35,151 +35,6 @@ double Distance(const double a[3], const double b[3])
   G::Sub(a, b, d);
   return std::sqrt(G::Dot(d, d));
 }
-
-// A static uniform grid of points (CSR), for sphere range queries.
-class PointGrid
-{
-public:
-  void Build(const std::vector<double>& xyz, const std::vector<char>& use, const double bounds[6],
-    double cellSize)
-  {
-    const size_t n = xyz.size() / 3;
-    this->Size = cellSize;
-    size_t total = 1;
-    for (int k = 0; k < 3; ++k)
-    {
-      this->Origin[k] = bounds[2 * k];
-      this->Dims[k] = std::max(1, static_cast<int>((bounds[2 * k + 1] - bounds[2 * k]) / cellSize) + 1);
-      total *= static_cast<size_t>(this->Dims[k]);
-    }
-    this->Start.assign(total + 1, 0);
-    std::vector<size_t> cellOf(n, 0);
-    for (size_t i = 0; i < n; ++i)
-    {
-      if (use.empty() || use[i])
-      {
-        cellOf[i] = this->CellIndex(&xyz[3 * i]);
-        ++this->Start[cellOf[i] + 1];
-      }
-    }
-    for (size_t c = 0; c < total; ++c)
-    {
-      this->Start[c + 1] += this->Start[c];
-    }
-    this->Items.resize(this->Start[total]);
-    std::vector<size_t> fill(this->Start.begin(), this->Start.end() - 1);
-    for (size_t i = 0; i < n; ++i)
-    {
-      if (use.empty() || use[i])
-      {
-        this->Items[fill[cellOf[i]]++] = static_cast<vtkIdType>(i);
-      }
-    }
-  }
-
-  int Coordinate(double x, int k) const
-  {
-    const double t = (x - this->Origin[k]) / this->Size;
-    if (!(t > 0.0))
-    {
-      return 0;
-    }
-    return std::min(this->Dims[k] - 1, static_cast<int>(std::min(t, 1e9)));
-  }
-  size_t CellIndex(const double x[3]) const
-  {
-    return (static_cast<size_t>(this->Coordinate(x[2], 2)) * this->Dims[1] + this->Coordinate(x[1], 1)) *
-      this->Dims[0] +
-      this->Coordinate(x[0], 0);
-  }
-
-  /// Calls f(item) for the items of every cell that comes within `radius` of c.
-  template <class F>
-  void ForEachNear(const double c[3], double radius, F&& f) const
-  {
-    int lo[3], hi[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      lo[k] = this->Coordinate(c[k] - radius, k);
-      hi[k] = this->Coordinate(c[k] + radius, k);
-    }
-    const double r2 = radius * radius;
-    for (int z = lo[2]; z <= hi[2]; ++z)
-    {
-      const double dz = this->AxisGap(c[2], z, 2);
-      for (int y = lo[1]; y <= hi[1]; ++y)
-      {
-        const double dy = this->AxisGap(c[1], y, 1);
-        if (dz * dz + dy * dy > r2)
-        {
-          continue;
-        }
-        const size_t row = (static_cast<size_t>(z) * this->Dims[1] + y) * this->Dims[0];
-        for (int x = lo[0]; x <= hi[0]; ++x)
-        {
-          const double dx = this->AxisGap(c[0], x, 0);
-          if (dz * dz + dy * dy + dx * dx > r2)
-          {
-            continue;
-          }
-          for (size_t s = this->Start[row + x]; s < this->Start[row + x + 1]; ++s)
-          {
-            f(this->Items[s]);
-          }
-        }
-      }
-    }
-  }
-
-  /// Calls f(item) for the cells in the cube of Chebyshev radius `ring` around c's cell.
-  template <class F>
-  void ForEachInCube(const double c[3], int ring, F&& f) const
-  {
-    int lo[3], hi[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      const int m = this->Coordinate(c[k], k);
-      lo[k] = std::max(0, m - ring);
-      hi[k] = std::min(this->Dims[k] - 1, m + ring);
-    }
-    for (int z = lo[2]; z <= hi[2]; ++z)
-    {
-      for (int y = lo[1]; y <= hi[1]; ++y)
-      {
-        const size_t row = (static_cast<size_t>(z) * this->Dims[1] + y) * this->Dims[0];
-        for (size_t s = this->Start[row + lo[0]]; s < this->Start[row + hi[0] + 1]; ++s)
-        {
-          f(this->Items[s]);
-        }
-      }
-    }
-  }
-
-  int MaxDim() const { return std::max(this->Dims[0], std::max(this->Dims[1], this->Dims[2])); }
-
-private:
-  // Distance along axis k from x to cell slab i (0 inside; the boundary slabs are open).
-  double AxisGap(double x, int i, int k) const
-  {
-    const double a = this->Origin[k] + i * this->Size;
-    const double b = a + this->Size;
-    if (x < a && i > 0)
-    {
-      return a - x;
-    }
-    if (x > b && i < this->Dims[k] - 1)
-    {
-      return x - b;
-    }
-    return 0.0;
-  }
-
-  double Origin[3] = { 0, 0, 0 };
-  double Size = 1.0;
-  int Dims[3] = { 1, 1, 1 };
-  std::vector<size_t> Start;
-  std::vector<vtkIdType> Items;
-};
 
 // Exact-bits set of surface points: no two samples may share one.
 struct PointKeyHash
@@ -232,51 +87,22 @@ void ThrowDarts(const vtkMedialTriangleMesh& mesh, const vtkMedialIterativeSetti
     return;
   }
   const double rho = std::sqrt(0.6 * mesh.TotalArea / static_cast<double>(wanted));
-  std::unordered_map<std::uint64_t, std::vector<vtkIdType>> hash;
-  auto cellKey = [&](long long i, long long j, long long k) {
-    return (static_cast<std::uint64_t>(i & 0x1FFFFF) << 42) |
-      (static_cast<std::uint64_t>(j & 0x1FFFFF) << 21) | static_cast<std::uint64_t>(k & 0x1FFFFF);
-  };
-  auto cellOf = [&](const double p[3], long long ijk[3]) {
-    for (int a = 0; a < 3; ++a)
-    {
-      ijk[a] = static_cast<long long>(std::floor((p[a] - mesh.Bounds[2 * a]) / rho));
-    }
-  };
+  // Accepted seeds by cell; a dart is tested against those in the cells within rho.
+  vtkMedialUniformGrid accepted;
+  accepted.InitializeCubic(mesh.Bounds, vtkMedialUniformGrid::CubicCellSize(mesh.Bounds, rho));
   const vtkIdType maximumDarts = 30 * wanted;
   for (vtkIdType dart = 0; dart < maximumDarts && static_cast<vtkIdType>(triangles.size()) < wanted; ++dart)
   {
     vtkIdType t;
     double p[3];
     vtkMedialDrawSurfacePoint(mesh, s.Seed ^ DartStream, dart, t, p);
-    long long ijk[3];
-    cellOf(p, ijk);
-    bool free = true;
-    for (int dz = -1; dz <= 1 && free; ++dz)
+    int lo[3], hi[3];
+    accepted.CellBox(p, rho, lo, hi);
+    const bool taken =
+      accepted.AnyItemInBox(lo, hi, [&](vtkIdType other) { return Distance(p, &points[3 * other]) < rho; });
+    if (!taken)
     {
-      for (int dy = -1; dy <= 1 && free; ++dy)
-      {
-        for (int dx = -1; dx <= 1 && free; ++dx)
-        {
-          auto it = hash.find(cellKey(ijk[0] + dx, ijk[1] + dy, ijk[2] + dz));
-          if (it == hash.end())
-          {
-            continue;
-          }
-          for (vtkIdType other : it->second)
-          {
-            if (Distance(p, &points[3 * other]) < rho)
-            {
-              free = false;
-              break;
-            }
-          }
-        }
-      }
-    }
-    if (free)
-    {
-      hash[cellKey(ijk[0], ijk[1], ijk[2])].push_back(static_cast<vtkIdType>(triangles.size()));
+      accepted.Insert(static_cast<vtkIdType>(triangles.size()), accepted.CellOf(p));
       triangles.push_back(t);
       points.insert(points.end(), p, p + 3);
     }
@@ -296,7 +122,7 @@ struct vtkMedialCoverage::Internals
   std::vector<vtkIdType> FaceList;
   std::vector<unsigned> Stamp; // per face, dedupes `touched`
   unsigned CurrentStamp = 0;
-  PointGrid Grid;
+  vtkMedialUniformGrid Grid;
   double Bound = HUGE_VAL; // upper bound of every gap
 
   template <class F>
@@ -364,22 +190,10 @@ vtkMedialCoverage::vtkMedialCoverage(const vtkMedialTriangleMesh& mesh)
   }
   m.Stamp.assign(static_cast<size_t>(nf), 0);
   // About 8 points per occupied cell, at most 2^22 cells.
-  double size = std::sqrt(8.0 * std::max(mesh.TotalArea, 1e-300) / std::max<vtkIdType>(used, 1));
-  size = std::max(size, 1e-9 * mesh.Diagonal);
-  for (;;)
-  {
-    double cells = 1.0;
-    for (int k = 0; k < 3; ++k)
-    {
-      cells *= std::floor((mesh.Bounds[2 * k + 1] - mesh.Bounds[2 * k]) / size) + 1.0;
-    }
-    if (cells <= 4194304.0 || !(size > 0.0))
-    {
-      break;
-    }
-    size *= 1.25;
-  }
-  m.Grid.Build(m.Points, m.Used, mesh.Bounds, size);
+  const double size = std::max(
+    std::sqrt(8.0 * std::max(mesh.TotalArea, 1e-300) / std::max<vtkIdType>(used, 1)), 1e-9 * mesh.Diagonal);
+  m.Grid.InitializeCubic(mesh.Bounds, vtkMedialUniformGrid::CubicCellSize(mesh.Bounds, size));
+  m.Grid.BuildPoints(m.Points, m.Used);
 }
 
 vtkMedialCoverage::~vtkMedialCoverage() = default;
@@ -399,17 +213,10 @@ void vtkMedialCoverage::Initialize(const std::vector<vtkMedialSampleRecord>& rec
   if (n > 0)
   {
     // Start value: distance to a nearby seed's surface point (an upper bound of the gap).
-    PointGrid seedGrid;
+    vtkMedialUniformGrid seedGrid;
     const double spacing = std::max(std::sqrt(m.Mesh->TotalArea / n), 1e-9 * m.Mesh->Diagonal);
-    double size = spacing;
-    while ((std::floor((m.Mesh->Bounds[1] - m.Mesh->Bounds[0]) / size) + 1) *
-        (std::floor((m.Mesh->Bounds[3] - m.Mesh->Bounds[2]) / size) + 1) *
-        (std::floor((m.Mesh->Bounds[5] - m.Mesh->Bounds[4]) / size) + 1) >
-      4194304.0)
-    {
-      size *= 1.25;
-    }
-    seedGrid.Build(seeds, std::vector<char>(), m.Mesh->Bounds, size);
+    seedGrid.InitializeCubic(m.Mesh->Bounds, vtkMedialUniformGrid::CubicCellSize(m.Mesh->Bounds, spacing));
+    seedGrid.BuildPoints(seeds, std::vector<char>());
     const vtkIdType count = static_cast<vtkIdType>(m.Points.size() / 3);
     for (vtkIdType i = 0; i < count; ++i)
     {
@@ -419,9 +226,13 @@ void vtkMedialCoverage::Initialize(const std::vector<vtkMedialSampleRecord>& rec
       }
       const double* x = &m.Points[3 * i];
       double best = HUGE_VAL;
-      for (int ring = 1; best == HUGE_VAL && ring <= seedGrid.MaxDim(); ring *= 2)
+      int centre[3];
+      seedGrid.CellCoordinates(x, centre);
+      for (int ring = 1; best == HUGE_VAL && ring <= seedGrid.GetMaximumDimension(); ring *= 2)
       {
-        seedGrid.ForEachInCube(x, ring, [&](vtkIdType s) { best = std::min(best, Distance(x, &seeds[3 * s])); });
+        const int lo[3] = { centre[0] - ring, centre[1] - ring, centre[2] - ring };
+        const int hi[3] = { centre[0] + ring, centre[1] + ring, centre[2] + ring };
+        seedGrid.ForEachItemInBox(lo, hi, [&](vtkIdType s) { best = std::min(best, Distance(x, &seeds[3 * s])); });
       }
       m.Gap[i] = std::min(m.Gap[i], best);
     }
@@ -441,7 +252,7 @@ void vtkMedialCoverage::AddBall(const double c[3], double r, std::vector<vtkIdTy
   Internals& m = *this->Impl;
   ++m.CurrentStamp;
   const double reach = r + std::min(m.Bound, 2.0 * m.Mesh->Diagonal);
-  m.Grid.ForEachNear(c, reach, [&](vtkIdType i) {
+  m.Grid.ForEachItemNear(c, reach, [&](vtkIdType i) {
     const double g = Distance(&m.Points[3 * i], c) - r;
     if (g < m.Gap[i])
     {
@@ -497,6 +308,21 @@ double vtkMedialCoverage::MaxGap()
 //------------------------------------------------------------------------------
 namespace
 {
+struct Segment
+{
+  vtkIdType A, B, Link;
+  vtkIdType Child[2];
+};
+struct SegmentEntry
+{
+  double Length;
+  vtkIdType Index;
+  bool operator<(const SegmentEntry& o) const // max-heap on length; ties: older first
+  {
+    return this->Length < o.Length || (this->Length == o.Length && this->Index > o.Index);
+  }
+};
+
 struct Runner
 {
   const vtkMedialTriangleMesh& Mesh;
@@ -553,6 +379,12 @@ struct Runner
 
   void FaceDistance();
   void ClosestNeighbor();
+
+  // CLOSEST_NEIGHBOR's passes (see the header).
+  bool ChainSeeds(std::vector<Segment>& segments);
+  void SplitLinks(std::vector<Segment>& segments);
+  bool LinkMidpoint(const Segment& link, double shortest, vtkIdType& triangle, double point[3]) const;
+  void CollectLinks(const std::vector<Segment>& segments, vtkIdType initialLinks);
 };
 
 struct FaceEntry
@@ -675,21 +507,6 @@ void Runner::FaceDistance()
   }
 }
 
-struct Segment
-{
-  vtkIdType A, B, Link;
-  vtkIdType Child[2];
-};
-struct SegmentEntry
-{
-  double Length;
-  vtkIdType Index;
-  bool operator<(const SegmentEntry& o) const // max-heap on length; ties: older first
-  {
-    return this->Length < o.Length || (this->Length == o.Length && this->Index > o.Index);
-  }
-};
-
 bool Overlap(const vtkMedialSampleRecord& a, const vtkMedialSampleRecord& b)
 {
   return Distance(a.Centre, b.Centre) <= a.Radius + b.Radius;
@@ -725,118 +542,83 @@ public:
     const double extent = std::max(hi[0] - lo[0], std::max(hi[1] - lo[1], hi[2] - lo[2]));
     const int perAxis = std::max(1, std::min(256, static_cast<int>(std::cbrt(static_cast<double>(valid)))));
     this->Size = extent > 0.0 ? extent / perAxis : 1.0;
+    const double size[3] = { this->Size, this->Size, this->Size };
+    int dims[3];
     for (int k = 0; k < 3; ++k)
     {
-      this->Origin[k] = lo[k];
-      this->Dims[k] = std::max(1, std::min(perAxis, static_cast<int>((hi[k] - lo[k]) / this->Size) + 1));
+      dims[k] = std::max(1, std::min(perAxis, static_cast<int>((hi[k] - lo[k]) / this->Size) + 1));
     }
-    this->Cells.resize(static_cast<size_t>(this->Dims[0]) * this->Dims[1] * this->Dims[2]);
-    for (vtkIdType i = 0; i < n; ++i)
-    {
+    this->Grid.Initialize(lo, size, dims);
+    this->Grid.Build(n, [&](vtkIdType i, auto&& add) {
       if (rec[i].Valid)
       {
-        this->Cells[this->CellOf(rec[i].Centre)].push_back(i);
+        add(this->Grid.CellOf(rec[i].Centre));
       }
-    }
+    });
+    this->Empty = false;
   }
 
-  void Remove(vtkIdType i)
-  {
-    std::vector<vtkIdType>& cell = this->Cells[this->CellOf(this->Rec[i].Centre)];
-    cell.erase(std::find(cell.begin(), cell.end(), i));
-  }
+  void Remove(vtkIdType i) { this->Grid.Hide(i); }
 
   /// The closest remaining centre to p's whose ball does not overlap p's (smaller
   /// index on a tie), or -1. Searches rings of cells until no closer one can exist.
   vtkIdType Closest(vtkIdType p) const
   {
-    if (this->Cells.empty())
+    if (this->Empty)
     {
       return -1;
     }
     const vtkMedialSampleRecord& a = this->Rec[p];
     int c[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      c[k] = this->Coordinate(a.Centre[k], k);
-    }
-    const int maximum = std::max(this->Dims[0], std::max(this->Dims[1], this->Dims[2]));
+    this->Grid.CellCoordinates(a.Centre, c);
     vtkIdType best = -1;
     double bestDistance = HUGE_VAL;
-    auto visit = [&](int x, int y, int z) {
-      if (x < 0 || y < 0 || z < 0 || x >= this->Dims[0] || y >= this->Dims[1] || z >= this->Dims[2])
+    auto visit = [&](vtkIdType q) {
+      const double d = Distance(a.Centre, this->Rec[q].Centre);
+      if (q != p && d > a.Radius + this->Rec[q].Radius && (d < bestDistance || (d == bestDistance && q < best)))
       {
-        return;
-      }
-      for (vtkIdType q : this->Cells[(static_cast<size_t>(z) * this->Dims[1] + y) * this->Dims[0] + x])
-      {
-        const double d = Distance(a.Centre, this->Rec[q].Centre);
-        if (q != p && d > a.Radius + this->Rec[q].Radius && (d < bestDistance || (d == bestDistance && q < best)))
-        {
-          bestDistance = d;
-          best = q;
-        }
+        bestDistance = d;
+        best = q;
       }
     };
-    for (int ring = 0; ring <= maximum; ++ring)
+    for (int ring = 0; ring <= this->Grid.GetMaximumDimension(); ++ring)
     {
       // Every point of ring `ring` is at least (ring - 1) cells away.
       if (best >= 0 && bestDistance < (ring - 1) * this->Size)
       {
         break;
       }
-      for (int z = c[2] - ring; z <= c[2] + ring; ++z)
-      {
-        for (int y = c[1] - ring; y <= c[1] + ring; ++y)
-        {
-          if (std::abs(z - c[2]) == ring || std::abs(y - c[1]) == ring)
-          {
-            for (int x = c[0] - ring; x <= c[0] + ring; ++x)
-            {
-              visit(x, y, z);
-            }
-          }
-          else
-          {
-            visit(c[0] - ring, y, z);
-            if (ring > 0)
-            {
-              visit(c[0] + ring, y, z);
-            }
-          }
-        }
-      }
+      this->Grid.ForEachCellInShell(c, ring, [&](const int*, vtkIdType cell) { this->Grid.ForEachItemInCell(cell, visit); });
     }
     return best;
   }
 
 private:
-  int Coordinate(double x, int k) const
-  {
-    const double t = (x - this->Origin[k]) / this->Size;
-    return t > 0.0 ? std::min(this->Dims[k] - 1, static_cast<int>(std::min(t, 1e9))) : 0;
-  }
-  size_t CellOf(const double x[3]) const
-  {
-    return (static_cast<size_t>(this->Coordinate(x[2], 2)) * this->Dims[1] + this->Coordinate(x[1], 1)) *
-      this->Dims[0] +
-      this->Coordinate(x[0], 0);
-  }
-
   const std::vector<vtkMedialSampleRecord>& Rec;
-  double Origin[3] = { 0, 0, 0 };
+  vtkMedialUniformGrid Grid;
   double Size = 1.0;
-  int Dims[3] = { 1, 1, 1 };
-  std::vector<std::vector<vtkIdType>> Cells;
+  bool Empty = true;
 };
 
 void Runner::ClosestNeighbor()
 {
-  std::vector<vtkMedialSampleRecord>& rec = this->R.Records;
-  const vtkIdType seeds = this->R.Seeds;
-  // Step 1: chains of closest, unlinked, non-overlapping seeds.
-  std::vector<char> linked(static_cast<size_t>(seeds), 0), done(static_cast<size_t>(seeds), 0);
   std::vector<Segment> segments;
+  if (!this->ChainSeeds(segments))
+  {
+    this->R.Aborted = true;
+    return;
+  }
+  const vtkIdType initialLinks = static_cast<vtkIdType>(segments.size());
+  this->SplitLinks(segments);
+  this->CollectLinks(segments, initialLinks);
+}
+
+// Step 1: chains of closest, unlinked, non-overlapping seeds. False when aborted.
+bool Runner::ChainSeeds(std::vector<Segment>& segments)
+{
+  const std::vector<vtkMedialSampleRecord>& rec = this->R.Records;
+  const vtkIdType seeds = this->R.Seeds;
+  std::vector<char> linked(static_cast<size_t>(seeds), 0), done(static_cast<size_t>(seeds), 0);
   vtkIdType current = -1, firstFree = 0;
   CentreGrid grid(rec, seeds);
   const double seedsDone = static_cast<double>(seeds) / static_cast<double>(this->S.Budget);
@@ -845,8 +627,7 @@ void Runner::ClosestNeighbor()
     // Late chains may search far: keep the abort check alive.
     if (step % 256 == 0 && this->Progress(seedsDone))
     {
-      this->R.Aborted = true;
-      return;
+      return false;
     }
     if (current < 0)
     {
@@ -856,7 +637,7 @@ void Runner::ClosestNeighbor()
       }
       if (firstFree >= seeds)
       {
-        break;
+        return true;
       }
       current = firstFree;
     }
@@ -877,9 +658,13 @@ void Runner::ClosestNeighbor()
     linked[current] = linked[best] = 1;
     current = best;
   }
-  const vtkIdType initialLinks = static_cast<vtkIdType>(segments.size());
+}
 
-  // Step 2: a max-heap of links by length.
+// Steps 2 and 3: a max-heap of links by length; the longest links are split at the
+// surface point between their ends, round by round.
+void Runner::SplitLinks(std::vector<Segment>& segments)
+{
+  std::vector<vtkMedialSampleRecord>& rec = this->R.Records;
   std::priority_queue<SegmentEntry> heap;
   const double shortest = 1e-9 * this->Mesh.Diagonal;
   auto pushIfApart = [&](vtkIdType i) {
@@ -889,12 +674,11 @@ void Runner::ClosestNeighbor()
       heap.push({ Distance(rec[g.A].Centre, rec[g.B].Centre), i });
     }
   };
-  for (vtkIdType i = 0; i < initialLinks; ++i)
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(segments.size()); ++i)
   {
     pushIfApart(i);
   }
 
-  // Step 3: split the longest links at the surface point between their ends.
   std::vector<vtkIdType> popped, triangles;
   std::vector<double> points;
   std::vector<vtkMedialSampleRecord> solved;
@@ -909,32 +693,14 @@ void Runner::ClosestNeighbor()
     {
       const vtkIdType i = heap.top().Index;
       heap.pop();
-      const Segment& g = segments[i];
-      double mid[3];
-      for (int k = 0; k < 3; ++k)
+      vtkIdType triangle;
+      double point[3];
+      if (this->LinkMidpoint(segments[i], shortest, triangle, point))
       {
-        mid[k] = 0.5 * (rec[g.A].Surface[k] + rec[g.B].Surface[k]);
+        popped.push_back(i);
+        triangles.push_back(triangle);
+        points.insert(points.end(), point, point + 3);
       }
-      vtkMedialSurfaceQuery::ClosestHit hit;
-      const double bound = Distance(mid, rec[g.A].Surface) * (1.0 + 1e-9) + shortest + this->Query.GetSlack();
-      if (!this->Query.ClosestPoint(mid, bound, hit))
-      {
-        continue; // cannot happen on a surface through A; the link stays as it is
-      }
-      // Off the triangle's edges and vertices, where the closest point often lands:
-      // the ray from a point exactly on an edge can graze the neighbouring face (the
-      // BVH works in float). A shift of 1e-3 of the way to the centroid is far below
-      // the sampling density.
-      const vtkIdType* t = this->Mesh.GetTriangle(hit.Triangle);
-      for (int k = 0; k < 3; ++k)
-      {
-        const double centroid = (this->Mesh.GetPoint(t[0])[k] + this->Mesh.GetPoint(t[1])[k] +
-                                  this->Mesh.GetPoint(t[2])[k]) / 3.0;
-        hit.Point[k] += 1e-3 * (centroid - hit.Point[k]);
-      }
-      popped.push_back(i);
-      triangles.push_back(hit.Triangle);
-      points.insert(points.end(), hit.Point, hit.Point + 3);
     }
     SolveRound(this->Query, this->Mesh, this->S, triangles, points, solved);
     for (size_t j = 0; j < popped.size(); ++j)
@@ -962,8 +728,43 @@ void Runner::ClosestNeighbor()
     }
     stop = this->EndOfRound();
   }
+}
 
-  // The final links: the leaves of each initial link's split tree, in path order.
+// The surface point between a link's ends: the closest surface point to the midpoint
+// of their surface points, moved off the triangle's edges. False when none is found.
+bool Runner::LinkMidpoint(const Segment& link, double shortest, vtkIdType& triangle, double point[3]) const
+{
+  const std::vector<vtkMedialSampleRecord>& rec = this->R.Records;
+  double mid[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    mid[k] = 0.5 * (rec[link.A].Surface[k] + rec[link.B].Surface[k]);
+  }
+  vtkMedialSurfaceQuery::ClosestHit hit;
+  const double bound = Distance(mid, rec[link.A].Surface) * (1.0 + 1e-9) + shortest + this->Query.GetSlack();
+  if (!this->Query.ClosestPoint(mid, bound, hit))
+  {
+    return false; // cannot happen on a surface through A; the link stays as it is
+  }
+  // Off the triangle's edges and vertices, where the closest point often lands:
+  // the ray from a point exactly on an edge can graze the neighbouring face (the
+  // BVH works in float). A shift of 1e-3 of the way to the centroid is far below
+  // the sampling density.
+  const vtkIdType* t = this->Mesh.GetTriangle(hit.Triangle);
+  for (int k = 0; k < 3; ++k)
+  {
+    const double centroid =
+      (this->Mesh.GetPoint(t[0])[k] + this->Mesh.GetPoint(t[1])[k] + this->Mesh.GetPoint(t[2])[k]) / 3.0;
+    hit.Point[k] += 1e-3 * (centroid - hit.Point[k]);
+  }
+  triangle = hit.Triangle;
+  std::copy(hit.Point, hit.Point + 3, point);
+  return true;
+}
+
+// The final links: the leaves of each initial link's split tree, in path order.
+void Runner::CollectLinks(const std::vector<Segment>& segments, vtkIdType initialLinks)
+{
   std::vector<vtkIdType> stack;
   for (vtkIdType link = 0; link < initialLinks; ++link)
   {

@@ -6,7 +6,7 @@
 //   medial-bad-input run FILE [-n N] [--junctions] [--write OUT.vtp]
 //                         [--same-as REF [--scale S]] [--cli-output OUT.vtp]
 //       runs the pipeline the command-line program would run, filter by filter: the
-//       stock reader for FILE's extension, vtkMedialAxisSampler (and, with --junctions,
+//       reader for FILE's extension (vtkMedialFileReader), vtkMedialAxisSampler (and, with --junctions,
 //       vtkMedialJunctionFilter), optionally vtkXMLPolyDataWriter. Prints one summary
 //       line per filter and every error or warning it logged, and exits 0 when every
 //       update succeeded, 1 when one failed. --same-as checks that the radii, divided by
@@ -16,26 +16,21 @@
 #include "MedialTestSupport.h"
 
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialFileReader.h"
 #include "vtkMedialJunctionFilter.h"
 #include "vtkMath.h"
 #include "vtkMedialShapeSource.h"
-#include "vtkOFFReader.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
-#include "vtkDataSetReader.h"
-#include "vtkDataSetSurfaceFilter.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkLogger.h"
-#include "vtkOBJReader.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
-#include "vtkPLYReader.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSTLReader.h"
 #include "vtkSmartPointer.h"
 #include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
@@ -344,54 +339,6 @@ int Generate(const std::string& dir)
 
 // ---------------------------------------------------------------- runs
 
-std::string Extension(const std::string& path)
-{
-  const size_t dot = path.find_last_of('.');
-  std::string e = dot == std::string::npos ? "" : path.substr(dot);
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
-  return e;
-}
-
-// The stock reader for the extension, as the command-line program picks it; `keep`
-// holds a legacy reader whose surface filter is returned.
-vtkSmartPointer<vtkAlgorithm> ReaderFor(const std::string& path, vtkSmartPointer<vtkAlgorithm>& keep)
-{
-  const std::string ext = Extension(path);
-  vtkSmartPointer<vtkAlgorithm> reader;
-  auto named = [&](auto r) {
-    r->SetFileName(path.c_str());
-    return r;
-  };
-  if (ext == ".vtp")
-  {
-    reader = named(vtkSmartPointer<vtkXMLPolyDataReader>::New());
-  }
-  else if (ext == ".vtk")
-  {
-    keep = named(vtkSmartPointer<vtkDataSetReader>::New());
-    auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
-    surface->SetInputConnection(keep->GetOutputPort());
-    reader = surface;
-  }
-  else if (ext == ".ply")
-  {
-    reader = named(vtkSmartPointer<vtkPLYReader>::New());
-  }
-  else if (ext == ".stl")
-  {
-    reader = named(vtkSmartPointer<vtkSTLReader>::New());
-  }
-  else if (ext == ".obj")
-  {
-    reader = named(vtkSmartPointer<vtkOBJReader>::New());
-  }
-  else if (ext == ".off")
-  {
-    reader = named(vtkSmartPointer<vtkOFFReader>::New());
-  }
-  return reader;
-}
-
 void PrintLog(const char* who, const EventLog& log)
 {
   std::string text = log.Text;
@@ -422,19 +369,10 @@ struct SamplerRun
 // The sampler on a file, as run from the command line (seed 1, default settings).
 bool RunSampler(const std::string& path, vtkIdType samples, SamplerRun& run, bool print)
 {
-  vtkSmartPointer<vtkAlgorithm> keep;
-  auto reader = ReaderFor(path, keep);
-  if (!reader)
-  {
-    std::printf("reader: no reader for '%s'\n", Extension(path).c_str());
-    return false;
-  }
+  vtkNew<vtkMedialFileReader> reader;
+  reader->SetFileName(path.c_str());
   EventLog log;
   log.Watch(reader);
-  if (keep)
-  {
-    log.Watch(keep);
-  }
   vtkNew<vtkMedialAxisSampler> sampler;
   log.Watch(sampler);
   sampler->SetInputConnection(reader->GetOutputPort());
@@ -530,8 +468,8 @@ int Run(int argc, char* argv[])
 
   if (junctions)
   {
-    vtkSmartPointer<vtkAlgorithm> keep;
-    auto reader = ReaderFor(path, keep);
+    vtkNew<vtkMedialFileReader> reader;
+    reader->SetFileName(path.c_str());
     EventLog log;
     vtkNew<vtkMedialJunctionFilter> filter;
     log.Watch(filter);

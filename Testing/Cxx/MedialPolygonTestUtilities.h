@@ -51,6 +51,26 @@ inline vtkSmartPointer<vtkPolyData> MakePolygon(const std::vector<Loop2>& loops,
   return pd;
 }
 
+/// One polyline cell per piece of 3D points.
+inline vtkSmartPointer<vtkPolyData> MakePolylines(const std::vector<std::vector<std::array<double, 3>>>& pieces)
+{
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> lines;
+  for (const auto& piece : pieces)
+  {
+    std::vector<vtkIdType> ids;
+    for (const auto& p : piece)
+    {
+      ids.push_back(points->InsertNextPoint(p.data()));
+    }
+    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+  }
+  pd->SetPoints(points);
+  pd->SetLines(lines);
+  return pd;
+}
+
 inline Loop2 Rectangle(double x0, double y0, double x1, double y1)
 {
   return { { x0, y0 }, { x1, y0 }, { x1, y1 }, { x0, y1 } };

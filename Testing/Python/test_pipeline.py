@@ -71,6 +71,30 @@ check(tangent < 1e-12, f"each centre is Radius away from its surface point ({tan
 field = medial.GetFieldData()
 check(field.GetArray("DiscardedSamples").GetValue(0) == 0, "closed capsule: no discarded samples")
 
+# The reader chosen by the extension, from Python: the same capsule as VTK's PLY reader.
+check(medialaxis.vtkMedialFileReader.GetExtensions(medialaxis.vtkMedialFileReader.SURFACE)
+      == ".vtp .vtk .ply .stl .obj .off", "vtkMedialFileReader lists the surface extensions")
+stock = medialaxis.vtkMedialFileReader.NewReader(ply_path, medialaxis.vtkMedialFileReader.SURFACE)
+check(stock is not None and stock.GetClassName() == "vtkPLYReader", "NewReader gives vtkPLYReader for .ply")
+any_reader = medialaxis.vtkMedialFileReader()
+any_reader.SetFileName(ply_path)
+any_reader.Update()
+check(any_reader.GetOutput().GetNumberOfPoints() == reader.GetOutput().GetNumberOfPoints() > 0,
+      f"vtkMedialFileReader reads {any_reader.GetOutput().GetNumberOfPoints()} points")
+
+# The ball protrusion from Python: exact balls (theta = 0) stay inside the capsule.
+exact = medialaxis.vtkMedialAxisSampler()
+exact.SetInputConnection(reader.GetOutputPort())
+exact.SetNumberOfSamples(1000)
+exact.SetMinimumSeparationAngle(0)
+protrusion = medialaxis.vtkMedialBallProtrusion()
+protrusion.SetSurfaceConnection(reader.GetOutputPort())
+protrusion.SetBallsConnection(exact.GetOutputPort())
+protrusion.Update()
+per_ball = vtk_to_numpy(protrusion.GetOutput().GetPointData().GetArray("Protrusion"))
+check(per_ball.shape == (1000,) and protrusion.GetMaxProtrusion() < 1e-9,
+      f"theta = 0 balls do not cross the surface (max protrusion {protrusion.GetMaxProtrusion():.2e})")
+
 # Same seed, same output from Python with 1 and 2 threads.
 for threads in (1, 2):
     sampler.SetNumberOfThreads(threads)
@@ -103,13 +127,23 @@ check(covered_field.GetArray("CoverageReached").GetValue(0) == 1,
       f"face-distance reaches 1% coverage with {covered.GetOutput().GetNumberOfPoints()} balls "
       f"(gap {covered_field.GetArray('MaxCoverageGap').GetValue(0):.4f})")
 
+# 2D or 3D, asked from Python as the command line asks it.
+Sampler = medialaxis.vtkMedialAxisSampler
+lshape = medialaxis.vtkMedialShapeSource()
+lshape.SetShapeToLShape()
+lshape.Update()
+plane_centre, plane_normal = [0.0] * 3, [0.0] * 3
+check(Sampler.IsPlanarInput(lshape.GetOutput(), plane_centre, plane_normal) and abs(plane_normal[2]) > 0.999999,
+      f"the L-shape is planar input, normal {plane_normal}")
+check(not Sampler.IsPlanarInput(reader.GetOutput()), "the capsule is not planar input")
+
 # One rendered image against its baseline.
 demo = medialaxis.vtkMedialShapeSource()
 demo_sampler = medialaxis.vtkMedialAxisSampler()
 demo_sampler.SetInputConnection(demo.GetOutputPort())
 demo_sampler.SetNumberOfSamples(5000)
 demo_sampler.Update()
-window = medial_axis_png.render(demo.GetOutputPort(), demo_sampler.GetOutput(), None, size=(400, 300))
+window = medial_axis_png.render(demo.GetOutput(), demo_sampler.GetOutput(), None, size=(400, 300))
 testing = vtkTesting()
 for arg in ("-V", baseline, "-T", temp):
     testing.AddArgument(arg)

@@ -8,7 +8,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkMedialMeshReader.h"
 #include "vtkMedialMeshWriter.h"
-#include "vtkOFFReader.h"
+#include "vtkMedialOFFReader.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -113,7 +113,7 @@ vtkSmartPointer<vtkPolyDataAlgorithm> MakeReader(Format kind, const std::string&
     reader->SetFileName(path.c_str());
     return reader;
   }
-  auto reader = vtkSmartPointer<vtkOFFReader>::New();
+  auto reader = vtkSmartPointer<vtkMedialOFFReader>::New();
   reader->SetFileName(path.c_str());
   return reader;
 }

@@ -15,25 +15,6 @@
 
 using namespace medialtest;
 
-namespace
-{
-vtkSmartPointer<vtkPolyData> Polyline(const std::vector<std::array<double, 3>>& pts)
-{
-  auto pd = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkCellArray> lines;
-  std::vector<vtkIdType> ids;
-  for (const auto& p : pts)
-  {
-    ids.push_back(points->InsertNextPoint(p.data()));
-  }
-  lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-  pd->SetPoints(points);
-  pd->SetLines(lines);
-  return pd;
-}
-}
-
 int TestMedialJunctionBadInput(int, char*[])
 {
   struct Case
@@ -43,12 +24,12 @@ int TestMedialJunctionBadInput(int, char*[])
     const char* Expected; // substring of the error
   };
   std::vector<Case> cases;
-  cases.push_back({ "open polyline", Polyline({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } }), "open polyline" });
+  cases.push_back({ "open polyline", MakePolylines({ { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } } }), "open polyline" });
   cases.push_back({ "bow tie", MakePolygon({ { { 0, 0 }, { 1, 1 }, { 1, 0 }, { 0, 1 } } }), "intersect" });
   cases.push_back({ "crossing loops", MakePolygon({ Rectangle(0, 0, 4, 4), Rectangle(3, 1, 5, 2) }), "intersect" });
   cases.push_back({ "touching hole", MakePolygon({ Rectangle(0, 0, 4, 4), Rectangle(1, 1, 4, 2) }), "intersect" });
   cases.push_back({ "not coplanar",
-    Polyline({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0.3 }, { 0, 1, 0 }, { 0, 0, 0 } }), "not coplanar" });
+    MakePolylines({ { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0.3 }, { 0, 1, 0 }, { 0, 0, 0 } } }), "not coplanar" });
   cases.push_back({ "two vertices", MakePolygon({ { { 0, 0 }, { 1, 0 } } }), "fewer than 3" });
   cases.push_back({ "repeated points", MakePolygon({ { { 0, 0 }, { 1, 0 }, { 1, 0 }, { 0, 0 } } }), "fewer than 3" });
   cases.push_back({ "collinear", MakePolygon({ { { 0, 0 }, { 1, 0 }, { 2, 0 } } }), "" });

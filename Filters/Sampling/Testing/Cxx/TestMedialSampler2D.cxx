@@ -5,14 +5,12 @@
 // vtkMedialJunctionFilter (parabolic arcs sampled finely). Rectangle, L-shape and a
 // square frame in a tilted plane; bisection and shrinking ball; theta = 0. The output
 // must not depend on the thread count.
-#include "MedialPolygonTestUtilities.h"
+#include "MedialSampler2DTestUtilities.h"
 #include "MedialTestUtilities.h"
 
 #include "vtkCellArray.h"
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialJunctionFilter.h"
-#include "vtkTransform.h"
-#include "vtkTransformPolyDataFilter.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -107,12 +105,7 @@ int Check(const char* name, vtkPolyData* polygon, int method)
 int TestMedialSampler2D(int, char*[])
 {
   vtkNew<vtkTransform> tilt;
-  tilt->Translate(1, 2, -3);
-  tilt->RotateWXYZ(50, 0.3, 1, 0.2);
-  vtkNew<vtkTransformPolyDataFilter> frame;
-  frame->SetTransform(tilt);
-  frame->SetInputData(MakePolygon({ Rectangle(0, 0, 4, 4), Rectangle(1, 1.5, 2.5, 3) }));
-  frame->Update();
+  auto frame = TiltedFrame(tilt);
   struct Case
   {
     const char* Name;
@@ -121,7 +114,7 @@ int TestMedialSampler2D(int, char*[])
   const Case cases[] = {
     { "rectangle", MakePolygon({ Rectangle(0, 0, 5, 2) }) },
     { "L-shape", MakePolygon({ { { 0, 0 }, { 2, 0 }, { 2, 1 }, { 1, 1 }, { 1, 2 }, { 0, 2 } } }) },
-    { "tilted frame", frame->GetOutput() },
+    { "tilted frame", frame },
   };
   for (const Case& c : cases)
   {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
- * @class vtkOFFReader
+ * @class vtkMedialOFFReader
  * @brief Reads a polygon surface in the Object File Format (OFF), text form.
  *
  * Format (Geomview), one record per line:
@@ -29,36 +29,31 @@
  *
  * @sa vtkMedialMeshReader
  */
-#ifndef vtkOFFReader_h
-#define vtkOFFReader_h
+#ifndef vtkMedialOFFReader_h
+#define vtkMedialOFFReader_h
 
 #include "vtkMedialAxisReadersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkAbstractPolyDataReader.h"
 
-class VTKMEDIALAXISREADERS_EXPORT vtkOFFReader : public vtkPolyDataAlgorithm
+class VTKMEDIALAXISREADERS_EXPORT vtkMedialOFFReader : public vtkAbstractPolyDataReader
 {
 public:
-  static vtkOFFReader* New();
-  vtkTypeMacro(vtkOFFReader, vtkPolyDataAlgorithm);
+  static vtkMedialOFFReader* New();
+  vtkTypeMacro(vtkMedialOFFReader, vtkAbstractPolyDataReader);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  ///@{
-  /// The .off file to read.
-  vtkSetFilePathMacro(FileName);
-  vtkGetFilePathMacro(FileName);
-  ///@}
+  /// 1 when the file opens and starts with a valid OFF header (keyword and counts); 0 otherwise.
+  static int CanReadFile(const char* fileName);
 
 protected:
-  vtkOFFReader();
-  ~vtkOFFReader() override;
+  vtkMedialOFFReader() = default;
+  ~vtkMedialOFFReader() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  char* FileName = nullptr;
-
 private:
-  vtkOFFReader(const vtkOFFReader&) = delete;
-  void operator=(const vtkOFFReader&) = delete;
+  vtkMedialOFFReader(const vtkMedialOFFReader&) = delete;
+  void operator=(const vtkMedialOFFReader&) = delete;
 };
 
 #endif

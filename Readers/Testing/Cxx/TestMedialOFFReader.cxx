@@ -6,7 +6,7 @@
 #include "ReaderTestUtilities.h"
 
 #include "vtkCellArray.h"
-#include "vtkOFFReader.h"
+#include "vtkMedialOFFReader.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
@@ -75,7 +75,7 @@ std::vector<Case> Cases()
 }
 }
 
-int TestOFFReader(int, char*[])
+int TestMedialOFFReader(int, char*[])
 {
   TempDir dir;
   MEDIAL_CHECK(dir.Valid(), "cannot create a temporary folder");
@@ -83,7 +83,7 @@ int TestOFFReader(int, char*[])
   for (const Case& c : Cases())
   {
     const std::string path = dir.Write("case" + std::to_string(index++) + ".off", c.Content);
-    vtkNew<vtkOFFReader> reader;
+    vtkNew<vtkMedialOFFReader> reader;
     EventLog log;
     log.Watch(reader);
     reader->SetFileName(path.c_str());
@@ -92,6 +92,7 @@ int TestOFFReader(int, char*[])
     std::printf("%-42s %lld points, %lld polygons\n", c.Name, (long long)out->GetNumberOfPoints(),
       (long long)out->GetNumberOfPolys());
     MEDIAL_CHECK(log.Errors == 0 && log.Warnings == 0, "%s: %s", c.Name, log.Text.c_str());
+    MEDIAL_CHECK(vtkMedialOFFReader::CanReadFile(path.c_str()) == 1, "%s: CanReadFile says no", c.Name);
     const vtkIdType n = static_cast<vtkIdType>(c.Coordinates.size() / 3);
     MEDIAL_CHECK(out->GetNumberOfPoints() == n, "%s: %lld points, expected %lld", c.Name,
       (long long)out->GetNumberOfPoints(), (long long)n);

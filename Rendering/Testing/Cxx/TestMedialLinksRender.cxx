@@ -1,17 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Image regression: the ClosestNeighbor links of spot.obj (from ../shared; skipped
-// when absent) over the translucent surface, lines and points coloured by radius.
-#include "MedialRenderTestUtilities.h"
+// Image regression: vtkMedialScene's 3D scene with the ClosestNeighbor links of
+// spot.obj (from ../shared; skipped when absent), lines and points coloured by radius.
 #include "MedialTestUtilities.h"
 
-#include "vtkActor.h"
-#include "vtkCamera.h"
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialScene.h"
+
 #include "vtkOBJReader.h"
-#include "vtkProperty.h"
+#include "vtkPolyData.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
 
 int TestMedialLinksRender(int argc, char* argv[])
 {
@@ -38,24 +36,17 @@ int TestMedialLinksRender(int argc, char* argv[])
     std::printf("FAILED: too few links\n");
     return EXIT_FAILURE;
   }
-  vtkSmartPointer<vtkActor> surface = medialtest::TranslucentSurface(reader->GetOutputPort());
-  vtkSmartPointer<vtkActor> medial = medialtest::RadiusColoured(links);
-  medial->GetProperty()->SetPointSize(3);
-  medial->GetProperty()->SetLineWidth(1.5);
 
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(1, 1, 1);
-  renderer->AddActor(surface);
-  renderer->AddActor(medial);
-  renderer->GetActiveCamera()->SetPosition(2.5, 1.2, 3.0);
-  renderer->GetActiveCamera()->SetFocalPoint(0, 0, 0);
-  renderer->GetActiveCamera()->SetViewUp(0, 1, 0);
-  renderer->ResetCamera();
-  renderer->GetActiveCamera()->Zoom(1.15);
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetSize(500, 400);
-  window->AddRenderer(renderer);
-  window->Render();
+  vtkNew<vtkMedialScene> scene;
+  scene->SetSurface(reader->GetOutput());
+  scene->SetMedial(links);
+  scene->ScalarBarVisibilityOff();
+  scene->SetPointSize(3);
+  scene->SetLineWidth(1.5);
+  const double position[3] = { 2.5, 1.2, 3.0 }, focalPoint[3] = { 0, 0, 0 }, viewUp[3] = { 0, 1, 0 };
+  scene->SetView(position, focalPoint, viewUp);
+  scene->SetZoom(1.15);
+  scene->SetWindowSize(500, 400);
+  vtkRenderWindow* window = scene->Render();
   return !vtkRegressionTestImage(window);
 }

@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Fuzzes vtkOFFReader. Beyond "no crash": an error leaves an empty output, and a
+// Fuzzes vtkMedialOFFReader. Beyond "no crash": an error leaves an empty output, and a
 // successful read gives finite points, polygons of at least three points and
 // point ids in range.
 #include "FuzzInput.h"
 
 #include "vtkCellArray.h"
 #include "vtkNew.h"
-#include "vtkOFFReader.h"
+#include "vtkMedialOFFReader.h"
 #include "vtkPolyData.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-  vtkNew<vtkOFFReader> reader;
+  vtkNew<vtkMedialOFFReader> reader;
   vtkPolyData* mesh = fuzzinput::Read(reader.Get(), ".off", data, size);
   if (!mesh)
   {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "vtkOFFReader.h"
+#include "vtkMedialOFFReader.h"
 
 #include "vtkCellArray.h"
 #include "vtkIdTypeArray.h"
@@ -17,7 +17,7 @@
 #include <string_view>
 #include <vector>
 
-vtkStandardNewMacro(vtkOFFReader);
+vtkStandardNewMacro(vtkMedialOFFReader);
 
 namespace
 {
@@ -46,7 +46,8 @@ bool IsKeyword(std::string_view token)
 class OFFParser : public medialreaders::RecordParser
 {
 public:
-  bool Parse(const std::string& path, PolygonMesh& mesh)
+  /// Opens the file and reads the header: keyword (optional) and counts.
+  bool ParseHeader(const std::string& path)
   {
     if (!this->Open(path))
     {
@@ -85,8 +86,8 @@ public:
       return this->Fail("expected the counts 'nv nf ne' (ne optional), found " +
         std::to_string(given) + " value(s)");
     }
-    vtkIdType nv = 0, nf = 0, ne = 0;
-    vtkIdType* counts[3] = { &nv, &nf, &ne };
+    vtkIdType ne = 0;
+    vtkIdType* counts[3] = { &this->VertexCount, &this->FaceCount, &ne };
     const char* names[3] = { "nv", "nf", "ne" };
     for (size_t i = 0; i < given; ++i)
     {
@@ -96,7 +97,17 @@ public:
           " is not a non-negative integer");
       }
     }
+    return true;
+  }
 
+  /// The whole file: the header, then the vertex and face records.
+  bool Parse(const std::string& path, PolygonMesh& mesh)
+  {
+    if (!this->ParseHeader(path))
+    {
+      return false;
+    }
+    const vtkIdType nv = this->VertexCount, nf = this->FaceCount;
     // Shortest records: "0 0 0\n" and "3 0 0 0\n".
     mesh.Coordinates.reserve(3 * this->Lines.CapReserve(nv, 6));
     mesh.Offsets.reserve(this->Lines.CapReserve(nf, 8) + 1);
@@ -206,36 +217,26 @@ private:
   }
 
   std::string Variant = "OFF";
+  vtkIdType VertexCount = 0;
+  vtkIdType FaceCount = 0;
   bool HasColours = false;
   bool HasNormals = false;
 };
 }
 
-vtkOFFReader::vtkOFFReader()
+int vtkMedialOFFReader::CanReadFile(const char* fileName)
 {
-  this->SetNumberOfInputPorts(0);
+  return medialreaders::CanReadHeader<OFFParser>(fileName);
 }
 
-vtkOFFReader::~vtkOFFReader()
-{
-  this->SetFileName(nullptr);
-}
-
-int vtkOFFReader::RequestData(
+int vtkMedialOFFReader::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
-  if (!this->FileName || !*this->FileName)
-  {
-    vtkErrorMacro("No FileName set.");
-    return 0;
-  }
   PolygonMesh mesh;
-  OFFParser parser;
-  if (!parser.Parse(this->FileName, mesh))
+  if (!medialreaders::ParseFile<OFFParser>(this, this->FileName, "OFF file", mesh))
   {
-    vtkErrorMacro(<< parser.Describe("OFF file", this->FileName));
     return 0;
   }
 
@@ -260,8 +261,7 @@ int vtkOFFReader::RequestData(
   return 1;
 }
 
-void vtkOFFReader::PrintSelf(ostream& os, vtkIndent indent)
+void vtkMedialOFFReader::PrintSelf(ostream& os, vtkIndent indent)
 {
-  this->Superclass::PrintSelf(os, indent);
-  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  this->Superclass::PrintSelf(os, indent); // FileName
 }

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkMedialBallProtrusion.h"
+
+#include "vtkMedialArrayNames.h"
+#include "vtkMedialBoundaryDistance.h"
+#include "vtkMedialPipeline.h"
+
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkMedialBallProtrusion);
+
+vtkMedialBallProtrusion::vtkMedialBallProtrusion()
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetInputArrayToProcess(
+    0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkMedialArrayNames::Radius);
+}
+
+int vtkMedialBallProtrusion::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+int vtkMedialBallProtrusion::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  vtkMedialRequestWholeInput(inputVector, 2);
+  return 1;
+}
+
+int vtkMedialBallProtrusion::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  this->MaxProtrusion = std::numeric_limits<double>::quiet_NaN();
+  vtkPolyData* surface = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* balls = vtkPolyData::GetData(inputVector[1], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!surface || !balls)
+  {
+    vtkErrorMacro("Cannot measure the protrusion: both inputs are required (port 0 the surface, port 1 the balls).");
+    return 0;
+  }
+  const vtkIdType n = balls->GetNumberOfPoints();
+  vtkDataArray* radius = n > 0 ? this->GetInputArrayToProcess(0, inputVector) : nullptr;
+  if (n > 0 && (!radius || radius->GetNumberOfComponents() != 1 || radius->GetNumberOfTuples() != n))
+  {
+    vtkErrorMacro("Cannot measure the protrusion: the balls need a point data array of one radius per "
+                  "point (by default '"
+      << vtkMedialArrayNames::Radius << "').");
+    return 0;
+  }
+  vtkMedialBoundaryDistance boundary;
+  std::string error;
+  if (!boundary.Build(
+        surface, vtkMedialBoundaryDistance::IsPlanar(surface), vtkMedialBoundaryDistance::OWN_BVH, error))
+  {
+    vtkErrorMacro("Cannot measure the protrusion: the surface: " << error << ".");
+    return 0;
+  }
+  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  const std::vector<double> distance = boundary.Distances(balls->GetPoints(), threads);
+  vtkNew<vtkDoubleArray> protrusion;
+  protrusion->SetName(vtkMedialArrayNames::Protrusion);
+  protrusion->SetNumberOfValues(n);
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double p = radius->GetTuple1(i) - distance[i];
+    protrusion->SetValue(i, p);
+    worst = std::max(worst, p);
+  }
+  this->MaxProtrusion = worst / surface->GetLength();
+
+  output->ShallowCopy(balls);
+  output->GetPointData()->AddArray(protrusion);
+  vtkNew<vtkFieldData> field;
+  field->ShallowCopy(balls->GetFieldData());
+  vtkNew<vtkDoubleArray> largest;
+  largest->SetName(vtkMedialArrayNames::MaxProtrusion);
+  largest->InsertNextValue(this->MaxProtrusion);
+  field->AddArray(largest);
+  output->SetFieldData(field);
+  return 1;
+}
+
+void vtkMedialBallProtrusion::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "MaxProtrusion: " << this->MaxProtrusion << "\n";
+}

@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file vtkMedialAxisSamplerInternals.h
+ * @brief Internal: the passes of vtkMedialAxisSampler::RequestData, kept out of the
+ * installed header because they name the internal engines (vtkMedialTriangleMesh,
+ * vtkMedialSurfaceQuery, vtkMedialSampleRecord, vtkMedialBallParameters). Not installed.
+ *
+ * A nested class of the filter, so that it sets the filter's figures
+ * (DiscardedSamples, ...) directly. 3D passes in vtkMedialAxisSampler.cxx, the 2D
+ * mode in vtkMedialAxisSampler2D.cxx.
+ */
+#ifndef vtkMedialAxisSamplerInternals_h
+#define vtkMedialAxisSamplerInternals_h
+
+#include "vtkMedialAxisSampler.h"
+#include "vtkMedialBallSolver.h"
+#include "vtkMedialSampleRecord.h"
+
+#include <new>
+#include <vector>
+
+class vtkMedialCoverage;
+class vtkMedialSurfaceQuery;
+class vtkMedialTriangleMesh;
+
+class vtkMedialAxisSampler::vtkInternals
+{
+public:
+  explicit vtkInternals(vtkMedialAxisSampler* self)
+    : Self(self)
+  {
+  }
+
+  /// The 3D surface: mesh preparation (with its warnings) and the queries. False
+  /// when RequestData must return `status` (0 on error, 1 when aborted).
+  bool PrepareSurface(vtkPolyData* input, vtkMedialTriangleMesh& mesh, vtkMedialSurfaceQuery& query, int& status);
+  /// RANDOM: this piece's share of the samples, drawn, sorted by BVH leaf, solved in blocks.
+  int SampleRandom(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int piece, int pieces,
+    vtkPolyData* output);
+  /// CLOSEST_NEIGHBOR and FACE_DISTANCE (vtkMedialIterativeSampling), in piece 0.
+  int SampleIterative(
+    const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int piece, vtkPolyData* output);
+  /// The 2D mode, for planar polygons or closed polylines (vtkMedialAxisSampler2D.cxx).
+  int Sample2D(vtkPolyData* input, int piece, int pieces, vtkPolyData* output);
+
+  /// Refuses up front what cannot fit in this machine's memory: `count` samples of
+  /// about `bytesPerSample` each. `advice` ends the error message.
+  bool CheckMemory(vtkIdType count, double bytesPerSample, const char* advice) const;
+  /// Resizes every vector to `count` elements; false, with an error, when that fails.
+  template <class... Vectors>
+  bool Allocate(vtkIdType count, Vectors&... vectors) const
+  {
+    try
+    {
+      (vectors.resize(static_cast<size_t>(count)), ...);
+    }
+    catch (const std::bad_alloc&)
+    {
+      this->ReportAllocationFailure(count);
+      return false;
+    }
+    return true;
+  }
+  /// Turns the valid records into output vertices, point data and field data, and
+  /// sets DiscardedSamples, CappedSamples and MeanIterations. Shared by 2D and 3D.
+  void WriteSamples(vtkPolyData* output, vtkIdType requested, const std::vector<vtkMedialSampleRecord>& records);
+
+private:
+  // Bisection / shrinking-ball settings in absolute units.
+  vtkMedialBallParameters MakeBallParameters(double diagonal) const;
+  // Sample points of the RANDOM strategy, then their order: by BVH leaf (within
+  // blocks of `block` samples when a coverage stop needs prefixes, else globally).
+  void DrawSamples(const vtkMedialTriangleMesh& mesh, vtkIdType first, int threads,
+    std::vector<vtkIdType>& triangles, std::vector<vtkMedialSampleRecord>& results) const;
+  static void SortByLeaf(const vtkMedialSurfaceQuery& query, const std::vector<vtkIdType>& triangles,
+    vtkIdType block, std::vector<vtkIdType>& order);
+  // Solves the samples block by block; with `coverage`, stops after the first block
+  // that reaches it. Returns the samples used (a prefix).
+  vtkIdType SolveBlocks(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int threads,
+    vtkIdType block, const std::vector<vtkIdType>& triangles, const std::vector<vtkIdType>& order,
+    std::vector<vtkMedialSampleRecord>& results, vtkMedialCoverage* coverage);
+  // Warns about samples discarded on an open or folded surface.
+  void WarnDiscarded(const vtkMedialTriangleMesh& mesh, vtkIdType count) const;
+  // Adds a one-value field-data array.
+  static void AddField(vtkPolyData* output, const char* name, double value);
+  // CoverageReached and MaxCoverageGap.
+  void WriteCoverage(vtkPolyData* output) const;
+  // CLOSEST_NEIGHBOR's links as line cells, with their InitialLink.
+  static void WriteLinks(vtkPolyData* output, const std::vector<vtkMedialSampleRecord>& records,
+    const std::vector<vtkIdType>& linkEnds, const std::vector<vtkIdType>& initialLink);
+  void ReportAllocationFailure(vtkIdType count) const;
+
+  vtkMedialAxisSampler* Self;
+};
+
+#endif

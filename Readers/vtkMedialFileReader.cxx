@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkMedialFileReader.h"
+
+#include "vtkMedialMeshReader.h"
+#include "vtkMedialMessageRelay.h"
+#include "vtkMedialOFFReader.h"
+
+#include "vtkDataSetReader.h"
+#include "vtkDataSetSurfaceFilter.h"
+#include "vtkExecutive.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkObjectFactory.h"
+#include "vtkPLYReader.h"
+#include "vtkPolyData.h"
+#include "vtkSTLReader.h"
+#include "vtkSmartPointer.h"
+#include "vtkXMLPolyDataReader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+
+vtkStandardNewMacro(vtkMedialFileReader);
+
+namespace
+{
+template <class Reader>
+vtkAlgorithm* NewNamed(const char* fileName)
+{
+  Reader* reader = Reader::New();
+  reader->SetFileName(fileName);
+  return reader;
+}
+
+struct Format
+{
+  const char* Extension;
+  int Content;
+  vtkAlgorithm* (*NewReader)(const char* fileName);
+  bool ExtractSurface; // the reader gives any dataset: keep its outer surface
+};
+
+// Every file format the tools read, in the order GetExtensions() lists them.
+const Format Formats[] = {
+  { ".vtp", vtkMedialFileReader::SURFACE, &NewNamed<vtkXMLPolyDataReader>, false },
+  { ".vtk", vtkMedialFileReader::SURFACE, &NewNamed<vtkDataSetReader>, true },
+  { ".ply", vtkMedialFileReader::SURFACE, &NewNamed<vtkPLYReader>, false },
+  { ".stl", vtkMedialFileReader::SURFACE, &NewNamed<vtkSTLReader>, false },
+  { ".obj", vtkMedialFileReader::SURFACE, &NewNamed<vtkOBJReader>, false },
+  { ".off", vtkMedialFileReader::SURFACE, &NewNamed<vtkMedialOFFReader>, false },
+  { ".ma", vtkMedialFileReader::BALLS, &NewNamed<vtkMedialMeshReader>, false },
+  { ".vtp", vtkMedialFileReader::BALLS, &NewNamed<vtkXMLPolyDataReader>, false },
+};
+
+const Format* FindFormat(const char* fileName, int content)
+{
+  const std::string extension = vtkMedialFileReader::GetExtension(fileName);
+  for (const Format& format : Formats)
+  {
+    if (format.Content == content && extension == format.Extension)
+    {
+      return &format;
+    }
+  }
+  return nullptr;
+}
+}
+
+vtkAlgorithm* vtkMedialFileReader::NewReader(const char* fileName, int content)
+{
+  const Format* format = FindFormat(fileName, content);
+  return format ? format->NewReader(fileName) : nullptr;
+}
+
+std::string vtkMedialFileReader::GetExtensions(int content)
+{
+  std::string list;
+  for (const Format& format : Formats)
+  {
+    if (format.Content == content)
+    {
+      list += (list.empty() ? "" : " ") + std::string(format.Extension);
+    }
+  }
+  return list;
+}
+
+int vtkMedialFileReader::CanReadExtension(const char* fileName, int content)
+{
+  return FindFormat(fileName, content) ? 1 : 0;
+}
+
+std::string vtkMedialFileReader::GetExtension(const char* fileName)
+{
+  const std::string name = fileName ? fileName : "";
+  const size_t dot = name.find_last_of('.');
+  const size_t slash = name.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+  {
+    return "";
+  }
+  std::string extension = name.substr(dot);
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+int vtkMedialFileReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  output->Initialize();
+  if (!this->FileName || !*this->FileName)
+  {
+    vtkErrorMacro("No FileName set.");
+    return 0;
+  }
+  const Format* format = FindFormat(this->FileName, this->Content);
+  if (!format)
+  {
+    vtkErrorMacro("unsupported input extension '" << GetExtension(this->FileName) << "' ("
+                                                  << GetExtensions(this->Content) << ")");
+    return 0;
+  }
+  vtkSmartPointer<vtkAlgorithm> reader;
+  reader.TakeReference(format->NewReader(this->FileName));
+  // The chosen reader's messages are this reader's; its executive's failure note repeats them.
+  vtkNew<vtkMedialMessageRelay> relay;
+  relay->Outer = this;
+  relay->Relay(reader);
+  relay->Mute(reader->GetExecutive());
+  vtkSmartPointer<vtkAlgorithm> last = reader;
+  if (format->ExtractSurface)
+  {
+    auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
+    surface->SetInputConnection(reader->GetOutputPort());
+    relay->Relay(surface);
+    relay->Mute(surface->GetExecutive());
+    last = surface;
+  }
+  last->Update();
+  if (relay->Errors > 0)
+  {
+    return 0;
+  }
+  vtkPolyData* data = vtkPolyData::SafeDownCast(last->GetOutputDataObject(0));
+  if (!data)
+  {
+    vtkErrorMacro("'" << this->FileName << "' holds no polygonal data");
+    return 0;
+  }
+  output->ShallowCopy(data);
+  return 1;
+}
+
+void vtkMedialFileReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent); // FileName
+  os << indent << "Content: " << (this->Content == SURFACE ? "SURFACE" : "BALLS") << "\n";
+}

@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class vtkMedialScene
+ * @brief The pictures of medialaxis results, built and rendered offscreen: one scene
+ * builder for the command line, the image tests and Python.
+ *
+ * What is drawn depends on what is given:
+ *  - 3D (no Graph): the Surface as a light grey translucent shell (SurfaceOpacity),
+ *    the Medial balls' centres (and any link lines) coloured by their `Radius` array
+ *    from blue (thin) to red (thick), drawn as spheres of PointSize pixels, with a
+ *    scalar bar (ScalarBarVisibility). Medial may also be a medial mesh
+ *    (vtkMedialMeshFilter's output; its triangles and lines are drawn), and with
+ *    ColorBy POINT_TYPE it is coloured by `MedialPointType`: rim blue, sheet grey,
+ *    seam orange, junction red, with their names in the legend. Given a Reconstruction, the window gets a
+ *    second view on its right: the reconstruction, shaded in copper, seen through the
+ *    same camera.
+ *  - 2D (a Graph, vtkMedialJunctionFilter's output): the Surface's loops as black
+ *    outlines, the graph's arcs by `ArcType` (blue linear, orange parabolic), the
+ *    maximal disks of the six largest junctions (grey circles), junctions (red) and
+ *    end points (green), seen straight along the plane's normal.
+ *
+ * Camera: the 3D view looks from 30 degrees azimuth and 20 degrees elevation off the
+ * +z view, the 2D view straight at the plane (from its normal's positive side); both
+ * frame the Surface (or the medial data) and then zoom by Zoom (0: 1.6 in 3D, 1.3 in
+ * 2D). SetView() chooses the camera position, focal point and view up instead; the
+ * view is then framed and zoomed the same way.
+ *
+ * Render() builds the scene in a new offscreen render window of WindowSize pixels
+ * (0, 0: 900 x 640 in 3D, 900 x 700 in 2D; the reconstruction view doubles the width)
+ * on a white background, renders it and returns the window. WritePNG() renders and
+ * saves the picture; the PNG writer's errors are reported as this object's. Rendering needs an X display with Debian's VTK (xvfb-run).
+ *
+ * @sa vtkMedialAxisSampler vtkMedialJunctionFilter vtkMedialBallUnion
+ */
+#ifndef vtkMedialScene_h
+#define vtkMedialScene_h
+
+#include "vtkMedialAxisRenderingModule.h" // for export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // for vtkSmartPointer
+
+class vtkPolyData;
+class vtkRenderWindow;
+class vtkRenderer;
+
+class VTKMEDIALAXISRENDERING_EXPORT vtkMedialScene : public vtkObject
+{
+public:
+  static vtkMedialScene* New();
+  vtkTypeMacro(vtkMedialScene, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The input shape: a surface (3D) or planar loops (2D).
+  virtual void SetSurface(vtkPolyData*);
+  vtkGetObjectMacro(Surface, vtkPolyData);
+  ///@}
+
+  ///@{
+  /// Medial balls (vtkMedialAxisSampler's output): points, and lines for links, with `Radius`.
+  virtual void SetMedial(vtkPolyData*);
+  vtkGetObjectMacro(Medial, vtkPolyData);
+  ///@}
+
+  ///@{
+  /// The 2D medial graph (vtkMedialJunctionFilter's output); when set, the 2D scene is drawn.
+  virtual void SetGraph(vtkPolyData*);
+  vtkGetObjectMacro(Graph, vtkPolyData);
+  ///@}
+
+  ///@{
+  /// A reconstruction (vtkMedialBallUnion's output 0), drawn in a second view (3D scene).
+  virtual void SetReconstruction(vtkPolyData*);
+  vtkGetObjectMacro(Reconstruction, vtkPolyData);
+  ///@}
+
+  ///@{
+  /// Opacity of the 3D surface (default 0.2; 1 draws it opaque).
+  vtkSetClampMacro(SurfaceOpacity, double, 0.0, 1.0);
+  vtkGetMacro(SurfaceOpacity, double);
+  ///@}
+
+  ///@{
+  /// Diameter of the medial points in pixels (default 4) and width of link lines (default 1).
+  vtkSetClampMacro(PointSize, double, 0.0, 100.0);
+  vtkGetMacro(PointSize, double);
+  vtkSetClampMacro(LineWidth, double, 0.0, 100.0);
+  vtkGetMacro(LineWidth, double);
+  ///@}
+
+  ///@{
+  /// Whether the 3D scene shows the radius scale (default on).
+  vtkSetMacro(ScalarBarVisibility, bool);
+  vtkGetMacro(ScalarBarVisibility, bool);
+  vtkBooleanMacro(ScalarBarVisibility, bool);
+  ///@}
+
+  enum ColorModes
+  {
+    RADIUS = 0,
+    POINT_TYPE = 1
+  };
+
+  ///@{
+  /// What colours the Medial data in 3D: its `Radius` (default) or its 3D
+  /// `MedialPointType` codes.
+  vtkSetClampMacro(ColorBy, int, RADIUS, POINT_TYPE);
+  vtkGetMacro(ColorBy, int);
+  void SetColorByToRadius() { this->SetColorBy(RADIUS); }
+  void SetColorByToPointType() { this->SetColorBy(POINT_TYPE); }
+  ///@}
+
+  ///@{
+  /// Size of one view in pixels; 0, 0 (default) takes the scene's own.
+  vtkSetVector2Macro(WindowSize, int);
+  vtkGetVector2Macro(WindowSize, int);
+  ///@}
+
+  ///@{
+  /// Zoom after framing; 0 (default) takes the scene's own (1.6 in 3D, 1.3 in 2D).
+  vtkSetClampMacro(Zoom, double, 0.0, 1000.0);
+  vtkGetMacro(Zoom, double);
+  ///@}
+
+  /// Looks from `position` at `focalPoint` with `viewUp` instead of the scene's view.
+  void SetView(const double position[3], const double focalPoint[3], const double viewUp[3]);
+  /// Back to the scene's own view.
+  void ResetView() { this->CustomView = false; }
+
+  /// Builds the scene in a new offscreen window, renders it and returns the window
+  /// (kept by this object until the next Render()). nullptr, with an error, without
+  /// anything to draw.
+  vtkRenderWindow* Render();
+
+  /// Renders and writes the picture as a PNG file. 1 on success, 0 on failure (error).
+  int WritePNG(const char* fileName);
+
+  /// The window of the last Render(), or nullptr.
+  vtkRenderWindow* GetRenderWindow();
+
+protected:
+  vtkMedialScene();
+  ~vtkMedialScene() override;
+
+  vtkPolyData* Surface = nullptr;
+  vtkPolyData* Medial = nullptr;
+  vtkPolyData* Graph = nullptr;
+  vtkPolyData* Reconstruction = nullptr;
+  double SurfaceOpacity = 0.2;
+  double PointSize = 4.0;
+  double LineWidth = 1.0;
+  bool ScalarBarVisibility = true;
+  int ColorBy = RADIUS;
+  int WindowSize[2] = { 0, 0 };
+  double Zoom = 0.0;
+  bool CustomView = false;
+  double ViewPosition[3] = { 0, 0, 1 };
+  double ViewFocalPoint[3] = { 0, 0, 0 };
+  double ViewUp[3] = { 0, 1, 0 };
+
+private:
+  vtkMedialScene(const vtkMedialScene&) = delete;
+  void operator=(const vtkMedialScene&) = delete;
+
+  void AddBalls(vtkRenderer* renderer);
+  void AddGraph(vtkRenderer* renderer, const double normal[3]);
+  void AddReconstructionView(vtkRenderWindow* window, vtkRenderer* left);
+  void Frame(vtkRenderer* renderer, const double normal[3]);
+
+  vtkSmartPointer<vtkRenderWindow> Window;
+};
+
+#endif
