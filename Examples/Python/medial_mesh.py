@@ -12,14 +12,7 @@ the surface's shortest bounding-box side with the middle one up.
 import sys
 
 import medialaxis
-
-
-def surface_source(path):
-    if path is None:
-        return medialaxis.vtkMedialShapeSource()
-    reader = medialaxis.vtkMedialFileReader()  # the reader for the file's extension
-    reader.SetFileName(path)
-    return reader
+from medial_axis_png import surface_source  # the demo shape, or the file's reader
 
 
 def render(surface, mesh, out_png, by_type=False):

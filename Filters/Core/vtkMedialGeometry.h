@@ -191,6 +191,35 @@ inline double ClosestPointOnClippedTriangle(const double p[3], const double a[3]
   }
   return best;
 }
+/**
+ * Clips the ray origin + t d, t in [t0, t1], to the axis-aligned box [lo, hi] in the
+ * first `dimensions` coordinates (slab test): narrows [t0, t1] and returns false when
+ * the ray misses the box.
+ */
+inline bool ClipRayToBox(const double lo[], const double hi[], const double origin[],
+  const double d[], int dimensions, double& t0, double& t1)
+{
+  for (int k = 0; k < dimensions; ++k)
+  {
+    if (d[k] == 0.0)
+    {
+      if (origin[k] < lo[k] || origin[k] > hi[k])
+      {
+        return false;
+      }
+      continue;
+    }
+    double a = (lo[k] - origin[k]) / d[k], b = (hi[k] - origin[k]) / d[k];
+    if (a > b)
+    {
+      std::swap(a, b);
+    }
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, b);
+  }
+  return t0 <= t1;
+}
+
 /// Six times the signed volume of (a, b, c, d): positive when d lies on the side of
 /// the plane (a, b, c) that its normal (b - a) x (c - a) points to.
 inline double Orient3D(const double a[3], const double b[3], const double c[3], const double d[3])

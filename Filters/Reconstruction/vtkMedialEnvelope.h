@@ -86,45 +86,63 @@ inline double EdgeField(const double x[3], const double c0[3], double r0, const 
   return std::min(ends, h * s - k * a - r0);
 }
 
+/// The common tangent planes of three balls: their unit normals are W + s Gamma N
+/// (s = +1 or -1), W in the plane of the centres with W.(c_j - c_0) = -(r_j - r_0), N
+/// the plane's normal (c_1 - c_0) x (c_2 - c_0), not unit. False for collinear centres
+/// or when no such plane exists (|W| >= 1: the slab is the union of its cones).
+struct TangentPlanes
+{
+  double E1[3], E2[3], N[3], W[3], Gamma;
+};
+inline bool SlabTangentPlanes(const double* const c[3], const double r[3], TangentPlanes& t)
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    t.E1[k] = c[1][k] - c[0][k];
+    t.E2[k] = c[2][k] - c[0][k];
+  }
+  t.N[0] = t.E1[1] * t.E2[2] - t.E1[2] * t.E2[1];
+  t.N[1] = t.E1[2] * t.E2[0] - t.E1[0] * t.E2[2];
+  t.N[2] = t.E1[0] * t.E2[1] - t.E1[1] * t.E2[0];
+  const double g11 = Dot3(t.E1, t.E1), g12 = Dot3(t.E1, t.E2), g22 = Dot3(t.E2, t.E2);
+  const double det = g11 * g22 - g12 * g12, n2 = Dot3(t.N, t.N);
+  if (!(det > 1e-24 * g11 * g22) || !(n2 > 0.0))
+  {
+    return false;
+  }
+  const double d1 = -(r[1] - r[0]), d2 = -(r[2] - r[0]);
+  const double alpha = (d1 * g22 - d2 * g12) / det, beta = (d2 * g11 - d1 * g12) / det;
+  for (int k = 0; k < 3; ++k)
+  {
+    t.W[k] = alpha * t.E1[k] + beta * t.E2[k];
+  }
+  const double inPlane2 = Dot3(t.W, t.W);
+  if (!(inPlane2 < 1.0))
+  {
+    return false;
+  }
+  t.Gamma = std::sqrt((1.0 - inPlane2) / n2);
+  return true;
+}
+
 /// The slab of the triangle of balls (c_j, r_j) where its minimum is inside the
 /// triangle; +inf where it is on an edge (or for a degenerate triangle).
 inline double TriangleField(const double x[3], const double* const c[3], const double r[3])
 {
-  double e1[3], e2[3], w[3], n[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    e1[k] = c[1][k] - c[0][k];
-    e2[k] = c[2][k] - c[0][k];
-    w[k] = x[k] - c[0][k];
-  }
-  n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-  n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-  n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-  const double g11 = Dot3(e1, e1), g12 = Dot3(e1, e2), g22 = Dot3(e2, e2);
-  const double det = g11 * g22 - g12 * g12;
-  const double n2 = Dot3(n, n);
-  if (!(det > 1e-24 * g11 * g22) || !(n2 > 0.0))
+  TangentPlanes t;
+  if (!SlabTangentPlanes(c, r, t))
   {
     return HUGE_VAL;
   }
-  // In-plane part of u from u.e_j = -(r_j - r_0); it must be shorter than 1.
-  const double d1 = -(r[1] - r[0]), d2 = -(r[2] - r[0]);
-  const double alpha = (d1 * g22 - d2 * g12) / det, beta = (d2 * g11 - d1 * g12) / det;
+  const double* e1 = t.E1;
+  const double* e2 = t.E2;
+  const double w[3] = { x[0] - c[0][0], x[1] - c[0][1], x[2] - c[0][2] };
+  // The tangent plane on x's side.
+  const double gamma = Dot3(w, t.N) >= 0.0 ? t.Gamma : -t.Gamma;
   double u[3];
   for (int k = 0; k < 3; ++k)
   {
-    u[k] = alpha * e1[k] + beta * e2[k];
-  }
-  const double inPlane2 = Dot3(u, u);
-  if (!(inPlane2 < 1.0))
-  {
-    return HUGE_VAL;
-  }
-  const double side = Dot3(w, n) >= 0.0 ? 1.0 : -1.0;
-  const double gamma = side * std::sqrt((1.0 - inPlane2) / n2);
-  for (int k = 0; k < 3; ++k)
-  {
-    u[k] += gamma * n[k];
+    u[k] = t.W[k] + gamma * t.N[k];
   }
   const double g = Dot3(u, w) - r[0];
   // The foot x - g u is the tangent point c(l) + r(l) u: solve for l in the frame
@@ -180,44 +198,21 @@ inline double TriangleExcess(const double* const c[3], const double r[3])
   {
     sides = std::max(sides, EdgeExcess(c[j], r[j], c[(j + 1) % 3], r[(j + 1) % 3]));
   }
-  double e1[3], e2[3], n[3];
-  for (int k = 0; k < 3; ++k)
+  TangentPlanes planes;
+  if (!SlabTangentPlanes(c, r, planes))
   {
-    e1[k] = c[1][k] - c[0][k];
-    e2[k] = c[2][k] - c[0][k];
-  }
-  n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-  n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-  n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-  const double g11 = Dot3(e1, e1), g12 = Dot3(e1, e2), g22 = Dot3(e2, e2);
-  const double det = g11 * g22 - g12 * g12, n2 = Dot3(n, n);
-  if (!(det > 1e-24 * g11 * g22) || !(n2 > 0.0))
-  {
-    return sides; // degenerate: the union of its sides
-  }
-  const double d1 = -(r[1] - r[0]), d2 = -(r[2] - r[0]);
-  const double alpha = (d1 * g22 - d2 * g12) / det, beta = (d2 * g11 - d1 * g12) / det;
-  double w[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    w[k] = alpha * e1[k] + beta * e2[k];
-  }
-  const double inPlane2 = Dot3(w, w);
-  if (!(inPlane2 < 1.0))
-  {
-    return sides; // no common tangent plane: the slab is the union of its cones
+    return sides; // degenerate, or no common tangent plane: the union of its sides
   }
   const double rMin = std::min({ r[0], r[1], r[2] });
   double sliver = 0.0;
   for (double side : { 1.0, -1.0 })
   {
-    const double gamma = side * std::sqrt((1.0 - inPlane2) / n2);
-    double t[3][3];
+    double t[3][3]; // the tangent points
     for (int j = 0; j < 3; ++j)
     {
       for (int k = 0; k < 3; ++k)
       {
-        t[j][k] = c[j][k] + r[j] * (w[k] + gamma * n[k]);
+        t[j][k] = c[j][k] + r[j] * (planes.W[k] + side * planes.Gamma * planes.N[k]);
       }
     }
     double ab[3], ac[3], cross[3], perimeter = 0.0;

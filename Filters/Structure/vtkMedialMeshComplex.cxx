@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialMeshComplex.h"
 
+#include "vtkMedialDisjointSets.h"
 #include "vtkMedialGeometry.h"
 #include "vtkMedialPowerComplex.h"
 #include "vtkMedialSurfaceQuery.h"
@@ -21,61 +22,7 @@ enum ContainmentState : char
   CROSSES = 2
 };
 
-// Clips the ray from + t d, t in [t0, t1], to the box (padded); false when it misses.
-// Keeps ray queries near the shape, where single-precision rays are accurate.
-bool ClipToBox(const double bounds[6], double pad, const double from[3], const double d[3], double& t0, double& t1)
-{
-  for (int k = 0; k < 3; ++k)
-  {
-    const double lo = bounds[2 * k] - pad, hi = bounds[2 * k + 1] + pad;
-    if (d[k] == 0.0)
-    {
-      if (from[k] < lo || from[k] > hi)
-      {
-        return false;
-      }
-      continue;
-    }
-    double a = (lo - from[k]) / d[k], b = (hi - from[k]) / d[k];
-    if (a > b)
-    {
-      std::swap(a, b);
-    }
-    t0 = std::max(t0, a);
-    t1 = std::min(t1, b);
-  }
-  return t0 <= t1;
-}
 
-// Union-find over ball ids, with path halving.
-struct DisjointSets
-{
-  std::vector<vtkIdType> Parent;
-  explicit DisjointSets(vtkIdType n)
-    : Parent(n)
-  {
-    std::iota(this->Parent.begin(), this->Parent.end(), vtkIdType(0));
-  }
-  vtkIdType Find(vtkIdType x)
-  {
-    while (this->Parent[x] != x)
-    {
-      x = this->Parent[x] = this->Parent[this->Parent[x]];
-    }
-    return x;
-  }
-  bool Join(vtkIdType a, vtkIdType b)
-  {
-    a = this->Find(a);
-    b = this->Find(b);
-    if (a == b)
-    {
-      return false;
-    }
-    this->Parent[std::max(a, b)] = std::min(a, b);
-    return true;
-  }
-};
 }
 
 bool vtkMedialMeshComplex::Build(const vtkMedialPowerComplex& power, const vtkMedialSurfaceQuery& query,
@@ -147,7 +94,12 @@ void vtkMedialMeshComplex::SelectCandidates()
   this->TetCandidate.assign(nt, 0);
   this->TriangleCandidate.assign(nf, 0);
   const vtkMedialTriangleMesh& mesh = *this->Query->GetMesh();
-  const double pad = 1e-3 * mesh.Diagonal;
+  double lo[3], hi[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    lo[k] = mesh.Bounds[2 * k] - 1e-3 * mesh.Diagonal;
+    hi[k] = mesh.Bounds[2 * k + 1] + 1e-3 * mesh.Diagonal;
+  }
 #pragma omp parallel for schedule(dynamic, 256) num_threads(this->Threads)
   for (vtkIdType t = 0; t < nt; ++t)
   {
@@ -200,8 +152,9 @@ void vtkMedialMeshComplex::SelectCandidates()
         d /= length;
       }
     }
+    // Only near the shape, where single-precision rays are accurate.
     double t0 = 0.0, t1 = length;
-    if (!ClipToBox(mesh.Bounds, pad, from, direction, t0, t1))
+    if (!G::ClipRayToBox(lo, hi, from, direction, 3, t0, t1))
     {
       continue;
     }
@@ -358,7 +311,7 @@ void vtkMedialMeshComplex::ConnectComponents()
   const vtkMedialPowerComplex& p = *this->Power;
   const vtkIdType nb = static_cast<vtkIdType>(p.BallIsVertex.size()), ne = p.GetNumberOfEdges();
   const std::vector<char>& present = this->VertexIn;
-  DisjointSets sets(nb);
+  vtkMedialDisjointSets sets(nb);
   for (vtkIdType e = 0; e < ne; ++e)
   {
     if (this->EdgeIn[e])
@@ -442,7 +395,7 @@ void vtkMedialMeshComplex::DropDetachedComponents(const std::vector<vtkIdType>& 
 {
   const vtkMedialPowerComplex& p = *this->Power;
   const vtkIdType nb = static_cast<vtkIdType>(p.BallIsVertex.size()), ne = p.GetNumberOfEdges();
-  DisjointSets sets(nb);
+  vtkMedialDisjointSets sets(nb);
   for (vtkIdType e = 0; e < ne; ++e)
   {
     if (this->EdgeIn[e])
@@ -730,7 +683,7 @@ void vtkMedialMeshComplex::Extract()
     }
   }
   const std::vector<char>& present = this->VertexIn;
-  DisjointSets sets(nb);
+  vtkMedialDisjointSets sets(nb);
   this->Edges.clear();
   this->EdgeTriangles.clear();
   for (vtkIdType e = 0; e < ne; ++e)

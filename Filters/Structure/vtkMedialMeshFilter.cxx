@@ -3,6 +3,7 @@
 #include "vtkMedialArrayNames.h"
 
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialDisjointSets.h"
 #include "vtkMedialMeshComplex.h"
 #include "vtkMedialPowerComplex.h"
 #include "vtkMedialSurfaceQuery.h"
@@ -30,7 +31,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <string>
 #include <vector>
 
@@ -70,27 +70,20 @@ int MeshPointType(int seamEdges, int rimEdges, int curveEdges, int degree)
 // Connected component of each triangle of the prepared surface (shared vertices).
 std::vector<vtkIdType> TriangleComponents(const vtkMedialTriangleMesh& mesh)
 {
-  std::vector<vtkIdType> parent(mesh.Points.size() / 3);
-  std::iota(parent.begin(), parent.end(), vtkIdType(0));
-  auto find = [&parent](vtkIdType x) {
-    while (parent[x] != x)
-    {
-      x = parent[x] = parent[parent[x]];
-    }
-    return x;
-  };
+  const vtkIdType points = static_cast<vtkIdType>(mesh.Points.size() / 3);
+  vtkMedialDisjointSets sets(points);
   const vtkIdType nt = mesh.GetNumberOfTriangles();
   for (vtkIdType t = 0; t < nt; ++t)
   {
     const vtkIdType* v = mesh.GetTriangle(t);
-    parent[find(v[1])] = find(v[0]);
-    parent[find(v[2])] = find(v[0]);
+    sets.Join(v[0], v[1]);
+    sets.Join(v[0], v[2]);
   }
-  std::vector<vtkIdType> label(parent.size(), -1), components(nt);
+  std::vector<vtkIdType> label(points, -1), components(nt);
   vtkIdType next = 0;
   for (vtkIdType t = 0; t < nt; ++t)
   {
-    vtkIdType& l = label[find(mesh.GetTriangle(t)[0])];
+    vtkIdType& l = label[sets.Find(mesh.GetTriangle(t)[0])];
     l = l < 0 ? next++ : l;
     components[t] = l;
   }

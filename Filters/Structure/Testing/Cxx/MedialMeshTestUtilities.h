@@ -8,6 +8,9 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkGenericCell.h"
+#include "vtkStaticCellLocator.h"
+#include "vtkMedialDisjointSets.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkOBJReader.h"
 #include "vtkPolyData.h"
@@ -15,7 +18,6 @@
 
 #include <algorithm>
 #include <array>
-#include <numeric>
 #include <set>
 #include <string>
 #include <utility>
@@ -51,6 +53,17 @@ inline vtkSmartPointer<vtkPolyData> ReadSharedMesh(const std::string& name)
   reader->SetFileName(path.c_str());
   reader->Update();
   return reader->GetOutput();
+}
+
+/// Distance from x to the surface of `locator`'s dataset.
+inline double SurfaceDistance(vtkStaticCellLocator* locator, const double x[3])
+{
+  vtkNew<vtkGenericCell> cell;
+  double closest[3], d2;
+  vtkIdType id;
+  int sub;
+  locator->FindClosestPoint(x, closest, cell, id, sub, d2);
+  return std::sqrt(d2);
 }
 
 struct MeshTopology
@@ -89,23 +102,15 @@ inline MeshTopology CountTopology(vtkPolyData* mesh)
   visit(mesh->GetVerts(), false);
   visit(mesh->GetLines(), false);
   visit(mesh->GetPolys(), true);
-  std::vector<vtkIdType> parent(np);
-  std::iota(parent.begin(), parent.end(), vtkIdType(0));
-  auto find = [&parent](vtkIdType x) {
-    while (parent[x] != x)
-    {
-      x = parent[x] = parent[parent[x]];
-    }
-    return x;
-  };
+  vtkMedialDisjointSets sets(np);
   for (const auto& e : edges)
   {
-    parent[find(e.first)] = find(e.second);
+    sets.Join(e.first, e.second);
   }
   for (vtkIdType i = 0; i < np; ++i)
   {
     t.Vertices += used[i];
-    t.Components += used[i] && find(i) == i;
+    t.Components += used[i] && sets.Find(i) == i;
   }
   t.Edges = static_cast<vtkIdType>(edges.size());
   return t;

@@ -20,10 +20,8 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkPointData.h"
-#include "vtkGenericCell.h"
 #include "vtkIntersectionPolyDataFilter.h"
 #include "vtkPoints.h"
-#include "vtkStaticCellLocator.h"
 #include "vtkTriangle.h"
 
 #include <cstdio>
@@ -107,15 +105,11 @@ Crossings CountCrossings(vtkPolyData* surface, vtkPolyData* mesh)
   locator->BuildLocator();
   vtkDataArray* radius = mesh->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
   const double diagonal = surface->GetLength();
-  vtkNew<vtkGenericCell> cell;
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
   {
-    double x[3], closest[3], d2;
-    vtkIdType cellId;
-    int sub;
+    double x[3];
     mesh->GetPoint(i, x);
-    locator->FindClosestPoint(x, closest, cell, cellId, sub, d2);
-    const double protrusion = (radius->GetTuple1(i) - std::sqrt(d2)) / diagonal;
+    const double protrusion = (radius->GetTuple1(i) - medialtest::SurfaceDistance(locator, x)) / diagonal;
     c.WorstProtrusion = std::max(c.WorstProtrusion, protrusion);
     c.Protruding += protrusion > 1e-9;
   }

@@ -11,8 +11,6 @@
 #include "vtkMedialBallUnion.h"
 #include "vtkMedialMeshFilter.h"
 
-#include "vtkGenericCell.h"
-#include "vtkStaticCellLocator.h"
 
 #include <cstdio>
 #include <map>
@@ -22,16 +20,12 @@ namespace
 // Mean distance from the vertices of `from` to the surface `to`.
 double MeanDistance(vtkPolyData* from, vtkStaticCellLocator* to)
 {
-  vtkNew<vtkGenericCell> cell;
   double sum = 0.0;
   for (vtkIdType i = 0; i < from->GetNumberOfPoints(); ++i)
   {
-    double x[3], closest[3], d2;
-    vtkIdType id;
-    int sub;
+    double x[3];
     from->GetPoint(i, x);
-    to->FindClosestPoint(x, closest, cell, id, sub, d2);
-    sum += std::sqrt(d2);
+    sum += medialtest::SurfaceDistance(to, x);
   }
   return from->GetNumberOfPoints() ? sum / from->GetNumberOfPoints() : HUGE_VAL;
 }
@@ -75,9 +69,8 @@ int TestMedialMeshPruning(int, char*[])
       ++sides[side(ids->GetId(k), ids->GetId((k + 1) % 3))];
     }
   }
-  vtkNew<vtkGenericCell> cell;
   auto protrusion = [&](const std::vector<vtkIdType>& ids) {
-    double c[3] = { 0, 0, 0 }, r = 0.0, closest[3], d2;
+    double c[3] = { 0, 0, 0 }, r = 0.0;
     for (vtkIdType id : ids)
     {
       double x[3];
@@ -88,10 +81,7 @@ int TestMedialMeshPruning(int, char*[])
       }
       r += radius->GetTuple1(id) / ids.size();
     }
-    vtkIdType cellId;
-    int sub;
-    locator->FindClosestPoint(c, closest, cell, cellId, sub, d2);
-    return (r - std::sqrt(d2)) / diagonal;
+    return (r - medialtest::SurfaceDistance(locator, c)) / diagonal;
   };
   double worst = 0.0;
   vtkIdType free = 0;
