@@ -7,10 +7,13 @@
 // contains-ball throughput on Embree and on the own tree side by side,
 // each method with 1 and 2 threads (with mean iterations), each method's ratio to
 // the "limit" (one ray plus one bounded closest-point query per sample), peak RSS,
-// and a 327k-triangle sphere as the worst case. Prints a table, or one JSON object
-// with --json. Not a test: it checks nothing.
+// and a 327k-triangle sphere as the worst case; then the 3D classification
+// (vtkMedialBallClassifier) of horse.ply's default balls, without and with the exact
+// seams and junctions, at theta = 45 and 0 (--structure runs only these rows).
+// Prints a table, or one JSON object with --json. Not a test: it checks nothing.
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialBallClassifier.h"
 #include "vtkMedialRandom.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkMedialSurfaceQuery.h"
@@ -18,6 +21,8 @@
 #include "vtkMedialTriangleMesh.h"
 
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkPoints.h"
 #include "vtkLoopSubdivisionFilter.h"
 #include "vtkNew.h"
 #include "vtkPLYReader.h"
@@ -61,7 +66,10 @@ struct Row
   double Extra; // speed-up or ratio, depending on the row
 };
 
-vtkSmartPointer<vtkPolyData> LoadBenchMesh(const std::string& sharedDir, std::string& label)
+// horse.ply from the shared meshes, Loop-subdivided `subdivisions` times; without the
+// shared data, the generated demo shape at `resolution`.
+vtkSmartPointer<vtkPolyData> LoadBenchMesh(
+  const std::string& sharedDir, int subdivisions, int resolution, std::string& label)
 {
   const std::string horse = sharedDir + "/horse.ply";
   struct stat st;
@@ -71,15 +79,21 @@ vtkSmartPointer<vtkPolyData> LoadBenchMesh(const std::string& sharedDir, std::st
     reader->SetFileName(horse.c_str());
     vtkNew<vtkTriangleFilter> triangles;
     triangles->SetInputConnection(reader->GetOutputPort());
+    triangles->Update();
+    label = "horse.ply";
+    if (subdivisions == 0)
+    {
+      return triangles->GetOutput();
+    }
     vtkNew<vtkLoopSubdivisionFilter> loop;
     loop->SetInputConnection(triangles->GetOutputPort());
-    loop->SetNumberOfSubdivisions(2);
+    loop->SetNumberOfSubdivisions(subdivisions);
     loop->Update();
-    label = "horse.ply, Loop x2";
+    label += ", Loop x" + std::to_string(subdivisions);
     return loop->GetOutput();
   }
   vtkNew<vtkMedialShapeSource> jack;
-  jack->SetResolution(230);
+  jack->SetResolution(resolution);
   jack->Update();
   label = "generated demo shape (shared data absent)";
   return jack->GetOutput();
@@ -98,6 +112,92 @@ double TimeSampler(vtkPolyData* mesh, int method, int threads, vtkIdType samples
   iterations = sampler->GetMeanIterations();
   capped = sampler->GetCappedSamples();
   return Now() - t0;
+}
+
+struct StructureRow
+{
+  double Theta;
+  vtkIdType Balls;
+  double PrepareSeconds;  // surface preparation alone (one ball classified)
+  double ClassifySeconds; // governors of every ball, with the preparation
+  double ExactSeconds;    // the same plus exact seams and junctions
+  vtkIdType Types[4];
+  vtkIdType SeamPoints, Junctions, TracedSeams;
+};
+
+// Classifies the default sampler's balls of `mesh` (2 threads) at theta.
+StructureRow RunStructure(vtkPolyData* mesh, double theta)
+{
+  vtkNew<vtkMedialAxisSampler> sampler;
+  sampler->SetInputData(mesh);
+  sampler->SetMinimumSeparationAngle(theta);
+  sampler->SetNumberOfThreads(2);
+  sampler->Update();
+  vtkNew<vtkPoints> first;
+  first->InsertNextPoint(sampler->GetOutput()->GetPoint(0));
+  vtkNew<vtkPolyData> oneBall;
+  oneBall->SetPoints(first);
+  vtkNew<vtkDoubleArray> oneRadius;
+  oneRadius->SetName(vtkMedialArrayNames::Radius);
+  oneRadius->InsertNextValue(sampler->GetOutput()->GetPointData()->GetArray(vtkMedialArrayNames::Radius)->GetComponent(0, 0));
+  oneBall->GetPointData()->AddArray(oneRadius);
+  StructureRow row;
+  row.Theta = theta;
+  row.Balls = sampler->GetOutput()->GetNumberOfPoints();
+  auto timed = [&](vtkPolyData* balls, bool exact) {
+    vtkNew<vtkMedialBallClassifier> classifier;
+    classifier->SetInputData(balls);
+    classifier->SetSurfaceData(mesh);
+    classifier->SetMinimumSeparationAngle(theta);
+    classifier->SetComputeExactPoints(exact);
+    classifier->SetNumberOfThreads(2);
+    const double t0 = Now();
+    classifier->Update();
+    const double seconds = Now() - t0;
+    row.Types[0] = classifier->GetNumberOfRimBalls();
+    row.Types[1] = classifier->GetNumberOfSheetBalls();
+    row.Types[2] = classifier->GetNumberOfSeamBalls();
+    row.Types[3] = classifier->GetNumberOfJunctionBalls();
+    row.SeamPoints = classifier->GetNumberOfSeamPoints();
+    row.Junctions = classifier->GetNumberOfJunctionVertices();
+    row.TracedSeams = classifier->GetNumberOfTracedSeams();
+    return seconds;
+  };
+  row.PrepareSeconds = timed(oneBall, false);
+  row.ClassifySeconds = timed(sampler->GetOutput(), false);
+  row.ExactSeconds = timed(sampler->GetOutput(), true);
+  return row;
+}
+
+void PrintStructure(const std::vector<StructureRow>& rows, const std::string& label, bool json, std::ostringstream& js)
+{
+  if (json)
+  {
+    js << ", \"structure_mesh\": \"" << label << "\"";
+    for (const StructureRow& r : rows)
+    {
+      js << ", \"structure_theta_" << r.Theta << "\": {\"balls\": " << r.Balls
+         << ", \"prepare_seconds\": " << r.PrepareSeconds << ", \"classify_seconds\": " << r.ClassifySeconds
+         << ", \"exact_seconds\": " << r.ExactSeconds << ", \"rim\": " << r.Types[0] << ", \"sheet\": " << r.Types[1]
+         << ", \"seam\": " << r.Types[2] << ", \"junction\": " << r.Types[3] << ", \"seam_points\": " << r.SeamPoints
+         << ", \"junction_vertices\": " << r.Junctions << ", \"traced_seams\": " << r.TracedSeams << "}";
+    }
+    return;
+  }
+  std::printf("\n3D classification of %s's default balls (vtkMedialBallClassifier, 2 threads), seconds with the "
+              "surface preparation:\n",
+    label.c_str());
+  std::printf("| theta | balls | preparation | + governors | + exact seams and junctions | rim / sheet / seam / "
+              "junction balls | seam points | junction vertices | traced seams |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  for (const StructureRow& r : rows)
+  {
+    std::printf("| %g | %lld | %.2f | %.2f | %.2f | %lld / %lld / %lld / %lld | %lld | %lld | %lld |\n", r.Theta,
+      static_cast<long long>(r.Balls), r.PrepareSeconds, r.ClassifySeconds, r.ExactSeconds,
+      static_cast<long long>(r.Types[0]), static_cast<long long>(r.Types[1]), static_cast<long long>(r.Types[2]),
+      static_cast<long long>(r.Types[3]), static_cast<long long>(r.SeamPoints), static_cast<long long>(r.Junctions),
+      static_cast<long long>(r.TracedSeams));
+  }
 }
 
 // Microseconds per sample (wall), without the preparation (merge, orientation,
@@ -120,6 +220,7 @@ double RunSampler(vtkPolyData* mesh, int method, int threads, vtkIdType samples,
 int main(int argc, char* argv[])
 {
   bool json = false;
+  bool structureOnly = false;
   vtkIdType samples = 200000;
   vtkIdType defaultSamples = 1000000;
   std::string sharedDir = MEDIALAXIS_SHARED_MESH_DIR;
@@ -129,6 +230,10 @@ int main(int argc, char* argv[])
     if (a == "--json")
     {
       json = true;
+    }
+    else if (a == "--structure")
+    {
+      structureOnly = true;
     }
     else if (a == "--samples" && i + 1 < argc)
     {
@@ -147,13 +252,28 @@ int main(int argc, char* argv[])
       std::fprintf(stderr,
         "usage: medial-bench [--json] [--samples N (per method run, default 200000)]\n"
         "                    [--default-samples N (default method, 2 threads; default 1000000)]\n"
-        "                    [--shared DIR]\n");
+        "                    [--shared DIR] [--structure (only the 3D classification rows)]\n");
       return 1;
     }
   }
+  // The 3D classification rows (first: they are short).
+  std::string structureLabel;
+  vtkSmartPointer<vtkPolyData> structureMesh = LoadBenchMesh(sharedDir, 0, 16, structureLabel);
+  const std::vector<StructureRow> structure = { RunStructure(structureMesh, 45.0), RunStructure(structureMesh, 0.0) };
+  if (structureOnly)
+  {
+    std::ostringstream js;
+    PrintStructure(structure, structureLabel, json, js);
+    if (json)
+    {
+      std::printf("{%s}\n", js.str().substr(2).c_str());
+    }
+    return 0;
+  }
+
   std::string label;
   const double tLoad = Now();
-  vtkSmartPointer<vtkPolyData> mesh = LoadBenchMesh(sharedDir, label);
+  vtkSmartPointer<vtkPolyData> mesh = LoadBenchMesh(sharedDir, 2, 230, label);
   const double loadSeconds = Now() - tLoad;
 
   // Preparation and BVH build, timed apart from sampling.
@@ -304,7 +424,9 @@ int main(int argc, char* argv[])
     js << ", \"default_method\": \"" << vtkMedialAxisSampler::GetMethodName(defaultMethod)
        << "\", \"default_samples\": " << defaultSamples << ", \"default_seconds\": " << defaultSeconds
        << ", \"default_us_per_sample\": " << defaultMicro << ", \"sphere_us_per_sample\": " << sphereMicro
-       << ", \"sphere_to_horse\": " << sphereMicro / defaultMicro << ", \"peak_rss_mib\": " << rss << "}";
+       << ", \"sphere_to_horse\": " << sphereMicro / defaultMicro << ", \"peak_rss_mib\": " << rss;
+    PrintStructure(structure, structureLabel, json, js);
+    js << "}";
     std::printf("%s\n", js.str().c_str());
     return 0;
   }
@@ -341,5 +463,7 @@ int main(int argc, char* argv[])
               "(%.1fx the horse)\n",
     static_cast<long long>(sphere->GetOutput()->GetNumberOfCells()), sphereMicro, sphereMicro / defaultMicro);
   std::printf("peak RSS: %.0f MiB\n", rss);
+  std::ostringstream unused;
+  PrintStructure(structure, structureLabel, json, unused);
   return 0;
 }

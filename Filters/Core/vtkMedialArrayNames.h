@@ -12,9 +12,14 @@
  *  - ContactPoint (double x3): the second touching point;
  *  - SeparationAngle (double, degrees): the angle P-centre-contact;
  *  - SourceCellId (vtkIdType): the input cell that P lies on;
- *  - GovernorCount (int): surface regions (2D: edges and reflex vertices) the ball touches;
- *  - MedialPointType (int): in 2D 0 end, 1 regular, 2 junction;
- *    in 3D 0 rim, 1 sheet, 2 seam, 3 junction.
+ *  - GovernorCount (int): surface regions the ball touches (2D: edges and reflex
+ *    vertices; 3D: faces, reflex edges and reflex vertices, regions less than theta
+ *    apart counting as one; see vtkMedialBallClassifier);
+ *  - MedialPointType (int):
+ *    2D (vtkMedialJunctionFilter): 0 end, 1 regular, 2 junction;
+ *    3D (vtkMedialBallClassifier): 0 rim (at most one governor, or a radius within the
+ *    contact tolerance: a sheet's free boundary), 1 sheet (2 governors), 2 seam (3),
+ *    3 junction (4 or more).
  *
  * Cell data of the 2D medial graph: ArcType (0 linear, 1 parabolic), PolygonId.
  * Cell data of the 3D medial mesh: MedialCellType (0 isolated ball, 1 curve edge,

@@ -58,6 +58,19 @@ inline double AngleDegrees(const double apex[3], const double a[3], const double
   return std::atan2(std::sqrt(Dot(w, w)), Dot(u, v)) * (180.0 / 3.14159265358979323846);
 }
 
+/// Squared distance from p to the segment [a, b] (to a when a == b).
+inline double SegmentDistance2(const double p[3], const double a[3], const double b[3])
+{
+  double ab[3], ap[3];
+  Sub(b, a, ab);
+  Sub(p, a, ap);
+  const double len2 = Dot(ab, ab);
+  const double t = len2 > 0.0 ? std::min(1.0, std::max(0.0, Dot(ap, ab) / len2)) : 0.0;
+  double q[3];
+  AddScaled(a, t, ab, q);
+  return Distance2(p, q);
+}
+
 /// Closest point to p on triangle (a, b, c); returns the squared distance.
 inline double ClosestPointOnTriangle(
   const double p[3], const double a[3], const double b[3], const double c[3], double out[3])
@@ -256,7 +269,7 @@ inline bool SegmentCrossesTriangle(
  * other (the intersection of two non-coplanar triangles is a segment whose ends lie
  * on their edges). Touching and coplanar contact do not count.
  */
-inline bool TrianglesCross(const double* t[3], const double* u[3])
+inline bool TrianglesCross(const double* const t[3], const double* const u[3])
 {
   for (int i = 0; i < 3; ++i)
   {

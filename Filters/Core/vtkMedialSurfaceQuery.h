@@ -15,7 +15,8 @@
  *
  * Ray queries (and IsInside, CountCrossings) always use Embree. The crossing tests
  * of segments and triangles (SegmentCrossesSurface, TriangleCrossesSurface) take
- * their candidates from the internal tree and decide in double precision.
+ * their candidates from the internal tree (VisitWithin) and decide in double
+ * precision.
  * Point queries (closest point, contains ball)
  * use Embree or, with SetPointQueryEngine(OWN_TREE), the internal
  * vtkMedialTriangleBVH; MaximalTangentBall always uses the latter, because its
@@ -38,6 +39,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 class vtkMedialTriangleMesh;
 
@@ -91,6 +93,17 @@ public:
   bool ContainsBall(const double centre[3], double radius, const ContactFilter* filter = nullptr) const;
 
   /**
+   * Every triangle whose closest admissible point to x is at most `distance` away,
+   * with that point and its distance, sorted by triangle id (replaces the contents
+   * of `hits`). The filter's OwnTriangle is not skipped here; with its CosMinAngle
+   * < 1 only each triangle's part outside the cap counts. Used by the medial
+   * structure filters to read every contact of a ball. Always answered by the
+   * internal tree.
+   */
+  void TrianglesWithin(const double x[3], double distance, std::vector<ClosestHit>& hits,
+    const ContactFilter* filter = nullptr) const;
+
+  /**
    * Largest admissible ball tangent at p with centre p + r n (n unit, inward),
    * found in one traversal that shrinks the ball at every blocking point (see
    * vtkMedialTriangleBVH). On entry `ball` holds an upper bound and its contact.
@@ -134,6 +147,9 @@ public:
   struct Internals;
 
 private:
+  // Segment (n = 2) or triangle (n = 3) against the triangles near it.
+  bool CrossesSurface(const double* const points[], int n) const;
+
   Internals* Impl;
   vtkMedialTriangleBVH Tree;
   int PointQueryEngine = OWN_TREE;

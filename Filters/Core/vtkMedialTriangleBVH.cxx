@@ -899,45 +899,19 @@ bool vtkMedialTriangleBVH::ContainsBall(const double x[3], double radius, vtkIdT
   return empty;
 }
 
-bool vtkMedialTriangleBVH::VisitTrianglesInBox(const double lo[3], const double hi[3],
-  const std::function<bool(vtkIdType, const double*)>& visit) const
+void vtkMedialTriangleBVH::VisitWithin(const double x[3], double distance, const double samplePoint[3],
+  double cosMinAngle, const std::function<void(double, const double*, vtkIdType)>& visit) const
 {
-  if (this->Nodes.empty())
-  {
-    return true;
-  }
-  double loRel[3], hiRel[3]; // relative to the origin, like the node bounds
-  G::Sub(lo, this->Origin, loRel);
-  G::Sub(hi, this->Origin, hiRel);
-  Scratch& scratch = ThreadScratch();
-  scratch.Stack.push_back(0);
-  while (!scratch.Stack.empty())
-  {
-    const Node& node = this->Nodes[scratch.Stack.back()];
-    scratch.Stack.pop_back();
-    bool overlaps = true;
-    for (int k = 0; k < 3 && overlaps; ++k)
-    {
-      overlaps = node.Lo[k] <= hiRel[k] && loRel[k] <= node.Hi[k];
-    }
-    if (!overlaps)
-    {
-      continue;
-    }
-    if (node.Count == 0)
-    {
-      scratch.Stack.push_back(node.Start);
-      scratch.Stack.push_back(node.Start + 1);
-      continue;
-    }
-    for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
-    {
-      if (!visit(this->TriangleIds[slot], &this->Vertices[9 * slot]))
+  const double limit2 = distance * distance;
+  // The traversal culls nodes at or beyond its reach: reach a little further and
+  // decide in double on each triangle.
+  double reach2 = limit2 * (1.0 + 1e-12) + 1e-300;
+  this->VisitAdmissible(x, -1, samplePoint, cosMinAngle, reach2,
+    [&](double d2, const double q[3], vtkIdType t) {
+      if (d2 <= limit2)
       {
-        scratch.Stack.clear();
-        return false;
+        visit(d2, q, t);
       }
-    }
-  }
-  return true;
+      return true;
+    });
 }

@@ -35,7 +35,8 @@
  * Output (in the input's plane): points = junctions, end points, transitions and
  * the inner points of parabolic arcs; lines = one cell per arc between events
  * (2 points when linear, ArcResolution + 2 when parabolic). Point data Radius
- * (double), MedialPointType (int: 0 end, 1 regular/arc sample, 2 junction),
+ * (double), MedialPointType (int: 0 end, 1 regular/arc sample, 2 junction; the 3D
+ * codes of vtkMedialBallClassifier are 0 rim, 1 sheet, 2 seam, 3 junction),
  * GovernorCount (int); cell data ArcType (int: 0 linear, 1 parabolic). Bisectors
  * of two reflex vertices are straight and reported as linear.
  *

@@ -3,6 +3,7 @@
 // has a closed form, min over facets j with n_j.n < 1 of s_j(P) / (1 - n_j.n), where
 // s_j(P) >= 0 is P's distance to facet j's plane and n_j its inward normal. Both
 // methods must match it within the tolerance (1e-6 of the diagonal).
+#include "MedialPolyhedronTestUtilities.h"
 #include "MedialTestUtilities.h"
 
 #include "vtkCellArray.h"
@@ -20,92 +21,6 @@ using namespace medialtest;
 
 namespace
 {
-// Incremental convex hull (points in general position), outward-wound triangles.
-vtkSmartPointer<vtkPolyData> ConvexHull(const std::vector<std::array<double, 3>>& x)
-{
-  using Face = std::array<int, 3>;
-  auto orient = [&x](int a, int b, int c, int d) {
-    double u[3], v[3], w[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      u[k] = x[b][k] - x[a][k];
-      v[k] = x[c][k] - x[a][k];
-      w[k] = x[d][k] - x[a][k];
-    }
-    return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-      u[2] * (v[0] * w[1] - v[1] * w[0]);
-  };
-  // Outward faces see the fourth vertex on their negative side.
-  std::vector<Face> faces;
-  for (Face f : { Face{ 0, 1, 2 }, Face{ 0, 1, 3 }, Face{ 0, 2, 3 }, Face{ 1, 2, 3 } })
-  {
-    const int other = 6 - f[0] - f[1] - f[2];
-    if (orient(f[0], f[1], f[2], other) > 0)
-    {
-      std::swap(f[1], f[2]);
-    }
-    faces.push_back(f);
-  }
-  for (int p = 4; p < static_cast<int>(x.size()); ++p)
-  {
-    std::vector<char> visible(faces.size());
-    bool any = false;
-    for (size_t f = 0; f < faces.size(); ++f)
-    {
-      visible[f] = orient(faces[f][0], faces[f][1], faces[f][2], p) > 1e-12;
-      any = any || visible[f];
-    }
-    if (!any)
-    {
-      continue;
-    }
-    // Horizon: directed edges of visible faces whose reverse is not on a visible face.
-    std::map<std::pair<int, int>, int> edges;
-    for (size_t f = 0; f < faces.size(); ++f)
-    {
-      if (visible[f])
-      {
-        for (int e = 0; e < 3; ++e)
-        {
-          edges[{ faces[f][e], faces[f][(e + 1) % 3] }] = 1;
-        }
-      }
-    }
-    std::vector<Face> next;
-    for (size_t f = 0; f < faces.size(); ++f)
-    {
-      if (!visible[f])
-      {
-        next.push_back(faces[f]);
-      }
-    }
-    for (const auto& e : edges)
-    {
-      if (!edges.count({ e.first.second, e.first.first }))
-      {
-        next.push_back({ e.first.first, e.first.second, p });
-      }
-    }
-    faces.swap(next);
-  }
-  auto pd = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (const auto& p : x)
-  {
-    points->InsertNextPoint(p.data());
-  }
-  vtkNew<vtkCellArray> cells;
-  for (const Face& f : faces)
-  {
-    const vtkIdType ids[3] = { f[0], f[1], f[2] };
-    cells->InsertNextCell(3, ids);
-  }
-  pd->SetPoints(points);
-  pd->SetPolys(cells);
-  return pd;
-}
-
 int CheckConvex(vtkPolyData* shape, const char* label)
 {
   // Inward unit normals and plane offsets of every facet, oriented towards the centroid.
