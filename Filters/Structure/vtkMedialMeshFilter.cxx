@@ -3,6 +3,7 @@
 #include "vtkMedialArrayNames.h"
 
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialBallClassifier.h"
 #include "vtkMedialDisjointSets.h"
 #include "vtkMedialMeshComplex.h"
 #include "vtkMedialPowerComplex.h"
@@ -36,6 +37,7 @@
 
 vtkStandardNewMacro(vtkMedialMeshFilter);
 vtkCxxSetObjectMacro(vtkMedialMeshFilter, Sampler, vtkMedialAxisSampler);
+vtkCxxSetObjectMacro(vtkMedialMeshFilter, Classifier, vtkMedialBallClassifier);
 
 // The balls the mesh is built on: centres, inscribed radii, and the index of each in
 // the ball input.
@@ -90,6 +92,52 @@ std::vector<vtkIdType> TriangleComponents(const vtkMedialTriangleMesh& mesh)
   return components;
 }
 
+// The balls followed by the exact seam and junction balls: every point array of the
+// balls, the exact ones' values where they have the array (same name and width),
+// NaN (or -1 for integer arrays) where they do not.
+vtkSmartPointer<vtkPolyData> AppendExactBalls(vtkPolyData* balls, vtkPolyData* exact)
+{
+  const vtkIdType n = balls->GetNumberOfPoints(), m = exact ? exact->GetNumberOfPoints() : 0;
+  auto all = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(n + m);
+  for (vtkIdType i = 0; i < n + m; ++i)
+  {
+    points->SetPoint(i, i < n ? balls->GetPoint(i) : exact->GetPoint(i - n));
+  }
+  all->SetPoints(points);
+  vtkPointData* in = balls->GetPointData();
+  for (int a = 0; a < in->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = in->GetArray(a);
+    if (!array || !array->GetName())
+    {
+      continue;
+    }
+    const int width = array->GetNumberOfComponents();
+    vtkDataArray* other = m ? exact->GetPointData()->GetArray(array->GetName()) : nullptr;
+    other = other && other->GetNumberOfComponents() == width ? other : nullptr;
+    const double missing = array->GetDataType() == VTK_FLOAT || array->GetDataType() == VTK_DOUBLE
+      ? std::nan("")
+      : -1.0;
+    auto joined = vtk::TakeSmartPointer(array->NewInstance());
+    joined->SetName(array->GetName());
+    joined->SetNumberOfComponents(width);
+    joined->SetNumberOfTuples(n + m);
+    for (vtkIdType i = 0; i < n + m; ++i)
+    {
+      for (int c = 0; c < width; ++c)
+      {
+        joined->SetComponent(i, c,
+          i < n ? array->GetComponent(i, c) : (other ? other->GetComponent(i - n, c) : missing));
+      }
+    }
+    all->GetPointData()->AddArray(joined);
+  }
+  return all;
+}
+
 void AddCount(vtkFieldData* fd, const char* name, vtkIdType value)
 {
   vtkNew<vtkIdTypeArray> a;
@@ -103,11 +151,13 @@ vtkMedialMeshFilter::vtkMedialMeshFilter()
 {
   this->SetNumberOfInputPorts(2);
   this->Sampler = vtkMedialAxisSampler::New();
+  this->Classifier = vtkMedialBallClassifier::New();
 }
 
 vtkMedialMeshFilter::~vtkMedialMeshFilter()
 {
   this->SetSampler(nullptr);
+  this->SetClassifier(nullptr);
 }
 
 vtkMTimeType vtkMedialMeshFilter::GetMTime()
@@ -116,6 +166,10 @@ vtkMTimeType vtkMedialMeshFilter::GetMTime()
   if (this->Sampler)
   {
     time = std::max(time, this->Sampler->GetMTime());
+  }
+  if (this->Classifier)
+  {
+    time = std::max(time, this->Classifier->GetMTime());
   }
   return time;
 }
@@ -206,7 +260,16 @@ int vtkMedialMeshFilter::RequestData(
                      "array named 'Radius'.");
     return 0;
   }
-  this->UpdateProgress(0.6);
+  if (this->Classifier)
+  {
+    balls = this->Classify(balls, surface, !ballInput);
+    if (!balls)
+    {
+      return this->GetAbortExecute() ? 1 : 0;
+    }
+    radius = balls->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
+  }
+  this->UpdateProgress(0.65);
 
   // 2. Inscribed balls.
   BallSet set;
@@ -279,6 +342,29 @@ int vtkMedialMeshFilter::RequestData(
   return 1;
 }
 
+bool vtkMedialMeshFilter::RunStage(vtkAlgorithm* stage, double from, double to)
+{
+  struct Span
+  {
+    vtkMedialMeshFilter* Self;
+    double From, To;
+  } span{ this, from, to };
+  vtkNew<vtkCallbackCommand> forward;
+  forward->SetClientData(&span);
+  forward->SetCallback([](vtkObject* caller, unsigned long, void* client, void* data) {
+    auto* s = static_cast<Span*>(client);
+    s->Self->UpdateProgress(s->From + (s->To - s->From) * *static_cast<double*>(data));
+    if (s->Self->GetAbortExecute())
+    {
+      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+    }
+  });
+  const unsigned long tag = stage->AddObserver(vtkCommand::ProgressEvent, forward);
+  const int ok = stage->UpdatePiece(0, 1, 0);
+  stage->RemoveObserver(tag);
+  return ok && !this->GetAbortExecute();
+}
+
 vtkSmartPointer<vtkPointSet> vtkMedialMeshFilter::RunSampler(vtkPolyData* surface)
 {
   if (!this->Sampler)
@@ -286,23 +372,10 @@ vtkSmartPointer<vtkPointSet> vtkMedialMeshFilter::RunSampler(vtkPolyData* surfac
     vtkErrorMacro(<< "Cannot build the medial mesh: no balls on input 1 and no Sampler.");
     return nullptr;
   }
-  // The sampler's progress is the first 60% of ours; an abort here aborts it.
-  vtkNew<vtkCallbackCommand> forward;
-  forward->SetClientData(this);
-  forward->SetCallback([](vtkObject* caller, unsigned long, void* client, void* data) {
-    auto* self = static_cast<vtkMedialMeshFilter*>(client);
-    self->UpdateProgress(0.05 + 0.55 * *static_cast<double*>(data));
-    if (self->GetAbortExecute())
-    {
-      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
-    }
-  });
-  const unsigned long tag = this->Sampler->AddObserver(vtkCommand::ProgressEvent, forward);
   vtkNew<vtkPolyData> copy;
   copy->ShallowCopy(surface);
   this->Sampler->SetInputData(copy);
-  const int ok = this->Sampler->UpdatePiece(0, 1, 0);
-  this->Sampler->RemoveObserver(tag);
+  const bool ok = this->RunStage(this->Sampler, 0.05, 0.55);
   auto balls = vtkSmartPointer<vtkPolyData>::New();
   balls->ShallowCopy(this->Sampler->GetOutput());
   this->Sampler->SetInputData(nullptr);
@@ -316,6 +389,32 @@ vtkSmartPointer<vtkPointSet> vtkMedialMeshFilter::RunSampler(vtkPolyData* surfac
     return nullptr;
   }
   return balls;
+}
+
+vtkSmartPointer<vtkPointSet> vtkMedialMeshFilter::Classify(
+  vtkPointSet* balls, vtkPolyData* surface, bool sampled)
+{
+  vtkNew<vtkPolyData> points; // the classifier takes polydata
+  points->SetPoints(balls->GetPoints());
+  points->GetPointData()->ShallowCopy(balls->GetPointData());
+  vtkNew<vtkPolyData> copy;
+  copy->ShallowCopy(surface);
+  this->Classifier->SetInputData(0, points);
+  this->Classifier->SetSurfaceData(copy);
+  if (sampled && this->Sampler)
+  {
+    this->Classifier->SetMinimumSeparationAngle(this->Sampler->GetMinimumSeparationAngle());
+  }
+  const bool ok = this->RunStage(this->Classifier, 0.55, 0.65);
+  vtkSmartPointer<vtkPolyData> result =
+    ok ? AppendExactBalls(this->Classifier->GetOutput(0), this->Classifier->GetOutput(1)) : nullptr;
+  this->Classifier->SetInputData(0, nullptr);
+  this->Classifier->SetSurfaceData(nullptr);
+  if (!ok && !this->GetAbortExecute())
+  {
+    vtkErrorMacro(<< "Cannot build the medial mesh: the ball classifier failed.");
+  }
+  return result;
 }
 
 bool vtkMedialMeshFilter::InscribeBalls(vtkPointSet* balls, vtkDataArray* radius,
@@ -485,6 +584,7 @@ void vtkMedialMeshFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Sampler: " << this->Sampler << "\n";
+  os << indent << "Classifier: " << this->Classifier << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "ProtrusionTolerance: " << this->ProtrusionTolerance << "\n";
   os << indent << "PrunedTriangles: " << this->PrunedTriangles << "\n";
