@@ -102,7 +102,7 @@ const char* Usage =
   "               with --stats adds medial_vertices, medial_edges (triangle sides\n"
   "               included), medial_faces, seams and junctions (vertices of those\n"
   "               MedialPointTypes), euler_characteristic, components and\n"
-  "               medial_mesh_seconds; --render then draws it coloured by MedialPointType\n";
+  "               medial_mesh_seconds; --render then draws it coloured by MedialPointType\n"
   "  --thickness OUT.vtp  3D input: write the surface with its wall thickness (point and cell\n"
   "               data Thickness, MedialRadius, MedialCentre, RayThickness); --render then\n"
   "               draws the surface coloured by thickness; --stats adds thickness_min,\n"
