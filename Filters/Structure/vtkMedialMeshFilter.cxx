@@ -69,27 +69,19 @@ int MeshPointType(int seamEdges, int rimEdges, int curveEdges, int degree)
   return 1; // sheet, or inside a curve
 }
 
-// Connected component of each triangle of the prepared surface (shared vertices).
-std::vector<vtkIdType> TriangleComponents(const vtkMedialTriangleMesh& mesh)
+// The solid body of each triangle of the prepared surface: its shell, or for a cavity
+// (a closed shell at odd depth) the shell enclosing it, so that a hollow solid is one.
+std::vector<vtkIdType> TriangleBodies(const vtkMedialTriangleMesh& mesh)
 {
-  const vtkIdType points = static_cast<vtkIdType>(mesh.Points.size() / 3);
-  vtkMedialDisjointSets sets(points);
   const vtkIdType nt = mesh.GetNumberOfTriangles();
+  std::vector<vtkIdType> bodies(nt);
   for (vtkIdType t = 0; t < nt; ++t)
   {
-    const vtkIdType* v = mesh.GetTriangle(t);
-    sets.Join(v[0], v[1]);
-    sets.Join(v[0], v[2]);
+    const int shell = mesh.ShellOfTriangle[t];
+    const vtkMedialTriangleMesh::Shell& s = mesh.Shells[shell];
+    bodies[t] = s.Closed && s.Depth % 2 == 1 && s.Parent >= 0 ? s.Parent : shell;
   }
-  std::vector<vtkIdType> label(points, -1), components(nt);
-  vtkIdType next = 0;
-  for (vtkIdType t = 0; t < nt; ++t)
-  {
-    vtkIdType& l = label[sets.Find(mesh.GetTriangle(t)[0])];
-    l = l < 0 ? next++ : l;
-    components[t] = l;
-  }
-  return components;
+  return bodies;
 }
 
 // The balls followed by the exact seam and junction balls: every point array of the
@@ -321,7 +313,7 @@ int vtkMedialMeshFilter::RequestData(
   {
     this->HasSolidTopology = true;
     this->SolidEulerCharacteristic = mesh.GetEulerCharacteristic() / 2;
-    this->SolidComponents = mesh.Components;
+    this->SolidComponents = mesh.Bodies;
     AddCount(fd, vtkMedialArrayNames::SolidEulerCharacteristic, this->SolidEulerCharacteristic);
     AddCount(fd, vtkMedialArrayNames::SolidComponents, this->SolidComponents);
     if (this->SolidEulerCharacteristic != this->EulerCharacteristic ||
@@ -438,7 +430,7 @@ bool vtkMedialMeshFilter::InscribeBalls(vtkPointSet* balls, vtkDataArray* radius
   // Closest surface point of each centre: the inscribed radius, and the surface (hence
   // solid) component the ball belongs to.
   const vtkMedialTriangleMesh& mesh = *query.GetMesh();
-  const std::vector<vtkIdType> triangleComponent = TriangleComponents(mesh);
+  const std::vector<vtkIdType> triangleBody = TriangleBodies(mesh);
   std::vector<double> reduction(n, 0.0);
   std::vector<vtkIdType> component(n, -1);
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
@@ -457,7 +449,7 @@ bool vtkMedialMeshFilter::InscribeBalls(vtkPointSet* balls, vtkDataArray* radius
     {
       reduction[i] = std::max(0.0, radii[i] - hit.Distance);
       radii[i] = std::min(radii[i], hit.Distance);
-      component[i] = triangleComponent[hit.Triangle];
+      component[i] = triangleBody[hit.Triangle];
     }
   }
   BallSet& out = set;
