@@ -45,9 +45,10 @@
  *    feature size. This is checked on every run rather than assumed: for a closed,
  *    manifold surface the solid's Euler characteristic is half the surface's, and
  *    EulerCharacteristic, NumberOfComponents, SolidEulerCharacteristic and
- *    SolidComponents are reported (a warning when they differ). Measured equal on
- *    the five shared meshes and on generated genus 0, 1 and 2 solids with the
- *    sampler's defaults (see the README). Open surfaces have no solid: the result
+ *    SolidComponents are reported (a warning when they differ); a cavity counts with
+ *    the body around it (a hollow sphere is one solid of characteristic 2). Measured
+ *    equal on the four closed shared meshes and on generated solids of genus 0 to 3
+ *    and a hollow sphere with the sampler's defaults (see the README). Open surfaces have no solid: the result
  *    is built the same way (inside tests by ray parity are then unreliable near the
  *    holes) and nothing is promised.
  *
