@@ -9,6 +9,7 @@
 
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialBallClassifier.h"
 #include "vtkMedialBallProtrusion.h"
 #include "vtkMedialBallUnion.h"
 #include "vtkMedialFileReader.h"
@@ -775,6 +776,7 @@ vtkSmartPointer<vtkPolyData> RunMedialMesh(vtkPolyData* surface, vtkPolyData* ba
   filter->SetInputData(surface);
   filter->SetBallsData(balls);
   filter->SetNumberOfThreads(opt.Threads);
+  filter->GetClassifier()->SetMinimumSeparationAngle(opt.MinAngle); // the balls' theta
   filter->Update();
   if (!sink.LastError.empty())
   {

@@ -393,6 +393,7 @@ vtkSmartPointer<vtkPointSet> vtkMedialMeshFilter::Classify(
   copy->ShallowCopy(surface);
   this->Classifier->SetInputData(0, points);
   this->Classifier->SetSurfaceData(copy);
+  this->Classifier->SetNumberOfThreads(this->NumberOfThreads);
   if (sampled && this->Sampler)
   {
     this->Classifier->SetMinimumSeparationAngle(this->Sampler->GetMinimumSeparationAngle());

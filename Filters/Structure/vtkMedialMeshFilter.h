@@ -12,7 +12,9 @@
  *     its GovernorCount and MedialPointType, and its exact seam points and junction
  *     vertices join the balls (so that the mesh's junction vertices are the exact
  *     ones where they could be solved). When this filter samples, the classifier
- *     takes the sampler's MinimumSeparationAngle (balls and governors must share it).
+ *     takes the sampler's MinimumSeparationAngle (balls and governors must share it;
+ *     with balls on port 1, set the classifier's to theirs), and always this filter's
+ *     NumberOfThreads.
  *  2. Inscribed balls: each radius is lowered to the distance from its centre to the
  *     surface (an exact closest-point query), so every ball is inside the shape
  *     (sampler balls with a MinimumSeparationAngle above 0 may cross it slightly). On
