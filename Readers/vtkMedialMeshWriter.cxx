@@ -6,10 +6,43 @@
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <ostream>
 #include <string>
+#include <unordered_set>
 
 vtkStandardNewMacro(vtkMedialMeshWriter);
+
+namespace
+{
+// Q-MAT's form: the edges made unique, then every triangle side not among them yet
+// (sides a-b, b-c, c-a), in order; edges of one point are dropped.
+medialballs::EdgeList EdgesWithTriangleSides(const medialballs::BallRecords& records)
+{
+  const auto points = static_cast<std::uint64_t>(records.Input->GetNumberOfPoints());
+  std::unordered_set<std::uint64_t> seen;
+  medialballs::EdgeList unique;
+  auto add = [&](vtkIdType a, vtkIdType b) {
+    const auto key = static_cast<std::uint64_t>(std::min(a, b)) * points + static_cast<std::uint64_t>(std::max(a, b));
+    if (a != b && seen.insert(key).second)
+    {
+      unique.push_back({ a, b });
+    }
+  };
+  for (const auto& e : records.Edges)
+  {
+    add(e[0], e[1]);
+  }
+  for (const auto& f : records.Faces)
+  {
+    add(f[0], f[1]);
+    add(f[1], f[2]);
+    add(f[2], f[0]);
+  }
+  return unique;
+}
+}
 
 // The .ma text: a header line, then one line per vertex, edge and face, written in
 // chunks so that the whole file need not fit in memory twice.
@@ -17,11 +50,12 @@ void vtkMedialMeshWriter::WriteRecords(std::ostream& file, const medialballs::Ba
 {
   using medialballs::AppendNumber;
   vtkPolyData* input = records.Input;
+  const medialballs::EdgeList edges = EdgesWithTriangleSides(records);
   const vtkIdType nv = input->GetNumberOfPoints();
   std::string text;
   AppendNumber(text, nv);
   text += ' ';
-  AppendNumber(text, static_cast<vtkIdType>(records.Edges.size()));
+  AppendNumber(text, static_cast<vtkIdType>(edges.size()));
   text += ' ';
   AppendNumber(text, static_cast<vtkIdType>(records.Faces.size()));
   text += '\n';
@@ -56,7 +90,7 @@ void vtkMedialMeshWriter::WriteRecords(std::ostream& file, const medialballs::Ba
     text += '\n';
     flush();
   };
-  for (const auto& e : records.Edges)
+  for (const auto& e : edges)
   {
     appendIds('e', e.data(), 2);
   }

@@ -3,12 +3,16 @@
  * @class vtkMedialMeshWriter
  * @brief Writes polydata with a `Radius` point array as a .ma medial mesh.
  *
- * Writes the format vtkMedialMeshReader reads: the header `nv ne nf`, one
- * `v x y z r` record per point, then `e i j` and `f i j k` records (edges from
- * lines, faces from triangulated polygons and strips; see vtkMedialBallWriter for
- * what is checked and skipped). Numbers are written with max_digits10 significant
- * digits, independent of the locale, so that reading the file back gives the same
- * doubles bit for bit.
+ * Writes the clean form that Q-MAT (and vtkMedialMeshReader) reads: the header
+ * `nv ne nf`, one `v x y z r` record per point, then `e i j` and `f i j k` records,
+ * 0-based, no comment lines. Edges come from lines (a polyline of n points gives its
+ * n - 1 segments), faces from triangles, triangulated polygons and split strips (see
+ * vtkMedialBallWriter for what is checked and skipped). The edge list holds every
+ * edge once: the line segments in order, then each triangle side not written yet
+ * (sides a-b, b-c, c-a), so that it contains every side of every face as Q-MAT
+ * expects; edges of one point (i i) are skipped. Numbers are written with
+ * max_digits10 significant digits, independent of the locale, so that reading the
+ * file back gives the same doubles bit for bit.
  *
  * Input: vtkPolyData with a one-component point-data array named `Radius`.
  * Missing or multi-component `Radius`, a negative, NaN or infinite radius or

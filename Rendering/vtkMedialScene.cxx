@@ -243,9 +243,32 @@ vtkRenderWindow* vtkMedialScene::GetRenderWindow()
   return this->Window;
 }
 
+namespace
+{
+// MedialPointType's four 3D codes through an indexed table whose annotations name them
+// in the legend.
+void PointTypeTable(vtkLookupTable* lut, double range[2])
+{
+  const double colours[4][3] = { { 0.20, 0.45, 0.85 }, { 0.78, 0.78, 0.75 }, { 0.95, 0.55, 0.10 },
+    { 0.85, 0.10, 0.10 } };
+  const char* names[4] = { "rim", "sheet", "seam", "junction" };
+  lut->SetNumberOfTableValues(4);
+  lut->SetTableRange(0, 3);
+  for (int t = 0; t < 4; ++t)
+  {
+    lut->SetTableValue(t, colours[t][0], colours[t][1], colours[t][2]);
+    lut->SetAnnotation(t, names[t]);
+  }
+  lut->IndexedLookupOn();
+  range[0] = 0;
+  range[1] = 3;
+}
+}
+
 // Colours what `mapper` draws by the point array `name` of `data`, blue (low) to red
-// (high) over its range; returns the renderer of the scale (nullptr without
-// ScalarBarVisibility), to be given a strip of its own beside the model.
+// (high) over its range (MedialPointType: one named colour per 3D code); returns the
+// renderer of the scale (nullptr without ScalarBarVisibility), to be given a strip of
+// its own beside the model.
 vtkSmartPointer<vtkRenderer> vtkMedialScene::ColourBy(vtkPolyDataMapper* mapper, vtkPolyData* data, const char* name)
 {
   double range[2] = { 0.0, 1.0 };
@@ -255,9 +278,16 @@ vtkSmartPointer<vtkRenderer> vtkMedialScene::ColourBy(vtkPolyDataMapper* mapper,
     values->GetRange(range);
   }
   vtkNew<vtkLookupTable> lut;
-  lut->SetHueRange(0.667, 0.0); // blue (thin) to red (thick)
-  lut->SetTableRange(range);
-  lut->Build();
+  if (std::string(name) == vtkMedialArrayNames::MedialPointType)
+  {
+    PointTypeTable(lut, range);
+  }
+  else
+  {
+    lut->SetHueRange(0.667, 0.0); // blue (thin) to red (thick)
+    lut->SetTableRange(range);
+    lut->Build();
+  }
   mapper->SetLookupTable(lut);
   mapper->SetScalarModeToUsePointFieldData();
   mapper->SelectColorArray(name);
@@ -283,9 +313,9 @@ vtkSmartPointer<vtkRenderer> vtkMedialScene::ColourBy(vtkPolyDataMapper* mapper,
   return strip;
 }
 
-// The translucent surface and the medial points coloured by radius; or, with
-// SurfaceScalars, the opaque surface coloured by that array. Returns the renderer of
-// the scale (nullptr without one).
+// The translucent surface and the medial points (or mesh) coloured by radius or point
+// type; or, with SurfaceScalars, the opaque surface coloured by that array. Returns the
+// renderer of the scale (nullptr without one).
 vtkSmartPointer<vtkRenderer> vtkMedialScene::AddBalls(vtkRenderer* renderer)
 {
   if (this->Surface && !this->SurfaceScalars.empty())
@@ -314,7 +344,10 @@ vtkSmartPointer<vtkRenderer> vtkMedialScene::AddBalls(vtkRenderer* renderer)
   }
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(WithVertices(this->Medial));
-  vtkSmartPointer<vtkRenderer> strip = this->ColourBy(mapper, this->Medial, vtkMedialArrayNames::Radius);
+  const bool byType = this->ColorBy == POINT_TYPE &&
+    this->Medial->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
+  vtkSmartPointer<vtkRenderer> strip = this->ColourBy(
+    mapper, this->Medial, byType ? vtkMedialArrayNames::MedialPointType : vtkMedialArrayNames::Radius);
   vtkNew<vtkActor> medial;
   medial->SetMapper(mapper);
   medial->GetProperty()->SetPointSize(this->PointSize);
@@ -638,6 +671,7 @@ void vtkMedialScene::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PointSize: " << this->PointSize << "\n";
   os << indent << "LineWidth: " << this->LineWidth << "\n";
   os << indent << "ScalarBarVisibility: " << this->ScalarBarVisibility << "\n";
+  os << indent << "ColorBy: " << (this->ColorBy == POINT_TYPE ? "PointType" : "Radius") << "\n";
   os << indent << "WindowSize: " << this->WindowSize[0] << " " << this->WindowSize[1] << "\n";
   os << indent << "Zoom: " << this->Zoom << "\n";
   os << indent << "Margin: " << this->Margin << "\n";

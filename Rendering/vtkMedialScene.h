@@ -8,11 +8,14 @@
  *  - 3D (no Graph): the Surface as a light grey translucent shell (SurfaceOpacity),
  *    the Medial balls' centres (and any link lines or medial-mesh faces) coloured by
  *    their `Radius` array from blue (thin) to red (thick), the centres drawn as
- *    spheres of PointSize pixels, with a scalar bar (ScalarBarVisibility). With
- *    SurfaceScalars (e.g. "Thickness" from vtkMedialThickness), the Surface is drawn
- *    opaque and coloured by that point array instead, with its scale, and the Medial
- *    balls are left out. Given a Reconstruction, the picture gets a second view on
- *    the right of the first: the reconstruction, shaded in copper, seen through the
+ *    spheres of PointSize pixels, with a scalar bar (ScalarBarVisibility). Medial may
+ *    be a medial mesh (vtkMedialMeshFilter's output), and with ColorBy POINT_TYPE it
+ *    is coloured by `MedialPointType`: rim blue, sheet grey, seam orange, junction
+ *    red, with their names in the legend. With SurfaceScalars (e.g. "Thickness" from
+ *    vtkMedialThickness), the Surface is drawn opaque and coloured by that point array
+ *    instead, with its scale, and the Medial balls are left out. Given a
+ *    Reconstruction, the picture gets a second view on the right of the first: the
+ *    reconstruction, shaded in copper, seen through the
  *    same camera.
  *  - 2D (a Graph, vtkMedialJunctionFilter's output): the Surface's loops as black
  *    outlines, the graph's arcs by `ArcType` (blue linear, orange parabolic), the
@@ -122,6 +125,21 @@ public:
   vtkBooleanMacro(ScalarBarVisibility, bool);
   ///@}
 
+  enum ColorModes
+  {
+    RADIUS = 0,
+    POINT_TYPE = 1
+  };
+
+  ///@{
+  /// What colours the Medial data in 3D: its `Radius` (default) or its 3D
+  /// `MedialPointType` codes.
+  vtkSetClampMacro(ColorBy, int, RADIUS, POINT_TYPE);
+  vtkGetMacro(ColorBy, int);
+  void SetColorByToRadius() { this->SetColorBy(RADIUS); }
+  void SetColorByToPointType() { this->SetColorBy(POINT_TYPE); }
+  ///@}
+
   ///@{
   /// Size of the whole picture in pixels; 0, 0 (default) takes the scene's own.
   vtkSetVector2Macro(WindowSize, int);
@@ -198,6 +216,7 @@ protected:
   double PointSize = 4.0;
   double LineWidth = 1.0;
   bool ScalarBarVisibility = true;
+  int ColorBy = RADIUS;
   int WindowSize[2] = { 0, 0 };
   double Zoom = 1.0;
   double Margin = 0.05;

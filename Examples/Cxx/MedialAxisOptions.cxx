@@ -66,6 +66,12 @@ const char* Usage =
   "  --junctions OUT   2D input: the medial graph (junctions, end points, linear and\n"
   "                    parabolic arcs; Radius, MedialPointType, GovernorCount; cell data\n"
   "                    ArcType, PolygonId): .vtp .vtk .ply .ma .csv; --render then draws it\n"
+  "  --medial-mesh OUT 3D input: the medial mesh (the balls joined by edges and triangles;\n"
+  "                    point data Radius, MedialPointType, GovernorCount; cell data\n"
+  "                    MedialCellType): .vtp .vtk .ply .ma (Q-MAT's form) .csv; --stats adds\n"
+  "                    medial_vertices, medial_edges, medial_faces, seams, junctions,\n"
+  "                    euler_characteristic, components and medial_mesh_seconds; --render\n"
+  "                    then draws it coloured by MedialPointType\n"
   "  --thickness OUT   3D input: the surface with its wall thickness (point and cell data\n"
   "                    Thickness, MedialRadius, MedialCentre, RayThickness): .vtp .vtk;\n"
   "                    --render then draws the surface coloured by thickness; --stats adds\n"
@@ -223,6 +229,7 @@ const std::vector<Flag>& Flags()
     { "reconstruct", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Reconstruct = t; } },
     { "resolution", nullptr, F::COUNT, 8, 2048, [](Options& o, auto&, double v) { o.Resolution = static_cast<int>(v); } },
     { "junctions", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Junctions = t; } },
+    { "medial-mesh", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.MedialMesh = t; } },
     { "thickness", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Thickness = t; } },
     { "thickness-below", nullptr, F::NUMBER, 0, 1e300,
       [](Options& o, auto&, double v) {
@@ -373,9 +380,9 @@ void CheckWriter(const std::string& path, const std::string& flag, int content)
 void CheckOutputs(const Options& o)
 {
   if (o.Output.empty() && o.Render.empty() && o.Reconstruct.empty() && o.Junctions.empty() && o.Thickness.empty() &&
-    o.ThicknessBelow <= 0.0 && !o.Stats)
+    o.MedialMesh.empty() && o.ThicknessBelow <= 0.0 && !o.Stats)
   {
-    Fail("nothing to write: give -o OUT, --reconstruct OUT, --junctions OUT, --thickness OUT, "
+    Fail("nothing to write: give -o OUT, --reconstruct OUT, --junctions OUT, --medial-mesh OUT, --thickness OUT, "
          "--thickness-below T, --render OUT.png or --stats (see --help)");
   }
   if (!o.Balls.empty())
@@ -418,6 +425,10 @@ void CheckOutputs(const Options& o)
   if (!o.Junctions.empty())
   {
     CheckWriter(o.Junctions, "--junctions", vtkMedialFileWriter::BALLS);
+  }
+  if (!o.MedialMesh.empty())
+  {
+    CheckWriter(o.MedialMesh, "--medial-mesh", vtkMedialFileWriter::BALLS);
   }
   if (!o.Thickness.empty())
   {

@@ -32,6 +32,7 @@ struct Options
   std::string Reconstruct; // --reconstruct: the union of balls
   std::string Junctions;   // --junctions: the 2D medial graph
   std::string Thickness;   // --thickness: the surface with its wall thickness
+  std::string MedialMesh;  // --medial-mesh: the 3D medial mesh
   double ThicknessBelow = 0.0;
   int Resolution = 128;
   bool Stats = false;

@@ -5,7 +5,8 @@
 // Reads a mesh or polygons (or generates a demo shape), samples its medial balls
 // with vtkMedialAxisSampler (or reads balls another tool wrote, --balls), and
 // writes what is asked: the balls, the 2D medial graph (vtkMedialJunctionFilter),
-// the union of balls (vtkMedialBallUnion), the wall thickness (vtkMedialThickness),
+// the union of balls (vtkMedialBallUnion), the 3D medial mesh (vtkMedialMeshFilter),
+// the wall thickness (vtkMedialThickness),
 // a picture (vtkMedialScene) and a JSON line of figures. Only wiring lives here: every algorithm is in a filter, every
 // format in vtkMedialFileReader / vtkMedialFileWriter, every picture in
 // vtkMedialScene. The flag rules are in MedialAxisOptions.h, what is said on
@@ -19,7 +20,9 @@
 #include "vtkMedialBallUnion.h"
 #include "vtkMedialFileReader.h"
 #include "vtkMedialFileWriter.h"
+#include "vtkMedialBallClassifier.h"
 #include "vtkMedialJunctionFilter.h"
+#include "vtkMedialMeshFilter.h"
 #include "vtkMedialReconstructionError.h"
 #include "vtkMedialScene.h"
 #include "vtkMedialShapeSource.h"
@@ -190,6 +193,7 @@ public:
   void MedialGraph();
   void SampleOrReadBalls();
   void Reconstruct();
+  void MedialMesh();
   void Thickness();
   void Render();
   void PrintStats();
@@ -200,6 +204,7 @@ private:
   void ReconstructionError();
   void Protrusion(bool sampled);
   void ThicknessReport();
+  void MedialMeshReport(double seconds);
 
   const Options& Opt;
   Console& Out;
@@ -209,6 +214,7 @@ private:
   vtkSmartPointer<vtkPolyData> Graph;
   vtkSmartPointer<vtkPolyData> Reconstruction;
   vtkSmartPointer<vtkPolyData> WallThickness;
+  vtkSmartPointer<vtkPolyData> Mesh; // --medial-mesh
   bool Planar = false;
   int Polygons = 0;
   bool Closed = true; // the sampler saw no boundary edges (or no sampler ran)
@@ -223,6 +229,10 @@ void Program::LoadInput()
     if (!this->Opt.Thickness.empty() || this->Opt.ThicknessBelow > 0.0)
     {
       Fail("--thickness and --thickness-below measure a surface: give INPUT with --balls");
+    }
+    if (!this->Opt.MedialMesh.empty())
+    {
+      Fail("--medial-mesh joins the balls inside a surface: give INPUT with --balls");
     }
     this->Json << "\"input\": null";
     return;
@@ -244,6 +254,10 @@ void Program::LoadInput()
   if (this->Planar && (!this->Opt.Thickness.empty() || this->Opt.ThicknessBelow > 0.0))
   {
     Fail("--thickness and --thickness-below need a 3D surface; '" + input + "' is planar");
+  }
+  if (this->Planar && !this->Opt.MedialMesh.empty())
+  {
+    Fail("--medial-mesh needs a closed surface; '" + input + "' is planar (see --junctions)");
   }
 }
 
@@ -399,6 +413,49 @@ void Program::ReconstructionError()
              << ", \"hausdorff_area_mean_rel\": " << error->GetAreaMeanHausdorff();
 }
 
+// --medial-mesh: the medial mesh of the balls (given on port 1, so the sampling is not
+// repeated), classified with the balls' angle.
+void Program::MedialMesh()
+{
+  if (this->Opt.MedialMesh.empty())
+  {
+    return;
+  }
+  vtkNew<vtkMedialMeshFilter> filter;
+  filter->SetInputData(this->Surface);
+  filter->SetBallsData(this->Balls);
+  filter->SetNumberOfThreads(this->Opt.Threads);
+  filter->GetClassifier()->SetMinimumSeparationAngle(this->Opt.MinAngle);
+  const Clock::time_point start = Clock::now();
+  Run(filter, this->Out);
+  const double seconds = SecondsSince(start);
+  this->Mesh = Copy(filter->GetOutput());
+  Write(this->Mesh, this->Opt.MedialMesh, vtkMedialFileWriter::BALLS, this->Out);
+  this->MedialMeshReport(seconds);
+}
+
+// JSON members of the medial mesh: sizes, point types, topology and time.
+void Program::MedialMeshReport(double seconds)
+{
+  vtkIdType perType[4] = { 0, 0, 0, 0 };
+  vtkDataArray* types = this->Mesh->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
+  for (vtkIdType i = 0; types && i < types->GetNumberOfTuples(); ++i)
+  {
+    perType[std::min(3, std::max(0, static_cast<int>(types->GetTuple1(i))))]++;
+  }
+  auto field = [this](const char* name) -> long long {
+    vtkDataArray* a = this->Mesh->GetFieldData()->GetArray(name);
+    return a ? static_cast<long long>(a->GetTuple1(0)) : 0;
+  };
+  const long long vertices = this->Mesh->GetNumberOfPoints(), faces = this->Mesh->GetNumberOfPolys();
+  const long long euler = field(vtkMedialArrayNames::EulerCharacteristic);
+  this->Json << ", \"medial_vertices\": " << vertices << ", \"medial_edges\": " << vertices + faces - euler
+             << ", \"medial_faces\": " << faces << ", \"seams\": " << perType[2] << ", \"junctions\": " << perType[3]
+             << ", \"euler_characteristic\": " << euler
+             << ", \"components\": " << field(vtkMedialArrayNames::Components)
+             << ", \"medial_mesh_seconds\": " << seconds;
+}
+
 // --thickness, --thickness-below: the wall thickness of a 3D surface, with the
 // sampler's angle and protrusion settings.
 void Program::Thickness()
@@ -465,7 +522,8 @@ void Program::ThicknessReport()
 }
 
 // --render: the 2D graph scene for planar input, the surface coloured by thickness
-// with --thickness, else the balls (with the reconstruction beside them when there is one).
+// with --thickness, else the balls or the medial mesh coloured by point type (with the
+// reconstruction beside them when there is one).
 void Program::Render()
 {
   if (this->Opt.Render.empty())
@@ -487,7 +545,8 @@ void Program::Render()
   }
   else
   {
-    scene->SetMedial(this->Balls);
+    scene->SetMedial(this->Mesh ? this->Mesh : this->Balls);
+    scene->SetColorBy(this->Mesh ? vtkMedialScene::POINT_TYPE : vtkMedialScene::RADIUS);
     scene->SetReconstruction(this->Reconstruction);
   }
   scene->SetViewDirection(this->Opt.View);
@@ -533,6 +592,7 @@ int main(int argc, char* argv[])
   program.MedialGraph();
   program.SampleOrReadBalls();
   program.Reconstruct();
+  program.MedialMesh();
   program.Thickness();
   program.Render();
   program.PrintStats();

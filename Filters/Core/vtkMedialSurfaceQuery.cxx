@@ -394,6 +394,84 @@ void vtkMedialSurfaceQuery::MaximalTangentBall(const double p[3], const double n
   this->Tree.MaximalTangentBall(p, n, filter.OwnTriangle, filter.CosMinAngle, this->Slack, allowed, ball);
 }
 
+int vtkMedialSurfaceQuery::CountCrossings(
+  const double origin[3], const double direction[3], double tMax) const
+{
+  int crossings = 0;
+  double start = 0.0;
+  RayHit hit;
+  // Each hit restarts the ray just past it; the cap only guards against a stall.
+  while (crossings < 100000 && this->Intersect(origin, direction, start, tMax, -1, hit))
+  {
+    ++crossings;
+    start = std::max(hit.Distance, start) + 4.0 * this->Impl->FloatPad;
+  }
+  return crossings;
+}
+
+bool vtkMedialSurfaceQuery::IsInside(const double x[3]) const
+{
+  // Three unit directions far from the axes and from each other.
+  static const double directions[3][3] = { { 0.5773502691896258, 0.6172133998483676,
+                                             0.5345224838248488 },
+    { -0.7071067811865476, 0.2672612419124244, 0.6546536707079771 },
+    { 0.2182178902359924, -0.8728715609439696, 0.4364357804719848 } };
+  const double* b = this->Mesh->Bounds;
+  if (x[0] < b[0] || x[0] > b[1] || x[1] < b[2] || x[1] > b[3] || x[2] < b[4] || x[2] > b[5])
+  {
+    return false;
+  }
+  // The third ray only breaks a tie.
+  const int first = this->CountCrossings(x, directions[0], HUGE_VAL) % 2;
+  const int second = this->CountCrossings(x, directions[1], HUGE_VAL) % 2;
+  if (first == second)
+  {
+    return first == 1;
+  }
+  return this->CountCrossings(x, directions[2], HUGE_VAL) % 2 == 1;
+}
+
+bool vtkMedialSurfaceQuery::SegmentCrossesSurface(const double p[3], const double q[3]) const
+{
+  const double* ends[2] = { p, q };
+  return this->CrossesSurface(ends, 2);
+}
+
+bool vtkMedialSurfaceQuery::TriangleCrossesSurface(
+  const double a[3], const double b[3], const double c[3]) const
+{
+  const double* corners[3] = { a, b, c };
+  return this->CrossesSurface(corners, 3);
+}
+
+bool vtkMedialSurfaceQuery::CrossesSurface(const double* const points[], int n) const
+{
+  // Candidates: the triangles within the smallest ball about the centroid that holds
+  // the points (a crossing point lies in it).
+  double centre[3] = { 0, 0, 0 }, reach2 = 0.0;
+  for (int j = 0; j < n; ++j)
+  {
+    G::AddScaled(centre, 1.0 / n, points[j], centre);
+  }
+  for (int j = 0; j < n; ++j)
+  {
+    reach2 = std::max(reach2, G::Distance2(centre, points[j]));
+  }
+  const double reach = std::sqrt(reach2) * (1.0 + 1e-9) + this->Slack;
+  bool crosses = false;
+  this->Tree.VisitWithin(centre, reach, nullptr, 1.0, [&](double, const double*, vtkIdType t) {
+    if (crosses)
+    {
+      return;
+    }
+    const vtkIdType* v = this->Mesh->GetTriangle(t);
+    const double* u[3] = { this->Mesh->GetPoint(v[0]), this->Mesh->GetPoint(v[1]), this->Mesh->GetPoint(v[2]) };
+    crosses = n == 2 ? G::SegmentCrossesTriangle(points[0], points[1], u[0], u[1], u[2])
+                     : G::TrianglesCross(points, u);
+  });
+  return crosses;
+}
+
 void vtkMedialSurfaceQuery::TrianglesWithin(
   const double x[3], double distance, std::vector<ClosestHit>& hits, const ContactFilter* filter) const
 {

@@ -276,6 +276,14 @@ void vtkMedialTriangleMesh::DropDuplicateTriangles()
 bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::function<bool()>& aborted)
 {
   const vtkIdType nt = static_cast<vtkIdType>(this->SourceCellIds.size());
+  {
+    std::vector<char> used(this->Points.size() / 3, 0);
+    for (vtkIdType id : this->Triangles)
+    {
+      this->UsedPoints += used[id] ? 0 : 1;
+      used[id] = 1;
+    }
+  }
   auto& uses = adjacency.Uses;
   uses.reserve(3 * nt);
   for (vtkIdType t = 0; t < nt; ++t)
@@ -306,6 +314,7 @@ bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::func
     {
       ++j;
     }
+    ++this->Edges;
     if (j - i == 1)
     {
       ++this->BoundaryEdges;

@@ -22,6 +22,9 @@
  *  - HOLLOW_SPHERE: a geodesic sphere of radius Radius with a concentric spherical
  *    cavity of radius InnerRadius (both split Resolution times, as SPHERE); the
  *    cavity's triangles face into it. Its wall thickness is Radius - InnerRadius.
+ *  - RINGS: Genus rings (ring radius 1, tube radius 0.35) side by side along x in the
+ *    z = 0 plane, 1.7 apart, blended where they overlap: a solid of genus Genus, for
+ *    topology tests. Contoured like JACK.
  *
  * Planar shapes in the z = 0 plane, as polygon cells (for vtkMedialJunctionFilter
  * and the 2D mode of vtkMedialAxisSampler; Resolution is ignored unless stated):
@@ -59,12 +62,13 @@ public:
     SQUARE_FRAME = 6,
     STAR = 7,
     TORUS = 8,
-    HOLLOW_SPHERE = 9
+    HOLLOW_SPHERE = 9,
+    RINGS = 10
   };
 
   ///@{
   /// Which shape to generate (default JACK).
-  vtkSetClampMacro(Shape, int, JACK, HOLLOW_SPHERE);
+  vtkSetClampMacro(Shape, int, JACK, RINGS);
   vtkGetMacro(Shape, int);
   void SetShapeToJack() { this->SetShape(JACK); }
   void SetShapeToSphere() { this->SetShape(SPHERE); }
@@ -76,6 +80,7 @@ public:
   void SetShapeToStar() { this->SetShape(STAR); }
   void SetShapeToTorus() { this->SetShape(TORUS); }
   void SetShapeToHollowSphere() { this->SetShape(HOLLOW_SPHERE); }
+  void SetShapeToRings() { this->SetShape(RINGS); }
   /// True for the planar (2D) shapes.
   static bool IsPlanar(int shape) { return shape >= L_SHAPE && shape <= STAR; }
   ///@}
@@ -111,6 +116,12 @@ public:
   ///@}
 
   ///@{
+  /// Number of rings of RINGS, its genus (default 1).
+  vtkSetClampMacro(Genus, int, 1, 64);
+  vtkGetMacro(Genus, int);
+  ///@}
+
+  ///@{
   /// Side lengths of the BOX (default 3, 2, 1).
   vtkSetVector3Macro(BoxLengths, double);
   vtkGetVector3Macro(BoxLengths, double);
@@ -128,6 +139,7 @@ protected:
   double Length = 2.0;
   double TubeRadius = 0.3;
   double InnerRadius = 0.7;
+  int Genus = 1;
   double BoxLengths[3] = { 3.0, 2.0, 1.0 };
 
 private:
