@@ -21,10 +21,12 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <limits>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 vtkStandardNewMacro(vtkMedialMeshWriter);
@@ -171,6 +173,35 @@ bool GatherCells(vtkPolyData* input, EdgeList& edges, FaceList& faces, vtkIdType
 
 // The .ma text: a header line, then one line per vertex, edge and face, written in
 // chunks so that the whole file need not fit in memory twice.
+// Q-MAT's form: the edges made unique, then every triangle side not among them yet
+// (sides a-b, b-c, c-a), in order; edges of one point are dropped.
+void AddTriangleSides(const FaceList& faces, vtkIdType points, EdgeList& edges)
+{
+  std::unordered_set<std::uint64_t> seen;
+  const auto key = [points](vtkIdType a, vtkIdType b) {
+    return static_cast<std::uint64_t>(std::min(a, b)) * static_cast<std::uint64_t>(points) +
+      static_cast<std::uint64_t>(std::max(a, b));
+  };
+  EdgeList unique;
+  auto add = [&](vtkIdType a, vtkIdType b) {
+    if (a != b && seen.insert(key(a, b)).second)
+    {
+      unique.push_back({ a, b });
+    }
+  };
+  for (const auto& e : edges)
+  {
+    add(e[0], e[1]);
+  }
+  for (const auto& f : faces)
+  {
+    add(f[0], f[1]);
+    add(f[1], f[2]);
+    add(f[2], f[0]);
+  }
+  edges.swap(unique);
+}
+
 void WriteText(std::ofstream& file, vtkPolyData* input, vtkDataArray* radius, const EdgeList& edges,
   const FaceList& faces)
 {
@@ -275,6 +306,7 @@ void vtkMedialMeshWriter::WriteData()
   {
     return reject("a cell refers to a point id outside [0, " + std::to_string(input->GetNumberOfPoints()) + ")");
   }
+  AddTriangleSides(faces, input->GetNumberOfPoints(), edges);
   if (skipped > 0)
   {
     vtkWarningMacro("Skipped " << skipped << " line(s) or polygon(s) with too few points.");

@@ -3,11 +3,15 @@
  * @class vtkMedialMeshWriter
  * @brief Writes polydata with a `Radius` point array as a .ma medial mesh.
  *
- * Writes the format vtkMedialMeshReader reads: the header `nv ne nf`, one
- * `v x y z r` record per point, then `e i j` and `f i j k` records.
+ * Writes the clean form that Q-MAT (and vtkMedialMeshReader) reads: the header
+ * `nv ne nf`, one `v x y z r` record per point, then `e i j` and `f i j k` records,
+ * 0-based, no comment lines.
  *  - Lines become edges; a polyline of n points gives its n - 1 segments.
  *  - Triangles become faces; triangle strips are split into their triangles
  *    and polygons are triangulated (ear cutting, with a fan when that fails).
+ *  - The edge list holds every edge once: the line segments in order, then each
+ *    triangle side not written yet (sides a-b, b-c, c-a), so that it contains every
+ *    side of every face as Q-MAT expects. Edges of one point (i i) are skipped.
  *  - Vertex cells are not written (every point is written anyway). Lines of one
  *    point and polygons of fewer than three points are skipped with a warning.
  * Numbers are written with max_digits10 significant digits, independent of the

@@ -161,7 +161,30 @@ vtkRenderWindow* vtkMedialScene::GetRenderWindow()
   return this->Window;
 }
 
-// The translucent surface, the medial points coloured by radius and the scale.
+namespace
+{
+// Colours the medial data by MedialPointType's four 3D codes through an indexed table
+// whose annotations name them in the legend.
+void ColourByPointType(vtkPolyDataMapper* mapper, vtkLookupTable* lut)
+{
+  const double colours[4][3] = { { 0.20, 0.45, 0.85 }, { 0.78, 0.78, 0.75 }, { 0.95, 0.55, 0.10 },
+    { 0.85, 0.10, 0.10 } };
+  const char* names[4] = { "rim", "sheet", "seam", "junction" };
+  lut->SetNumberOfTableValues(4);
+  lut->SetTableRange(0, 3);
+  for (int t = 0; t < 4; ++t)
+  {
+    lut->SetTableValue(t, colours[t][0], colours[t][1], colours[t][2]);
+    lut->SetAnnotation(t, names[t]);
+  }
+  lut->IndexedLookupOn();
+  mapper->SelectColorArray(vtkMedialArrayNames::MedialPointType);
+  mapper->SetScalarRange(0, 3);
+}
+}
+
+// The translucent surface, the medial points (or mesh) coloured by radius or point type,
+// and the scale.
 void vtkMedialScene::AddBalls(vtkRenderer* renderer)
 {
   if (this->Surface)
@@ -190,6 +213,12 @@ void vtkMedialScene::AddBalls(vtkRenderer* renderer)
   mapper->SetScalarModeToUsePointFieldData();
   mapper->SelectColorArray(vtkMedialArrayNames::Radius);
   mapper->SetScalarRange(range);
+  const bool byType = this->ColorBy == POINT_TYPE &&
+    this->Medial->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
+  if (byType)
+  {
+    ColourByPointType(mapper, lut);
+  }
   mapper->ScalarVisibilityOn();
   vtkNew<vtkActor> medial;
   medial->SetMapper(mapper);
@@ -201,7 +230,7 @@ void vtkMedialScene::AddBalls(vtkRenderer* renderer)
   {
     vtkNew<vtkScalarBarActor> bar;
     bar->SetLookupTable(lut);
-    bar->SetTitle(vtkMedialArrayNames::Radius);
+    bar->SetTitle(byType ? vtkMedialArrayNames::MedialPointType : vtkMedialArrayNames::Radius);
     bar->SetNumberOfLabels(5);
     bar->SetWidth(0.09);
     bar->SetHeight(0.6);
@@ -398,6 +427,7 @@ void vtkMedialScene::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PointSize: " << this->PointSize << "\n";
   os << indent << "LineWidth: " << this->LineWidth << "\n";
   os << indent << "ScalarBarVisibility: " << this->ScalarBarVisibility << "\n";
+  os << indent << "ColorBy: " << (this->ColorBy == POINT_TYPE ? "PointType" : "Radius") << "\n";
   os << indent << "WindowSize: " << this->WindowSize[0] << " " << this->WindowSize[1] << "\n";
   os << indent << "Zoom: " << this->Zoom << "\n";
   os << indent << "CustomView: " << this->CustomView << "\n";

@@ -8,7 +8,10 @@
  *  - 3D (no Graph): the Surface as a light grey translucent shell (SurfaceOpacity),
  *    the Medial balls' centres (and any link lines) coloured by their `Radius` array
  *    from blue (thin) to red (thick), drawn as spheres of PointSize pixels, with a
- *    scalar bar (ScalarBarVisibility). Given a Reconstruction, the window gets a
+ *    scalar bar (ScalarBarVisibility). Medial may also be a medial mesh
+ *    (vtkMedialMeshFilter's output; its triangles and lines are drawn), and with
+ *    ColorBy POINT_TYPE it is coloured by `MedialPointType`: rim blue, sheet grey,
+ *    seam orange, junction red, with their names in the legend. Given a Reconstruction, the window gets a
  *    second view on its right: the reconstruction, shaded in copper, seen through the
  *    same camera.
  *  - 2D (a Graph, vtkMedialJunctionFilter's output): the Surface's loops as black
@@ -92,6 +95,21 @@ public:
   vtkBooleanMacro(ScalarBarVisibility, bool);
   ///@}
 
+  enum ColorModes
+  {
+    RADIUS = 0,
+    POINT_TYPE = 1
+  };
+
+  ///@{
+  /// What colours the Medial data in 3D: its `Radius` (default) or its 3D
+  /// `MedialPointType` codes.
+  vtkSetClampMacro(ColorBy, int, RADIUS, POINT_TYPE);
+  vtkGetMacro(ColorBy, int);
+  void SetColorByToRadius() { this->SetColorBy(RADIUS); }
+  void SetColorByToPointType() { this->SetColorBy(POINT_TYPE); }
+  ///@}
+
   ///@{
   /// Size of one view in pixels; 0, 0 (default) takes the scene's own.
   vtkSetVector2Macro(WindowSize, int);
@@ -132,6 +150,7 @@ protected:
   double PointSize = 4.0;
   double LineWidth = 1.0;
   bool ScalarBarVisibility = true;
+  int ColorBy = RADIUS;
   int WindowSize[2] = { 0, 0 };
   double Zoom = 0.0;
   bool CustomView = false;

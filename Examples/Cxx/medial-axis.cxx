@@ -12,6 +12,8 @@
 #include "vtkMedialBallUnion.h"
 #include "vtkMedialFileReader.h"
 #include "vtkMedialJunctionFilter.h"
+#include "vtkMedialMeshFilter.h"
+#include "vtkMedialMeshWriter.h"
 #include "vtkMedialReconstructionError.h"
 #include "vtkMedialScene.h"
 #include "vtkMedialShapeSource.h"
@@ -19,6 +21,7 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkLogger.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -54,7 +57,7 @@ const char* Usage =
   "                   [--strategy random|closest-neighbor|face-distance] [--coverage E]\n"
   "                   [--threads T] [--tolerance E] [--min-angle DEG] [-o OUT.vtp]\n"
   "                   [--render OUT.png] [--stats] [--reconstruct OUT.vtp|.stl|.ply]\n"
-  "                   [--resolution N] [--junctions OUT.vtp]\n"
+  "                   [--resolution N] [--junctions OUT.vtp] [--medial-mesh OUT.vtp|OUT.ma]\n"
   "  INPUT        closed surface: .vtp .vtk .ply .stl .obj .off; or planar polygons / closed\n"
   "               polylines (any plane, holes allowed) for the 2D medial axis;\n"
   "               or a demo: demo:jack (3D, the default with no INPUT), demo:l-shape,\n"
@@ -83,7 +86,14 @@ const char* Usage =
   "  --resolution N  grid points per axis of the reconstruction (default 128)\n"
   "  --junctions OUT.vtp  2D input only: write the medial graph (junctions, end points,\n"
   "               linear and parabolic arcs; point data Radius, MedialPointType,\n"
-  "               GovernorCount; cell data ArcType). --render then draws it too.\n";
+  "               GovernorCount; cell data ArcType). --render then draws it too.\n"
+  "  --medial-mesh OUT  3D input only: write the medial mesh (the balls joined by edges and\n"
+  "               triangles, with the solid's topology) as .vtp (point data Radius,\n"
+  "               MedialPointType, ...; cell data MedialCellType) or .ma (Q-MAT's form);\n"
+  "               with --stats adds medial_vertices, medial_edges (triangle sides\n"
+  "               included), medial_faces, seams and junctions (vertices of those\n"
+  "               MedialPointTypes), euler_characteristic, components and\n"
+  "               medial_mesh_seconds; --render then draws it coloured by MedialPointType\n";
 
 struct Options
 {
@@ -99,6 +109,7 @@ struct Options
   std::string Output;
   std::string Render;
   std::string Junctions;
+  std::string MedialMesh;
   bool Stats = false;
   std::string Reconstruct;
   int Resolution = 128;
@@ -312,6 +323,10 @@ Options Parse(int argc, char* argv[])
     else if (a == "--junctions")
     {
       o.Junctions = need(i);
+    }
+    else if (a == "--medial-mesh")
+    {
+      o.MedialMesh = need(i);
     }
     else if (a == "--resolution")
     {
@@ -597,6 +612,14 @@ void CheckOutputs(const Options& opt)
   {
     CheckVtpPath(opt.Junctions, "--junctions");
   }
+  if (!opt.MedialMesh.empty())
+  {
+    if (Extension(opt.MedialMesh) != ".vtp" && Extension(opt.MedialMesh) != ".ma")
+    {
+      Fail("--medial-mesh writes .vtp or .ma (Q-MAT's form), got '" + opt.MedialMesh + "'");
+    }
+    CheckWritable(opt.MedialMesh, "--medial-mesh");
+  }
 }
 
 // The input surface: a demo shape (none given: demo:jack) or a file.
@@ -705,10 +728,72 @@ vtkSmartPointer<vtkMedialAxisSampler> Sample(vtkPolyData* surface, const Options
   return sampler;
 }
 
+// --medial-mesh: the medial mesh of the sampled balls (given on port 1, so the sampling
+// is not repeated), written as .vtp or .ma.
+vtkSmartPointer<vtkPolyData> RunMedialMesh(vtkPolyData* surface, vtkPolyData* balls, const Options& opt,
+  MessageSink& sink)
+{
+  vtkNew<vtkMedialMeshFilter> filter;
+  filter->SetInputData(surface);
+  filter->SetBallsData(balls);
+  filter->SetNumberOfThreads(opt.Threads);
+  filter->Update();
+  if (!sink.LastError.empty())
+  {
+    Fail(sink.LastError);
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(filter->GetOutput());
+  if (Extension(opt.MedialMesh) == ".ma")
+  {
+    vtkNew<vtkMedialMeshWriter> writer;
+    writer->SetInputData(mesh);
+    writer->SetFileName(opt.MedialMesh.c_str());
+    if (!writer->Write() || !sink.LastError.empty())
+    {
+      Fail("cannot write '" + opt.MedialMesh + "': " + sink.LastError);
+    }
+  }
+  else
+  {
+    WriteVtp(mesh, opt.MedialMesh, sink);
+  }
+  return mesh;
+}
+
+// JSON members of the medial mesh: sizes, point types, topology and time.
+std::string MedialMeshStats(vtkPolyData* mesh, double seconds)
+{
+  if (!mesh)
+  {
+    return "";
+  }
+  vtkIdType perType[4] = { 0, 0, 0, 0 };
+  vtkDataArray* types = mesh->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
+  for (vtkIdType i = 0; types && i < types->GetNumberOfTuples(); ++i)
+  {
+    perType[std::min(3, std::max(0, static_cast<int>(types->GetTuple1(i))))]++;
+  }
+  auto field = [mesh](const char* name) -> long long {
+    vtkDataArray* a = mesh->GetFieldData()->GetArray(name);
+    return a ? static_cast<long long>(a->GetTuple1(0)) : 0;
+  };
+  const long long vertices = mesh->GetNumberOfPoints(), faces = mesh->GetNumberOfPolys();
+  const long long euler = field(vtkMedialArrayNames::EulerCharacteristic);
+  std::ostringstream js;
+  js.precision(6);
+  js << ", \"medial_vertices\": " << vertices << ", \"medial_edges\": " << vertices + faces - euler
+     << ", \"medial_faces\": " << faces << ", \"seams\": " << perType[2] << ", \"junctions\": " << perType[3]
+     << ", \"euler_characteristic\": " << euler
+     << ", \"components\": " << field(vtkMedialArrayNames::Components) << ", \"medial_mesh_seconds\": " << seconds;
+  return js.str();
+}
+
 // --render: the 2D graph scene for planar input, else the 3D scene (with the
-// reconstruction beside it when there is one).
+// reconstruction beside it when there is one, and the medial mesh coloured by point
+// type instead of the balls when there is one).
 void RenderPicture(vtkPolyData* surface, vtkPolyData* medial, vtkPolyData* graph, vtkPolyData* reconstruction,
-  const std::string& path, MessageSink& sink)
+  vtkPolyData* medialMesh, const std::string& path, MessageSink& sink)
 {
   vtkNew<vtkMedialScene> scene;
   scene->SetSurface(surface);
@@ -718,7 +803,8 @@ void RenderPicture(vtkPolyData* surface, vtkPolyData* medial, vtkPolyData* graph
   }
   else
   {
-    scene->SetMedial(medial);
+    scene->SetMedial(medialMesh ? medialMesh : medial);
+    scene->SetColorBy(medialMesh ? vtkMedialScene::POINT_TYPE : vtkMedialScene::RADIUS);
     scene->SetReconstruction(reconstruction);
   }
   if (!scene->WritePNG(path.c_str()) || !sink.LastError.empty())
@@ -785,6 +871,10 @@ int main(int argc, char* argv[])
 
   vtkSmartPointer<vtkPolyData> surface = LoadInput(opt, sink);
   const bool planar = vtkMedialAxisSampler::IsPlanarInput(surface);
+  if (!opt.MedialMesh.empty() && planar)
+  {
+    Fail("--medial-mesh needs a closed surface; '" + opt.Input + "' is planar (see --junctions)");
+  }
   if (!opt.Junctions.empty() && !planar)
   {
     Fail("--junctions needs planar polygons or closed polylines; '" + opt.Input + "' is not planar");
@@ -806,6 +896,14 @@ int main(int argc, char* argv[])
   {
     WriteVtp(medial, opt.Output, sink);
   }
+  vtkSmartPointer<vtkPolyData> medialMesh;
+  double medialMeshSeconds = 0.0;
+  if (!opt.MedialMesh.empty())
+  {
+    const auto start = std::chrono::steady_clock::now();
+    medialMesh = RunMedialMesh(surface, medial, opt, sink);
+    medialMeshSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
   vtkSmartPointer<vtkPolyData> reconstruction;
   double reconstructionSeconds = 0.0;
   if (!opt.Reconstruct.empty())
@@ -817,13 +915,14 @@ int main(int argc, char* argv[])
   }
   if (!opt.Render.empty())
   {
-    RenderPicture(surface, medial, planar ? graph.Get() : nullptr, reconstruction, opt.Render, sink);
+    RenderPicture(surface, medial, planar ? graph.Get() : nullptr, reconstruction, medialMesh, opt.Render, sink);
   }
   if (opt.Stats)
   {
     std::cout << SamplerStats(opt, sampler, medial, planar, seconds)
               << ReconstructionStats(surface, reconstruction, reconstructionSeconds, sampler, opt, sink)
-              << (graph ? GraphStats(graph) : std::string()) << "}" << std::endl;
+              << MedialMeshStats(medialMesh, medialMeshSeconds) << (graph ? GraphStats(graph) : std::string())
+              << "}" << std::endl;
   }
   return 0;
 }

@@ -22,12 +22,16 @@
  *    3 junction (4 or more).
  *
  * Cell data of the 2D medial graph: ArcType (0 linear, 1 parabolic), PolygonId.
+ * Cell data of the 3D medial mesh: MedialCellType (0 isolated ball, 1 curve edge,
+ * 2 seam edge, 3 sheet triangle).
  * Cell data of the sampler's links: InitialLink.
  *
  * Point data on a surface (thickness): Thickness, MedialRadius, MedialCentre, RayThickness.
  *
  * Field data: RequestedSamples, DiscardedSamples, MeanIterations, CappedSamples,
- * EvaluatedSamples, SeedSamples, CoverageReached, MaxCoverageGap.
+ * EvaluatedSamples, SeedSamples, CoverageReached, MaxCoverageGap; the medial mesh's
+ * EulerCharacteristic and Components, and the solid's SolidEulerCharacteristic and
+ * SolidComponents.
  *
  * The distance field of a reconstruction (vtkMedialBallUnion output 1): Distance.
  *
@@ -54,6 +58,10 @@ constexpr const char* SourceCellId = "SourceCellId";
 constexpr const char* GovernorCount = "GovernorCount";
 constexpr const char* MedialPointType = "MedialPointType";
 
+// Cells of the 3D medial mesh (vtkMedialMeshFilter): 0 isolated ball, 1 curve edge,
+// 2 seam edge, 3 sheet triangle.
+constexpr const char* MedialCellType = "MedialCellType";
+
 // Cells of the 2D medial graph and of the sampler's links.
 constexpr const char* ArcType = "ArcType";
 constexpr const char* PolygonId = "PolygonId";
@@ -74,6 +82,11 @@ constexpr const char* EvaluatedSamples = "EvaluatedSamples";
 constexpr const char* SeedSamples = "SeedSamples";
 constexpr const char* CoverageReached = "CoverageReached";
 constexpr const char* MaxCoverageGap = "MaxCoverageGap";
+// The medial mesh's topology, and the solid's when the surface is closed.
+constexpr const char* EulerCharacteristic = "EulerCharacteristic";
+constexpr const char* Components = "Components";
+constexpr const char* SolidEulerCharacteristic = "SolidEulerCharacteristic";
+constexpr const char* SolidComponents = "SolidComponents";
 
 // The reconstruction's field image.
 constexpr const char* Distance = "Distance";

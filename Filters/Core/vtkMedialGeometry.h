@@ -7,7 +7,9 @@
  * the same on a triangle clipped by a half-space (used to ignore contacts in
  * the cap around a sample point), and vector helpers. Internal header; not
  * installed. Every decisive inside/outside comparison goes through here, in
- * double precision. Also the bisection shared by the 2D and 3D samplers.
+ * double precision. Also the bisection shared by the 2D and 3D samplers, and the
+ * orientation, segment-triangle and triangle-triangle crossing tests used to keep
+ * the medial mesh inside the shape.
  */
 #ifndef vtkMedialGeometry_h
 #define vtkMedialGeometry_h
@@ -202,6 +204,84 @@ inline double ClosestPointOnClippedTriangle(const double p[3], const double a[3]
   }
   return best;
 }
+/**
+ * Clips the ray origin + t d, t in [t0, t1], to the axis-aligned box [lo, hi] in the
+ * first `dimensions` coordinates (slab test): narrows [t0, t1] and returns false when
+ * the ray misses the box.
+ */
+inline bool ClipRayToBox(const double lo[], const double hi[], const double origin[],
+  const double d[], int dimensions, double& t0, double& t1)
+{
+  for (int k = 0; k < dimensions; ++k)
+  {
+    if (d[k] == 0.0)
+    {
+      if (origin[k] < lo[k] || origin[k] > hi[k])
+      {
+        return false;
+      }
+      continue;
+    }
+    double a = (lo[k] - origin[k]) / d[k], b = (hi[k] - origin[k]) / d[k];
+    if (a > b)
+    {
+      std::swap(a, b);
+    }
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, b);
+  }
+  return t0 <= t1;
+}
+
+/// Six times the signed volume of (a, b, c, d): positive when d lies on the side of
+/// the plane (a, b, c) that its normal (b - a) x (c - a) points to.
+inline double Orient3D(const double a[3], const double b[3], const double c[3], const double d[3])
+{
+  double ab[3], ac[3], ad[3], n[3];
+  Sub(b, a, ab);
+  Sub(c, a, ac);
+  Sub(d, a, ad);
+  Cross(ab, ac, n);
+  return Dot(n, ad);
+}
+
+/**
+ * True when the segment [p, q] passes through the interior of triangle (a, b, c):
+ * p and q strictly on opposite sides of its plane and the segment's line strictly
+ * inside its three edges. Touching (through an edge or a vertex, or an end point
+ * on the plane) and coplanar segments do not count.
+ */
+inline bool SegmentCrossesTriangle(
+  const double p[3], const double q[3], const double a[3], const double b[3], const double c[3])
+{
+  const double sp = Orient3D(a, b, c, p), sq = Orient3D(a, b, c, q);
+  if (!((sp > 0.0 && sq < 0.0) || (sp < 0.0 && sq > 0.0)))
+  {
+    return false;
+  }
+  // The line pq meets the triangle inside when it turns the same way around each edge.
+  const double e0 = Orient3D(p, q, a, b), e1 = Orient3D(p, q, b, c), e2 = Orient3D(p, q, c, a);
+  return (e0 > 0.0 && e1 > 0.0 && e2 > 0.0) || (e0 < 0.0 && e1 < 0.0 && e2 < 0.0);
+}
+
+/**
+ * True when two triangles cross: an edge of one passes through the interior of the
+ * other (the intersection of two non-coplanar triangles is a segment whose ends lie
+ * on their edges). Touching and coplanar contact do not count.
+ */
+inline bool TrianglesCross(const double* t[3], const double* u[3])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    if (SegmentCrossesTriangle(t[i], t[(i + 1) % 3], u[0], u[1], u[2]) ||
+      SegmentCrossesTriangle(u[i], u[(i + 1) % 3], t[0], t[1], t[2]))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 /**
  * The report's bisection: given empty(lo) and not empty(hi), halves [lo, hi] until
  * it is at most `tolerance` wide and returns the lower end, an empty radius.

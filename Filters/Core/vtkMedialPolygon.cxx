@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialPolygon.h"
+
+#include "vtkMedialGeometry.h"
 #include "vtkMedialPlane.h"
 
 #include "vtkCellArray.h"
@@ -946,26 +948,10 @@ bool vtkMedialPolygon::Intersect(const double origin[2], const double direction[
   // Clip the ray start to the grid box.
   {
     double t0 = 0.0, t1 = HUGE_VAL;
-    for (int k = 0; k < 2; ++k)
-    {
-      const double lo = this->Grid.GetOrigin(k), hi = this->Grid.CellLow(k, this->Grid.GetDimension(k));
-      if (direction[k] == 0.0)
-      {
-        if (origin[k] < lo || origin[k] > hi)
-        {
-          return false;
-        }
-        continue;
-      }
-      double a = (lo - origin[k]) / direction[k], b = (hi - origin[k]) / direction[k];
-      if (a > b)
-      {
-        std::swap(a, b);
-      }
-      t0 = std::max(t0, a);
-      t1 = std::min(t1, b);
-    }
-    if (t0 > t1)
+    const double lo[2] = { this->Grid.GetOrigin(0), this->Grid.GetOrigin(1) };
+    const double hi[2] = { this->Grid.CellLow(0, this->Grid.GetDimension(0)),
+      this->Grid.CellLow(1, this->Grid.GetDimension(1)) };
+    if (!vtkMedialGeometry::ClipRayToBox(lo, hi, origin, direction, 2, t0, t1))
     {
       return false;
     }

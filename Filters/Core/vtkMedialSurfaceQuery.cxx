@@ -353,3 +353,75 @@ void vtkMedialSurfaceQuery::TrianglesWithin(
   std::sort(hits.begin(), hits.end(),
     [](const ClosestHit& a, const ClosestHit& b) { return a.Triangle < b.Triangle; });
 }
+
+int vtkMedialSurfaceQuery::CountCrossings(
+  const double origin[3], const double direction[3], double tMax) const
+{
+  int crossings = 0;
+  double start = 0.0;
+  RayHit hit;
+  // Each hit restarts the ray just past it; the cap only guards against a stall.
+  while (crossings < 100000 && this->Intersect(origin, direction, start, tMax, -1, hit))
+  {
+    ++crossings;
+    start = std::max(hit.Distance, start) + 4.0 * this->Impl->FloatPad;
+  }
+  return crossings;
+}
+
+bool vtkMedialSurfaceQuery::IsInside(const double x[3]) const
+{
+  // Three unit directions far from the axes and from each other.
+  static const double directions[3][3] = { { 0.5773502691896258, 0.6172133998483676,
+                                             0.5345224838248488 },
+    { -0.7071067811865476, 0.2672612419124244, 0.6546536707079771 },
+    { 0.2182178902359924, -0.8728715609439696, 0.4364357804719848 } };
+  const double* b = this->Mesh->Bounds;
+  if (x[0] < b[0] || x[0] > b[1] || x[1] < b[2] || x[1] > b[3] || x[2] < b[4] || x[2] > b[5])
+  {
+    return false;
+  }
+  // The third ray only breaks a tie.
+  const int first = this->CountCrossings(x, directions[0], HUGE_VAL) % 2;
+  const int second = this->CountCrossings(x, directions[1], HUGE_VAL) % 2;
+  if (first == second)
+  {
+    return first == 1;
+  }
+  return this->CountCrossings(x, directions[2], HUGE_VAL) % 2 == 1;
+}
+
+bool vtkMedialSurfaceQuery::SegmentCrossesSurface(const double p[3], const double q[3]) const
+{
+  double lo[3], hi[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    lo[k] = std::min(p[k], q[k]);
+    hi[k] = std::max(p[k], q[k]);
+  }
+  bool crosses = false;
+  this->Tree.VisitTrianglesInBox(lo, hi, [&](vtkIdType, const double* v) {
+    crosses = G::SegmentCrossesTriangle(p, q, v, v + 3, v + 6);
+    return !crosses;
+  });
+  return crosses;
+}
+
+bool vtkMedialSurfaceQuery::TriangleCrossesSurface(
+  const double a[3], const double b[3], const double c[3]) const
+{
+  double lo[3], hi[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    lo[k] = std::min({ a[k], b[k], c[k] });
+    hi[k] = std::max({ a[k], b[k], c[k] });
+  }
+  const double* t[3] = { a, b, c };
+  bool crosses = false;
+  this->Tree.VisitTrianglesInBox(lo, hi, [&](vtkIdType, const double* v) {
+    const double* u[3] = { v, v + 3, v + 6 };
+    crosses = G::TrianglesCross(t, u);
+    return !crosses;
+  });
+  return crosses;
+}

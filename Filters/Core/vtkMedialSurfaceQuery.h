@@ -13,7 +13,10 @@
  * Queries are const and keep their state on the stack, so any number of threads
  * may call them at once (e.g. from an OpenMP loop) after Build().
  *
- * Ray queries always use Embree. Point queries (closest point, contains ball)
+ * Ray queries (and IsInside, CountCrossings) always use Embree. The crossing tests
+ * of segments and triangles (SegmentCrossesSurface, TriangleCrossesSurface) take
+ * their candidates from the internal tree and decide in double precision.
+ * Point queries (closest point, contains ball)
  * use Embree or, with SetPointQueryEngine(OWN_TREE), the internal
  * vtkMedialTriangleBVH; MaximalTangentBall always uses the latter, because its
  * culling sphere moves with the shrinking ball and Embree's cannot.
@@ -106,6 +109,29 @@ public:
    */
   void MaximalTangentBall(
     const double p[3], const double n[3], const ContactFilter& filter, TangentBall& ball) const;
+
+  /**
+   * Number of surface crossings of the ray origin + t * direction (unit), t in
+   * (0, tMax): Embree hits counted one after the other (a hit on an edge shared by
+   * two triangles counts once).
+   */
+  int CountCrossings(const double origin[3], const double direction[3], double tMax) const;
+
+  /**
+   * True when x lies inside the closed surface: the parity of the crossings along
+   * fixed, non-axis directions, two out of three (the third ray only when the first
+   * two disagree), so that a ray grazing an edge cannot decide alone. Outside the
+   * bounding box, false at once. Meaningless for open surfaces.
+   */
+  bool IsInside(const double x[3]) const;
+
+  /// True when the segment [p, q] passes through the interior of a surface triangle
+  /// (vtkMedialGeometry::SegmentCrossesTriangle; touching does not count).
+  bool SegmentCrossesSurface(const double p[3], const double q[3]) const;
+
+  /// True when the triangle (a, b, c) crosses a surface triangle
+  /// (vtkMedialGeometry::TrianglesCross; touching does not count).
+  bool TriangleCrossesSurface(const double a[3], const double b[3], const double c[3]) const;
 
   /// Which BVH answers ClosestPoint and ContainsBall (default OWN_TREE, measured faster; EMBREE is the reference).
   void SetPointQueryEngine(int engine) { this->PointQueryEngine = engine; }

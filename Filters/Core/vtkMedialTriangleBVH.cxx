@@ -915,3 +915,46 @@ void vtkMedialTriangleBVH::VisitWithin(const double x[3], double distance, const
       return true;
     });
 }
+
+bool vtkMedialTriangleBVH::VisitTrianglesInBox(const double lo[3], const double hi[3],
+  const std::function<bool(vtkIdType, const double*)>& visit) const
+{
+  if (this->Nodes.empty())
+  {
+    return true;
+  }
+  double loRel[3], hiRel[3]; // relative to the origin, like the node bounds
+  G::Sub(lo, this->Origin, loRel);
+  G::Sub(hi, this->Origin, hiRel);
+  Scratch& scratch = ThreadScratch();
+  scratch.Stack.push_back(0);
+  while (!scratch.Stack.empty())
+  {
+    const Node& node = this->Nodes[scratch.Stack.back()];
+    scratch.Stack.pop_back();
+    bool overlaps = true;
+    for (int k = 0; k < 3 && overlaps; ++k)
+    {
+      overlaps = node.Lo[k] <= hiRel[k] && loRel[k] <= node.Hi[k];
+    }
+    if (!overlaps)
+    {
+      continue;
+    }
+    if (node.Count == 0)
+    {
+      scratch.Stack.push_back(node.Start);
+      scratch.Stack.push_back(node.Start + 1);
+      continue;
+    }
+    for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
+    {
+      if (!visit(this->TriangleIds[slot], &this->Vertices[9 * slot]))
+      {
+        scratch.Stack.clear();
+        return false;
+      }
+    }
+  }
+  return true;
+}

@@ -173,6 +173,15 @@ bool vtkMedialTriangleMesh::Build(
     return false;
   }
 
+  {
+    std::vector<char> used(this->Points.size() / 3, 0);
+    for (vtkIdType id : this->Triangles)
+    {
+      this->UsedPoints += used[id] ? 0 : 1;
+      used[id] = 1;
+    }
+  }
+
   // Edge uses, sorted so that the uses of one edge are adjacent.
   std::vector<EdgeUse> uses;
   uses.reserve(3 * nt);
@@ -205,6 +214,7 @@ bool vtkMedialTriangleMesh::Build(
     {
       ++j;
     }
+    ++this->Edges;
     if (j - i == 1)
     {
       ++this->BoundaryEdges;

@@ -42,6 +42,12 @@ public:
   const vtkIdType* GetTriangle(vtkIdType t) const { return &this->Triangles[3 * t]; }
   const double* GetNormal(vtkIdType t) const { return &this->Normals[3 * t]; }
 
+  /// V - E + F of the triangulated surface (2 - 2 genus for a closed, connected one).
+  vtkIdType GetEulerCharacteristic() const
+  {
+    return this->UsedPoints - this->Edges + this->GetNumberOfTriangles();
+  }
+
   /// Index of the triangle whose cumulative area bracket holds u in [0, 1).
   vtkIdType PickTriangleByArea(double u) const;
 
@@ -57,6 +63,8 @@ public:
   double TotalArea = 0.0;
   double Volume = 0.0; // enclosed volume after orientation (meaningful when closed)
   vtkIdType BoundaryEdges = 0;
+  vtkIdType Edges = 0;      // distinct edges of the kept triangles
+  vtkIdType UsedPoints = 0; // points referenced by the kept triangles
   vtkIdType NonManifoldEdges = 0;
   vtkIdType NonOrientableComponents = 0;
   vtkIdType DegenerateTriangles = 0;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialBallUnion.h"
 #include "vtkMedialArrayNames.h"
+#include "vtkMedialEnvelope.h"
 #include "vtkMedialPipeline.h"
 #include "vtkMedialPlane.h"
 #include "vtkMedialUniformGrid.h"
@@ -21,6 +22,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTriangleStrip.h"
 #include "vtkSmartPointer.h"
 
 #include <omp.h>
@@ -29,6 +31,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <set>
 #include <numeric>
 #include <sstream>
 #include <string>
@@ -69,6 +73,9 @@ struct Candidate
 };
 
 constexpr int SuperBlock = 16;
+// MEDIAL_MESH: edges and triangles reaching less than this many voxels beyond their
+// vertex balls are left out (the surface moves by at most that much).
+constexpr double EnvelopeTolerance = 0.1;
 
 // Squared distance bounds from centre c to the axis-aligned box [lo, hi]: nearest and
 // farthest.
@@ -100,6 +107,75 @@ inline double BoxBoxDistance(
   }
   return std::sqrt(d2);
 }
+
+// The envelope of a medial mesh (MEDIAL_MESH primitives): isolated balls, edges and
+// triangles over the vertex balls. Each primitive lies in its bounding ball (which also
+// places it in the superblock bins) and contains its largest vertex ball: over a box,
+// these bound its field cheaply, as for balls. Its field is also 1-Lipschitz (a minimum
+// of distances minus constants): within its value at the box's centre plus or minus
+// the half diagonal.
+struct Envelope
+{
+  std::vector<Ball> Vertices;                        // the vertex balls, in the grid's frame
+  std::vector<std::array<vtkIdType, 3>> Primitives; // vertex ids; -1 when unused
+  std::vector<Ball> Bounds;
+  std::vector<Ball> Inner;
+
+  void Add(const vtkIdType* ids, int n)
+  {
+    std::array<vtkIdType, 3> p = { -1, -1, -1 };
+    Ball bound = { { 0, 0, 0 }, 0.0 };
+    for (int j = 0; j < n; ++j)
+    {
+      p[j] = ids[j];
+      for (int k = 0; k < 3; ++k)
+      {
+        bound.C[k] += this->Vertices[ids[j]].C[k] / n;
+      }
+    }
+    vtkIdType inner = ids[0];
+    for (int j = 0; j < n; ++j)
+    {
+      const Ball& v = this->Vertices[ids[j]];
+      bound.R = std::max(bound.R, std::sqrt(vtkMath::Distance2BetweenPoints(bound.C, v.C)) + v.R);
+      inner = v.R > this->Vertices[inner].R ? ids[j] : inner;
+    }
+    this->Primitives.push_back(p);
+    this->Bounds.push_back(bound);
+    this->Inner.push_back(this->Vertices[inner]);
+  }
+
+  /// The field of primitive i at x: a ball, a cone or a slab (vtkMedialEnvelope.h).
+  /// With `interiorOnly`, a triangle gives its slab only where its minimum is inside it
+  /// (+inf elsewhere): enough for a voxel's value, since its sides are primitives or
+  /// within the tolerance of their balls.
+  double Field(vtkIdType i, const double x[3], bool interiorOnly = false) const
+  {
+    const auto& p = this->Primitives[i];
+    const Ball& a = this->Vertices[p[0]];
+    if (p[1] < 0)
+    {
+      return vtkMedialEnvelope::BallField(x, a.C, a.R);
+    }
+    const Ball& b = this->Vertices[p[1]];
+    if (p[2] < 0)
+    {
+      return vtkMedialEnvelope::EdgeField(x, a.C, a.R, b.C, b.R);
+    }
+    // The slab where its minimum is inside, else the nearest side: the whole triangle,
+    // a continuous (1-Lipschitz) field.
+    const Ball& c = this->Vertices[p[2]];
+    const double* centres[3] = { a.C, b.C, c.C };
+    const double radii[3] = { a.R, b.R, c.R };
+    if (interiorOnly)
+    {
+      return vtkMedialEnvelope::TriangleField(x, centres, radii);
+    }
+    return std::min({ vtkMedialEnvelope::TriangleField(x, centres, radii),
+      vtkMedialEnvelope::EdgeField(x, a.C, a.R, b.C, b.R), vtkMedialEnvelope::EdgeField(x, b.C, b.R, c.C, c.R),
+      vtkMedialEnvelope::EdgeField(x, a.C, a.R, c.C, c.R) });
+  }
+};
 
 // Keeps the candidates of `from` that can give the clamped field inside box [lo, hi]:
 // those with lower bound below the band B and not above U, the smallest upper bound.
@@ -139,17 +215,74 @@ double PruneCandidates(const std::vector<Ball>& balls, const std::vector<Candida
   return upper;
 }
 
+// The same for the envelope's primitives: first the cheap bounds of their bounding and
+// inner balls (tight for a ball), then, for edges and triangles still in, their value
+// at the box's centre plus or minus its half diagonal.
+double PruneEnvelope(const Envelope& envelope, const std::vector<Candidate>& from, const double lo[3],
+  const double hi[3], double band, double slack, std::vector<Candidate>& kept)
+{
+  kept.clear();
+  double upper = std::numeric_limits<double>::infinity();
+  for (const Candidate& candidate : from)
+  {
+    const Ball& bound = envelope.Bounds[candidate.Ball];
+    const Ball& inner = envelope.Inner[candidate.Ball];
+    double nearest2, farthest2, unused;
+    BoxDistanceBounds2(lo, hi, bound.C, nearest2, unused);
+    const double lower = std::sqrt(nearest2) - bound.R - slack;
+    if (lower < band)
+    {
+      BoxDistanceBounds2(lo, hi, inner.C, unused, farthest2);
+      upper = std::min(upper, std::sqrt(farthest2) - inner.R + slack);
+      kept.push_back({ lower, candidate.Ball });
+    }
+  }
+  double centre[3], half2 = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    centre[k] = 0.5 * (lo[k] + hi[k]);
+    half2 += 0.25 * (hi[k] - lo[k]) * (hi[k] - lo[k]);
+  }
+  const double half = std::sqrt(half2) + slack;
+  size_t count = 0;
+  for (const Candidate& candidate : kept)
+  {
+    if (candidate.Lower >= upper || envelope.Primitives[candidate.Ball][1] < 0)
+    {
+      // A ball's bounds are already tight; only past the upper bound is it dropped.
+      if (candidate.Lower <= upper)
+      {
+        kept[count++] = candidate;
+      }
+      continue;
+    }
+    const double value = envelope.Field(candidate.Ball, centre);
+    const double lower = std::max(candidate.Lower, value - half);
+    if (lower < band && lower <= upper)
+    {
+      upper = std::min(upper, value + half);
+      kept[count++] = { lower, candidate.Ball };
+    }
+  }
+  kept.resize(count);
+  kept.erase(std::remove_if(kept.begin(), kept.end(),
+               [upper](const Candidate& c) { return c.Lower > upper; }),
+    kept.end());
+  return upper;
+}
+
 // Fills the clamped field over boxes of grid points, refining each box into halves
 // while its candidate list is long: each level tightens the upper bound and so prunes
 // the list for the next.
 struct FieldFiller
 {
-  const std::vector<Ball>& Balls;
+  const std::vector<Ball>& Balls; // the balls, or the envelope's bounding balls
   const Grid& G;
   double Band;
   double Slack;
   double* Values;
   vtkIdType SliceSize;
+  const Envelope* Env; // null: the union of Balls
 
   static constexpr int LeafSize = 4;      // voxels per side at which refinement stops
   static constexpr size_t ShortList = 6; // candidates below which refinement stops
@@ -182,7 +315,9 @@ struct FieldFiller
       hi[k] = this->PointOf(k, last[k]);
       longest = std::max(longest, last[k] - first[k] + 1);
     }
-    const double upper = PruneCandidates(this->Balls, parent, lo, hi, this->Band, this->Slack, kept);
+    const double upper = this->Env
+      ? PruneEnvelope(*this->Env, parent, lo, hi, this->Band, this->Slack, kept)
+      : PruneCandidates(this->Balls, parent, lo, hi, this->Band, this->Slack, kept);
     if (kept.empty())
     {
       this->Fill(first, last, this->Band); // f >= B everywhere in the box
@@ -223,6 +358,11 @@ struct FieldFiller
     std::sort(kept.begin(), kept.end(), [](const Candidate& x, const Candidate& y) {
       return x.Lower < y.Lower || (x.Lower == y.Lower && x.Ball < y.Ball);
     });
+    if (this->Env)
+    {
+      this->FillEnvelope(kept, first, last);
+      return;
+    }
     const double band = this->Band;
     for (int z = first[2]; z <= last[2]; ++z)
     {
@@ -250,6 +390,34 @@ struct FieldFiller
             {
               best = std::min(best, std::sqrt(d2) - ball.R);
             }
+          }
+          row[x] = std::max(-band, best);
+        }
+      }
+    }
+  }
+
+  // A leaf of the envelope: the exact minimum over the primitives at each voxel, in
+  // increasing lower bound so that it can stop early.
+  void FillEnvelope(const std::vector<Candidate>& kept, const int first[3], const int last[3]) const
+  {
+    const double band = this->Band;
+    for (int z = first[2]; z <= last[2]; ++z)
+    {
+      for (int y = first[1]; y <= last[1]; ++y)
+      {
+        double* row = this->Values + z * this->SliceSize + static_cast<vtkIdType>(y) * this->G.Dims[0];
+        for (int x = first[0]; x <= last[0]; ++x)
+        {
+          const double p[3] = { this->PointOf(0, x), this->PointOf(1, y), this->PointOf(2, z) };
+          double best = band;
+          for (const Candidate& c : kept)
+          {
+            if (c.Lower >= best || best <= -band)
+            {
+              break;
+            }
+            best = std::min(best, this->Env->Field(c.Ball, p, true));
           }
           row[x] = std::max(-band, best);
         }
@@ -403,6 +571,83 @@ vtkSmartPointer<vtkCellArray> ChainSegments(vtkPolyData* segments)
     polylines->InsertNextCell(static_cast<vtkIdType>(chain.size()), chain.data());
   }
   return polylines;
+}
+
+// The envelope's primitives from the input's cells: a ball per point, a triangle per
+// triangle (polygons fanned, strips split), an edge per line segment and triangle side
+// (once each). Edges and triangles that reach no further than `tolerance` beyond their
+// vertex balls (vtkMedialEnvelope's excess) are left out.
+void GatherPrimitives(vtkPolyData* mesh, double tolerance, Envelope& envelope)
+{
+  const vtkIdType n = static_cast<vtkIdType>(envelope.Vertices.size());
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    envelope.Add(&i, 1);
+  }
+  const auto& v = envelope.Vertices;
+  std::set<std::pair<vtkIdType, vtkIdType>> edges;
+  std::vector<std::array<vtkIdType, 2>> segments;
+  auto addTriangle = [&](vtkIdType a, vtkIdType b, vtkIdType c) {
+    const vtkIdType ids[3] = { a, b, c };
+    const double* centres[3] = { v[a].C, v[b].C, v[c].C };
+    const double radii[3] = { v[a].R, v[b].R, v[c].R };
+    if (vtkMedialEnvelope::TriangleExcess(centres, radii) > tolerance)
+    {
+      envelope.Add(ids, 3);
+    }
+    segments.push_back({ a, b });
+    segments.push_back({ b, c });
+    segments.push_back({ c, a });
+  };
+  vtkNew<vtkCellArray> triangles;
+  if (mesh)
+  {
+    for (vtkCellArray* cells : { mesh->GetLines(), mesh->GetPolys(), mesh->GetStrips() })
+    {
+      auto it = vtk::TakeSmartPointer(cells->NewIterator());
+      for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+      {
+        vtkIdType npts;
+        const vtkIdType* ids;
+        it->GetCurrentCell(npts, ids);
+        if (cells == mesh->GetLines())
+        {
+          for (vtkIdType k = 0; k + 1 < npts; ++k)
+          {
+            segments.push_back({ ids[k], ids[k + 1] });
+          }
+        }
+        else if (cells == mesh->GetPolys())
+        {
+          for (vtkIdType k = 1; k + 1 < npts; ++k)
+          {
+            addTriangle(ids[0], ids[k], ids[k + 1]);
+          }
+        }
+        else if (npts >= 3)
+        {
+          vtkTriangleStrip::DecomposeStrip(static_cast<int>(npts), ids, triangles);
+        }
+      }
+    }
+    auto it = vtk::TakeSmartPointer(triangles->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType npts;
+      const vtkIdType* ids;
+      it->GetCurrentCell(npts, ids);
+      addTriangle(ids[0], ids[1], ids[2]);
+    }
+  }
+  for (const auto& segment : segments)
+  {
+    const vtkIdType a = segment[0], b = segment[1];
+    if (a != b && edges.emplace(std::min(a, b), std::max(a, b)).second &&
+      vtkMedialEnvelope::EdgeExcess(v[a].C, v[a].R, v[b].C, v[b].R) > tolerance)
+    {
+      envelope.Add(segment.data(), 2);
+    }
+  }
 }
 
 // Signed volume of a closed triangle surface (positive when oriented outward).
@@ -668,13 +913,14 @@ void ModelBox(const double bounds[6], int dimension, const PlaneFrame& frame, do
 }
 
 // Pass 4: the clamped field over the grid, superblock by superblock, in z-slabs
-// (parallel within a slab). False when aborted.
+// (parallel within a slab); `balls` are the envelope's bounding balls when there is one.
+// False when aborted.
 bool FillField(vtkMedialBallUnion* self, const std::vector<Ball>& balls, const Grid& grid, double band,
-  double slack, int threads, double* values)
+  double slack, int threads, double* values, const Envelope* envelope)
 {
   const CentreBins bins(balls, grid, band);
   const vtkIdType sliceSize = static_cast<vtkIdType>(grid.Dims[0]) * grid.Dims[1];
-  const FieldFiller filler{ balls, grid, band, slack, values, sliceSize };
+  const FieldFiller filler{ balls, grid, band, slack, values, sliceSize, envelope };
   const int superPerLayer = bins.GetSupers(0) * bins.GetSupers(1);
   for (int sz = 0; sz < bins.GetSupers(2) && !self->GetAbortExecute(); ++sz)
   {
@@ -1034,12 +1280,21 @@ int vtkMedialBallUnion::RequestData(
   // Rounding margin for the bounds so that pruning never drops the minimising ball.
   const double slack = 1e-12 * (diagonal + std::fabs(lo[0]) + std::fabs(lo[1]) + std::fabs(lo[2]));
 
-  // 4. Field.
+  // 4. Field. The envelope's primitives are binned and pruned through their bounding
+  // balls.
+  std::unique_ptr<Envelope> envelope;
+  if (this->Primitives == MEDIAL_MESH)
+  {
+    envelope.reset(new Envelope);
+    envelope->Vertices = balls;
+    GatherPrimitives(vtkPolyData::SafeDownCast(input), EnvelopeTolerance * voxelSize, *envelope);
+  }
   vtkNew<vtkDoubleArray> field;
   field->SetName(vtkMedialArrayNames::Distance);
   field->SetNumberOfTuples(static_cast<vtkIdType>(grid.Dims[0]) * grid.Dims[1] * grid.Dims[2]);
   const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
-  if (!FillField(this, balls, grid, band, slack, threads, field->GetPointer(0)))
+  if (!FillField(this, envelope ? envelope->Bounds : balls, grid, band, slack, threads,
+        field->GetPointer(0), envelope.get()))
   {
     return 1; // aborted: leave the outputs empty
   }
@@ -1080,6 +1335,7 @@ void vtkMedialBallUnion::PrintSelf(ostream& os, vtkIndent indent)
      << this->ModelBounds[5] << (this->HasModelBounds() ? "" : " (not set: the union's box)") << "\n";
   os << indent << "BandWidth: " << this->BandWidth << "\n";
   os << indent << "Dimension: " << this->Dimension << "\n";
+  os << indent << "Primitives: " << (this->Primitives == MEDIAL_MESH ? "MedialMesh" : "Balls") << "\n";
   os << indent << "MaximumNumberOfVoxels: " << this->MaximumNumberOfVoxels << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "OutputDimension: " << this->OutputDimension << "\n";

@@ -311,10 +311,27 @@ void MakePlanar(vtkPolyData* out, int shape, const double lengths[3], double rad
   EmitLoops(out, loops);
 }
 
-void MakeJack(vtkPolyData* out, int resolution)
+// Genus rings of ring radius 1 and tube radius 0.35 in the z = 0 plane, centres 1.7
+// apart along x, blended where neighbours overlap: a solid of that genus.
+double RingsDistance(const double p[3], int genus)
 {
-  const double lo[3] = { -2.0, -0.8, -1.1 }, hi[3] = { 2.0, 1.5, 1.1 };
-  const double h = (hi[0] - lo[0]) / (4.0 * resolution);
+  double d = HUGE_VAL;
+  for (int i = 0; i < genus; ++i)
+  {
+    const double x = p[0] - 1.7 * (i - 0.5 * (genus - 1));
+    const double ring = std::sqrt(x * x + p[1] * p[1]) - 1.0;
+    const double tube = std::sqrt(ring * ring + p[2] * p[2]) - 0.35;
+    d = i == 0 ? tube : SmoothMin(d, tube, 0.2);
+  }
+  return d;
+}
+
+// The zero level of a signed distance sampled on a grid of 4 * resolution cells along
+// the longest side of the box [lo, hi] (vtkFlyingEdges3D).
+template <class Distance>
+void ContourDistance(vtkPolyData* out, const double lo[3], const double hi[3], int resolution, Distance distance)
+{
+  const double h = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] }) / (4.0 * resolution);
   int dims[3];
   for (int i = 0; i < 3; ++i)
   {
@@ -335,7 +352,7 @@ void MakeJack(vtkPolyData* out, int resolution)
       for (int i = 0; i < dims[0]; ++i)
       {
         const double p[3] = { lo[0] + i * h, lo[1] + j * h, lo[2] + k * h };
-        field->SetValue(id++, static_cast<float>(JackDistance(p)));
+        field->SetValue(id++, static_cast<float>(distance(p)));
       }
     }
   }
@@ -348,6 +365,19 @@ void MakeJack(vtkPolyData* out, int resolution)
   contour->ComputeScalarsOff();
   contour->Update();
   out->ShallowCopy(contour->GetOutput());
+}
+
+void MakeJack(vtkPolyData* out, int resolution)
+{
+  const double lo[3] = { -2.0, -0.8, -1.1 }, hi[3] = { 2.0, 1.5, 1.1 };
+  ContourDistance(out, lo, hi, resolution, JackDistance);
+}
+
+void MakeRings(vtkPolyData* out, int genus, int resolution)
+{
+  const double halfWidth = 0.85 * (genus - 1) + 1.5;
+  const double lo[3] = { -halfWidth, -1.5, -0.5 }, hi[3] = { halfWidth, 1.5, 0.5 };
+  ContourDistance(out, lo, hi, resolution, [genus](const double p[3]) { return RingsDistance(p, genus); });
 }
 }
 
@@ -382,6 +412,9 @@ int vtkMedialShapeSource::RequestData(vtkInformation*, vtkInformationVector**, v
     case STAR:
       MakePlanar(output, this->Shape, this->BoxLengths, this->Radius, this->Resolution);
       return 1;
+    case RINGS:
+      MakeRings(output, this->Genus, this->Resolution);
+      return 1;
     default:
       MakeJack(output, this->Resolution);
       return 1;
@@ -397,6 +430,7 @@ void vtkMedialShapeSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Resolution: " << this->Resolution << "\n";
   os << indent << "Radius: " << this->Radius << "\n";
   os << indent << "Length: " << this->Length << "\n";
+  os << indent << "Genus: " << this->Genus << "\n";
   os << indent << "BoxLengths: " << this->BoxLengths[0] << " " << this->BoxLengths[1] << " "
      << this->BoxLengths[2] << "\n";
 }

@@ -16,6 +16,9 @@
  *    Resolution x Resolution squares of two triangles.
  *  - CAPSULE: a cylinder of radius Radius and length Length along z with
  *    hemispherical caps, 4 * Resolution segments around.
+ *  - RINGS: Genus rings (ring radius 1, tube radius 0.35) side by side along x in the
+ *    z = 0 plane, 1.7 apart, blended where they overlap: a solid of genus Genus, for
+ *    topology tests. Contoured like JACK.
  *
  * Planar shapes in the z = 0 plane, as polygon cells (for vtkMedialJunctionFilter
  * and the 2D mode of vtkMedialAxisSampler; Resolution is ignored unless stated):
@@ -51,12 +54,13 @@ public:
     L_SHAPE = 4,
     RECTANGLE = 5,
     SQUARE_FRAME = 6,
-    STAR = 7
+    STAR = 7,
+    RINGS = 8
   };
 
   ///@{
   /// Which shape to generate (default JACK).
-  vtkSetClampMacro(Shape, int, JACK, STAR);
+  vtkSetClampMacro(Shape, int, JACK, RINGS);
   vtkGetMacro(Shape, int);
   void SetShapeToJack() { this->SetShape(JACK); }
   void SetShapeToSphere() { this->SetShape(SPHERE); }
@@ -66,8 +70,9 @@ public:
   void SetShapeToRectangle() { this->SetShape(RECTANGLE); }
   void SetShapeToSquareFrame() { this->SetShape(SQUARE_FRAME); }
   void SetShapeToStar() { this->SetShape(STAR); }
+  void SetShapeToRings() { this->SetShape(RINGS); }
   /// True for the planar (2D) shapes.
-  static bool IsPlanar(int shape) { return shape >= L_SHAPE; }
+  static bool IsPlanar(int shape) { return shape >= L_SHAPE && shape <= STAR; }
   ///@}
 
   ///@{
@@ -89,6 +94,12 @@ public:
   ///@}
 
   ///@{
+  /// Number of rings of RINGS, its genus (default 1).
+  vtkSetClampMacro(Genus, int, 1, 64);
+  vtkGetMacro(Genus, int);
+  ///@}
+
+  ///@{
   /// Side lengths of the BOX (default 3, 2, 1).
   vtkSetVector3Macro(BoxLengths, double);
   vtkGetVector3Macro(BoxLengths, double);
@@ -104,6 +115,7 @@ protected:
   int Resolution = 16;
   double Radius = 1.0;
   double Length = 2.0;
+  int Genus = 1;
   double BoxLengths[3] = { 3.0, 2.0, 1.0 };
 
 private:

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Writing a medial mesh and reading it back gives the same doubles bit for bit,
 // the same edges and faces; polylines, strips and polygons are split as
-// documented; extra columns on 'v' lines, comments and CRLF are accepted.
+// documented; the file is in Q-MAT's clean form (every triangle side an edge record,
+// each edge once, 0-based, no comments); extra columns on 'v' lines, comments and
+// CRLF are accepted.
 #include "ReaderTestUtilities.h"
 
 #include "vtkCellArray.h"
@@ -116,7 +118,8 @@ int CheckExactRoundTrip(const TempDir& dir)
   const std::string first = dir.File("exact.ma");
   MEDIAL_CHECK(Write(pd, first), "writing exact.ma failed");
   const std::string text = Slurp(first);
-  MEDIAL_CHECK(text.rfind("6 3 3\n", 0) == 0, "header is not '6 3 3': %s", text.c_str());
+  // 3 line segments, then the sides not written yet: 2-0; 3-4, 4-2; 3-5, 5-4.
+  MEDIAL_CHECK(text.rfind("6 8 3\n", 0) == 0, "header is not '6 8 3': %s", text.c_str());
   const ReadResult back = Read(first);
   MEDIAL_CHECK(back.Errors == 0, "reading exact.ma: %s", back.Text.c_str());
   vtkPolyData* out = back.Data;
@@ -135,7 +138,9 @@ int CheckExactRoundTrip(const TempDir& dir)
     MEDIAL_CHECK(SameBits(radius->GetComponent(i, 0), balls[i][3]), "radius %lld: %.17g != %.17g",
       (long long)i, radius->GetComponent(i, 0), balls[i][3]);
   }
-  MEDIAL_CHECK(CellsOf(out->GetLines()) == Cells({ { 0, 1 }, { 1, 2 }, { 2, 3 } }), "edges differ");
+  MEDIAL_CHECK(CellsOf(out->GetLines()) ==
+      Cells({ { 0, 1 }, { 1, 2 }, { 2, 3 }, { 2, 0 }, { 3, 4 }, { 4, 2 }, { 3, 5 }, { 5, 4 } }),
+    "edges differ");
   MEDIAL_CHECK(CellsOf(out->GetPolys()) == Cells({ { 0, 1, 2 }, { 2, 3, 4 }, { 4, 3, 5 } }),
     "faces differ");
   MEDIAL_CHECK(out->GetNumberOfStrips() == 0 && out->GetNumberOfVerts() == 0, "extra cells");
@@ -190,7 +195,14 @@ int CheckRandomValues(const TempDir& dir)
     MEDIAL_CHECK(same, "random ball %lld changed", (long long)i);
   }
   MEDIAL_CHECK(CellsOf(back.Data->GetPolys()) == CellsOf(pd->GetPolys()), "random faces differ");
-  MEDIAL_CHECK(CellsOf(back.Data->GetLines()) == CellsOf(pd->GetLines()), "random edges differ");
+  // The lines (each a side c-a), then the two other sides of each triangle.
+  Cells expectedEdges = CellsOf(pd->GetLines());
+  for (const auto& f : CellsOf(pd->GetPolys()))
+  {
+    expectedEdges.push_back({ f[0], f[1] });
+    expectedEdges.push_back({ f[1], f[2] });
+  }
+  MEDIAL_CHECK(CellsOf(back.Data->GetLines()) == expectedEdges, "random edges differ");
 
   // Float storage: the written doubles are the floats, exactly.
   vtkNew<vtkPoints> floatPoints;
@@ -238,7 +250,9 @@ int CheckPolygonSplitting(const TempDir& dir)
   MEDIAL_CHECK(back.Errors == 0, "reading polygons.ma: %s", back.Text.c_str());
   const Cells faces = CellsOf(back.Data->GetPolys());
   MEDIAL_CHECK(faces.size() == 2 + 3, "%zu triangles, expected 5", faces.size());
-  MEDIAL_CHECK(back.Data->GetNumberOfLines() == 0, "the one-point line was written");
+  // The edges are the 5 + 7 distinct sides of the triangles; the one-point line is not one.
+  MEDIAL_CHECK(back.Data->GetNumberOfLines() == 12, "%lld edges, expected 12",
+    (long long)back.Data->GetNumberOfLines());
   const double expectedArea[2] = { 4.0, 2.5 };
   for (int polygon = 0; polygon < 2; ++polygon)
   {
@@ -261,6 +275,42 @@ int CheckPolygonSplitting(const TempDir& dir)
     MEDIAL_CHECK(std::fabs(area - expectedArea[polygon]) < 1e-12, "polygon %d: area %g, expected %g",
       polygon, area, expectedArea[polygon]);
   }
+  return EXIT_SUCCESS;
+}
+
+// The clean form Q-MAT reads, exactly: two triangles sharing a side, a dangling edge
+// written twice, a vertex cell (not an edge): every side once, lines first.
+int CheckQMatForm(const TempDir& dir)
+{
+  const std::vector<std::array<double, 4>> balls = { { 0, 0, 0, 1 }, { 1, 0, 0, 0.5 },
+    { 0, 1, 0, 0.25 }, { 1, 1, 0, 2 }, { 2, 2, 0, 0 } };
+  vtkNew<vtkPoints> points;
+  auto pd = MakeMedialMesh(balls, points);
+  Add(pd->GetLines(), { 3, 4 });
+  Add(pd->GetLines(), { 4, 3 });
+  Add(pd->GetPolys(), { 0, 1, 2 });
+  Add(pd->GetPolys(), { 2, 1, 3 });
+  vtkNew<vtkCellArray> verts;
+  Add(verts, { 4 });
+  pd->SetVerts(verts);
+  const std::string path = dir.File("qmat.ma");
+  MEDIAL_CHECK(Write(pd, path), "writing qmat.ma failed");
+  const std::string expected = "5 6 2\n"
+                               "v 0 0 0 1\n"
+                               "v 1 0 0 0.5\n"
+                               "v 0 1 0 0.25\n"
+                               "v 1 1 0 2\n"
+                               "v 2 2 0 0\n"
+                               "e 3 4\n"
+                               "e 0 1\n"
+                               "e 1 2\n"
+                               "e 2 0\n"
+                               "e 1 3\n"
+                               "e 3 2\n"
+                               "f 0 1 2\n"
+                               "f 2 1 3\n";
+  const std::string text = Slurp(path);
+  MEDIAL_CHECK(text == expected, "qmat.ma is\n%s", text.c_str());
   return EXIT_SUCCESS;
 }
 
@@ -303,7 +353,8 @@ int TestMedialMeshRoundTrip(int, char*[])
 {
   TempDir dir;
   MEDIAL_CHECK(dir.Valid(), "cannot create a temporary folder");
-  for (auto check : { CheckExactRoundTrip, CheckRandomValues, CheckPolygonSplitting, CheckForeignFile })
+  for (auto check :
+    { CheckExactRoundTrip, CheckRandomValues, CheckPolygonSplitting, CheckQMatForm, CheckForeignFile })
   {
     if (check(dir) != EXIT_SUCCESS)
     {

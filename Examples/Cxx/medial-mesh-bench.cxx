@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// medial-mesh-bench: the medial mesh (vtkMedialMeshFilter) of the shared meshes.
+//
+// For each mesh: vtkMedialAxisSampler with its defaults (10000 samples, theta 45,
+// one-pass) on T threads (default 2), then vtkMedialMeshFilter on those balls, both
+// timed (wall); the mesh's V, E, F, Euler characteristic and components beside the
+// solid's; the balls dropped and the largest radius reduction (inscribing). Prints a
+// table. Then the shape rebuilt from the mesh by vtkMedialBallUnion at N^3 grid points:
+// the interpolated envelope (MEDIAL_MESH primitives) and, for comparison, the union of
+// the same (inscribed) balls, each against the original with vtkMedialReconstructionError
+// (vertex to surface, both directions, and the two-sided area measure; % of the
+// diagonal).
+// Not a test: it checks nothing.
+//
+// usage: medial-mesh-bench [--threads T] [--samples N] [--resolution N] [--protrusion E] [MESH...]
+//        (--protrusion: the filter's ProtrusionTolerance; -1 turns the pruning off)
+//        (default: the five meshes of ../shared/data/meshes)
+
+#include "vtkMedialArrayNames.h"
+#include "vtkMedialAxisSampler.h"
+#include "vtkMedialBallUnion.h"
+#include "vtkMedialFileReader.h"
+#include "vtkMedialMeshFilter.h"
+#include "vtkMedialReconstructionError.h"
+
+#include "vtkDataArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <sys/stat.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace
+{
+double Seconds(std::chrono::steady_clock::time_point since)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+// Points of the mesh with the given MedialPointType.
+vtkIdType CountType(vtkPolyData* mesh, int type)
+{
+  vtkDataArray* types = mesh->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
+  vtkIdType n = 0;
+  for (vtkIdType i = 0; types && i < types->GetNumberOfTuples(); ++i)
+  {
+    n += static_cast<int>(types->GetTuple1(i)) == type;
+  }
+  return n;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  int threads = 2;
+  vtkIdType samples = 10000;
+  int resolution = 128;
+  double protrusion = -2.0; // below -1: the filter's default
+  std::vector<std::string> meshes;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if (a == "--threads" && i + 1 < argc)
+    {
+      threads = std::atoi(argv[++i]);
+    }
+    else if (a == "--samples" && i + 1 < argc)
+    {
+      samples = std::atoll(argv[++i]);
+    }
+    else if (a == "--resolution" && i + 1 < argc)
+    {
+      resolution = std::atoi(argv[++i]);
+    }
+    else if (a == "--protrusion" && i + 1 < argc)
+    {
+      protrusion = std::atof(argv[++i]);
+    }
+    else if (!a.empty() && a[0] == '-')
+    {
+      std::printf("usage: medial-mesh-bench [--threads T] [--samples N] [--resolution N] [--protrusion E] "
+                  "[MESH...]\n");
+      return a == "-h" || a == "--help" ? 0 : 1;
+    }
+    else
+    {
+      meshes.push_back(a);
+    }
+  }
+  if (meshes.empty())
+  {
+    for (const char* name : { "horse.ply", "rocker-arm.obj", "fandisk.obj", "spot.obj", "stanford-bunny.obj" })
+    {
+      const std::string path = std::string(MEDIALAXIS_SHARED_MESH_DIR) + "/" + name;
+      struct stat st;
+      if (stat(path.c_str(), &st) == 0)
+      {
+        meshes.push_back(path);
+      }
+    }
+  }
+  double load[3] = { -1, -1, -1 };
+  if (FILE* f = std::fopen("/proc/loadavg", "r"))
+  {
+    if (std::fscanf(f, "%lf %lf %lf", &load[0], &load[1], &load[2]) != 3)
+    {
+      load[0] = -1;
+    }
+    std::fclose(f);
+  }
+  std::printf("threads %d, %lld samples, sampler defaults otherwise; load average at start %.2f %.2f "
+              "%.2f; times in seconds (wall)\n",
+    threads, static_cast<long long>(samples), load[0], load[1], load[2]);
+  std::printf("%-20s %6s %6s %6s %4s %5s %8s %5s %6s %6s %7s %9s %8s %8s %8s\n", "mesh", "V", "E", "F",
+    "chi", "comp", "solid_chi", "solid", "seams", "junct", "dropped", "shrink%", "sample_s", "mesh_s",
+    "total_s");
+  struct Error
+  {
+    double Max[2], Mean[2], Area, Seconds;
+  };
+  struct ErrorRow
+  {
+    std::string Name;
+    Error Envelope, Union;
+  };
+  std::vector<ErrorRow> errors;
+  for (const std::string& path : meshes)
+  {
+    vtkNew<vtkMedialFileReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    vtkPolyData* surface = reader->GetOutput();
+    const std::string name = path.substr(path.find_last_of('/') + 1);
+    vtkNew<vtkMedialAxisSampler> sampler;
+    sampler->SetInputData(surface);
+    sampler->SetNumberOfSamples(samples);
+    sampler->SetNumberOfThreads(threads);
+    auto start = std::chrono::steady_clock::now();
+    sampler->Update();
+    const double sampleSeconds = Seconds(start);
+    vtkNew<vtkMedialMeshFilter> filter;
+    filter->SetInputData(surface);
+    filter->SetBallsConnection(sampler->GetOutputPort());
+    filter->SetNumberOfThreads(threads);
+    if (protrusion >= -1.0)
+    {
+      filter->SetProtrusionTolerance(protrusion);
+    }
+    start = std::chrono::steady_clock::now();
+    filter->Update();
+    const double meshSeconds = Seconds(start);
+    vtkPolyData* mesh = filter->GetOutput();
+    std::printf("%-20s %6lld %6lld %6lld %4lld %5lld %8s %5s %6lld %6lld %7lld %9.4f %8.2f %8.2f %8.2f\n",
+      name.c_str(), static_cast<long long>(mesh->GetNumberOfPoints()),
+      static_cast<long long>(filter->GetNumberOfEdges()), static_cast<long long>(mesh->GetNumberOfPolys()),
+      static_cast<long long>(filter->GetEulerCharacteristic()),
+      static_cast<long long>(filter->GetNumberOfComponents()),
+      filter->GetHasSolidTopology() ? std::to_string(filter->GetSolidEulerCharacteristic()).c_str() : "-",
+      filter->GetHasSolidTopology() ? std::to_string(filter->GetSolidComponents()).c_str() : "-",
+      static_cast<long long>(CountType(mesh, 2)), static_cast<long long>(CountType(mesh, 3)),
+      static_cast<long long>(filter->GetDroppedBalls()), 100 * filter->GetMaximumRadiusReduction(),
+      sampleSeconds, meshSeconds, sampleSeconds + meshSeconds);
+    std::fflush(stdout);
+
+    ErrorRow row{ name, {}, {} };
+    for (int primitives : { vtkMedialBallUnion::MEDIAL_MESH, vtkMedialBallUnion::BALLS })
+    {
+      vtkNew<vtkMedialBallUnion> rebuild;
+      rebuild->SetInputData(mesh);
+      rebuild->SetPrimitives(primitives);
+      rebuild->SetSampleDimensions(resolution, resolution, resolution);
+      rebuild->SetNumberOfThreads(threads);
+      start = std::chrono::steady_clock::now();
+      rebuild->Update();
+      Error& e = primitives == vtkMedialBallUnion::BALLS ? row.Union : row.Envelope;
+      e.Seconds = Seconds(start);
+      vtkNew<vtkMedialReconstructionError> measure;
+      measure->SetOriginalData(surface);
+      measure->SetReconstructionConnection(rebuild->GetOutputPort());
+      measure->SetNumberOfThreads(threads);
+      measure->Update();
+      for (int k = 0; k < 2; ++k)
+      {
+        e.Max[k] = measure->GetVertexMaxError()[k];
+        e.Mean[k] = measure->GetVertexMeanError()[k];
+      }
+      e.Area = measure->GetAreaHausdorff();
+    }
+    errors.push_back(row);
+  }
+  std::printf("\nreconstruction at %d^3, %% of the diagonal (max / mean), rebuilt -> original and "
+              "original -> rebuilt\n",
+    resolution);
+  std::printf("%-20s %-9s %9s %9s %9s %9s %9s %8s\n", "mesh", "shape", "rec>max", "rec>mean", "orig>max",
+    "orig>mean", "area_hd", "seconds");
+  for (const ErrorRow& row : errors)
+  {
+    for (int k = 0; k < 2; ++k)
+    {
+      const Error& e = k == 0 ? row.Envelope : row.Union;
+      std::printf("%-20s %-9s %9.3f %9.4f %9.3f %9.4f %9.3f %8.2f\n", row.Name.c_str(), k == 0 ? "envelope" : "balls",
+        100 * e.Max[0], 100 * e.Mean[0], 100 * e.Max[1], 100 * e.Mean[1], 100 * e.Area, e.Seconds);
+    }
+  }
+  return 0;
+}

@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Helpers of the medial mesh tests: generated solids, and the mesh's topology counted
+// from its cells, independently of the filter's own figures.
+#ifndef MedialMeshTestUtilities_h
+#define MedialMeshTestUtilities_h
+
+#include "MedialTestUtilities.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkGenericCell.h"
+#include "vtkStaticCellLocator.h"
+#include "vtkMedialDisjointSets.h"
+#include "vtkMedialShapeSource.h"
+#include "vtkOBJReader.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <algorithm>
+#include <array>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace medialtest
+{
+/// A closed test solid from vtkMedialShapeSource.
+inline vtkSmartPointer<vtkPolyData> MakeSolid(int shape, int genus = 1, int resolution = 16)
+{
+  vtkNew<vtkMedialShapeSource> source;
+  source->SetShape(shape);
+  source->SetGenus(genus);
+  source->SetResolution(resolution);
+  source->Update();
+  return source->GetOutput();
+}
+
+/// A shared mesh by name (.ply or .obj), or null when ../shared is absent.
+inline vtkSmartPointer<vtkPolyData> ReadSharedMesh(const std::string& name)
+{
+  if (name.size() > 4 && name.substr(name.size() - 4) == ".ply")
+  {
+    return ReadSharedPLY(name.c_str());
+  }
+  const std::string path = SharedMesh(name.c_str());
+  if (path.empty())
+  {
+    std::printf("shared meshes absent: %s part skipped\n", name.c_str());
+    return nullptr;
+  }
+  vtkNew<vtkOBJReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  return reader->GetOutput();
+}
+
+/// Distance from x to the surface of `locator`'s dataset.
+inline double SurfaceDistance(vtkStaticCellLocator* locator, const double x[3])
+{
+  vtkNew<vtkGenericCell> cell;
+  double closest[3], d2;
+  vtkIdType id;
+  int sub;
+  locator->FindClosestPoint(x, closest, cell, id, sub, d2);
+  return std::sqrt(d2);
+}
+
+struct MeshTopology
+{
+  vtkIdType Vertices = 0, Edges = 0, Faces = 0, Components = 0;
+  vtkIdType Euler() const { return this->Vertices - this->Edges + this->Faces; }
+};
+
+/// V (points used by a cell), E (distinct edges of lines and triangle sides), F
+/// (triangles) and the connected components, from the cells alone.
+inline MeshTopology CountTopology(vtkPolyData* mesh)
+{
+  const vtkIdType np = mesh->GetNumberOfPoints();
+  std::set<std::pair<vtkIdType, vtkIdType>> edges;
+  std::vector<char> used(np, 0);
+  MeshTopology t;
+  auto visit = [&](vtkCellArray* cells, bool closed) {
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      for (vtkIdType k = 0; k < n; ++k)
+      {
+        used[ids[k]] = 1;
+        if (n > 1 && (closed || k + 1 < n))
+        {
+          const vtkIdType a = ids[k], b = ids[(k + 1) % n];
+          edges.emplace(std::min(a, b), std::max(a, b));
+        }
+      }
+      t.Faces += closed ? 1 : 0;
+    }
+  };
+  visit(mesh->GetVerts(), false);
+  visit(mesh->GetLines(), false);
+  visit(mesh->GetPolys(), true);
+  vtkMedialDisjointSets sets(np);
+  for (const auto& e : edges)
+  {
+    sets.Join(e.first, e.second);
+  }
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    t.Vertices += used[i];
+    t.Components += used[i] && sets.Find(i) == i;
+  }
+  t.Edges = static_cast<vtkIdType>(edges.size());
+  return t;
+}
+}
+
+#endif

@@ -1,0 +1,227 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkMedialMeshFilter's inputs and outputs: balls on port 1 give the same mesh as the
+// internal sampler with the same settings; any thread count gives the same mesh; the
+// sampler's settings take effect and re-execute the filter; the balls' arrays are
+// carried over (Radius never grows); cell types match the cells; and bad input gives
+// one clear error (or a warning for an open surface or balls outside the shape).
+#include "MedialMeshTestUtilities.h"
+
+#include "vtkMedialArrayNames.h"
+#include "vtkMedialAxisSampler.h"
+#include "vtkMedialMeshFilter.h"
+
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdList.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+
+#include <cmath>
+#include <cstring>
+#include <sstream>
+
+namespace
+{
+// Same points, radii and cells, bit for bit.
+bool SameMesh(vtkPolyData* a, vtkPolyData* b)
+{
+  if (a->GetNumberOfPoints() != b->GetNumberOfPoints() || a->GetNumberOfCells() != b->GetNumberOfCells())
+  {
+    return false;
+  }
+  vtkDataArray* ra = a->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
+  vtkDataArray* rb = b->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    a->GetPoint(i, p);
+    b->GetPoint(i, q);
+    const double r = ra->GetTuple1(i), s = rb->GetTuple1(i);
+    if (std::memcmp(p, q, sizeof(p)) != 0 || std::memcmp(&r, &s, sizeof(r)) != 0)
+    {
+      return false;
+    }
+  }
+  vtkNew<vtkIdList> u, v;
+  for (vtkIdType c = 0; c < a->GetNumberOfCells(); ++c)
+  {
+    a->GetCellPoints(c, u);
+    b->GetCellPoints(c, v);
+    if (u->GetNumberOfIds() != v->GetNumberOfIds() ||
+      !std::equal(u->begin(), u->end(), v->begin()))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+vtkSmartPointer<vtkPolyData> BallsOf(const std::vector<std::array<double, 4>>& list)
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkDoubleArray> radius;
+  radius->SetName(vtkMedialArrayNames::Radius);
+  for (const auto& b : list)
+  {
+    points->InsertNextPoint(b[0], b[1], b[2]);
+    radius->InsertNextValue(b[3]);
+  }
+  auto balls = vtkSmartPointer<vtkPolyData>::New();
+  balls->SetPoints(points);
+  balls->GetPointData()->AddArray(radius);
+  return balls;
+}
+
+// Runs the filter on (surface, balls) and returns the log.
+std::string Run(vtkPolyData* surface, vtkPolyData* balls, int& errors, int& warnings)
+{
+  vtkNew<vtkMedialMeshFilter> filter;
+  medialtest::EventLog log;
+  log.Watch(filter);
+  filter->SetInputData(surface);
+  if (balls)
+  {
+    filter->SetBallsData(balls);
+  }
+  filter->Update();
+  errors = log.Errors;
+  warnings = log.Warnings;
+  return log.Text;
+}
+
+int CheckBadInput(vtkPolyData* solid)
+{
+  struct Case
+  {
+    const char* What;
+    vtkSmartPointer<vtkPolyData> Surface, Balls;
+    const char* Expected;
+  };
+  vtkNew<vtkPolyData> empty;
+  auto noRadius = BallsOf({ { 0, 0, 0, 0.1 }, { 0.1, 0, 0, 0.1 }, { 0, 0.1, 0, 0.1 }, { 0, 0, 0.1, 0.1 } });
+  noRadius->GetPointData()->RemoveArray(vtkMedialArrayNames::Radius);
+  const Case cases[] = {
+    { "empty surface", empty, nullptr, "input 0 has no surface" },
+    { "no Radius", solid, noRadius, "no one-component point-data array named 'Radius'" },
+    { "NaN radius",
+      solid, BallsOf({ { 0, 0, 0, std::nan("") }, { 0.1, 0, 0, 0.1 }, { 0, 0.1, 0, 0.1 }, { 0, 0, 0.1, 0.1 } }),
+      "NaN, infinite or negative" },
+    { "three balls", solid, BallsOf({ { 0, 0, 0, 0.1 }, { 0.1, 0, 0, 0.1 }, { 0, 0.1, 0, 0.1 } }),
+      "fewer than four balls" },
+    { "coplanar balls",
+      solid, BallsOf({ { 0, 0, 0, 0.1 }, { 0.1, 0, 0, 0.1 }, { 0, 0.1, 0, 0.1 }, { 0.1, 0.1, 0, 0.1 } }),
+      "coplanar" },
+  };
+  for (const Case& c : cases)
+  {
+    int errors = 0, warnings = 0;
+    const std::string text = Run(c.Surface, c.Balls, errors, warnings);
+    MEDIAL_CHECK(errors >= 1 && text.find(c.Expected) != std::string::npos, "%s: got '%s'", c.What,
+      text.c_str());
+  }
+  // Balls outside the shape are dropped with a warning; the rest is meshed.
+  {
+    int errors = 0, warnings = 0;
+    const std::string text = Run(solid,
+      BallsOf({ { 0, 0, 0, 0.3 }, { 0.2, 0, 0, 0.3 }, { 0, 0.1, 0.05, 0.3 }, { 0.1, 0.05, 0.1, 0.3 },
+        { 9, 9, 9, 0.1 } }),
+      errors, warnings);
+    MEDIAL_CHECK(errors == 0 && text.find("1 ball(s) with a centre outside") != std::string::npos,
+      "outside ball: got '%s'", text.c_str());
+  }
+  // An open surface: a warning, and a mesh all the same.
+  {
+    vtkNew<vtkPolyData> open;
+    open->DeepCopy(solid);
+    open->BuildCells();
+    open->DeleteCell(0);
+    open->RemoveDeletedCells();
+    int errors = 0, warnings = 0;
+    const std::string text = Run(open, nullptr, errors, warnings);
+    MEDIAL_CHECK(errors == 0 && text.find("boundary edges") != std::string::npos, "open surface: got '%s'",
+      text.c_str());
+  }
+  return EXIT_SUCCESS;
+}
+}
+
+int TestMedialMeshInputs(int, char*[])
+{
+  vtkSmartPointer<vtkPolyData> solid = medialtest::MakeSolid(vtkMedialShapeSource::JACK, 1, 12);
+
+  // Port 1 versus the internal sampler with the same settings; 1 versus 2 threads.
+  vtkNew<vtkMedialMeshFilter> internal;
+  internal->SetInputData(solid);
+  internal->GetSampler()->SetNumberOfSamples(3000);
+  internal->GetSampler()->SetRandomSeed(7);
+  internal->SetNumberOfThreads(1);
+  internal->Update();
+  vtkNew<vtkMedialAxisSampler> sampler;
+  sampler->SetInputData(solid);
+  sampler->SetNumberOfSamples(3000);
+  sampler->SetRandomSeed(7);
+  vtkNew<vtkMedialMeshFilter> external;
+  external->SetInputData(solid);
+  external->SetBallsConnection(sampler->GetOutputPort());
+  external->SetNumberOfThreads(2);
+  external->Update();
+  vtkPolyData* mesh = internal->GetOutput();
+  MEDIAL_CHECK(mesh->GetNumberOfPolys() > 0, "no triangles");
+  MEDIAL_CHECK(SameMesh(mesh, external->GetOutput()), "port 1 or 2 threads give another mesh");
+
+  // Arrays carried over; radii never grow; cell types in step with the cells.
+  vtkPointData* pd = mesh->GetPointData();
+  for (const char* name : { vtkMedialArrayNames::SurfacePoint, vtkMedialArrayNames::SourceCellId,
+         vtkMedialArrayNames::MedialPointType })
+  {
+    MEDIAL_CHECK(pd->GetArray(name) != nullptr, "no point array %s", name);
+  }
+  vtkPolyData* balls = sampler->GetOutput();
+  vtkDataArray* surfacePoint = pd->GetArray(vtkMedialArrayNames::SurfacePoint);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    // The sample P identifies the ball: its radius may only have been lowered.
+    double p[3];
+    surfacePoint->GetTuple(i, p);
+    bool found = false;
+    for (vtkIdType j = 0; j < balls->GetNumberOfPoints() && !found; ++j)
+    {
+      double q[3];
+      balls->GetPointData()->GetArray(vtkMedialArrayNames::SurfacePoint)->GetTuple(j, q);
+      found = std::memcmp(p, q, sizeof(p)) == 0;
+      MEDIAL_CHECK(!found ||
+          medialtest::Value(mesh, vtkMedialArrayNames::Radius, i) <=
+            medialtest::Value(balls, vtkMedialArrayNames::Radius, j),
+        "vertex %lld: the radius grew", static_cast<long long>(i));
+    }
+    MEDIAL_CHECK(found, "vertex %lld is no input ball", static_cast<long long>(i));
+  }
+  vtkDataArray* cellTypes = mesh->GetCellData()->GetArray(vtkMedialArrayNames::MedialCellType);
+  MEDIAL_CHECK(cellTypes && cellTypes->GetNumberOfTuples() == mesh->GetNumberOfCells(), "MedialCellType size");
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    const int type = static_cast<int>(cellTypes->GetTuple1(c));
+    const int points = static_cast<int>(mesh->GetCell(c)->GetNumberOfPoints());
+    MEDIAL_CHECK((type == vtkMedialMeshFilter::SHEET_TRIANGLE) == (points == 3) &&
+        (type == vtkMedialMeshFilter::ISOLATED_BALL) == (points == 1),
+      "cell %lld: type %d with %d points", static_cast<long long>(c), type, points);
+  }
+  for (const char* name : { vtkMedialArrayNames::EulerCharacteristic, vtkMedialArrayNames::Components,
+         vtkMedialArrayNames::SolidEulerCharacteristic, vtkMedialArrayNames::SolidComponents })
+  {
+    MEDIAL_CHECK(medialtest::FieldValue(mesh, name) == 1.0, "field data %s is not 1", name);
+  }
+
+  // A sampler setting re-executes the filter and changes the mesh.
+  const vtkIdType before = mesh->GetNumberOfPoints();
+  internal->GetSampler()->SetNumberOfSamples(2000);
+  internal->Update();
+  MEDIAL_CHECK(internal->GetOutput()->GetNumberOfPoints() != before &&
+      internal->GetOutput()->GetNumberOfPoints() <= 2000,
+    "the sampler's settings were not used");
+  std::ostringstream print;
+  internal->Print(print);
+  MEDIAL_CHECK(print.str().find("EulerCharacteristic") != std::string::npos, "PrintSelf");
+
+  return CheckBadInput(solid);
+}

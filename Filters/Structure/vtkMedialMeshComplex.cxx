@@ -1,0 +1,709 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkMedialMeshComplex.h"
+
+#include "vtkMedialDisjointSets.h"
+#include "vtkMedialGeometry.h"
+#include "vtkMedialPowerComplex.h"
+#include "vtkMedialSurfaceQuery.h"
+#include "vtkMedialTriangleMesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace
+{
+namespace G = vtkMedialGeometry;
+
+enum ContainmentState : char
+{
+  UNKNOWN = 0,
+  INSIDE = 1,
+  CROSSES = 2
+};
+
+
+}
+
+bool vtkMedialMeshComplex::Build(const vtkMedialPowerComplex& power, const vtkMedialSurfaceQuery& query,
+  const Balls& balls, double protrusionTolerance, int threads, const std::function<bool()>& aborted)
+{
+  this->Power = &power;
+  this->Query = &query;
+  this->BallData = balls;
+  this->Threads = std::max(1, threads);
+  this->Stats = Statistics();
+  this->EdgeState.assign(power.GetNumberOfEdges(), UNKNOWN);
+  this->TriangleState.assign(power.GetNumberOfTriangles(), UNKNOWN);
+  auto stop = [&aborted]() { return aborted && aborted(); };
+
+  this->SelectCandidates();
+  if (stop())
+  {
+    return false;
+  }
+  this->KeepContained();
+  this->Stats.FilledTetrahedra += this->FillVoids();
+  this->ConnectComponents();
+  if (stop())
+  {
+    return false;
+  }
+  this->FillEmptyTriangles();
+  if (stop())
+  {
+    return false;
+  }
+  this->DropDetachedComponents(*balls.SolidComponents);
+  this->Collapse();
+  if (protrusionTolerance >= 0.0)
+  {
+    this->PruneProtrusions(protrusionTolerance);
+  }
+  this->Extract();
+  return true;
+}
+
+bool vtkMedialMeshComplex::EdgeInside(vtkIdType e)
+{
+  if (this->EdgeState[e] == UNKNOWN)
+  {
+    const auto& v = this->Power->EdgeVertices[e];
+    this->EdgeState[e] = this->Query->SegmentCrossesSurface(this->Centre(v[0]), this->Centre(v[1])) ? CROSSES : INSIDE;
+  }
+  return this->EdgeState[e] == INSIDE;
+}
+
+bool vtkMedialMeshComplex::TriangleInside(vtkIdType t)
+{
+  if (this->TriangleState[t] == UNKNOWN)
+  {
+    const auto& edges = this->Power->TriangleEdges[t];
+    const auto& v = this->Power->TriangleVertices[t];
+    const bool inside = this->EdgeInside(edges[0]) && this->EdgeInside(edges[1]) && this->EdgeInside(edges[2]) &&
+      !this->Query->TriangleCrossesSurface(this->Centre(v[0]), this->Centre(v[1]), this->Centre(v[2]));
+    this->TriangleState[t] = inside ? INSIDE : CROSSES;
+  }
+  return this->TriangleState[t] == INSIDE;
+}
+
+void vtkMedialMeshComplex::SelectCandidates()
+{
+  const vtkMedialPowerComplex& p = *this->Power;
+  const vtkIdType nt = p.GetNumberOfTetrahedra(), nf = p.GetNumberOfTriangles();
+  this->TetCandidate.assign(nt, 0);
+  this->TriangleCandidate.assign(nf, 0);
+  const vtkMedialTriangleMesh& mesh = *this->Query->GetMesh();
+  double lo[3], hi[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    lo[k] = mesh.Bounds[2 * k] - 1e-3 * mesh.Diagonal;
+    hi[k] = mesh.Bounds[2 * k + 1] + 1e-3 * mesh.Diagonal;
+  }
+#pragma omp parallel for schedule(dynamic, 256) num_threads(this->Threads)
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    this->TetCandidate[t] = p.TetInUnion[t] || this->Query->IsInside(&p.PowerCentres[3 * t]);
+  }
+  // A triangle's dual: the segment between its tetrahedra's power centres, or on the
+  // convex hull the ray from the inner one along the face's outward normal.
+#pragma omp parallel for schedule(dynamic, 256) num_threads(this->Threads)
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    const auto& tets = p.TriangleTets[f];
+    if (p.TriangleInUnion[f] || this->TetCandidate[tets[0]] || (tets[1] >= 0 && this->TetCandidate[tets[1]]))
+    {
+      this->TriangleCandidate[f] = 1;
+      continue;
+    }
+    const double* from = &p.PowerCentres[3 * tets[0]];
+    double direction[3], length = HUGE_VAL;
+    if (tets[1] >= 0)
+    {
+      G::Sub(&p.PowerCentres[3 * tets[1]], from, direction);
+      length = std::sqrt(G::Dot(direction, direction));
+    }
+    else
+    {
+      const auto& v = p.TriangleVertices[f];
+      const auto& tv = p.TetVertices[tets[0]];
+      const vtkIdType apex = tv[0] + tv[1] + tv[2] + tv[3] - v[0] - v[1] - v[2];
+      double ab[3], ac[3], ad[3];
+      G::Sub(this->Centre(v[1]), this->Centre(v[0]), ab);
+      G::Sub(this->Centre(v[2]), this->Centre(v[0]), ac);
+      G::Sub(this->Centre(apex), this->Centre(v[0]), ad);
+      G::Cross(ab, ac, direction);
+      const double sign = G::Dot(direction, ad) > 0.0 ? -1.0 : 1.0;
+      const double norm = std::sqrt(G::Dot(direction, direction));
+      for (double& d : direction)
+      {
+        d *= norm > 0.0 ? sign / norm : 0.0;
+      }
+      length = norm > 0.0 ? HUGE_VAL : 0.0;
+    }
+    if (!(length > 0.0))
+    {
+      continue;
+    }
+    if (std::isfinite(length))
+    {
+      for (double& d : direction)
+      {
+        d /= length;
+      }
+    }
+    // Only near the shape, where single-precision rays are accurate.
+    double t0 = 0.0, t1 = length;
+    if (!G::ClipRayToBox(lo, hi, from, direction, 3, t0, t1))
+    {
+      continue;
+    }
+    double start[3];
+    G::AddScaled(from, t0, direction, start);
+    vtkMedialSurfaceQuery::RayHit hit;
+    this->TriangleCandidate[f] = this->Query->Intersect(start, direction, 0.0, t1 - t0, -1, hit);
+  }
+}
+
+void vtkMedialMeshComplex::KeepContained()
+{
+  const vtkMedialPowerComplex& p = *this->Power;
+  const vtkIdType nt = p.GetNumberOfTetrahedra(), nf = p.GetNumberOfTriangles(), ne = p.GetNumberOfEdges();
+  std::vector<char> edgeCandidate(p.EdgeInUnion.begin(), p.EdgeInUnion.end());
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    for (int k = 0; k < 3 && this->TriangleCandidate[f]; ++k)
+    {
+      edgeCandidate[p.TriangleEdges[f][k]] = 1;
+    }
+  }
+  // Edges, then triangles (which read their edges' states): each state is written by
+  // one thread only.
+#pragma omp parallel for schedule(dynamic, 256) num_threads(this->Threads)
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    if (edgeCandidate[e] && !p.EdgeInUnion[e])
+    {
+      this->EdgeInside(e);
+    }
+  }
+#pragma omp parallel for schedule(dynamic, 64) num_threads(this->Threads)
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    if (this->TriangleCandidate[f] && !p.TriangleInUnion[f])
+    {
+      this->TriangleInside(f);
+    }
+  }
+  this->EdgeIn.assign(ne, 0);
+  this->TriangleIn.assign(nf, 0);
+  this->TetIn.assign(nt, 0);
+  vtkIdType rejected = 0;
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    this->EdgeIn[e] = edgeCandidate[e] && (p.EdgeInUnion[e] || this->EdgeState[e] == INSIDE);
+    rejected += edgeCandidate[e] && !this->EdgeIn[e];
+  }
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    this->TriangleIn[f] = this->TriangleCandidate[f] && (p.TriangleInUnion[f] || this->TriangleState[f] == INSIDE);
+    rejected += this->TriangleCandidate[f] && !this->TriangleIn[f];
+  }
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    bool in = this->TetCandidate[t];
+    for (int j = 0; j < 4 && in && !p.TetInUnion[t]; ++j)
+    {
+      in = this->TriangleIn[p.TetTriangles[t][j]];
+    }
+    this->TetIn[t] = in;
+    rejected += this->TetCandidate[t] && !in;
+  }
+  this->Stats.RejectedSimplices = rejected;
+  this->VertexIn.assign(p.VertexInUnion.begin(), p.VertexInUnion.end());
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    if (this->EdgeIn[e])
+    {
+      this->VertexIn[p.EdgeVertices[e][0]] = this->VertexIn[p.EdgeVertices[e][1]] = 1;
+    }
+  }
+}
+
+vtkIdType vtkMedialMeshComplex::FillVoids()
+{
+  const vtkMedialPowerComplex& p = *this->Power;
+  const vtkIdType nt = p.GetNumberOfTetrahedra(), nf = p.GetNumberOfTriangles();
+  // Flood the complement from the infinite side through triangles not in K.
+  std::vector<char> reached(nt, 0);
+  std::vector<vtkIdType> queue;
+  auto flood = [&](size_t head) {
+    for (; head < queue.size(); ++head)
+    {
+      const vtkIdType t = queue[head];
+      for (int j = 0; j < 4; ++j)
+      {
+        const vtkIdType n = p.TetNeighbours[t][j];
+        if (n >= 0 && !this->TriangleIn[p.TetTriangles[t][j]] && !this->TetIn[n] && !reached[n])
+        {
+          reached[n] = 1;
+          queue.push_back(n);
+        }
+      }
+    }
+  };
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    const vtkIdType t = p.TriangleTets[f][0];
+    if (p.TriangleTets[f][1] < 0 && !this->TriangleIn[f] && !this->TetIn[t] && !reached[t])
+    {
+      reached[t] = 1;
+      queue.push_back(t);
+    }
+  }
+  flood(0);
+  // Each void left is filled unless one of its simplices crosses the surface (a cavity).
+  vtkIdType filled = 0;
+  for (vtkIdType seed = 0; seed < nt; ++seed)
+  {
+    if (reached[seed] || this->TetIn[seed])
+    {
+      continue;
+    }
+    const size_t first = queue.size();
+    reached[seed] = 1;
+    queue.push_back(seed);
+    flood(first);
+    bool inside = true;
+    for (size_t k = first; k < queue.size() && inside; ++k)
+    {
+      for (int j = 0; j < 4 && inside; ++j)
+      {
+        const vtkIdType f = p.TetTriangles[queue[k]][j];
+        inside = this->TriangleIn[f] || this->TriangleInside(f);
+      }
+    }
+    for (size_t k = first; k < queue.size() && inside; ++k)
+    {
+      const vtkIdType t = queue[k];
+      this->TetIn[t] = 1;
+      for (int j = 0; j < 4; ++j)
+      {
+        const vtkIdType f = p.TetTriangles[t][j];
+        this->TriangleIn[f] = 1;
+        for (vtkIdType e : p.TriangleEdges[f])
+        {
+          this->EdgeIn[e] = 1;
+        }
+      }
+      for (vtkIdType b : p.TetVertices[t])
+      {
+        this->VertexIn[b] = 1;
+      }
+      ++filled;
+    }
+  }
+  return filled;
+}
+
+void vtkMedialMeshComplex::ConnectComponents()
+{
+  const vtkMedialPowerComplex& p = *this->Power;
+  const vtkIdType nb = static_cast<vtkIdType>(p.BallIsVertex.size()), ne = p.GetNumberOfEdges();
+  const std::vector<char>& present = this->VertexIn;
+  vtkMedialDisjointSets sets(nb);
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    if (this->EdgeIn[e])
+    {
+      sets.Join(p.EdgeVertices[e][0], p.EdgeVertices[e][1]);
+    }
+  }
+  vtkIdType components = 0;
+  for (vtkIdType b = 0; b < nb; ++b)
+  {
+    components += present[b] && sets.Find(b) == b;
+  }
+  if (components <= 1)
+  {
+    return;
+  }
+  // Kruskal: the shortest edges that join two components and stay inside.
+  std::vector<std::pair<double, vtkIdType>> order;
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    const auto& v = p.EdgeVertices[e];
+    if (!this->EdgeIn[e] && present[v[0]] && present[v[1]] && sets.Find(v[0]) != sets.Find(v[1]))
+    {
+      order.emplace_back(G::Distance2(this->Centre(v[0]), this->Centre(v[1])), e);
+    }
+  }
+  std::sort(order.begin(), order.end());
+  for (const auto& candidate : order)
+  {
+    const auto& v = p.EdgeVertices[candidate.second];
+    if (sets.Find(v[0]) != sets.Find(v[1]) && this->EdgeInside(candidate.second))
+    {
+      sets.Join(v[0], v[1]);
+      this->EdgeIn[candidate.second] = 1;
+      ++this->Stats.ConnectingEdges;
+    }
+  }
+}
+
+void vtkMedialMeshComplex::FillEmptyTriangles()
+{
+  const vtkMedialPowerComplex& p = *this->Power;
+  const vtkIdType nf = p.GetNumberOfTriangles();
+  for (int round = 0; round < 8; ++round)
+  {
+    std::vector<vtkIdType> empty;
+    for (vtkIdType f = 0; f < nf; ++f)
+    {
+      const auto& e = p.TriangleEdges[f];
+      if (!this->TriangleIn[f] && this->EdgeIn[e[0]] && this->EdgeIn[e[1]] && this->EdgeIn[e[2]])
+      {
+        empty.push_back(f);
+      }
+    }
+    const vtkIdType n = static_cast<vtkIdType>(empty.size());
+#pragma omp parallel for schedule(dynamic, 16) num_threads(this->Threads)
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      this->TriangleInside(empty[k]); // edges are in K: their states are known
+    }
+    vtkIdType added = 0;
+    for (vtkIdType f : empty)
+    {
+      if (this->TriangleState[f] == INSIDE)
+      {
+        this->TriangleIn[f] = 1;
+        ++added;
+      }
+    }
+    this->Stats.EmptyTriangles += added;
+    const vtkIdType filled = this->FillVoids();
+    this->Stats.FilledTetrahedra += filled;
+    if (added == 0 && filled == 0)
+    {
+      break;
+    }
+  }
+}
+
+void vtkMedialMeshComplex::DropDetachedComponents(const std::vector<vtkIdType>& solidComponents)
+{
+  const vtkMedialPowerComplex& p = *this->Power;
+  const vtkIdType nb = static_cast<vtkIdType>(p.BallIsVertex.size()), ne = p.GetNumberOfEdges();
+  vtkMedialDisjointSets sets(nb);
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    if (this->EdgeIn[e])
+    {
+      sets.Join(p.EdgeVertices[e][0], p.EdgeVertices[e][1]);
+    }
+  }
+  // Balls per component of K; the largest per solid component wins (ties: smaller root).
+  std::vector<vtkIdType> size(nb, 0);
+  for (vtkIdType b = 0; b < nb; ++b)
+  {
+    size[sets.Find(b)] += this->VertexIn[b];
+  }
+  std::vector<std::pair<vtkIdType, vtkIdType>> best; // per solid component: (size, root)
+  for (vtkIdType b = 0; b < nb; ++b)
+  {
+    if (!this->VertexIn[b] || sets.Find(b) != b || solidComponents[b] < 0)
+    {
+      continue;
+    }
+    const size_t label = static_cast<size_t>(solidComponents[b]);
+    if (best.size() <= label)
+    {
+      best.resize(label + 1, { 0, -1 });
+    }
+    if (size[b] > best[label].first)
+    {
+      best[label] = { size[b], b };
+    }
+  }
+  std::vector<char> keep(nb, 0);
+  for (const auto& winner : best)
+  {
+    if (winner.second >= 0)
+    {
+      keep[winner.second] = 1;
+    }
+  }
+  for (vtkIdType b = 0; b < nb; ++b)
+  {
+    if (this->VertexIn[b] && !keep[sets.Find(b)])
+    {
+      this->VertexIn[b] = 0;
+      ++this->Stats.DetachedBalls;
+    }
+  }
+  if (this->Stats.DetachedBalls == 0)
+  {
+    return;
+  }
+  // Simplices of the dropped balls go with them (a component keeps its simplices whole).
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    this->EdgeIn[e] = this->EdgeIn[e] && this->VertexIn[p.EdgeVertices[e][0]];
+  }
+  for (vtkIdType f = 0; f < p.GetNumberOfTriangles(); ++f)
+  {
+    this->TriangleIn[f] = this->TriangleIn[f] && this->VertexIn[p.TriangleVertices[f][0]];
+  }
+  for (vtkIdType t = 0; t < p.GetNumberOfTetrahedra(); ++t)
+  {
+    this->TetIn[t] = this->TetIn[t] && this->VertexIn[p.TetVertices[t][0]];
+  }
+}
+
+void vtkMedialMeshComplex::Collapse()
+{
+  const vtkMedialPowerComplex& p = *this->Power;
+  const vtkIdType nt = p.GetNumberOfTetrahedra(), nf = p.GetNumberOfTriangles();
+  std::vector<int> cofaces(nf, 0);
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    for (int j = 0; j < 4 && this->TetIn[t]; ++j)
+    {
+      ++cofaces[p.TetTriangles[t][j]];
+    }
+  }
+  std::vector<vtkIdType> queue;
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    if (this->TriangleIn[f] && cofaces[f] == 1)
+    {
+      queue.push_back(f);
+    }
+  }
+  for (size_t head = 0; head < queue.size(); ++head)
+  {
+    const vtkIdType f = queue[head];
+    if (!this->TriangleIn[f] || cofaces[f] != 1)
+    {
+      continue;
+    }
+    const auto& tets = p.TriangleTets[f];
+    const vtkIdType t = this->TetIn[tets[0]] ? tets[0] : tets[1];
+    this->TetIn[t] = 0;
+    this->TriangleIn[f] = 0;
+    for (vtkIdType g : p.TetTriangles[t])
+    {
+      if (g != f && --cofaces[g] == 1)
+      {
+        queue.push_back(g);
+      }
+    }
+  }
+  this->Stats.RemainingTetrahedra = std::count(this->TetIn.begin(), this->TetIn.end(), 1);
+}
+
+double vtkMedialMeshComplex::Protrusion(const vtkIdType* ids, const double* weights, int n) const
+{
+  double c[3] = { 0, 0, 0 }, r = 0.0;
+  for (int j = 0; j < n; ++j)
+  {
+    G::AddScaled(c, weights[j], this->Centre(ids[j]), c);
+    r += weights[j] * (*this->BallData.Radii)[ids[j]];
+  }
+  vtkMedialSurfaceQuery::ClosestHit hit;
+  return r > 0.0 && this->Query->ClosestPoint(c, r, hit) ? r - hit.Distance : 0.0;
+}
+
+void vtkMedialMeshComplex::PruneProtrusions(double tolerance)
+{
+  const vtkMedialPowerComplex& p = *this->Power;
+  const vtkIdType nf = p.GetNumberOfTriangles(), ne = p.GetNumberOfEdges();
+  const vtkIdType nb = static_cast<vtkIdType>(p.BallIsVertex.size());
+  // Triangles on each edge (CSR over the triangles left) and edges on each ball.
+  std::vector<vtkIdType> triangles;
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    if (this->TriangleIn[f])
+    {
+      triangles.push_back(f);
+    }
+  }
+  std::vector<vtkIdType> edgeStart(ne + 1, 0), edgeTriangles, alive(ne, 0), degree(nb, 0);
+  for (vtkIdType f : triangles)
+  {
+    for (vtkIdType e : p.TriangleEdges[f])
+    {
+      ++edgeStart[e + 1];
+      ++alive[e];
+    }
+  }
+  std::partial_sum(edgeStart.begin(), edgeStart.end(), edgeStart.begin());
+  edgeTriangles.resize(edgeStart.back());
+  {
+    std::vector<vtkIdType> fill(edgeStart.begin(), edgeStart.end() - 1);
+    for (vtkIdType f : triangles)
+    {
+      for (vtkIdType e : p.TriangleEdges[f])
+      {
+        edgeTriangles[fill[e]++] = f;
+      }
+    }
+  }
+  std::vector<std::vector<vtkIdType>> ballEdges(nb);
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    if (this->EdgeIn[e])
+    {
+      for (vtkIdType b : p.EdgeVertices[e])
+      {
+        ++degree[b];
+        ballEdges[b].push_back(e);
+      }
+    }
+  }
+  // Protrusions of every triangle (centroid and side midpoints) and edge (midpoint).
+  std::vector<double> triangleProtrusion(nf, 0.0), edgeProtrusion(ne, 0.0);
+  const vtkIdType nt = static_cast<vtkIdType>(triangles.size());
+#pragma omp parallel for schedule(dynamic, 64) num_threads(this->Threads)
+  for (vtkIdType k = 0; k < nt; ++k)
+  {
+    const vtkIdType* v = p.TriangleVertices[triangles[k]].data();
+    const double third[3] = { 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 }, half[2] = { 0.5, 0.5 };
+    double worst = this->Protrusion(v, third, 3);
+    for (vtkIdType e : p.TriangleEdges[triangles[k]])
+    {
+      worst = std::max(worst, this->Protrusion(p.EdgeVertices[e].data(), half, 2));
+    }
+    triangleProtrusion[triangles[k]] = worst;
+  }
+#pragma omp parallel for schedule(dynamic, 256) num_threads(this->Threads)
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    const double half[2] = { 0.5, 0.5 };
+    edgeProtrusion[e] = this->EdgeIn[e] && alive[e] == 0 ? this->Protrusion(p.EdgeVertices[e].data(), half, 2) : 0.0;
+  }
+  // Collapses, in a fixed order: a triangle through a free side, an edge through a free end.
+  std::vector<vtkIdType> queue(triangles.begin(), triangles.end());
+  auto freeSide = [&](vtkIdType f) {
+    for (vtkIdType e : p.TriangleEdges[f])
+    {
+      if (alive[e] == 1)
+      {
+        return e;
+      }
+    }
+    return vtkIdType(-1);
+  };
+  auto removeEdge = [&](vtkIdType e) {
+    this->EdgeIn[e] = 0;
+    for (vtkIdType b : p.EdgeVertices[e])
+    {
+      if (--degree[b] == 0)
+      {
+        this->VertexIn[b] = 0;
+      }
+    }
+  };
+  std::vector<vtkIdType> bareEdges;
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    if (this->EdgeIn[e] && alive[e] == 0)
+    {
+      bareEdges.push_back(e);
+    }
+  }
+  for (size_t head = 0, bare = 0; head < queue.size() || bare < bareEdges.size();)
+  {
+    if (head < queue.size())
+    {
+      const vtkIdType f = queue[head++];
+      const vtkIdType side = this->TriangleIn[f] ? freeSide(f) : -1;
+      if (side < 0 || triangleProtrusion[f] <= tolerance)
+      {
+        continue;
+      }
+      this->TriangleIn[f] = 0;
+      removeEdge(side);
+      ++this->Stats.PrunedTriangles;
+      for (vtkIdType e : p.TriangleEdges[f])
+      {
+        if (--alive[e] == 1)
+        {
+          for (vtkIdType g = edgeStart[e]; g < edgeStart[e + 1]; ++g)
+          {
+            queue.push_back(edgeTriangles[g]); // its other triangle may now have a free side
+          }
+        }
+        else if (alive[e] == 0 && e != side)
+        {
+          const double half[2] = { 0.5, 0.5 };
+          edgeProtrusion[e] = this->Protrusion(p.EdgeVertices[e].data(), half, 2);
+          bareEdges.push_back(e);
+        }
+      }
+      continue;
+    }
+    const vtkIdType e = bareEdges[bare++];
+    const auto& v = p.EdgeVertices[e];
+    if (!this->EdgeIn[e] || alive[e] != 0 || edgeProtrusion[e] <= tolerance ||
+      (degree[v[0]] != 1 && degree[v[1]] != 1))
+    {
+      continue;
+    }
+    const vtkIdType inner = degree[v[0]] == 1 ? v[1] : v[0];
+    removeEdge(e);
+    ++this->Stats.PrunedEdges;
+    for (vtkIdType next : ballEdges[inner])
+    {
+      if (this->EdgeIn[next] && alive[next] == 0)
+      {
+        bareEdges.push_back(next); // may now have a free end
+      }
+    }
+  }
+}
+
+void vtkMedialMeshComplex::Extract()
+{
+  const vtkMedialPowerComplex& p = *this->Power;
+  const vtkIdType nb = static_cast<vtkIdType>(p.BallIsVertex.size());
+  const vtkIdType ne = p.GetNumberOfEdges(), nf = p.GetNumberOfTriangles();
+  std::vector<int> edgeTriangles(ne, 0);
+  this->Triangles.clear();
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    if (this->TriangleIn[f])
+    {
+      this->Triangles.push_back(p.TriangleVertices[f]);
+      for (vtkIdType e : p.TriangleEdges[f])
+      {
+        ++edgeTriangles[e];
+      }
+    }
+  }
+  const std::vector<char>& present = this->VertexIn;
+  vtkMedialDisjointSets sets(nb);
+  this->Edges.clear();
+  this->EdgeTriangles.clear();
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    if (this->EdgeIn[e])
+    {
+      const auto& v = p.EdgeVertices[e];
+      this->Edges.push_back(v);
+      this->EdgeTriangles.push_back(edgeTriangles[e]);
+      sets.Join(v[0], v[1]);
+    }
+  }
+  this->Vertices.clear();
+  this->Components = 0;
+  for (vtkIdType b = 0; b < nb; ++b)
+  {
+    if (present[b])
+    {
+      this->Vertices.push_back(b);
+      this->Components += sets.Find(b) == b;
+    }
+  }
+}

@@ -1,0 +1,501 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkMedialMeshFilter.h"
+#include "vtkMedialArrayNames.h"
+
+#include "vtkMedialAxisSampler.h"
+#include "vtkMedialDisjointSets.h"
+#include "vtkMedialMeshComplex.h"
+#include "vtkMedialPowerComplex.h"
+#include "vtkMedialSurfaceQuery.h"
+#include "vtkMedialTriangleMesh.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkMedialMeshFilter);
+vtkCxxSetObjectMacro(vtkMedialMeshFilter, Sampler, vtkMedialAxisSampler);
+
+// The balls the mesh is built on: centres, inscribed radii, and the index of each in
+// the ball input.
+struct vtkMedialMeshFilter::BallSet
+{
+  std::vector<double> Centres;
+  std::vector<double> Radii;
+  std::vector<vtkIdType> Source;
+  std::vector<vtkIdType> SolidComponent; // the surface component nearest to the centre
+};
+
+namespace
+{
+// Medial point type from the mesh around each vertex (when the balls carry none).
+int MeshPointType(int seamEdges, int rimEdges, int curveEdges, int degree)
+{
+  if (seamEdges >= 3 || curveEdges >= 3)
+  {
+    return 3; // junction
+  }
+  if (seamEdges >= 1)
+  {
+    return 2; // seam
+  }
+  if (rimEdges >= 1 || degree <= 1)
+  {
+    return 0; // rim, the free end of a curve, or an isolated ball
+  }
+  return 1; // sheet, or inside a curve
+}
+
+// Connected component of each triangle of the prepared surface (shared vertices).
+std::vector<vtkIdType> TriangleComponents(const vtkMedialTriangleMesh& mesh)
+{
+  const vtkIdType points = static_cast<vtkIdType>(mesh.Points.size() / 3);
+  vtkMedialDisjointSets sets(points);
+  const vtkIdType nt = mesh.GetNumberOfTriangles();
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    const vtkIdType* v = mesh.GetTriangle(t);
+    sets.Join(v[0], v[1]);
+    sets.Join(v[0], v[2]);
+  }
+  std::vector<vtkIdType> label(points, -1), components(nt);
+  vtkIdType next = 0;
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    vtkIdType& l = label[sets.Find(mesh.GetTriangle(t)[0])];
+    l = l < 0 ? next++ : l;
+    components[t] = l;
+  }
+  return components;
+}
+
+void AddCount(vtkFieldData* fd, const char* name, vtkIdType value)
+{
+  vtkNew<vtkIdTypeArray> a;
+  a->SetName(name);
+  a->InsertNextValue(value);
+  fd->AddArray(a);
+}
+}
+
+vtkMedialMeshFilter::vtkMedialMeshFilter()
+{
+  this->SetNumberOfInputPorts(2);
+  this->Sampler = vtkMedialAxisSampler::New();
+}
+
+vtkMedialMeshFilter::~vtkMedialMeshFilter()
+{
+  this->SetSampler(nullptr);
+}
+
+vtkMTimeType vtkMedialMeshFilter::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  if (this->Sampler)
+  {
+    time = std::max(time, this->Sampler->GetMTime());
+  }
+  return time;
+}
+
+int vtkMedialMeshFilter::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 0)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+    return 1;
+  }
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+int vtkMedialMeshFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // The whole surface and every ball, whatever piece is requested downstream.
+  for (int port = 0; port < 2; ++port)
+  {
+    for (int i = 0; i < inputVector[port]->GetNumberOfInformationObjects(); ++i)
+    {
+      vtkInformation* inInfo = inputVector[port]->GetInformationObject(i);
+      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+    }
+  }
+  return 1;
+}
+
+int vtkMedialMeshFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* surface = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPointSet* ballInput = vtkPointSet::GetData(inputVector[1], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  this->EulerCharacteristic = this->NumberOfComponents = this->NumberOfEdges = 0;
+  this->HasSolidTopology = false;
+  this->SolidEulerCharacteristic = this->SolidComponents = 0;
+  this->DroppedBalls = this->DetachedBalls = this->RemainingTetrahedra = this->PrunedTriangles = 0;
+  this->MaximumRadiusReduction = 0.0;
+  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  auto aborted = [this]() { return this->GetAbortExecute() != 0; };
+
+  // The surface, prepared as the sampler does, for the inside and crossing tests.
+  if (!surface || surface->GetNumberOfCells() == 0)
+  {
+    vtkErrorMacro(<< "Cannot build the medial mesh: input 0 has no surface.");
+    return 0;
+  }
+  vtkMedialTriangleMesh mesh;
+  vtkMedialSurfaceQuery query;
+  std::string error;
+  if (!mesh.Build(surface, error, aborted) || !query.Build(&mesh, error, aborted))
+  {
+    if (!this->GetAbortExecute())
+    {
+      vtkErrorMacro(<< "Cannot build the medial mesh: " << error << ".");
+    }
+    return this->GetAbortExecute() ? 1 : 0;
+  }
+  const bool closed = mesh.BoundaryEdges == 0;
+  if (!closed)
+  {
+    vtkWarningMacro(<< "The surface has " << mesh.BoundaryEdges
+                    << " boundary edges: it bounds no solid, so the medial mesh's topology is "
+                       "not checked and inside tests near the holes are unreliable.");
+  }
+  this->UpdateProgress(0.05);
+
+  // 1. Balls.
+  vtkSmartPointer<vtkPointSet> balls = ballInput;
+  if (!balls)
+  {
+    balls = this->RunSampler(surface);
+    if (!balls)
+    {
+      return this->GetAbortExecute() ? 1 : 0;
+    }
+  }
+  vtkDataArray* radius = balls->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
+  if (!radius || radius->GetNumberOfComponents() != 1)
+  {
+    vtkErrorMacro(<< "Cannot build the medial mesh: the balls have no one-component point-data "
+                     "array named 'Radius'.");
+    return 0;
+  }
+  this->UpdateProgress(0.6);
+
+  // 2. Inscribed balls.
+  BallSet set;
+  if (!this->InscribeBalls(balls, radius, query, closed, threads, set))
+  {
+    return 0;
+  }
+
+  // 3. The regular triangulation and the union's dual complex.
+  vtkMedialPowerComplex power;
+  if (!power.Build(set.Centres, set.Radii, error))
+  {
+    vtkErrorMacro(<< "Cannot build the medial mesh: " << error << " (" << set.Radii.size()
+                  << " balls); a medial mesh needs balls spanning three dimensions.");
+    return 0;
+  }
+  this->UpdateProgress(0.75);
+  if (this->GetAbortExecute())
+  {
+    return 1;
+  }
+
+  // 4. The complex.
+  vtkMedialMeshComplex complex;
+  vtkMedialMeshComplex::Balls ballData;
+  ballData.Centres = &set.Centres;
+  ballData.Radii = &set.Radii;
+  ballData.SolidComponents = &set.SolidComponent;
+  const double tolerance =
+    this->ProtrusionTolerance >= 0.0 ? this->ProtrusionTolerance * mesh.Diagonal : -1.0;
+  if (!complex.Build(power, query, ballData, tolerance, threads, aborted))
+  {
+    return 1; // aborted: empty output
+  }
+  this->UpdateProgress(0.95);
+
+  // 5. Output.
+  this->WriteMesh(balls, set, complex, output);
+  this->EulerCharacteristic = complex.GetEulerCharacteristic();
+  this->NumberOfComponents = complex.GetNumberOfComponents();
+  this->NumberOfEdges = static_cast<vtkIdType>(complex.Edges.size());
+  this->RemainingTetrahedra = complex.Stats.RemainingTetrahedra;
+  this->DetachedBalls = complex.Stats.DetachedBalls;
+  this->PrunedTriangles = complex.Stats.PrunedTriangles;
+  vtkFieldData* fd = output->GetFieldData();
+  AddCount(fd, vtkMedialArrayNames::EulerCharacteristic, this->EulerCharacteristic);
+  AddCount(fd, vtkMedialArrayNames::Components, this->NumberOfComponents);
+  if (closed && mesh.NonManifoldEdges == 0 && mesh.GetEulerCharacteristic() % 2 == 0)
+  {
+    this->HasSolidTopology = true;
+    this->SolidEulerCharacteristic = mesh.GetEulerCharacteristic() / 2;
+    this->SolidComponents = mesh.Components;
+    AddCount(fd, vtkMedialArrayNames::SolidEulerCharacteristic, this->SolidEulerCharacteristic);
+    AddCount(fd, vtkMedialArrayNames::SolidComponents, this->SolidComponents);
+    if (this->SolidEulerCharacteristic != this->EulerCharacteristic ||
+      this->SolidComponents != this->NumberOfComponents)
+    {
+      vtkWarningMacro(<< "The medial mesh has Euler characteristic " << this->EulerCharacteristic
+                      << " and " << this->NumberOfComponents << " component(s), the solid "
+                      << this->SolidEulerCharacteristic << " and " << this->SolidComponents
+                      << ": the balls sample the medial axis too sparsely somewhere (try more samples).");
+    }
+  }
+  if (this->RemainingTetrahedra > 0)
+  {
+    vtkWarningMacro(<< this->RemainingTetrahedra
+                    << " tetrahedra could not be collapsed and were dropped (their triangles stay).");
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+vtkSmartPointer<vtkPointSet> vtkMedialMeshFilter::RunSampler(vtkPolyData* surface)
+{
+  if (!this->Sampler)
+  {
+    vtkErrorMacro(<< "Cannot build the medial mesh: no balls on input 1 and no Sampler.");
+    return nullptr;
+  }
+  // The sampler's progress is the first 60% of ours; an abort here aborts it.
+  vtkNew<vtkCallbackCommand> forward;
+  forward->SetClientData(this);
+  forward->SetCallback([](vtkObject* caller, unsigned long, void* client, void* data) {
+    auto* self = static_cast<vtkMedialMeshFilter*>(client);
+    self->UpdateProgress(0.05 + 0.55 * *static_cast<double*>(data));
+    if (self->GetAbortExecute())
+    {
+      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+    }
+  });
+  const unsigned long tag = this->Sampler->AddObserver(vtkCommand::ProgressEvent, forward);
+  vtkNew<vtkPolyData> copy;
+  copy->ShallowCopy(surface);
+  this->Sampler->SetInputData(copy);
+  const int ok = this->Sampler->UpdatePiece(0, 1, 0);
+  this->Sampler->RemoveObserver(tag);
+  auto balls = vtkSmartPointer<vtkPolyData>::New();
+  balls->ShallowCopy(this->Sampler->GetOutput());
+  this->Sampler->SetInputData(nullptr);
+  if (this->GetAbortExecute())
+  {
+    return nullptr;
+  }
+  if (!ok || balls->GetNumberOfPoints() == 0)
+  {
+    vtkErrorMacro(<< "Cannot build the medial mesh: the sampler gave no balls.");
+    return nullptr;
+  }
+  return balls;
+}
+
+bool vtkMedialMeshFilter::InscribeBalls(vtkPointSet* balls, vtkDataArray* radius,
+  const vtkMedialSurfaceQuery& query, bool closed, int threads, BallSet& set)
+{
+  const vtkIdType n = balls->GetNumberOfPoints();
+  std::vector<double> centres(3 * n), radii(n);
+  std::vector<char> keep(n, 1);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    balls->GetPoint(i, &centres[3 * i]);
+    radii[i] = radius->GetComponent(i, 0);
+    const double* c = &centres[3 * i];
+    if (!std::isfinite(radii[i]) || radii[i] < 0.0 || !std::isfinite(c[0] + c[1] + c[2]))
+    {
+      vtkErrorMacro(<< "Cannot build the medial mesh: ball " << i
+                    << " has a NaN, infinite or negative radius or coordinate.");
+      return false;
+    }
+  }
+  // Closest surface point of each centre: the inscribed radius, and the surface (hence
+  // solid) component the ball belongs to.
+  const vtkMedialTriangleMesh& mesh = *query.GetMesh();
+  const std::vector<vtkIdType> triangleComponent = TriangleComponents(mesh);
+  std::vector<double> reduction(n, 0.0);
+  std::vector<vtkIdType> component(n, -1);
+#pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double* c = &centres[3 * i];
+    if (closed && !query.IsInside(c))
+    {
+      keep[i] = 0;
+      continue;
+    }
+    vtkMedialSurfaceQuery::ClosestHit hit;
+    // A sampler's ball touches the surface at distance r: look just beyond it first.
+    if (query.ClosestPoint(c, radii[i] * (1.0 + 1e-9) + 1e-12 * mesh.Diagonal, hit) ||
+      query.ClosestPoint(c, 2.0 * mesh.Diagonal, hit))
+    {
+      reduction[i] = std::max(0.0, radii[i] - hit.Distance);
+      radii[i] = std::min(radii[i], hit.Distance);
+      component[i] = triangleComponent[hit.Triangle];
+    }
+  }
+  BallSet& out = set;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (!keep[i])
+    {
+      ++this->DroppedBalls;
+      continue;
+    }
+    out.Centres.insert(out.Centres.end(), &centres[3 * i], &centres[3 * i] + 3);
+    out.Radii.push_back(radii[i]);
+    out.Source.push_back(i);
+    out.SolidComponent.push_back(component[i]);
+    this->MaximumRadiusReduction = std::max(this->MaximumRadiusReduction, reduction[i]);
+  }
+  this->MaximumRadiusReduction /= query.GetMesh()->Diagonal;
+  if (this->DroppedBalls > 0)
+  {
+    vtkWarningMacro(<< this->DroppedBalls << " ball(s) with a centre outside the surface were dropped.");
+  }
+  return true;
+}
+
+void vtkMedialMeshFilter::WriteMesh(
+  vtkPointSet* balls, const BallSet& set, const vtkMedialMeshComplex& complex, vtkPolyData* output)
+{
+  const vtkIdType nv = static_cast<vtkIdType>(complex.Vertices.size());
+  std::vector<vtkIdType> pointOf(set.Radii.size(), -1);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(nv);
+  vtkPointData* inPD = balls->GetPointData();
+  vtkPointData* outPD = output->GetPointData();
+  outPD->CopyAllocate(inPD, nv);
+  vtkNew<vtkDoubleArray> radius;
+  radius->SetName(vtkMedialArrayNames::Radius);
+  radius->SetNumberOfTuples(nv);
+  for (vtkIdType k = 0; k < nv; ++k)
+  {
+    const vtkIdType ball = complex.Vertices[k];
+    pointOf[ball] = k;
+    points->SetPoint(k, &set.Centres[3 * ball]);
+    outPD->CopyData(inPD, set.Source[ball], k);
+    radius->SetValue(k, set.Radii[ball]);
+  }
+  outPD->RemoveArray(vtkMedialArrayNames::Radius);
+  outPD->AddArray(radius);
+  output->SetPoints(points);
+
+  // Lines: edges of no triangle (curves) and of three or more (seams). Per vertex, the
+  // edges of each kind, for the point types.
+  std::vector<int> seam(nv, 0), rim(nv, 0), curve(nv, 0), degree(nv, 0);
+  vtkNew<vtkCellArray> lines;
+  std::vector<int> lineTypes;
+  for (size_t e = 0; e < complex.Edges.size(); ++e)
+  {
+    const vtkIdType ends[2] = { pointOf[complex.Edges[e][0]], pointOf[complex.Edges[e][1]] };
+    const int triangles = complex.EdgeTriangles[e];
+    for (vtkIdType v : ends)
+    {
+      ++degree[v];
+      seam[v] += triangles >= 3;
+      rim[v] += triangles == 1;
+      curve[v] += triangles == 0;
+    }
+    if (triangles == 0 || triangles >= 3)
+    {
+      lines->InsertNextCell(2, ends);
+      lineTypes.push_back(triangles == 0 ? CURVE_EDGE : SEAM_EDGE);
+    }
+  }
+  vtkNew<vtkCellArray> verts;
+  for (vtkIdType k = 0; k < nv; ++k)
+  {
+    if (degree[k] == 0)
+    {
+      verts->InsertNextCell(1, &k);
+    }
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->AllocateExact(static_cast<vtkIdType>(complex.Triangles.size()), 3 * complex.Triangles.size());
+  for (const auto& t : complex.Triangles)
+  {
+    const vtkIdType ids[3] = { pointOf[t[0]], pointOf[t[1]], pointOf[t[2]] };
+    polys->InsertNextCell(3, ids);
+  }
+  output->SetVerts(verts);
+  output->SetLines(lines);
+  output->SetPolys(polys);
+
+  // Cell data in VTK's cell order: vertices, lines, polygons.
+  vtkNew<vtkIntArray> cellTypes;
+  cellTypes->SetName(vtkMedialArrayNames::MedialCellType);
+  cellTypes->Allocate(output->GetNumberOfCells());
+  for (vtkIdType k = 0; k < verts->GetNumberOfCells(); ++k)
+  {
+    cellTypes->InsertNextValue(ISOLATED_BALL);
+  }
+  for (int type : lineTypes)
+  {
+    cellTypes->InsertNextValue(type);
+  }
+  for (vtkIdType k = 0; k < polys->GetNumberOfCells(); ++k)
+  {
+    cellTypes->InsertNextValue(SHEET_TRIANGLE);
+  }
+  output->GetCellData()->AddArray(cellTypes);
+
+  if (!outPD->GetArray(vtkMedialArrayNames::MedialPointType))
+  {
+    vtkNew<vtkIntArray> types;
+    types->SetName(vtkMedialArrayNames::MedialPointType);
+    types->SetNumberOfTuples(nv);
+    for (vtkIdType k = 0; k < nv; ++k)
+    {
+      types->SetValue(k, MeshPointType(seam[k], rim[k], curve[k], degree[k]));
+    }
+    outPD->AddArray(types);
+  }
+}
+
+void vtkMedialMeshFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Sampler: " << this->Sampler << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "ProtrusionTolerance: " << this->ProtrusionTolerance << "\n";
+  os << indent << "PrunedTriangles: " << this->PrunedTriangles << "\n";
+  os << indent << "EulerCharacteristic: " << this->EulerCharacteristic << "\n";
+  os << indent << "NumberOfComponents: " << this->NumberOfComponents << "\n";
+  os << indent << "NumberOfEdges: " << this->NumberOfEdges << "\n";
+  os << indent << "HasSolidTopology: " << this->HasSolidTopology << "\n";
+  os << indent << "SolidEulerCharacteristic: " << this->SolidEulerCharacteristic << "\n";
+  os << indent << "SolidComponents: " << this->SolidComponents << "\n";
+  os << indent << "DroppedBalls: " << this->DroppedBalls << "\n";
+  os << indent << "DetachedBalls: " << this->DetachedBalls << "\n";
+  os << indent << "MaximumRadiusReduction: " << this->MaximumRadiusReduction << "\n";
+  os << indent << "RemainingTetrahedra: " << this->RemainingTetrahedra << "\n";
+}

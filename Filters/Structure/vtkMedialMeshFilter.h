@@ -1,0 +1,190 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class vtkMedialMeshFilter
+ * @brief The medial mesh of a closed surface: medial balls joined by edges and
+ * triangles into a connected complex with the topology of the solid.
+ *
+ * Algorithm:
+ *  1. Balls: the ones on input port 1 when it is connected, otherwise the output of
+ *     the Sampler (a vtkMedialAxisSampler; all its settings apply: theta, method,
+ *     strategy, seed, number of samples, threads) run on the surface of port 0.
+ *  2. Inscribed balls: each radius is lowered to the distance from its centre to the
+ *     surface (an exact closest-point query), so every ball is inside the shape
+ *     (sampler balls with a MinimumSeparationAngle above 0 may cross it slightly). On
+ *     a closed surface, balls whose centre is outside are dropped with a warning.
+ *  3. The regular (weighted Delaunay) triangulation of the centres with weights r^2
+ *     and the dual complex of the union of balls (the alpha complex at alpha = 0),
+ *     with CGAL (vtkMedialPowerComplex). Balls covered by the others are no vertex.
+ *  4. The complex (vtkMedialMeshComplex): the nerve of the power cells restricted to
+ *     the solid (which, unlike the union of balls, covers the solid without gaps),
+ *     minus every simplex that crosses the surface; then voids are filled,
+ *     components joined by edges inside the shape, triangles inside the shape
+ *     spanning three edges of the complex added, and pieces that no edge inside the
+ *     shape can join dropped (DetachedBalls); then tetrahedra are collapsed through
+ *     free triangles, which keeps the homotopy type, and fins whose interpolated balls
+ *     cross the surface by more than ProtrusionTolerance are pruned from their free
+ *     sides (collapses too).
+ *  5. Output assembly and classification.
+ *
+ * Guarantees:
+ *  - No edge or triangle crosses the surface: each one lies in the union of its own
+ *    (inscribed) balls or was tested against the surface triangles in double
+ *    precision (vtkMedialSurfaceQuery; touching does not count).
+ *  - Every vertex's ball is inscribed (step 2), exactly up to rounding.
+ *  - Topology: the complex lies in the solid, so each of its components lies in one
+ *    component of the solid, and steps 4's repairs only remove homology the solid
+ *    does not have (voids, when the solid has no cavity, and short loops that
+ *    bound inside it). It is homotopy equivalent to the solid when the restricted
+ *    power cells form a good cover (their nonempty intersections contractible),
+ *    which holds when the balls sample the medial axis densely against the local
+ *    feature size. This is checked on every run rather than assumed: for a closed,
+ *    manifold surface the solid's Euler characteristic is half the surface's, and
+ *    EulerCharacteristic, NumberOfComponents, SolidEulerCharacteristic and
+ *    SolidComponents are reported (a warning when they differ). Measured equal on
+ *    the five shared meshes and on generated genus 0, 1 and 2 solids with the
+ *    sampler's defaults (see the README). Open surfaces have no solid: the result
+ *    is built the same way (inside tests by ray parity are then unreliable near the
+ *    holes) and nothing is promised.
+ *
+ * Input 0: vtkPolyData, a closed triangle surface (the sampler's rules apply).
+ * Input 1 (optional): any vtkPointSet of balls with a point-data array `Radius`
+ * (e.g. a vtkMedialAxisSampler's output, or balls read from a file).
+ *
+ * Output: vtkPolyData with double-precision points (the kept ball centres) and
+ *  - point data: every array of the balls (Radius lowered as in step 2), and
+ *    MedialPointType (0 rim, 1 sheet, 2 seam, 3 junction): when the balls do not
+ *    carry it, it is read from the mesh: junction where three or more seam edges
+ *    meet, seam on a seam edge (one with three or more triangles), rim on a rim
+ *    edge (one triangle) or at the free end of a curve, sheet otherwise;
+ *  - cells: a vertex for each isolated ball, lines for the 1D parts (edges of no
+ *    triangle: tubes, where the medial surface degenerates to a curve) and for the
+ *    seam edges, triangles for the sheets; cell data MedialCellType (0 isolated
+ *    ball, 1 curve edge, 2 seam edge, 3 sheet triangle). Every edge of the complex
+ *    is a line or a triangle side, so V - E + F counts each distinct edge once
+ *    (vtkMedialMeshWriter writes them that way);
+ *  - field data: EulerCharacteristic, Components, and for a closed manifold surface
+ *    SolidEulerCharacteristic and SolidComponents.
+ *
+ * @sa vtkMedialAxisSampler vtkMedialMeshWriter vtkMedialBallUnion
+ */
+#ifndef vtkMedialMeshFilter_h
+#define vtkMedialMeshFilter_h
+
+#include "vtkMedialAxisStructureModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h" // for vtkSmartPointer
+
+class vtkDataArray;
+class vtkMedialAxisSampler;
+class vtkMedialMeshComplex;
+class vtkMedialSurfaceQuery;
+class vtkPointSet;
+
+class VTKMEDIALAXISSTRUCTURE_EXPORT vtkMedialMeshFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkMedialMeshFilter* New();
+  vtkTypeMacro(vtkMedialMeshFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum CellTypes
+  {
+    ISOLATED_BALL = 0,
+    CURVE_EDGE = 1,
+    SEAM_EDGE = 2,
+    SHEET_TRIANGLE = 3
+  };
+
+  ///@{
+  /// The sampler run on input 0 when no balls are given on input 1 (default: a
+  /// vtkMedialAxisSampler with its defaults). This filter sets its input.
+  virtual void SetSampler(vtkMedialAxisSampler*);
+  vtkGetObjectMacro(Sampler, vtkMedialAxisSampler);
+  ///@}
+
+  ///@{
+  /// Balls on input 1 (optional); when set, the sampler is not run.
+  void SetBallsConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  void SetBallsData(vtkDataObject* balls) { this->SetInputData(1, balls); }
+  ///@}
+
+  ///@{
+  /// OpenMP threads for the mesh passes; 0 means all cores (default 0). The output does
+  /// not depend on it. The sampler has its own setting.
+  vtkSetClampMacro(NumberOfThreads, int, 0, 4096);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
+  /// Fins whose interpolated balls cross the surface by more than this (relative to the
+  /// diagonal; default 1e-3) are pruned by collapses from their free sides (step 4);
+  /// negative: no pruning.
+  vtkSetClampMacro(ProtrusionTolerance, double, -1.0, 1.0);
+  vtkGetMacro(ProtrusionTolerance, double);
+  ///@}
+
+  ///@{
+  /// Figures from the last execution (see the class comment). The solid's figures are
+  /// known (HasSolidTopology) only for a closed, manifold surface.
+  vtkGetMacro(EulerCharacteristic, vtkIdType);
+  vtkGetMacro(NumberOfComponents, vtkIdType);
+  vtkGetMacro(NumberOfEdges, vtkIdType);
+  vtkGetMacro(HasSolidTopology, bool);
+  vtkGetMacro(SolidEulerCharacteristic, vtkIdType);
+  vtkGetMacro(SolidComponents, vtkIdType);
+  /// Balls dropped because their centre was outside the surface.
+  vtkGetMacro(DroppedBalls, vtkIdType);
+  /// Balls dropped because no edge inside the shape joined them to the rest of
+  /// their solid component (see vtkMedialMeshComplex).
+  vtkGetMacro(DetachedBalls, vtkIdType);
+  /// Largest radius reduction of step 2, relative to the surface's diagonal.
+  vtkGetMacro(MaximumRadiusReduction, double);
+  /// Tetrahedra that could not be collapsed (dropped; 0 on every shape measured).
+  vtkGetMacro(RemainingTetrahedra, vtkIdType);
+  /// Triangles removed by the protrusion pruning.
+  vtkGetMacro(PrunedTriangles, vtkIdType);
+  ///@}
+
+  /// Includes the sampler's modification time.
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkMedialMeshFilter();
+  ~vtkMedialMeshFilter() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  struct BallSet;
+  // Runs the sampler on a copy of the surface; null (after an error) when it fails.
+  vtkSmartPointer<vtkPointSet> RunSampler(vtkPolyData* surface);
+  // Step 2: radii lowered to the distance to the surface, outside centres dropped.
+  bool InscribeBalls(vtkPointSet* balls, vtkDataArray* radius, const vtkMedialSurfaceQuery& query,
+    bool closed, int threads, BallSet& set);
+  // Step 5: points, point data, cells and their types.
+  void WriteMesh(vtkPointSet* balls, const BallSet& set, const vtkMedialMeshComplex& complex,
+    vtkPolyData* output);
+
+  vtkMedialAxisSampler* Sampler = nullptr;
+  int NumberOfThreads = 0;
+  double ProtrusionTolerance = 1e-3;
+
+  vtkIdType EulerCharacteristic = 0;
+  vtkIdType NumberOfComponents = 0;
+  vtkIdType NumberOfEdges = 0;
+  bool HasSolidTopology = false;
+  vtkIdType SolidEulerCharacteristic = 0;
+  vtkIdType SolidComponents = 0;
+  vtkIdType DroppedBalls = 0;
+  vtkIdType DetachedBalls = 0;
+  double MaximumRadiusReduction = 0.0;
+  vtkIdType RemainingTetrahedra = 0;
+  vtkIdType PrunedTriangles = 0;
+
+private:
+  vtkMedialMeshFilter(const vtkMedialMeshFilter&) = delete;
+  void operator=(const vtkMedialMeshFilter&) = delete;
+};
+
+#endif
