@@ -2,8 +2,10 @@
 #include "vtkMedialPruneFilter.h"
 #include "vtkMedialArrayNames.h"
 
+#include "vtkMedialComplexPruning.h"
 #include "vtkMedialGraphPruning.h"
 #include "vtkMedialPipeline.h"
+#include "vtkMedialSimplicialComplex.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -202,7 +204,8 @@ int vtkMedialPruneFilter::RequestData(
     return 0;
   }
   const double diagonal = BallsDiagonal(input, radius);
-  return this->PruneGraph(input, radius, diagonal, output);
+  return input->GetNumberOfPolys() > 0 ? this->PruneMesh(input, radius, diagonal, output)
+                                       : this->PruneGraph(input, radius, diagonal, output);
 }
 
 int vtkMedialPruneFilter::PruneGraph(vtkPolyData* input, vtkDataArray* radius, double diagonal, vtkPolyData* output)
@@ -314,6 +317,92 @@ int vtkMedialPruneFilter::PruneGraph(vtkPolyData* input, vtkDataArray* radius, d
   output->SetLines(lines);
   outCD->AddArray(significance);
   UpdatePointTypes(output);
+  output->GetFieldData()->PassData(input->GetFieldData());
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+int vtkMedialPruneFilter::PruneMesh(vtkPolyData* input, vtkDataArray* radius, double diagonal, vtkPolyData* output)
+{
+  vtkMedialSimplicialComplex complex;
+  std::string error;
+  if (!complex.Read(input, radius, error))
+  {
+    vtkErrorMacro(<< "Cannot prune: " << error << ".");
+    return 0;
+  }
+  vtkMedialComplexPruning pruning;
+  if (!pruning.Run(complex, this->Measure, diagonal, [this]() { return this->GetAbortExecute() != 0; }))
+  {
+    return 1;
+  }
+  const double threshold = this->GetEffectiveThreshold();
+  this->NumberOfPrunedBranches = pruning.CountRemovedPieces(threshold);
+
+  const vtkIdType nv = complex.GetNumberOfVertices();
+  std::vector<char> used(static_cast<size_t>(nv));
+  for (vtkIdType v = 0; v < nv; ++v)
+  {
+    used[v] = pruning.VertexLevels[v] >= threshold ? 1 : 0;
+  }
+  const std::vector<vtkIdType> map = CopyUsedPoints(input, used, output);
+  std::vector<std::array<vtkIdType, 2>> edges;
+  std::vector<vtkIdType> edgeSource;
+  std::vector<vtkIdType> edgeIndex(complex.Edges.size(), -1);
+  for (size_t e = 0; e < complex.Edges.size(); ++e)
+  {
+    if (pruning.EdgeLevels[e] >= threshold)
+    {
+      edgeIndex[e] = static_cast<vtkIdType>(edges.size());
+      edges.push_back({ map[complex.Edges[e][0]], map[complex.Edges[e][1]] });
+      edgeSource.push_back(static_cast<vtkIdType>(e));
+    }
+  }
+  std::vector<int> edgeTriangles(edges.size(), 0);
+  std::vector<std::array<vtkIdType, 3>> triangles;
+  std::vector<double> triangleLevels;
+  for (size_t t = 0; t < complex.Triangles.size(); ++t)
+  {
+    if (pruning.TriangleLevels[t] >= threshold)
+    {
+      const auto& c = complex.Triangles[t];
+      triangles.push_back({ map[c[0]], map[c[1]], map[c[2]] });
+      triangleLevels.push_back(pruning.TriangleLevels[t]);
+      for (vtkIdType e : complex.TriangleEdges[t])
+      {
+        ++edgeTriangles[edgeIndex[e]];
+      }
+    }
+  }
+  this->NumberOfPrunedCells = static_cast<vtkIdType>(complex.Edges.size() + complex.Triangles.size() -
+    edges.size() - triangles.size());
+  const auto cells =
+    vtkMedialSimplicialComplex::WriteCells(output->GetNumberOfPoints(), edges, edgeTriangles, triangles, output);
+
+  vtkNew<vtkDoubleArray> significance;
+  significance->SetName(vtkMedialArrayNames::Significance);
+  significance->SetNumberOfTuples(output->GetNumberOfCells());
+  vtkIdType cell = 0;
+  for (vtkIdType k = 0; k < output->GetNumberOfVerts(); ++k)
+  {
+    significance->SetValue(cell++, GetMeasureUpperBound(this->Measure));
+  }
+  for (vtkIdType e : cells.LineEdges)
+  {
+    significance->SetValue(cell++, pruning.EdgeLevels[edgeSource[e]]);
+  }
+  for (double level : triangleLevels)
+  {
+    significance->SetValue(cell++, level);
+  }
+  output->GetCellData()->AddArray(significance);
+  if (vtkDataArray* types = output->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType))
+  {
+    for (vtkIdType k = 0; k < output->GetNumberOfPoints(); ++k)
+    {
+      types->SetTuple1(k, cells.PointTypes[k]);
+    }
+  }
   output->GetFieldData()->PassData(input->GetFieldData());
   this->UpdateProgress(1.0);
   return 1;

@@ -27,6 +27,12 @@
  * joining them, measured along the branch from its end to its junction, until no leaf
  * is left. Branches between junctions and cycles are never removed.
  *
+ * Algorithm, 3D (input with triangles: a medial mesh): elementary collapses
+ * (vtkMedialComplexPruning), a triangle with its free edge or an edge with its free
+ * end, least significant first; the burn time comes from the same collapses made in
+ * order of time (the extended grassfire). A collapse is worth the largest value of the
+ * measure over the simplex's balls (the angle measures: the simplex's own slope).
+ *
  * Each cell's Significance is the threshold from which pruning removes it (the running
  * maximum of the removals), so thresholding Significance at t (keep >= t) gives the same
  * result as this filter with Threshold t. Cells that pruning never removes get the
@@ -38,8 +44,11 @@
  *
  * Input: vtkPolyData with a point-data radius (input array 0; default Radius), lines
  * (2D) and optionally triangles (3D). Output: the kept cells and the points they use,
- * with every input array; point data MedialPointType, when present, is updated from the
- * kept cells (2D codes: 0 end, 1 regular, 2 junction); cell data Significance.
+ * with every input point array and the field data. 2D: the kept runs of each line with
+ * its cell data, and MedialPointType (when present) from the kept lines (0 end, 1
+ * regular, 2 junction). 3D: the layout of vtkMedialMeshFilter (vertex cells, curve and
+ * seam lines, triangles; MedialCellType) and MedialPointType from the kept mesh (0 rim,
+ * 1 sheet, 2 seam, 3 junction). Cell data Significance in both.
  *
  * @sa vtkMedialJunctionFilter vtkMedialMeshFilter vtkMedialSimplifyFilter
  */
@@ -92,7 +101,9 @@ public:
   static double GetMeasureUpperBound(int measure);
 
   ///@{
-  /// Figures from the last execution: removed branches (2D) and cells.
+  /// Figures from the last execution: removed branches (2D: leaves; 3D: connected
+  /// pieces, simplices joined through the balls removed with them) and removed cells
+  /// (2D: lines; 3D: triangles and edges).
   vtkGetMacro(NumberOfPrunedBranches, vtkIdType);
   vtkGetMacro(NumberOfPrunedCells, vtkIdType);
   ///@}
@@ -107,6 +118,8 @@ protected:
 
   // 2D (no triangles): levels per line segment, then the kept runs of each line.
   int PruneGraph(vtkPolyData* input, vtkDataArray* radius, double diagonal, vtkPolyData* output);
+  // 3D (triangles): levels per simplex, then the kept medial mesh.
+  int PruneMesh(vtkPolyData* input, vtkDataArray* radius, double diagonal, vtkPolyData* output);
 
   int Measure = TUBULARITY;
   double Threshold = -1.0;

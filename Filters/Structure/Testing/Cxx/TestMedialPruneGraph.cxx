@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Pruning of the 2D medial graph with the default measure and threshold: a finely
-// polygonised ellipse keeps one segment with 2 end points, a rounded 3-armed star 3
-// branches at one junction, a rectangle its 4 corner spokes, a regular hexagon its 6;
+// polygonised ellipse keeps one segment with 2 end points, a rounded 3-armed star
+// (vtkMedialShapeSource's TREFOIL) 3 branches at one junction, a rectangle its 4 corner spokes, a regular hexagon its 6;
 // polygons with holes keep their cycles; components and cycles never change, for every
 // measure. Thresholding the Significance array reproduces the filter's output.
 #include "MedialPolygonTestUtilities.h"
@@ -10,6 +10,7 @@
 #include "vtkCellData.h"
 #include "vtkMedialJunctionFilter.h"
 #include "vtkMedialPruneFilter.h"
+#include "vtkMedialShapeSource.h"
 
 #include <cstdio>
 #include <map>
@@ -111,17 +112,17 @@ Loop2 Ellipse(int n, double a, double b, double phase)
   return l;
 }
 
-// r(t) = 1 + 0.5 cos(3 t): three round lobes with concave waists between them.
-Loop2 RoundedStar(int n, double phase)
+// vtkMedialShapeSource's ELLIPSE (semi-axes a, 1) or TREFOIL with 16 * resolution vertices.
+vtkSmartPointer<vtkPolyData> Curve(int shape, int resolution, double a = 1.0)
 {
-  Loop2 l;
-  for (int i = 0; i < n; ++i)
-  {
-    const double t = phase + 2.0 * 3.14159265358979323846 * i / n;
-    const double r = 1.0 + 0.5 * std::cos(3.0 * t);
-    l.push_back({ r * std::cos(t), r * std::sin(t) });
-  }
-  return l;
+  vtkNew<vtkMedialShapeSource> source;
+  source->SetShape(shape);
+  source->SetResolution(resolution);
+  source->SetBoxLengths(2.0 * a, 2.0, 1.0);
+  source->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(source->GetOutput());
+  return out;
 }
 
 // The default pruning of a polygon's graph must give `ends` end points and `junctions`
@@ -196,11 +197,12 @@ int TestMedialPruneGraph(int, char*[])
   int status = EXIT_SUCCESS;
   auto run = [&status](int result) { status = result == EXIT_SUCCESS ? status : EXIT_FAILURE; };
   // Smooth curves finely polygonised: only the smooth curve's branches stay.
-  run(CheckShape("ellipse 200", MakePolygon({ Ellipse(200, 2.0, 1.0, 0.0) }), 2, 0, 0));
-  run(CheckShape("ellipse 200, shifted", MakePolygon({ Ellipse(200, 2.0, 1.0, 0.0123) }), 2, 0, 0));
-  run(CheckShape("ellipse 600, 3:1", MakePolygon({ Ellipse(600, 3.0, 1.0, 0.0071) }), 2, 0, 0));
-  run(CheckShape("rounded 3-armed star 600", MakePolygon({ RoundedStar(600, 0.0) }), 3, 1, 0));
-  run(CheckShape("rounded 3-armed star, shifted", MakePolygon({ RoundedStar(900, 0.0049) }), 3, 1, 0));
+  const int E = vtkMedialShapeSource::ELLIPSE, T = vtkMedialShapeSource::TREFOIL;
+  run(CheckShape("ellipse 2:1, 208 vertices", Curve(E, 13, 2.0), 2, 0, 0));
+  run(CheckShape("ellipse 2:1, shifted", MakePolygon({ Ellipse(200, 2.0, 1.0, 0.0123) }), 2, 0, 0));
+  run(CheckShape("ellipse 3:1, 592 vertices", Curve(E, 37, 3.0), 2, 0, 0));
+  run(CheckShape("trefoil, 256 vertices", Curve(T, 16), 3, 1, 0));
+  run(CheckShape("trefoil, 608 vertices", Curve(T, 38), 3, 1, 0));
   // Exact polygon features stay.
   run(CheckShape("rectangle 2 x 1", MakePolygon({ Rectangle(0, 0, 2, 1) }), 4, 2, 0));
   run(CheckShape("rectangle 10 x 1", MakePolygon({ Rectangle(0, 0, 10, 1) }), 4, 2, 0));
@@ -223,7 +225,7 @@ int TestMedialPruneGraph(int, char*[])
   }
   // Topology and the Significance levels, every measure.
   run(CheckTopologyAndLevels("ellipse", MakePolygon({ Ellipse(200, 2.0, 1.0, 0.0123) })));
-  run(CheckTopologyAndLevels("star", MakePolygon({ RoundedStar(600, 0.0) })));
+  run(CheckTopologyAndLevels("trefoil", Curve(T, 38)));
   run(CheckTopologyAndLevels("frame", MakePolygon({ Rectangle(-2, -2, 2, 2), Rectangle(-1, -1, 1, 1) })));
   run(CheckTopologyAndLevels("ring", ring));
   run(CheckTopologyAndLevels("two holes",
