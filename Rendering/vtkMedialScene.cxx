@@ -34,6 +34,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -163,9 +164,9 @@ vtkRenderWindow* vtkMedialScene::GetRenderWindow()
 
 namespace
 {
-// Colours the medial data by MedialPointType's four 3D codes through an indexed table
-// whose annotations name them in the legend.
-void ColourByPointType(vtkPolyDataMapper* mapper, vtkLookupTable* lut)
+// MedialPointType's four 3D codes through an indexed table whose annotations name them
+// in the legend.
+void PointTypeTable(vtkLookupTable* lut, double range[2])
 {
   const double colours[4][3] = { { 0.20, 0.45, 0.85 }, { 0.78, 0.78, 0.75 }, { 0.95, 0.55, 0.10 },
     { 0.85, 0.10, 0.10 } };
@@ -178,15 +179,72 @@ void ColourByPointType(vtkPolyDataMapper* mapper, vtkLookupTable* lut)
     lut->SetAnnotation(t, names[t]);
   }
   lut->IndexedLookupOn();
-  mapper->SelectColorArray(vtkMedialArrayNames::MedialPointType);
-  mapper->SetScalarRange(0, 3);
+  range[0] = 0;
+  range[1] = 3;
 }
 }
 
-// The translucent surface, the medial points (or mesh) coloured by radius or point type,
-// and the scale.
+// Colours what `mapper` draws by the point array `name` of `data`, blue (low) to red
+// (high) over its range (MedialPointType: one named colour per 3D code), and adds the
+// scale (with ScalarBarVisibility).
+void vtkMedialScene::ColourBy(vtkPolyDataMapper* mapper, vtkPolyData* data, const char* name, vtkRenderer* renderer)
+{
+  double range[2] = { 0.0, 1.0 };
+  vtkDataArray* values = data->GetPointData()->GetArray(name);
+  if (values && values->GetNumberOfTuples() > 0)
+  {
+    values->GetRange(range);
+  }
+  vtkNew<vtkLookupTable> lut;
+  if (std::string(name) == vtkMedialArrayNames::MedialPointType)
+  {
+    PointTypeTable(lut, range);
+  }
+  else
+  {
+    lut->SetHueRange(0.667, 0.0); // blue (thin) to red (thick)
+    lut->SetTableRange(range);
+    lut->Build();
+  }
+  mapper->SetLookupTable(lut);
+  mapper->SetScalarModeToUsePointFieldData();
+  mapper->SelectColorArray(name);
+  mapper->SetScalarRange(range);
+  mapper->ScalarVisibilityOn();
+  if (this->ScalarBarVisibility)
+  {
+    vtkNew<vtkScalarBarActor> bar;
+    bar->SetLookupTable(lut);
+    bar->SetTitle(name);
+    bar->SetNumberOfLabels(5);
+    bar->SetWidth(0.09);
+    bar->SetHeight(0.6);
+    bar->SetPosition(0.89, 0.2);
+    bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
+    bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
+    renderer->AddActor2D(bar);
+  }
+}
+
+// The translucent surface, the medial points (or mesh) coloured by radius or point type
+// and the scale; or,
+// with SurfaceScalars, the opaque surface coloured by that array and its scale.
 void vtkMedialScene::AddBalls(vtkRenderer* renderer)
 {
+  if (this->Surface && !this->SurfaceScalars.empty())
+  {
+    vtkNew<vtkPolyDataNormals> normals; // smooth shading
+    normals->SetInputData(this->Surface);
+    normals->SplittingOff();
+    normals->Update();
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(normals->GetOutputPort());
+    this->ColourBy(mapper, normals->GetOutput(), this->SurfaceScalars.c_str(), renderer);
+    vtkNew<vtkActor> surface;
+    surface->SetMapper(mapper);
+    renderer->AddActor(surface);
+    return;
+  }
   if (this->Surface)
   {
     vtkSmartPointer<vtkActor> surface = ActorOf(this->Surface, 0.80, 0.82, 0.86);
@@ -197,48 +255,18 @@ void vtkMedialScene::AddBalls(vtkRenderer* renderer)
   {
     return;
   }
-  double range[2] = { 0.0, 1.0 };
-  vtkDataArray* radius = this->Medial->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
-  if (radius && radius->GetNumberOfTuples() > 0)
-  {
-    radius->GetRange(range);
-  }
-  vtkNew<vtkLookupTable> lut;
-  lut->SetHueRange(0.667, 0.0); // blue (thin) to red (thick)
-  lut->SetTableRange(range);
-  lut->Build();
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(this->Medial);
-  mapper->SetLookupTable(lut);
-  mapper->SetScalarModeToUsePointFieldData();
-  mapper->SelectColorArray(vtkMedialArrayNames::Radius);
-  mapper->SetScalarRange(range);
   const bool byType = this->ColorBy == POINT_TYPE &&
     this->Medial->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
-  if (byType)
-  {
-    ColourByPointType(mapper, lut);
-  }
-  mapper->ScalarVisibilityOn();
+  this->ColourBy(mapper, this->Medial,
+    byType ? vtkMedialArrayNames::MedialPointType : vtkMedialArrayNames::Radius, renderer);
   vtkNew<vtkActor> medial;
   medial->SetMapper(mapper);
   medial->GetProperty()->SetPointSize(this->PointSize);
   medial->GetProperty()->SetLineWidth(this->LineWidth);
   medial->GetProperty()->RenderPointsAsSpheresOn();
   renderer->AddActor(medial);
-  if (this->ScalarBarVisibility)
-  {
-    vtkNew<vtkScalarBarActor> bar;
-    bar->SetLookupTable(lut);
-    bar->SetTitle(byType ? vtkMedialArrayNames::MedialPointType : vtkMedialArrayNames::Radius);
-    bar->SetNumberOfLabels(5);
-    bar->SetWidth(0.09);
-    bar->SetHeight(0.6);
-    bar->SetPosition(0.89, 0.2);
-    bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
-    bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
-    renderer->AddActor2D(bar);
-  }
 }
 
 // The polygon (black), the arcs (blue linear, orange parabolic), the maximal disks of
@@ -424,6 +452,7 @@ void vtkMedialScene::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Graph: " << this->Graph << "\n";
   os << indent << "Reconstruction: " << this->Reconstruction << "\n";
   os << indent << "SurfaceOpacity: " << this->SurfaceOpacity << "\n";
+  os << indent << "SurfaceScalars: " << this->SurfaceScalars << "\n";
   os << indent << "PointSize: " << this->PointSize << "\n";
   os << indent << "LineWidth: " << this->LineWidth << "\n";
   os << indent << "ScalarBarVisibility: " << this->ScalarBarVisibility << "\n";

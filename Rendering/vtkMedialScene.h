@@ -11,7 +11,10 @@
  *    scalar bar (ScalarBarVisibility). Medial may also be a medial mesh
  *    (vtkMedialMeshFilter's output; its triangles and lines are drawn), and with
  *    ColorBy POINT_TYPE it is coloured by `MedialPointType`: rim blue, sheet grey,
- *    seam orange, junction red, with their names in the legend. Given a Reconstruction, the window gets a
+ *    seam orange, junction red, with their names in the legend. With SurfaceScalars
+ *    (e.g. "Thickness" from vtkMedialThickness), the Surface is drawn opaque and
+ *    coloured by that point array instead, with its scale, and the Medial balls are
+ *    left out. Given a Reconstruction, the window gets a
  *    second view on its right: the reconstruction, shaded in copper, seen through the
  *    same camera.
  *  - 2D (a Graph, vtkMedialJunctionFilter's output): the Surface's loops as black
@@ -39,8 +42,11 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for vtkSmartPointer
 
+#include <string> // for std::string
+
 class vtkPolyData;
 class vtkRenderWindow;
+class vtkPolyDataMapper;
 class vtkRenderer;
 
 class VTKMEDIALAXISRENDERING_EXPORT vtkMedialScene : public vtkObject
@@ -78,6 +84,13 @@ public:
   /// Opacity of the 3D surface (default 0.2; 1 draws it opaque).
   vtkSetClampMacro(SurfaceOpacity, double, 0.0, 1.0);
   vtkGetMacro(SurfaceOpacity, double);
+  ///@}
+
+  ///@{
+  /// A point array of the Surface to colour it by, opaque, with its scale (default
+  /// empty: the translucent grey shell). E.g. vtkMedialArrayNames::Thickness.
+  vtkSetStdStringFromCharMacro(SurfaceScalars);
+  vtkGetCharFromStdStringMacro(SurfaceScalars);
   ///@}
 
   ///@{
@@ -147,6 +160,7 @@ protected:
   vtkPolyData* Graph = nullptr;
   vtkPolyData* Reconstruction = nullptr;
   double SurfaceOpacity = 0.2;
+  std::string SurfaceScalars;
   double PointSize = 4.0;
   double LineWidth = 1.0;
   bool ScalarBarVisibility = true;
@@ -163,6 +177,7 @@ private:
   void operator=(const vtkMedialScene&) = delete;
 
   void AddBalls(vtkRenderer* renderer);
+  void ColourBy(vtkPolyDataMapper* mapper, vtkPolyData* data, const char* name, vtkRenderer* renderer);
   void AddGraph(vtkRenderer* renderer, const double normal[3]);
   void AddReconstructionView(vtkRenderWindow* window, vtkRenderer* left);
   void Frame(vtkRenderer* renderer, const double normal[3]);

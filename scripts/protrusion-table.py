@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
-"""Measures how far medial balls cross the input surface, for several theta.
+"""Measures how far medial balls cross the input surface, for several theta, with
+the angle rule alone (MaximumProtrusion 1: balls are not shrunk to be inscribed).
 
 With theta > 0, surface inside the cap around the sample point is ignored, so a
-ball can grow through the surface there. Protrusion = Radius minus the distance
-from the centre to the surface (vtkMedialBallProtrusion), relative to the
-bounding-box diagonal. Run from the source tree after a build:
+ball can grow through the surface there. (The default MaximumProtrusion then
+shrinks such balls; build/bin/medial-solids-bench measures that.) Protrusion = Radius
+minus the distance from the centre to the surface (vtkMedialBallProtrusion), relative
+to the bounding-box diagonal. Run from the source tree after a build:
   PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 scripts/protrusion-table.py \\
       ../shared/data/meshes/horse.ply [SAMPLES]
 """
@@ -33,6 +35,7 @@ for theta in (0, 30, 45, 60):
     sampler.SetInputData(surface)
     sampler.SetNumberOfSamples(samples)
     sampler.SetMinimumSeparationAngle(theta)
+    sampler.SetMaximumProtrusion(1.0)
     measure = medialaxis.vtkMedialBallProtrusion()
     measure.SetSurfaceData(surface)
     measure.SetBallsConnection(sampler.GetOutputPort())

@@ -29,6 +29,7 @@ for level in LEVELS:
         sampler.SetNumberOfSamples(SAMPLES)
         sampler.SetMinimumSeparationAngle(theta)
         sampler.SetMethodToShrinkingBall()
+        sampler.SetMaximumProtrusion(1.0)  # the angle rule alone: balls are not shrunk
         sampler.Update()
         out = sampler.GetOutput()
         radius = vtk_to_numpy(out.GetPointData().GetArray("Radius"))

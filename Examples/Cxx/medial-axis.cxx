@@ -9,6 +9,7 @@
 
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialBallProtrusion.h"
 #include "vtkMedialBallUnion.h"
 #include "vtkMedialFileReader.h"
 #include "vtkMedialJunctionFilter.h"
@@ -17,6 +18,7 @@
 #include "vtkMedialReconstructionError.h"
 #include "vtkMedialScene.h"
 #include "vtkMedialShapeSource.h"
+#include "vtkMedialThickness.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
@@ -49,6 +51,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -58,6 +61,7 @@ const char* Usage =
   "                   [--threads T] [--tolerance E] [--min-angle DEG] [-o OUT.vtp]\n"
   "                   [--render OUT.png] [--stats] [--reconstruct OUT.vtp|.stl|.ply]\n"
   "                   [--resolution N] [--junctions OUT.vtp] [--medial-mesh OUT.vtp|OUT.ma]\n"
+  "                   [--max-protrusion E] [--thickness OUT.vtp] [--thickness-below T]\n"
   "  INPUT        closed surface: .vtp .vtk .ply .stl .obj .off; or planar polygons / closed\n"
   "               polylines (any plane, holes allowed) for the 2D medial axis;\n"
   "               or a demo: demo:jack (3D, the default with no INPUT), demo:l-shape,\n"
@@ -75,9 +79,14 @@ const char* Usage =
   "  --tolerance E  bisection tolerance relative to the bounding-box diagonal (default 1e-6)\n"
   "  --min-angle DEG  minimum separation angle theta in degrees (default 45; 0 = exact\n"
   "               medial axis of the polyhedron)\n"
+  "  --max-protrusion E  largest depth, relative to the bounding-box diagonal, by which a\n"
+  "               ball may cross the surface; deeper, it is shrunk about its centre until\n"
+  "               inscribed (default 1e-4; 1 = never: the angle rule alone, whose balls\n"
+  "               cross the surface by up to about 2% of the diagonal)\n"
   "  -o OUT.vtp   write the medial balls (points with Radius, SurfacePoint, ...)\n"
   "  --render OUT.png  render the surface and the medial points offscreen (needs X; use xvfb-run)\n"
-  "  --stats      print one JSON line of figures on stdout\n"
+  "  --stats      print one JSON line of figures on stdout; 3D input adds protrusion_max_rel,\n"
+  "               how far the balls cross the surface (relative to the diagonal)\n"
   "  --reconstruct OUT  write the boundary of the union of the medial balls (.vtp .stl .ply);\n"
   "               with --stats adds reconstruction_seconds and, for a closed input,\n"
   "               hausdorff_max_rel and hausdorff_mean_rel (vertex to surface, the larger\n"
@@ -93,7 +102,13 @@ const char* Usage =
   "               with --stats adds medial_vertices, medial_edges (triangle sides\n"
   "               included), medial_faces, seams and junctions (vertices of those\n"
   "               MedialPointTypes), euler_characteristic, components and\n"
-  "               medial_mesh_seconds; --render then draws it coloured by MedialPointType\n";
+  "               medial_mesh_seconds; --render then draws it coloured by MedialPointType\n"
+  "  --thickness OUT.vtp  3D input: write the surface with its wall thickness (point and cell\n"
+  "               data Thickness, MedialRadius, MedialCentre, RayThickness); --render then\n"
+  "               draws the surface coloured by thickness; --stats adds thickness_min,\n"
+  "               thickness_p01 and thickness_median\n"
+  "  --thickness-below T  3D input: report the share of the area and the number of regions\n"
+  "               thinner than T (in the input's units), e.g. a printer's minimum wall\n";
 
 struct Options
 {
@@ -113,6 +128,9 @@ struct Options
   bool Stats = false;
   std::string Reconstruct;
   int Resolution = 128;
+  double MaxProtrusion = 1e-4;
+  std::string Thickness;
+  double ThicknessBelow = 0.0;
 };
 
 volatile std::sig_atomic_t Interrupted = 0;
@@ -332,6 +350,22 @@ Options Parse(int argc, char* argv[])
     {
       o.Resolution = static_cast<int>(integer(i, 8, 2048));
     }
+    else if (a == "--max-protrusion")
+    {
+      o.MaxProtrusion = number(i, 0, 1);
+    }
+    else if (a == "--thickness")
+    {
+      o.Thickness = need(i);
+    }
+    else if (a == "--thickness-below")
+    {
+      o.ThicknessBelow = number(i, 0, 1e300);
+      if (!(o.ThicknessBelow > 0.0))
+      {
+        Fail("--thickness-below expects a thickness above 0");
+      }
+    }
     else if (!a.empty() && a[0] == '-')
     {
       Fail("unknown option '" + a + "' (see --help)");
@@ -412,6 +446,19 @@ void CheckReconstructPath(const std::string& path)
   CheckWritable(path, "--reconstruct");
 }
 
+// Updates `filter`, fails with the first error reported, and keeps a copy of output 0.
+vtkSmartPointer<vtkPolyData> Run(vtkPolyDataAlgorithm* filter, MessageSink& sink)
+{
+  filter->Update();
+  if (!sink.LastError.empty())
+  {
+    Fail(sink.LastError);
+  }
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->ShallowCopy(filter->GetOutput());
+  return result;
+}
+
 // Union of the medial balls, written to `path` by its extension.
 vtkSmartPointer<vtkPolyData> Reconstruct(vtkPolyData* medial, const Options& opt, MessageSink& sink)
 {
@@ -419,14 +466,7 @@ vtkSmartPointer<vtkPolyData> Reconstruct(vtkPolyData* medial, const Options& opt
   ballUnion->SetInputData(medial);
   ballUnion->SetSampleDimensions(opt.Resolution, opt.Resolution, opt.Resolution);
   ballUnion->SetNumberOfThreads(opt.Threads);
-  ballUnion->Update();
-  if (!sink.LastError.empty())
-  {
-    Fail(sink.LastError);
-  }
-  auto result = vtkSmartPointer<vtkPolyData>::New();
-  result->ShallowCopy(ballUnion->GetOutput());
-  return result;
+  return Run(ballUnion, sink);
 }
 
 // Writes binary VTK XML polydata; fails with the writer's reason.
@@ -543,14 +583,7 @@ vtkSmartPointer<vtkPolyData> RunJunctions(vtkPolyData* polygon, int threads, Mes
   vtkNew<vtkMedialJunctionFilter> junctions;
   junctions->SetInputData(polygon);
   junctions->SetNumberOfThreads(threads);
-  junctions->Update();
-  if (!sink.LastError.empty())
-  {
-    Fail(sink.LastError);
-  }
-  auto graph = vtkSmartPointer<vtkPolyData>::New();
-  graph->ShallowCopy(junctions->GetOutput());
-  return graph;
+  return Run(junctions, sink);
 }
 
 std::string JsonString(const std::string& s)
@@ -619,6 +652,10 @@ void CheckOutputs(const Options& opt)
       Fail("--medial-mesh writes .vtp or .ma (Q-MAT's form), got '" + opt.MedialMesh + "'");
     }
     CheckWritable(opt.MedialMesh, "--medial-mesh");
+  }
+  if (!opt.Thickness.empty())
+  {
+    CheckVtpPath(opt.Thickness, "--thickness");
   }
 }
 
@@ -694,6 +731,7 @@ vtkSmartPointer<vtkMedialAxisSampler> Sample(vtkPolyData* surface, const Options
   sampler->SetNumberOfThreads(opt.Threads);
   sampler->SetTolerance(opt.Tolerance);
   sampler->SetMinimumSeparationAngle(opt.MinAngle);
+  sampler->SetMaximumProtrusion(opt.MaxProtrusion);
 
   const auto start = std::chrono::steady_clock::now();
   Progress progress{ start };
@@ -789,17 +827,22 @@ std::string MedialMeshStats(vtkPolyData* mesh, double seconds)
   return js.str();
 }
 
-// --render: the 2D graph scene for planar input, else the 3D scene (with the
-// reconstruction beside it when there is one, and the medial mesh coloured by point
-// type instead of the balls when there is one).
+// --render: the 2D graph scene for planar input, the surface coloured by thickness
+// with --thickness, else the 3D scene (with the reconstruction beside it when there is
+// one, and the medial mesh coloured by point type instead of the balls when there is one).
 void RenderPicture(vtkPolyData* surface, vtkPolyData* medial, vtkPolyData* graph, vtkPolyData* reconstruction,
-  vtkPolyData* medialMesh, const std::string& path, MessageSink& sink)
+  vtkPolyData* medialMesh, vtkPolyData* thickness, const std::string& path, MessageSink& sink)
 {
   vtkNew<vtkMedialScene> scene;
   scene->SetSurface(surface);
   if (graph)
   {
     scene->SetGraph(graph);
+  }
+  else if (thickness)
+  {
+    scene->SetSurface(thickness);
+    scene->SetSurfaceScalars(vtkMedialArrayNames::Thickness);
   }
   else
   {
@@ -841,6 +884,78 @@ std::string SamplerStats(
   return js.str();
 }
 
+// vtkMedialThickness with the sampler's angle and protrusion settings.
+vtkSmartPointer<vtkPolyData> MeasureThickness(vtkPolyData* surface, const Options& opt, MessageSink& sink)
+{
+  vtkNew<vtkMedialThickness> thickness;
+  thickness->SetInputData(surface);
+  thickness->SetMinimumSeparationAngle(opt.MinAngle);
+  thickness->SetMaximumProtrusion(opt.MaxProtrusion);
+  thickness->SetThinThreshold(opt.ThicknessBelow);
+  thickness->SetNumberOfThreads(opt.Threads);
+  return Run(thickness, sink);
+}
+
+// JSON members for --thickness and --thickness-below (or, without --stats, a line for
+// --thickness-below): percentiles of the point Thickness (NaN left out), the thin share
+// of the area and its regions.
+std::string ThicknessReport(vtkPolyData* thickness, const Options& opt)
+{
+  std::vector<double> values;
+  vtkDataArray* t = thickness->GetPointData()->GetArray(vtkMedialArrayNames::Thickness);
+  for (vtkIdType i = 0; t && i < t->GetNumberOfTuples(); ++i)
+  {
+    if (!std::isnan(t->GetComponent(i, 0)))
+    {
+      values.push_back(t->GetComponent(i, 0));
+    }
+  }
+  std::sort(values.begin(), values.end());
+  auto quantile = [&](double q) {
+    return values.empty() ? std::nan("") : values[static_cast<size_t>(q * (values.size() - 1))];
+  };
+  auto field = [&](const char* name) {
+    vtkDataArray* a = thickness->GetFieldData()->GetArray(name);
+    return a ? a->GetComponent(0, 0) : 0.0;
+  };
+  const double share = field(vtkMedialArrayNames::ThinAreaFraction);
+  const double regions = field(vtkMedialArrayNames::ThinRegionCount);
+  std::ostringstream out;
+  out.precision(6);
+  if (!opt.Stats)
+  {
+    out << "thinner than " << opt.ThicknessBelow << ": " << 100.0 * share << "% of the area, in " << regions
+        << (regions == 1 ? " region" : " regions");
+    return out.str();
+  }
+  out << ", \"thickness_min\": " << quantile(0.0) << ", \"thickness_p01\": " << quantile(0.01)
+      << ", \"thickness_median\": " << quantile(0.5);
+  if (opt.ThicknessBelow > 0.0)
+  {
+    out << ", \"thickness_below\": " << opt.ThicknessBelow << ", \"thin_area_fraction\": " << share
+        << ", \"thin_regions\": " << regions;
+  }
+  return out.str();
+}
+
+// JSON members of the balls' protrusion through the surface (vtkMedialBallProtrusion).
+std::string ProtrusionStats(vtkPolyData* surface, vtkPolyData* medial, const Options& opt, MessageSink& sink)
+{
+  vtkNew<vtkMedialBallProtrusion> protrusion;
+  protrusion->SetSurfaceData(surface);
+  protrusion->SetBallsData(medial);
+  protrusion->SetNumberOfThreads(opt.Threads);
+  protrusion->Update();
+  if (!sink.LastError.empty())
+  {
+    Fail(sink.LastError);
+  }
+  std::ostringstream js;
+  js.precision(6);
+  js << ", \"max_protrusion\": " << opt.MaxProtrusion << ", \"protrusion_max_rel\": " << protrusion->GetMaxProtrusion();
+  return js.str();
+}
+
 // JSON members of the 2D medial graph.
 std::string GraphStats(vtkPolyData* graph)
 {
@@ -879,6 +994,11 @@ int main(int argc, char* argv[])
   {
     Fail("--junctions needs planar polygons or closed polylines; '" + opt.Input + "' is not planar");
   }
+  const bool wantThickness = !opt.Thickness.empty() || opt.ThicknessBelow > 0.0;
+  if (wantThickness && planar)
+  {
+    Fail("--thickness and --thickness-below need a 3D surface; '" + opt.Input + "' is planar");
+  }
   vtkSmartPointer<vtkPolyData> graph;
   if (planar && (!opt.Junctions.empty() || !opt.Render.empty() || opt.Stats))
   {
@@ -913,16 +1033,31 @@ int main(int argc, char* argv[])
     reconstructionSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     WriteReconstruction(reconstruction, opt.Reconstruct, sink);
   }
+  vtkSmartPointer<vtkPolyData> thickness;
+  if (wantThickness)
+  {
+    thickness = MeasureThickness(surface, opt, sink);
+    if (!opt.Thickness.empty())
+    {
+      WriteVtp(thickness, opt.Thickness, sink);
+    }
+    if (opt.ThicknessBelow > 0.0 && !opt.Stats)
+    {
+      std::cout << ThicknessReport(thickness, opt) << std::endl;
+    }
+  }
   if (!opt.Render.empty())
   {
-    RenderPicture(surface, medial, planar ? graph.Get() : nullptr, reconstruction, medialMesh, opt.Render, sink);
+    RenderPicture(
+      surface, medial, planar ? graph.Get() : nullptr, reconstruction, medialMesh, thickness, opt.Render, sink);
   }
   if (opt.Stats)
   {
     std::cout << SamplerStats(opt, sampler, medial, planar, seconds)
+              << (planar ? std::string() : ProtrusionStats(surface, medial, opt, sink))
               << ReconstructionStats(surface, reconstruction, reconstructionSeconds, sampler, opt, sink)
               << MedialMeshStats(medialMesh, medialMeshSeconds) << (graph ? GraphStats(graph) : std::string())
-              << "}" << std::endl;
+              << (thickness ? ThicknessReport(thickness, opt) : std::string()) << "}" << std::endl;
   }
   return 0;
 }

@@ -26,7 +26,8 @@
  * 2 seam edge, 3 sheet triangle).
  * Cell data of the sampler's links: InitialLink.
  *
- * Point data on a surface (thickness): Thickness, MedialRadius, MedialCentre, RayThickness.
+ * Point and cell data on a surface (thickness): Thickness, MedialRadius, MedialCentre,
+ * RayThickness; field data ThinAreaFraction, ThinRegionCount.
  *
  * Field data: RequestedSamples, DiscardedSamples, MeanIterations, CappedSamples,
  * EvaluatedSamples, SeedSamples, CoverageReached, MaxCoverageGap; the medial mesh's
@@ -72,6 +73,8 @@ constexpr const char* Thickness = "Thickness";
 constexpr const char* MedialRadius = "MedialRadius";
 constexpr const char* MedialCentre = "MedialCentre";
 constexpr const char* RayThickness = "RayThickness";
+constexpr const char* ThinAreaFraction = "ThinAreaFraction";
+constexpr const char* ThinRegionCount = "ThinRegionCount";
 
 // Field data of the sampler.
 constexpr const char* RequestedSamples = "RequestedSamples";

@@ -40,10 +40,19 @@ double AdmissibleDistance2(const QueryState& s, vtkIdType t, double out[3])
   {
     return G::ClosestPointOnTriangle(s.Centre, a, b, c, out);
   }
-  // Half-space (q - c).(P - c) <= |P - c|^2 cos(theta), written as w.q <= k.
+  // Half-space (q - c).(P - c) <= |P - c|^2 cos(theta), written as w.q <= k; the
+  // other side (the cap) with CapOnly.
   double w[3];
   G::Sub(f->SamplePoint, s.Centre, w);
-  const double k = G::Dot(w, s.Centre) + G::Dot(w, w) * f->CosMinAngle;
+  double k = G::Dot(w, s.Centre) + G::Dot(w, w) * f->CosMinAngle;
+  if (f->CapOnly)
+  {
+    for (double& c : w)
+    {
+      c = -c;
+    }
+    k = -k;
+  }
   return G::ClosestPointOnClippedTriangle(s.Centre, a, b, c, w, k, out);
 }
 
@@ -212,8 +221,10 @@ bool vtkMedialSurfaceQuery::Build(
   return true;
 }
 
-bool vtkMedialSurfaceQuery::Intersect(const double origin[3], const double direction[3],
-  double tMin, double tMax, vtkIdType ignoreTriangle, RayHit& hit) const
+// One Embree ray from `rayOrigin` (the origin itself, or nudged off it); hit distances
+// are redone in double along the ray from `origin`.
+bool vtkMedialSurfaceQuery::IntersectFrom(const double rayOrigin[3], const double origin[3],
+  const double direction[3], double tMin, double tMax, vtkIdType ignoreTriangle, RayHit& hit) const
 {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
@@ -222,9 +233,9 @@ bool vtkMedialSurfaceQuery::Intersect(const double origin[3], const double direc
   for (int attempt = 0; attempt < 4; ++attempt)
   {
     RTCRayHit rh;
-    rh.ray.org_x = static_cast<float>(origin[0] - this->Impl->Origin[0]);
-    rh.ray.org_y = static_cast<float>(origin[1] - this->Impl->Origin[1]);
-    rh.ray.org_z = static_cast<float>(origin[2] - this->Impl->Origin[2]);
+    rh.ray.org_x = static_cast<float>(rayOrigin[0] - this->Impl->Origin[0]);
+    rh.ray.org_y = static_cast<float>(rayOrigin[1] - this->Impl->Origin[1]);
+    rh.ray.org_z = static_cast<float>(rayOrigin[2] - this->Impl->Origin[2]);
     rh.ray.dir_x = static_cast<float>(direction[0]);
     rh.ray.dir_y = static_cast<float>(direction[1]);
     rh.ray.dir_z = static_cast<float>(direction[2]);
@@ -257,8 +268,14 @@ bool vtkMedialSurfaceQuery::Intersect(const double origin[3], const double direc
     if (std::fabs(denom) > 1e-12)
     {
       const double exact = G::Dot(n, d) / denom;
-      if (exact > 0.0 && std::fabs(exact - distance) <= 10.0 * this->Impl->FloatPad + 1e-6 * distance)
+      if (std::fabs(exact - distance) <= 10.0 * this->Impl->FloatPad + 1e-6 * distance)
       {
+        if (exact <= tMin)
+        {
+          // A float hit at the origin (a face through it, e.g. around a vertex): step past.
+          start = std::max(static_cast<double>(rh.ray.tfar), start) + this->Impl->FloatPad;
+          continue;
+        }
         distance = exact;
       }
     }
@@ -269,14 +286,52 @@ bool vtkMedialSurfaceQuery::Intersect(const double origin[3], const double direc
   return false;
 }
 
+bool vtkMedialSurfaceQuery::Intersect(const double origin[3], const double direction[3],
+  double tMin, double tMax, vtkIdType ignoreTriangle, RayHit& hit) const
+{
+  return this->IntersectFrom(origin, origin, direction, tMin, tMax, ignoreTriangle, hit);
+}
+
+bool vtkMedialSurfaceQuery::IntersectFromInside(
+  const double origin[3], const double direction[3], double tMin, vtkIdType ignoreTriangle, RayHit& hit) const
+{
+  auto fromInside = [&](const double rayOrigin[3]) {
+    return this->IntersectFrom(rayOrigin, origin, direction, tMin, HUGE_VAL, ignoreTriangle, hit) &&
+      G::Dot(this->Mesh->GetNormal(hit.Triangle), direction) > 0.0;
+  };
+  if (fromInside(origin))
+  {
+    return true;
+  }
+  // Embree's float test is not watertight: a ray aimed exactly at a vertex (e.g. from
+  // a vertex of a symmetric mesh to its antipode) can slip between the triangles around
+  // it and escape, or go on to meet a face from outside. Nudge the ray sideways by the
+  // float padding and try again, on either side.
+  double side[3] = { 0, 0, 0 }, unit[3] = { 0, 0, 0 };
+  const double ax = std::fabs(direction[0]), ay = std::fabs(direction[1]), az = std::fabs(direction[2]);
+  unit[ax <= ay && ax <= az ? 0 : (ay <= az ? 1 : 2)] = 1.0;
+  G::Cross(direction, unit, side);
+  const double length = std::sqrt(G::Dot(side, side));
+  for (double sign : { 1.0, -1.0 })
+  {
+    double nudged[3];
+    G::AddScaled(origin, sign * this->Impl->FloatPad / length, side, nudged);
+    if (length > 0.0 && fromInside(nudged))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 bool vtkMedialSurfaceQuery::ClosestPoint(
   const double x[3], double upperBound, ClosestHit& hit, const ContactFilter* filter) const
 {
   if (this->PointQueryEngine == OWN_TREE)
   {
     return this->Tree.ClosestPoint(x, upperBound, filter ? filter->OwnTriangle : -1,
-      filter ? filter->SamplePoint : nullptr, filter ? filter->CosMinAngle : 1.0, hit.Point,
-      hit.Distance, hit.Triangle);
+      filter ? filter->SamplePoint : nullptr, filter ? filter->CosMinAngle : 1.0,
+      filter && filter->CapOnly, hit.Point, hit.Distance, hit.Triangle);
   }
   QueryState s;
   s.Self = this;
@@ -314,7 +369,8 @@ bool vtkMedialSurfaceQuery::ContainsBall(
   if (this->PointQueryEngine == OWN_TREE)
   {
     return this->Tree.ContainsBall(centre, limit, filter ? filter->OwnTriangle : -1,
-      filter ? filter->SamplePoint : nullptr, filter ? filter->CosMinAngle : 1.0);
+      filter ? filter->SamplePoint : nullptr, filter ? filter->CosMinAngle : 1.0,
+      filter && filter->CapOnly);
   }
   QueryState s;
   s.Self = this;
@@ -332,10 +388,10 @@ bool vtkMedialSurfaceQuery::ContainsBall(
   return !s.Blocked;
 }
 
-void vtkMedialSurfaceQuery::MaximalTangentBall(
-  const double p[3], const double n[3], const ContactFilter& filter, TangentBall& ball) const
+void vtkMedialSurfaceQuery::MaximalTangentBall(const double p[3], const double n[3],
+  const ContactFilter& filter, double allowed, TangentBall& ball) const
 {
-  this->Tree.MaximalTangentBall(p, n, filter.OwnTriangle, filter.CosMinAngle, this->Slack, ball);
+  this->Tree.MaximalTangentBall(p, n, filter.OwnTriangle, filter.CosMinAngle, this->Slack, allowed, ball);
 }
 
 void vtkMedialSurfaceQuery::TrianglesWithin(

@@ -28,7 +28,9 @@
  *    blocks a ball (c, r) only where (q - c).(P - c) <= r^2 cos(theta). On the
  *    sphere this is exactly "the angle P-c-q is at least theta" (Foskey et al.
  *    2003, theta-simplified medial axis); inside the ball it is a plane cut, so
- *    surface deep inside the ball always blocks.
+ *    surface deep inside the ball always blocks;
+ *  - with CapOnly, the reverse: only the cap counts (ClosestPoint and ContainsBall),
+ *    to find where a ball found with the rule above crosses the surface there.
  */
 #ifndef vtkMedialSurfaceQuery_h
 #define vtkMedialSurfaceQuery_h
@@ -50,6 +52,7 @@ public:
     vtkIdType OwnTriangle = -1;
     double SamplePoint[3] = { 0, 0, 0 };
     double CosMinAngle = 1.0; // 1: theta = 0, nothing but OwnTriangle is ignored
+    bool CapOnly = false;     // true: only the cap around SamplePoint counts
   };
   struct RayHit
   {
@@ -84,6 +87,13 @@ public:
   bool Intersect(const double origin[3], const double direction[3], double tMin, double tMax,
     vtkIdType ignoreTriangle, RayHit& hit) const;
 
+  /// First hit of the ray from inside the solid, tMin < t: the face met must face along
+  /// the ray (its outward normal). False when the ray escapes (open surface) or first
+  /// meets a face from outside (self-intersection). A ray that slips through a vertex
+  /// in Embree's float test is tried again, nudged sideways by the float padding.
+  bool IntersectFromInside(const double origin[3], const double direction[3], double tMin,
+    vtkIdType ignoreTriangle, RayHit& hit) const;
+
   /// Closest admissible surface point to x with distance < upperBound (finite). False when none.
   bool ClosestPoint(
     const double x[3], double upperBound, ClosestHit& hit, const ContactFilter* filter = nullptr) const;
@@ -105,10 +115,12 @@ public:
   /**
    * Largest admissible ball tangent at p with centre p + r n (n unit, inward),
    * found in one traversal that shrinks the ball at every blocking point (see
-   * vtkMedialTriangleBVH). On entry `ball` holds an upper bound and its contact.
+   * vtkMedialTriangleBVH). On entry `ball` holds an upper bound and its contact. With
+   * a finite `allowed` depth, also tells whether the cap's surface enters the ball
+   * deeper than that, and the inscribed ball about the same centre (ball.Shrunk).
    */
-  void MaximalTangentBall(
-    const double p[3], const double n[3], const ContactFilter& filter, TangentBall& ball) const;
+  void MaximalTangentBall(const double p[3], const double n[3], const ContactFilter& filter,
+    double allowed, TangentBall& ball) const;
 
   /**
    * Number of surface crossings of the ray origin + t * direction (unit), t in
@@ -146,6 +158,9 @@ public:
   struct Internals;
 
 private:
+  bool IntersectFrom(const double rayOrigin[3], const double origin[3], const double direction[3],
+    double tMin, double tMax, vtkIdType ignoreTriangle, RayHit& hit) const;
+
   Internals* Impl;
   vtkMedialTriangleBVH Tree;
   int PointQueryEngine = OWN_TREE;

@@ -273,15 +273,18 @@ struct Scratch
 {
   std::vector<std::int32_t> Stack;
   std::vector<std::int32_t> Deferred;
+  std::vector<std::int32_t> CapNodes; // dropped for the cone while reaching into the ball
+  std::vector<std::int32_t> CapSlots; // the same, triangles
 };
 Scratch& ThreadScratch()
 {
   thread_local Scratch scratch;
   scratch.Stack.clear();
   scratch.Deferred.clear();
+  scratch.CapNodes.clear();
+  scratch.CapSlots.clear();
   return scratch;
-}
-}
+}}
 
 bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh, const std::function<bool()>& aborted)
 {
@@ -545,12 +548,13 @@ std::int32_t vtkMedialTriangleBVH::SplitNode(std::int32_t begin, std::int32_t en
 }
 
 // The one-pass search of MaximalTangentBall: the shrinking ball and its culling
-// state, with the passes ShrinkOn (one triangle), Traverse (a subtree) and Run.
+// state, with the passes ShrinkOn (one triangle), Traverse (a subtree), InscribeInCap
+// and Run.
 class vtkMedialTriangleBVH::TangentSearch
 {
 public:
   TangentSearch(const vtkMedialTriangleBVH& bvh, const double p[3], const double n[3], vtkIdType ownTriangle,
-    double cosMinAngle, double slack, TangentBall& result)
+    double cosMinAngle, double slack, double allowed, TangentBall& result)
     : Tree(bvh)
     , P(p)
     , N(n)
@@ -560,6 +564,8 @@ public:
     , Capped(cosMinAngle < 1.0)
     , Lift(1.0 - cosMinAngle)                                      // admissible: n.(q - p) >= r * lift
     , ConeSin(cosMinAngle < 1.0 ? std::sqrt(0.5 * (1.0 - cosMinAngle)) : 0.0) // sin(theta / 2)
+    , Allowed(allowed)
+    , Inscribe(cosMinAngle < 1.0 && allowed < result.Radius)
     , Radius(result.Radius)
     , Result(result)
     , Work(ThreadScratch())
@@ -573,7 +579,8 @@ public:
   // First the small subtrees around the far hit and around p: on smooth meshes
   // the final contacts are usually there, and a ball that is small early culls
   // most of the rest of the tree. Then the whole tree, without those subtrees.
-  // Last, the triangles that only reached into the cap, until the radius settles.
+  // Then the triangles that only reached into the cap, until the radius settles.
+  // Last, with an allowed protrusion, the cap's surface set aside on the way.
   void Run()
   {
     std::int32_t seeds[3] = { -1, -1, -1 };
@@ -604,6 +611,10 @@ public:
       }
     }
     this->Result.Radius = this->Radius;
+    if (this->Inscribe && this->Allowed < this->Radius)
+    {
+      this->InscribeInCap();
+    }
   }
 
 private:
@@ -648,7 +659,7 @@ private:
 
   // The triangle at `slot` can never block: the ball misses its plane, or it lies
   // outside the cone where blockers can lie (its box shows it), at any radius. This
-  // drops the cap's triangles around p.
+  // drops the cap's triangles around p (kept aside for InscribeInCap).
   bool CannotBlock(std::int32_t slot, const double* a, const double* b, const double* c) const
   {
     const double* plane = &this->Tree.Planes[4 * slot];
@@ -663,7 +674,19 @@ private:
       hi[k] = std::max({ a[k], b[k], c[k] });
     }
     const double h = HeightAbove(lo, hi, this->P, this->N);
-    return !(h > 0.0) || h * h < this->ConeSin * this->ConeSin * BoxDistance2(lo, hi, this->P);
+    if (!(h > 0.0))
+    {
+      return true;
+    }
+    if (h * h < this->ConeSin * this->ConeSin * BoxDistance2(lo, hi, this->P))
+    {
+      if (this->Inscribe)
+      {
+        this->Work.CapSlots.push_back(slot); // it may cross the final ball in the cap
+      }
+      return true;
+    }
+    return false;
   }
 
   // Shrinks the ball on triangle `slot` until it no longer blocks. Returns true
@@ -723,9 +746,11 @@ private:
     return this->InCap(touches);
   }
 
-  // The node cannot block the current ball.
-  bool Culled(const Node& node) const
+  // The node cannot block the current ball. Nodes dropped for the cone only are kept
+  // aside for InscribeInCap.
+  bool Culled(std::int32_t index) const
   {
+    const Node& node = this->Tree.Nodes[index];
     if (MissesBall(node, this->CentreRel, this->Radius))
     {
       return true;
@@ -736,7 +761,15 @@ private:
     {
       return true;
     }
-    return this->ConeSin > 0.0 && h * h < this->ConeSin * this->ConeSin * BoxDistance2(node, this->PRel);
+    if (this->ConeSin > 0.0 && h * h < this->ConeSin * this->ConeSin * BoxDistance2(node, this->PRel))
+    {
+      if (this->Inscribe)
+      {
+        this->Work.CapNodes.push_back(index); // it may cross the final ball in the cap
+      }
+      return true;
+    }
+    return false;
   }
 
   // Depth first, nearer child first, from `root` without the `skip` subtrees; a node
@@ -752,7 +785,7 @@ private:
       const std::int32_t index = stack.back();
       stack.pop_back();
       const Node& node = nodes[index];
-      if (index == skip[0] || index == skip[1] || index == skip[2] || this->Culled(node))
+      if (index == skip[0] || index == skip[1] || index == skip[2] || this->Culled(index))
       {
         continue;
       }
@@ -783,6 +816,81 @@ private:
     }
   }
 
+  // The surface of the cap that the angle rule ignored: only what the traversal dropped
+  // for the cone (CapNodes, CapSlots) or set aside as reaching into the ball in the cap
+  // only (Deferred) can lie inside the final ball, which is inside every earlier one.
+  // Its closest point within Radius - Allowed of the centre, if any, is where the
+  // inscribed ball about the same centre touches.
+  void InscribeInCap()
+  {
+    // The cap: (q - c).(p - c) >= r^2 cos(theta), as w.q <= k for the clipping.
+    double w[3];
+    G::Sub(this->Centre, this->P, w);
+    const double k = G::Dot(w, this->Centre) - this->Radius * this->Radius * this->CosMinAngle;
+    const double reach = this->Radius - this->Allowed;
+    double best2 = reach * reach, best[3] = { 0, 0, 0 };
+    std::int32_t bestSlot = -1;
+    auto test = [&](std::int32_t slot) {
+      const double* plane = &this->Tree.Planes[4 * slot];
+      const double off = G::Dot(plane, this->Centre) - plane[3];
+      if (this->Tree.TriangleIds[slot] == this->OwnTriangle || off * off >= best2)
+      {
+        return;
+      }
+      const double* a = &this->Tree.Vertices[9 * slot];
+      double q[3];
+      if (G::ClosestPointOnTriangle(this->Centre, a, a + 3, a + 6, q) >= best2)
+      {
+        return; // the whole triangle is no closer than its part in the cap
+      }
+      const double d2 = G::ClosestPointOnClippedTriangle(this->Centre, a, a + 3, a + 6, w, k, q);
+      if (d2 < best2)
+      {
+        best2 = d2;
+        std::copy(q, q + 3, best);
+        bestSlot = slot;
+      }
+    };
+    for (const std::vector<std::int32_t>* slots : { &this->Work.CapSlots, &this->Work.Deferred })
+    {
+      for (std::int32_t slot : *slots)
+      {
+        test(slot);
+      }
+    }
+    std::vector<std::int32_t>& stack = this->Work.Stack;
+    for (std::int32_t root : this->Work.CapNodes)
+    {
+      stack.push_back(root);
+      while (!stack.empty())
+      {
+        const Node& node = this->Tree.Nodes[stack.back()];
+        stack.pop_back();
+        if (MissesBall(node, this->CentreRel, std::sqrt(best2)))
+        {
+          continue;
+        }
+        if (node.Count > 0)
+        {
+          for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
+          {
+            test(slot);
+          }
+          continue;
+        }
+        stack.push_back(node.Start + 1);
+        stack.push_back(node.Start);
+      }
+    }
+    if (bestSlot >= 0)
+    {
+      this->Result.Shrunk = true;
+      this->Result.InscribedRadius = std::sqrt(best2);
+      std::copy(best, best + 3, this->Result.InscribedContact);
+      this->Result.InscribedTriangle = this->Tree.TriangleIds[bestSlot];
+    }
+  }
+
   const vtkMedialTriangleBVH& Tree;
   const double* P;
   const double* N;
@@ -790,6 +898,8 @@ private:
   const double CosMinAngle, Slack;
   const bool Capped;
   const double Lift, ConeSin;
+  const double Allowed;
+  const bool Inscribe;
   double Radius;
   double Centre[3], PRel[3], CentreRel[3];
   TangentBall& Result;
@@ -797,22 +907,31 @@ private:
 };
 
 void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[3],
-  vtkIdType ownTriangle, double cosMinAngle, double slack, TangentBall& result) const
+  vtkIdType ownTriangle, double cosMinAngle, double slack, double allowed, TangentBall& result) const
 {
-  TangentSearch(*this, p, n, ownTriangle, cosMinAngle, slack, result).Run();
+  TangentSearch(*this, p, n, ownTriangle, cosMinAngle, slack, allowed, result).Run();
 }
 
 template <class Visit>
 void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTriangle,
-  const double samplePoint[3], double cosMinAngle, double& reach2, Visit visit) const
+  const double samplePoint[3], double cosMinAngle, bool capOnly, double& reach2, Visit visit) const
 {
-  // Admissible part of a triangle: (q - x).(s - x) <= |s - x|^2 cos(theta), as w.q <= k.
+  // Admissible part of a triangle: (q - x).(s - x) <= |s - x|^2 cos(theta), as w.q <= k;
+  // with capOnly, the other side: the cap, written as (-w).q <= -k.
   const bool capped = cosMinAngle < 1.0 && samplePoint;
   double w[3] = { 0, 0, 0 }, k = 0.0;
   if (capped)
   {
     G::Sub(samplePoint, x, w);
     k = G::Dot(w, x) + G::Dot(w, w) * cosMinAngle;
+    if (capOnly)
+    {
+      for (double& c : w)
+      {
+        c = -c;
+      }
+      k = -k;
+    }
   }
   double xRel[3]; // x relative to the origin, for the node bounds
   G::Sub(x, this->Origin, xRel);
@@ -828,7 +947,7 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
     }
     if (capped)
     {
-      // The whole box on the cap's side of the plane w.q = k: nothing there counts.
+      // The whole box on the far side of the plane w.q = k: nothing there counts.
       double lowest = G::Dot(w, this->Origin) - k; // w.q - k at the box's lowest corner
       for (int d = 0; d < 3; ++d)
       {
@@ -843,14 +962,21 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
     {
       for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
       {
-        if (this->TriangleIds[slot] == ownTriangle)
+        // Cheapest first: the triangle's plane misses the ball.
+        const double* plane = &this->Planes[4 * slot];
+        const double off = G::Dot(plane, x) - plane[3];
+        if (this->TriangleIds[slot] == ownTriangle || off * off >= reach2)
         {
           continue;
         }
+        // Then the whole triangle: cheaper, and never farther than its admissible part.
         const double* a = &this->Vertices[9 * slot];
         double q[3];
-        const double d2 = capped ? G::ClosestPointOnClippedTriangle(x, a, a + 3, a + 6, w, k, q)
-                                 : G::ClosestPointOnTriangle(x, a, a + 3, a + 6, q);
+        double d2 = G::ClosestPointOnTriangle(x, a, a + 3, a + 6, q);
+        if (capped && d2 < reach2)
+        {
+          d2 = G::ClosestPointOnClippedTriangle(x, a, a + 3, a + 6, w, k, q);
+        }
         if (!visit(d2, q, this->TriangleIds[slot]))
         {
           scratch.Stack.clear();
@@ -867,12 +993,12 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
 }
 
 bool vtkMedialTriangleBVH::ClosestPoint(const double x[3], double upperBound,
-  vtkIdType ownTriangle, const double samplePoint[3], double cosMinAngle, double point[3],
-  double& distance, vtkIdType& triangle) const
+  vtkIdType ownTriangle, const double samplePoint[3], double cosMinAngle, bool capOnly,
+  double point[3], double& distance, vtkIdType& triangle) const
 {
   double best2 = upperBound * upperBound;
   triangle = -1;
-  this->VisitAdmissible(x, ownTriangle, samplePoint, cosMinAngle, best2,
+  this->VisitAdmissible(x, ownTriangle, samplePoint, cosMinAngle, capOnly, best2,
     [&](double d2, const double q[3], vtkIdType t) {
       if (d2 < best2)
       {
@@ -887,16 +1013,56 @@ bool vtkMedialTriangleBVH::ClosestPoint(const double x[3], double upperBound,
 }
 
 bool vtkMedialTriangleBVH::ContainsBall(const double x[3], double radius, vtkIdType ownTriangle,
-  const double samplePoint[3], double cosMinAngle) const
+  const double samplePoint[3], double cosMinAngle, bool capOnly) const
 {
   double reach2 = radius * radius;
   bool empty = true;
-  this->VisitAdmissible(x, ownTriangle, samplePoint, cosMinAngle, reach2,
+  this->VisitAdmissible(x, ownTriangle, samplePoint, cosMinAngle, capOnly, reach2,
     [&](double d2, const double*, vtkIdType) {
       empty = !(d2 < reach2);
       return empty; // stop at the first point inside
     });
   return empty;
+}
+
+void vtkMedialTriangleBVH::VisitBox(
+  const double lo[3], const double hi[3], const std::function<bool(vtkIdType)>& visit) const
+{
+  if (this->Nodes.empty())
+  {
+    return;
+  }
+  double l[3], h[3]; // relative to the origin, as the node bounds
+  G::Sub(lo, this->Origin, l);
+  G::Sub(hi, this->Origin, h);
+  std::vector<std::int32_t> stack{ 0 }; // own stack: visit may run other queries
+  while (!stack.empty())
+  {
+    const Node& node = this->Nodes[stack.back()];
+    stack.pop_back();
+    bool apart = false;
+    for (int k = 0; k < 3; ++k)
+    {
+      apart = apart || node.Lo[k] > h[k] || node.Hi[k] < l[k];
+    }
+    if (apart)
+    {
+      continue;
+    }
+    if (node.Count == 0)
+    {
+      stack.push_back(node.Start + 1);
+      stack.push_back(node.Start);
+      continue;
+    }
+    for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
+    {
+      if (!visit(this->TriangleIds[slot]))
+      {
+        return;
+      }
+    }
+  }
 }
 
 void vtkMedialTriangleBVH::VisitWithin(const double x[3], double distance, const double samplePoint[3],
@@ -906,7 +1072,7 @@ void vtkMedialTriangleBVH::VisitWithin(const double x[3], double distance, const
   // The traversal culls nodes at or beyond its reach: reach a little further and
   // decide in double on each triangle.
   double reach2 = limit2 * (1.0 + 1e-12) + 1e-300;
-  this->VisitAdmissible(x, -1, samplePoint, cosMinAngle, reach2,
+  this->VisitAdmissible(x, -1, samplePoint, cosMinAngle, false, reach2,
     [&](double d2, const double q[3], vtkIdType t) {
       if (d2 <= limit2)
       {

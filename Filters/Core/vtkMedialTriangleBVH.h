@@ -49,6 +49,13 @@ public:
     vtkIdType HintTriangle = -1; // in: where the contact is likely; changes the speed only
     int Steps = 0;       // radius updates
     bool Capped = false; // a triangle needed more than the per-triangle step cap
+    // Out, when a protrusion is allowed: the surface of the cap around p (which the
+    // angle rule ignores) enters the ball deeper than that; the ball about the same
+    // centre that it only touches, at InscribedContact on InscribedTriangle.
+    bool Shrunk = false;
+    double InscribedRadius = 0.0;
+    double InscribedContact[3] = { 0, 0, 0 };
+    vtkIdType InscribedTriangle = -1;
   };
 
   /// Builds the tree. Returns false when the mesh is empty or too large, or when
@@ -64,22 +71,31 @@ public:
    * through the circle at angle theta from p (vtkMedialSurfaceQuery's rule).
    * Every blocking point q found shrinks the ball to the one through q,
    * r = |q - p|^2 / (2 n.(q - p)) (Ma et al. 2012), within a single traversal.
+   * With cosMinAngle < 1 and a finite `allowed` depth, the cap's surface that the
+   * traversal set aside is then searched for points deeper than `allowed` inside the
+   * final ball (result.Shrunk and the inscribed ball about the same centre).
    */
   void MaximalTangentBall(const double p[3], const double n[3], vtkIdType ownTriangle,
-    double cosMinAngle, double slack, TangentBall& result) const;
+    double cosMinAngle, double slack, double allowed, TangentBall& result) const;
 
   /**
    * Closest point of the mesh to x within upperBound, skipping ownTriangle; with
    * cosMinAngle < 1, only the part of each triangle where (q - x).(s - x) <=
-   * |s - x|^2 cosMinAngle counts (s = samplePoint). False when none.
+   * |s - x|^2 cosMinAngle counts (s = samplePoint), or with capOnly the rest of it (the
+   * cap around s, which the first rule ignores). False when none.
    */
   bool ClosestPoint(const double x[3], double upperBound, vtkIdType ownTriangle,
-    const double samplePoint[3], double cosMinAngle, double point[3], double& distance,
-    vtkIdType& triangle) const;
+    const double samplePoint[3], double cosMinAngle, bool capOnly, double point[3],
+    double& distance, vtkIdType& triangle) const;
 
   /// True when no admissible point (same rule as ClosestPoint) is closer to x than radius.
   bool ContainsBall(const double x[3], double radius, vtkIdType ownTriangle,
-    const double samplePoint[3], double cosMinAngle) const;
+    const double samplePoint[3], double cosMinAngle, bool capOnly) const;
+
+  /// Calls visit(triangle) for every triangle whose node box meets the box [lo, hi]
+  /// (a superset of the triangles whose own box meets it: boxes are padded outward),
+  /// until visit returns false. For diagnostics (contacts, ray parity), not per sample.
+  void VisitBox(const double lo[3], const double hi[3], const std::function<bool(vtkIdType)>& visit) const;
 
   /**
    * Every triangle whose closest point to x is at most `distance` away: visit(d2, q,
@@ -144,7 +160,7 @@ private:
   // lower reach2 to narrow the search. Used by ClosestPoint and ContainsBall.
   template <class Visit>
   void VisitAdmissible(const double x[3], vtkIdType ownTriangle, const double samplePoint[3],
-    double cosMinAngle, double& reach2, Visit visit) const;
+    double cosMinAngle, bool capOnly, double& reach2, Visit visit) const;
 
   std::vector<Node> Nodes;
   double Origin[3] = { 0, 0, 0 };     // the bounding-box centre: node bounds are relative to it

@@ -2,38 +2,234 @@
 #include "vtkMedialTriangleMesh.h"
 
 #include "vtkMedialGeometry.h"
+#include "vtkMedialTriangleBVH.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkIdFilter.h"
 #include "vtkIdTypeArray.h"
+#include "vtkLine.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStaticCleanPolyData.h"
+#include "vtkTriangle.h"
 #include "vtkTriangleFilter.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <queue>
 #include <sstream>
 
 namespace
 {
+namespace G = vtkMedialGeometry;
 constexpr const char* SourceIdsName = "vtkMedialSourceCellId";
+// Shells closer than this (relative to the diagonal) touch.
+constexpr double ContactTolerance = 1e-6;
+// Points of a shell tried as ray origins for its nesting depth.
+constexpr int NestingTrials = 8;
+// Messages list at most this many shells or pairs.
+constexpr size_t ListedInMessages = 3;
 
-struct EdgeUse
+bool BoxesOverlap(const double a[6], const double b[6], double pad)
 {
-  vtkIdType Lo, Hi; // sorted vertex ids
-  vtkIdType Triangle;
-  bool Forward; // the triangle walks Lo -> Hi
-  bool operator<(const EdgeUse& o) const
+  for (int k = 0; k < 3; ++k)
   {
-    return Lo != o.Lo ? Lo < o.Lo : (Hi != o.Hi ? Hi < o.Hi : Triangle < o.Triangle);
+    if (a[2 * k] > b[2 * k + 1] + pad || b[2 * k] > a[2 * k + 1] + pad)
+    {
+      return false;
+    }
   }
+  return true;
+}
+
+std::string FormatPoint(const double x[3])
+{
+  std::ostringstream os;
+  os.precision(6);
+  os << "(" << x[0] << ", " << x[1] << ", " << x[2] << ")";
+  return os.str();
+}
+}
+
+struct vtkMedialTriangleMesh::Adjacency
+{
+  struct EdgeUse
+  {
+    vtkIdType Lo, Hi; // sorted vertex ids
+    vtkIdType Triangle;
+    bool Forward; // the triangle walks Lo -> Hi
+    bool operator<(const EdgeUse& o) const
+    {
+      return Lo != o.Lo ? Lo < o.Lo : (Hi != o.Hi ? Hi < o.Hi : Triangle < o.Triangle);
+    }
+  };
+  std::vector<EdgeUse> Uses;            // sorted: the uses of one edge are adjacent
+  std::vector<vtkIdType> Neighbour;     // 3 per triangle, across manifold edges
+  std::vector<char> SameDirection;      // 3 per triangle: the neighbour walks the edge the same way
+  std::vector<unsigned char> Degree;    // neighbours of each triangle
 };
+
+bool vtkMedialTriangleMesh::Build(
+  vtkPolyData* input, std::string& error, const std::function<bool()>& aborted)
+{
+  auto stop = [&]() {
+    if (aborted && aborted())
+    {
+      error = "aborted";
+      return true;
+    }
+    return false;
+  };
+  *this = vtkMedialTriangleMesh();
+  if (!this->ValidateInput(input, error))
+  {
+    return false;
+  }
+  this->ImportTriangles(input);
+  if (stop())
+  {
+    return false;
+  }
+  this->DropDuplicateTriangles();
+  if (this->SourceCellIds.empty())
+  {
+    error = "input has no non-degenerate triangles";
+    return false;
+  }
+  {
+    Adjacency adjacency;
+    if (stop() || !this->BuildAdjacency(adjacency, aborted) || stop())
+    {
+      error = "aborted";
+      return false;
+    }
+    this->OrientShells(adjacency);
+    if (stop())
+    {
+      return false;
+    }
+    this->MarkClosedShells(adjacency);
+  }
+  if (stop())
+  {
+    return false;
+  }
+  this->OrientByVolume();
+  if (stop())
+  {
+    return false;
+  }
+  this->ComputeNormalsAndAreas();
+  if (stop())
+  {
+    return false;
+  }
+  if (this->Shells.size() > 1)
+  {
+    // A tree over every shell: which triangles may touch, which ones a ray crosses.
+    vtkMedialTriangleBVH tree;
+    if (!tree.Build(*this, aborted) || !this->FindShellContacts(tree, aborted))
+    {
+      error = stop() ? "aborted" : "cannot build the shell-nesting tree";
+      return false;
+    }
+    this->OrientByNesting(tree);
+  }
+  for (const Shell& shell : this->Shells)
+  {
+    const bool cavity = shell.Closed && shell.Depth % 2 == 1;
+    this->Cavities += cavity ? 1 : 0;
+    this->Bodies += cavity ? 0 : 1;
+    this->Volume += shell.Volume;
+  }
+  return this->BuildAreaCdf(error);
+}
+
+bool vtkMedialTriangleMesh::ValidateInput(vtkPolyData* input, std::string& error) const
+{
+  if (!input || input->GetNumberOfPoints() == 0 || input->GetNumberOfCells() == 0)
+  {
+    error = "input has no points or no cells";
+    return false;
+  }
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    input->GetPoint(i, x);
+    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+    {
+      std::ostringstream os;
+      os << "input point " << i << " has a NaN or infinite coordinate";
+      error = os.str();
+      return false;
+    }
+  }
+  if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+  {
+    error = "input has no polygons or triangle strips (a surface is required)";
+    return false;
+  }
+  return true;
+}
+
+// Triangulates, merges coincident points, and keeps the non-collapsed triangles
+// with their input cell ids.
+void vtkMedialTriangleMesh::ImportTriangles(vtkPolyData* input)
+{
+  // Shallow copy: the pipeline's input must not be modified.
+  vtkNew<vtkPolyData> shallow;
+  shallow->CopyStructure(input);
+  vtkNew<vtkIdFilter> ids;
+  ids->SetInputData(shallow);
+  ids->PointIdsOff();
+  ids->CellIdsOn();
+  ids->FieldDataOff();
+  ids->SetCellIdsArrayName(SourceIdsName);
+  vtkNew<vtkTriangleFilter> triangulate;
+  triangulate->SetInputConnection(ids->GetOutputPort());
+  triangulate->PassVertsOff();
+  triangulate->PassLinesOff();
+  vtkNew<vtkStaticCleanPolyData> merge;
+  merge->SetInputConnection(triangulate->GetOutputPort());
+  merge->ToleranceIsAbsoluteOn();
+  merge->SetAbsoluteTolerance(0.0);
+  merge->ConvertPolysToLinesOff();
+  merge->ConvertLinesToPointsOff();
+  merge->ConvertStripsToPolysOff();
+  merge->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  merge->Update();
+  vtkPolyData* tri = merge->GetOutput();
+
+  const vtkIdType np = tri->GetNumberOfPoints();
+  this->Points.resize(3 * np);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    tri->GetPoint(i, &this->Points[3 * i]);
+  }
+  tri->GetBounds(this->Bounds);
+  this->Diagonal = std::sqrt((this->Bounds[1] - this->Bounds[0]) * (this->Bounds[1] - this->Bounds[0]) +
+    (this->Bounds[3] - this->Bounds[2]) * (this->Bounds[3] - this->Bounds[2]) +
+    (this->Bounds[5] - this->Bounds[4]) * (this->Bounds[5] - this->Bounds[4]));
+
+  auto* sourceIds = vtkIdTypeArray::SafeDownCast(tri->GetCellData()->GetArray(SourceIdsName));
+  vtkCellArray* polys = tri->GetPolys();
+  const vtkIdType firstPoly = tri->GetNumberOfVerts() + tri->GetNumberOfLines();
+  vtkIdType cellId = 0;
+  vtkIdType npts;
+  const vtkIdType* pts;
+  for (polys->InitTraversal(); polys->GetNextCell(npts, pts); ++cellId)
+  {
+    if (npts != 3 || pts[0] == pts[1] || pts[1] == pts[2] || pts[0] == pts[2])
+    {
+      ++this->DegenerateTriangles; // collapsed by the point merge
+      continue;
+    }
+    this->Triangles.insert(this->Triangles.end(), pts, pts + 3);
+    this->SourceCellIds.push_back(sourceIds ? sourceIds->GetValue(firstPoly + cellId) : cellId);
+  }
 }
 
 // A triangle with the same three vertices as an earlier one (either orientation) would
@@ -75,104 +271,11 @@ void vtkMedialTriangleMesh::DropDuplicateTriangles()
   this->SourceCellIds.resize(kept);
 }
 
-bool vtkMedialTriangleMesh::Build(
-  vtkPolyData* input, std::string& error, const std::function<bool()>& aborted)
+// Edge uses sorted so that the uses of one edge are adjacent; manifold edges (two
+// uses) link their triangles, with a flag telling whether both walk it the same way.
+bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::function<bool()>& aborted)
 {
-  auto stop = [&]() {
-    if (aborted && aborted())
-    {
-      error = "aborted";
-      return true;
-    }
-    return false;
-  };
-  *this = vtkMedialTriangleMesh();
-  if (!input || input->GetNumberOfPoints() == 0 || input->GetNumberOfCells() == 0)
-  {
-    error = "input has no points or no cells";
-    return false;
-  }
-  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
-  {
-    double x[3];
-    input->GetPoint(i, x);
-    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
-    {
-      std::ostringstream os;
-      os << "input point " << i << " has a NaN or infinite coordinate";
-      error = os.str();
-      return false;
-    }
-  }
-  if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
-  {
-    error = "input has no polygons or triangle strips (a surface is required)";
-    return false;
-  }
-
-  // Shallow copy: the pipeline's input must not be modified.
-  vtkNew<vtkPolyData> shallow;
-  shallow->CopyStructure(input);
-  vtkNew<vtkIdFilter> ids;
-  ids->SetInputData(shallow);
-  ids->PointIdsOff();
-  ids->CellIdsOn();
-  ids->FieldDataOff();
-  ids->SetCellIdsArrayName(SourceIdsName);
-  vtkNew<vtkTriangleFilter> triangulate;
-  triangulate->SetInputConnection(ids->GetOutputPort());
-  triangulate->PassVertsOff();
-  triangulate->PassLinesOff();
-  vtkNew<vtkStaticCleanPolyData> merge;
-  merge->SetInputConnection(triangulate->GetOutputPort());
-  merge->ToleranceIsAbsoluteOn();
-  merge->SetAbsoluteTolerance(0.0);
-  merge->ConvertPolysToLinesOff();
-  merge->ConvertLinesToPointsOff();
-  merge->ConvertStripsToPolysOff();
-  merge->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
-  merge->Update();
-  vtkPolyData* tri = merge->GetOutput();
-  if (stop())
-  {
-    return false;
-  }
-
-  const vtkIdType np = tri->GetNumberOfPoints();
-  this->Points.resize(3 * np);
-  for (vtkIdType i = 0; i < np; ++i)
-  {
-    tri->GetPoint(i, &this->Points[3 * i]);
-  }
-  tri->GetBounds(this->Bounds);
-  this->Diagonal = std::sqrt((this->Bounds[1] - this->Bounds[0]) * (this->Bounds[1] - this->Bounds[0]) +
-    (this->Bounds[3] - this->Bounds[2]) * (this->Bounds[3] - this->Bounds[2]) +
-    (this->Bounds[5] - this->Bounds[4]) * (this->Bounds[5] - this->Bounds[4]));
-
-  auto* sourceIds = vtkIdTypeArray::SafeDownCast(tri->GetCellData()->GetArray(SourceIdsName));
-  vtkCellArray* polys = tri->GetPolys();
-  const vtkIdType firstPoly = tri->GetNumberOfVerts() + tri->GetNumberOfLines();
-  vtkIdType cellId = 0;
-  vtkIdType npts;
-  const vtkIdType* pts;
-  for (polys->InitTraversal(); polys->GetNextCell(npts, pts); ++cellId)
-  {
-    if (npts != 3 || pts[0] == pts[1] || pts[1] == pts[2] || pts[0] == pts[2])
-    {
-      ++this->DegenerateTriangles; // collapsed by the point merge
-      continue;
-    }
-    this->Triangles.insert(this->Triangles.end(), pts, pts + 3);
-    this->SourceCellIds.push_back(sourceIds ? sourceIds->GetValue(firstPoly + cellId) : cellId);
-  }
-  this->DropDuplicateTriangles();
   const vtkIdType nt = static_cast<vtkIdType>(this->SourceCellIds.size());
-  if (nt == 0)
-  {
-    error = "input has no non-degenerate triangles";
-    return false;
-  }
-
   {
     std::vector<char> used(this->Points.size() / 3, 0);
     for (vtkIdType id : this->Triangles)
@@ -181,9 +284,7 @@ bool vtkMedialTriangleMesh::Build(
       used[id] = 1;
     }
   }
-
-  // Edge uses, sorted so that the uses of one edge are adjacent.
-  std::vector<EdgeUse> uses;
+  auto& uses = adjacency.Uses;
   uses.reserve(3 * nt);
   for (vtkIdType t = 0; t < nt; ++t)
   {
@@ -194,19 +295,18 @@ bool vtkMedialTriangleMesh::Build(
       uses.push_back({ std::min(a, b), std::max(a, b), t, a < b });
     }
   }
-  if (stop())
+  if (aborted && aborted())
   {
     return false;
   }
   std::sort(uses.begin(), uses.end());
-  if (stop())
+  if (aborted && aborted())
   {
     return false;
   }
-  // Manifold adjacency: up to 3 neighbours per triangle, with "same direction" flags.
-  std::vector<vtkIdType> neighbour(3 * nt, -1);
-  std::vector<char> sameDirection(3 * nt, 0);
-  std::vector<unsigned char> degree(nt, 0);
+  adjacency.Neighbour.assign(3 * nt, -1);
+  adjacency.SameDirection.assign(3 * nt, 0);
+  adjacency.Degree.assign(nt, 0);
   for (size_t i = 0; i < uses.size();)
   {
     size_t j = i + 1;
@@ -221,15 +321,16 @@ bool vtkMedialTriangleMesh::Build(
     }
     else if (j - i == 2)
     {
-      const EdgeUse& a = uses[i];
-      const EdgeUse& b = uses[i + 1];
+      const auto& a = uses[i];
+      const auto& b = uses[i + 1];
       const bool same = a.Forward == b.Forward;
+      auto& degree = adjacency.Degree;
       if (degree[a.Triangle] < 3 && degree[b.Triangle] < 3)
       {
-        neighbour[3 * a.Triangle + degree[a.Triangle]] = b.Triangle;
-        sameDirection[3 * a.Triangle + degree[a.Triangle]++] = same;
-        neighbour[3 * b.Triangle + degree[b.Triangle]] = a.Triangle;
-        sameDirection[3 * b.Triangle + degree[b.Triangle]++] = same;
+        adjacency.Neighbour[3 * a.Triangle + degree[a.Triangle]] = b.Triangle;
+        adjacency.SameDirection[3 * a.Triangle + degree[a.Triangle]++] = same;
+        adjacency.Neighbour[3 * b.Triangle + degree[b.Triangle]] = a.Triangle;
+        adjacency.SameDirection[3 * b.Triangle + degree[b.Triangle]++] = same;
       }
     }
     else
@@ -238,103 +339,171 @@ bool vtkMedialTriangleMesh::Build(
     }
     i = j;
   }
+  return true;
+}
 
-  // Breadth-first orientation per component.
-  std::vector<int> component(nt, -1);
+// Breadth-first consistent winding per shell (edge-connected component).
+void vtkMedialTriangleMesh::OrientShells(const Adjacency& adjacency)
+{
+  const vtkIdType nt = static_cast<vtkIdType>(this->SourceCellIds.size());
+  this->ShellOfTriangle.assign(nt, -1);
   std::vector<char> flip(nt, 0);
-  std::vector<char> componentBad;
   std::vector<vtkIdType> queue;
   queue.reserve(nt);
   for (vtkIdType seed = 0; seed < nt; ++seed)
   {
-    if (component[seed] >= 0)
+    if (this->ShellOfTriangle[seed] >= 0)
     {
       continue;
     }
-    const int c = static_cast<int>(this->Components++);
-    componentBad.push_back(0);
-    component[seed] = c;
+    const int c = static_cast<int>(this->Shells.size());
+    this->Shells.emplace_back();
+    Shell& shell = this->Shells.back();
+    shell.FirstTriangle = seed;
+    this->ShellOfTriangle[seed] = c;
     queue.clear();
     queue.push_back(seed);
     for (size_t q = 0; q < queue.size(); ++q)
     {
       const vtkIdType t = queue[q];
-      for (int k = 0; k < degree[t]; ++k)
+      for (int k = 0; k < adjacency.Degree[t]; ++k)
       {
-        const vtkIdType u = neighbour[3 * t + k];
-        const char want = flip[t] ^ sameDirection[3 * t + k];
-        if (component[u] < 0)
+        const vtkIdType u = adjacency.Neighbour[3 * t + k];
+        const char want = flip[t] ^ adjacency.SameDirection[3 * t + k];
+        if (this->ShellOfTriangle[u] < 0)
         {
-          component[u] = c;
+          this->ShellOfTriangle[u] = c;
           flip[u] = want;
           queue.push_back(u);
         }
         else if (flip[u] != want)
         {
-          componentBad[c] = 1;
+          shell.Orientable = false;
         }
       }
     }
+    shell.Triangles = static_cast<vtkIdType>(queue.size());
   }
-  for (char b : componentBad)
+  this->Components = static_cast<vtkIdType>(this->Shells.size());
+  for (const Shell& shell : this->Shells)
   {
-    this->NonOrientableComponents += b;
+    this->NonOrientableComponents += shell.Orientable ? 0 : 1;
   }
-  auto applyFlip = [this](vtkIdType t) { std::swap(this->Triangles[3 * t], this->Triangles[3 * t + 2]); };
   for (vtkIdType t = 0; t < nt; ++t)
   {
     if (flip[t])
     {
-      applyFlip(t);
+      std::swap(this->Triangles[3 * t], this->Triangles[3 * t + 2]);
     }
   }
+}
 
-  if (stop())
+// Closed: each edge of the shell is used an even number of times by the shell (an
+// edge shared with another shell, e.g. two boxes on one edge, is non-manifold but
+// closes both).
+void vtkMedialTriangleMesh::MarkClosedShells(const Adjacency& adjacency)
+{
+  for (Shell& shell : this->Shells)
   {
-    return false;
+    shell.Closed = true;
   }
+  const auto& uses = adjacency.Uses;
+  std::vector<int> shellsOnEdge;
+  for (size_t i = 0; i < uses.size();)
+  {
+    shellsOnEdge.clear();
+    size_t j = i;
+    for (; j < uses.size() && uses[j].Lo == uses[i].Lo && uses[j].Hi == uses[i].Hi; ++j)
+    {
+      shellsOnEdge.push_back(this->ShellOfTriangle[uses[j].Triangle]);
+    }
+    std::sort(shellsOnEdge.begin(), shellsOnEdge.end());
+    for (size_t a = 0; a < shellsOnEdge.size();)
+    {
+      size_t b = a;
+      while (b < shellsOnEdge.size() && shellsOnEdge[b] == shellsOnEdge[a])
+      {
+        ++b;
+      }
+      if ((b - a) % 2 == 1)
+      {
+        this->Shells[shellsOnEdge[a]].Closed = false;
+      }
+      a = b;
+    }
+    i = j;
+  }
+}
 
-  // Signed volume per component, about the box centre for accuracy.
+// Signed volume and bounds per shell (the volume about the box centre, for accuracy);
+// each shell is turned so that its own volume is positive.
+void vtkMedialTriangleMesh::OrientByVolume()
+{
+  const vtkIdType nt = static_cast<vtkIdType>(this->SourceCellIds.size());
   const double centre[3] = { 0.5 * (this->Bounds[0] + this->Bounds[1]),
     0.5 * (this->Bounds[2] + this->Bounds[3]), 0.5 * (this->Bounds[4] + this->Bounds[5]) };
-  std::vector<double> volume(this->Components, 0.0);
-  for (vtkIdType t = 0; t < nt; ++t)
+  for (Shell& shell : this->Shells)
   {
-    double a[3], b[3], c[3], bc[3];
-    const vtkIdType* v = &this->Triangles[3 * t];
-    vtkMedialGeometry::Sub(this->GetPoint(v[0]), centre, a);
-    vtkMedialGeometry::Sub(this->GetPoint(v[1]), centre, b);
-    vtkMedialGeometry::Sub(this->GetPoint(v[2]), centre, c);
-    vtkMedialGeometry::Cross(b, c, bc);
-    volume[component[t]] += vtkMedialGeometry::Dot(a, bc) / 6.0;
-  }
-  for (vtkIdType t = 0; t < nt; ++t)
-  {
-    if (volume[component[t]] < 0.0)
+    for (int k = 0; k < 3; ++k)
     {
-      applyFlip(t);
+      shell.Bounds[2 * k] = HUGE_VAL;
+      shell.Bounds[2 * k + 1] = -HUGE_VAL;
     }
   }
-  for (double v : volume)
+  for (vtkIdType t = 0; t < nt; ++t)
   {
-    this->FlippedComponents += v < 0.0 ? 1 : 0;
-    this->Volume += std::fabs(v);
+    Shell& shell = this->Shells[this->ShellOfTriangle[t]];
+    double a[3], b[3], c[3], bc[3];
+    const vtkIdType* v = &this->Triangles[3 * t];
+    G::Sub(this->GetPoint(v[0]), centre, a);
+    G::Sub(this->GetPoint(v[1]), centre, b);
+    G::Sub(this->GetPoint(v[2]), centre, c);
+    G::Cross(b, c, bc);
+    shell.Volume += G::Dot(a, bc) / 6.0;
+    for (int j = 0; j < 3; ++j)
+    {
+      const double* x = this->GetPoint(v[j]);
+      for (int k = 0; k < 3; ++k)
+      {
+        shell.Bounds[2 * k] = std::min(shell.Bounds[2 * k], x[k]);
+        shell.Bounds[2 * k + 1] = std::max(shell.Bounds[2 * k + 1], x[k]);
+      }
+    }
   }
+  std::vector<char> negative(this->Shells.size(), 0);
+  for (size_t s = 0; s < this->Shells.size(); ++s)
+  {
+    negative[s] = this->Shells[s].Volume < 0.0;
+    if (negative[s])
+    {
+      this->Shells[s].Volume = -this->Shells[s].Volume;
+      ++this->FlippedComponents;
+    }
+  }
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    if (negative[this->ShellOfTriangle[t]])
+    {
+      std::swap(this->Triangles[3 * t], this->Triangles[3 * t + 2]);
+    }
+  }
+}
 
-  // Normals, areas, CDF. Zero-area triangles get zero weight and are never sampled.
+// Normals and areas. Zero-area triangles get zero weight and are never sampled.
+void vtkMedialTriangleMesh::ComputeNormalsAndAreas()
+{
+  const vtkIdType nt = static_cast<vtkIdType>(this->SourceCellIds.size());
   this->Normals.resize(3 * nt);
   this->Areas.resize(nt);
-  this->AreaCdf.resize(nt);
   const double tinyArea = 1e-14 * this->Diagonal * this->Diagonal;
-  double sum = 0.0;
   for (vtkIdType t = 0; t < nt; ++t)
   {
     const vtkIdType* v = &this->Triangles[3 * t];
     double ab[3], ac[3], n[3];
-    vtkMedialGeometry::Sub(this->GetPoint(v[1]), this->GetPoint(v[0]), ab);
-    vtkMedialGeometry::Sub(this->GetPoint(v[2]), this->GetPoint(v[0]), ac);
-    vtkMedialGeometry::Cross(ab, ac, n);
-    const double len = std::sqrt(vtkMedialGeometry::Dot(n, n));
+    G::Sub(this->GetPoint(v[1]), this->GetPoint(v[0]), ab);
+    G::Sub(this->GetPoint(v[2]), this->GetPoint(v[0]), ac);
+    G::Cross(ab, ac, n);
+    const double len = std::sqrt(G::Dot(n, n));
     double area = 0.5 * len;
     if (area <= tinyArea)
     {
@@ -346,7 +515,323 @@ bool vtkMedialTriangleMesh::Build(
       this->Normals[3 * t + i] = len > 0.0 ? n[i] / len : 0.0;
     }
     this->Areas[t] = area;
-    sum += area;
+  }
+}
+
+namespace
+{
+// Triangles (a0, a1, a2) and (b0, b1, b2) intersect or come within `tolerance`.
+bool TrianglesTouch(const double* a[3], const double* b[3], double tolerance)
+{
+  if (vtkTriangle::TrianglesIntersect(a[0], a[1], a[2], b[0], b[1], b[2]))
+  {
+    return true;
+  }
+  // Apart: the closest pair is a vertex and a face, or two edges.
+  const double tolerance2 = tolerance * tolerance;
+  double q[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    if (G::ClosestPointOnTriangle(a[i], b[0], b[1], b[2], q) <= tolerance2 ||
+      G::ClosestPointOnTriangle(b[i], a[0], a[1], a[2], q) <= tolerance2)
+    {
+      return true;
+    }
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      double p0[3], p1[3], r0[3], r1[3], c0[3], c1[3], s, t;
+      std::copy_n(a[i], 3, p0);
+      std::copy_n(a[(i + 1) % 3], 3, p1);
+      std::copy_n(b[j], 3, r0);
+      std::copy_n(b[(j + 1) % 3], 3, r1);
+      if (vtkLine::DistanceBetweenLineSegments(p0, p1, r0, r1, c0, c1, s, t) <= tolerance2)
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+}
+
+// Pairs of closed shells with triangles that touch or intersect. Every triangle of a
+// shell whose box meets a later shell's box asks the tree for the triangles around it.
+// (Open shells are left out: a soup of unconnected triangles would touch everywhere.)
+bool vtkMedialTriangleMesh::FindShellContacts(
+  const vtkMedialTriangleBVH& tree, const std::function<bool()>& aborted)
+{
+  const int ns = static_cast<int>(this->Shells.size());
+  const double tolerance = ContactTolerance * this->Diagonal;
+  // Sweep the closed shells' boxes along x: mark the lower shell of each overlapping pair.
+  std::vector<int> byLeft;
+  for (int s = 0; s < ns; ++s)
+  {
+    if (this->Shells[s].Closed)
+    {
+      byLeft.push_back(s);
+    }
+  }
+  std::sort(byLeft.begin(), byLeft.end(),
+    [this](int a, int b) { return this->Shells[a].Bounds[0] < this->Shells[b].Bounds[0]; });
+  std::vector<char> mayTouchLater(ns, 0);
+  for (size_t i = 0; i < byLeft.size(); ++i)
+  {
+    const Shell& a = this->Shells[byLeft[i]];
+    for (size_t j = i + 1; j < byLeft.size() && this->Shells[byLeft[j]].Bounds[0] <= a.Bounds[1] + tolerance; ++j)
+    {
+      if (BoxesOverlap(a.Bounds, this->Shells[byLeft[j]].Bounds, tolerance))
+      {
+        mayTouchLater[std::min(byLeft[i], byLeft[j])] = 1;
+      }
+    }
+  }
+  std::vector<vtkIdType> asking;
+  for (vtkIdType t = 0; t < this->GetNumberOfTriangles(); ++t)
+  {
+    if (mayTouchLater[this->ShellOfTriangle[t]] && this->Areas[t] > 0.0)
+    {
+      asking.push_back(t);
+    }
+  }
+  // (shell a, shell b, triangle of a) for every touching pair of triangles.
+  std::vector<std::array<vtkIdType, 3>> found;
+  constexpr vtkIdType Block = 1 << 16;
+  for (vtkIdType begin = 0; begin < static_cast<vtkIdType>(asking.size()); begin += Block)
+  {
+    if (aborted && aborted())
+    {
+      return false;
+    }
+    const vtkIdType end = std::min<vtkIdType>(begin + Block, asking.size());
+#pragma omp parallel
+    {
+      std::vector<std::array<vtkIdType, 3>> local;
+#pragma omp for schedule(dynamic, 256) nowait
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const vtkIdType t = asking[i];
+        const int shell = this->ShellOfTriangle[t];
+        const double* a[3] = { this->GetPoint(this->GetTriangle(t)[0]),
+          this->GetPoint(this->GetTriangle(t)[1]), this->GetPoint(this->GetTriangle(t)[2]) };
+        double lo[3], hi[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          lo[k] = std::min({ a[0][k], a[1][k], a[2][k] }) - tolerance;
+          hi[k] = std::max({ a[0][k], a[1][k], a[2][k] }) + tolerance;
+        }
+        int lastShell = -1; // one hit per neighbouring shell is enough
+        tree.VisitBox(lo, hi, [&](vtkIdType u) {
+          const int other = this->ShellOfTriangle[u];
+          if (other <= shell || other == lastShell || this->Areas[u] == 0.0 ||
+            !this->Shells[other].Closed)
+          {
+            return true;
+          }
+          const double* b[3] = { this->GetPoint(this->GetTriangle(u)[0]),
+            this->GetPoint(this->GetTriangle(u)[1]), this->GetPoint(this->GetTriangle(u)[2]) };
+          if (TrianglesTouch(a, b, tolerance))
+          {
+            local.push_back({ shell, other, t });
+            lastShell = other;
+          }
+          return true;
+        });
+      }
+#pragma omp critical
+      found.insert(found.end(), local.begin(), local.end());
+    }
+  }
+  // One contact per pair, at its lowest triangle: the same whatever the thread count.
+  std::sort(found.begin(), found.end());
+  for (size_t i = 0; i < found.size(); ++i)
+  {
+    if (i > 0 && found[i][0] == found[i - 1][0] && found[i][1] == found[i - 1][1])
+    {
+      continue;
+    }
+    ShellContact contact;
+    contact.A = static_cast<int>(found[i][0]);
+    contact.B = static_cast<int>(found[i][1]);
+    const vtkIdType* v = this->GetTriangle(found[i][2]);
+    for (int k = 0; k < 3; ++k)
+    {
+      contact.Point[k] =
+        (this->GetPoint(v[0])[k] + this->GetPoint(v[1])[k] + this->GetPoint(v[2])[k]) / 3.0;
+    }
+    this->Contacts.push_back(contact);
+  }
+  return true;
+}
+
+namespace
+{
+// Crossing of the ray x + t (1, 0, 0), t > 0, with triangle (a, b, c): 1 when it
+// crosses inside, 0 when it misses, -1 when it passes too close to an edge or starts
+// on the triangle to tell (the caller tries another origin).
+int RayCrossing(const double x[3], const double* a, const double* b, const double* c, double tolerance)
+{
+  const double* v[3] = { a, b, c };
+  double s[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    const double* p = v[i];
+    const double* q = v[(i + 1) % 3];
+    const double ey = q[1] - p[1], ez = q[2] - p[2];
+    // Twice the signed area of (p, q, x) projected on the yz plane.
+    s[i] = ey * (x[2] - p[2]) - ez * (x[1] - p[1]);
+    if (std::fabs(s[i]) <= tolerance * std::sqrt(ey * ey + ez * ez))
+    {
+      // Close to this edge's line: undecidable only where the triangle is.
+      const double lo1 = std::min({ a[1], b[1], c[1] }), hi1 = std::max({ a[1], b[1], c[1] });
+      const double lo2 = std::min({ a[2], b[2], c[2] }), hi2 = std::max({ a[2], b[2], c[2] });
+      if (x[1] >= lo1 - tolerance && x[1] <= hi1 + tolerance && x[2] >= lo2 - tolerance &&
+        x[2] <= hi2 + tolerance)
+      {
+        return -1;
+      }
+      return 0;
+    }
+  }
+  if (!((s[0] > 0 && s[1] > 0 && s[2] > 0) || (s[0] < 0 && s[1] < 0 && s[2] < 0)))
+  {
+    return 0;
+  }
+  // Where the ray meets the triangle: barycentric weights from the sub-areas.
+  const double sum = s[0] + s[1] + s[2];
+  const double hitX = (s[1] * a[0] + s[2] * b[0] + s[0] * c[0]) / sum;
+  if (std::fabs(hitX - x[0]) <= tolerance)
+  {
+    return -1;
+  }
+  return hitX > x[0] ? 1 : 0;
+}
+}
+
+// Nesting depth of every closed shell (how many other closed shells enclose it, by
+// the parity of a ray's crossings), then shells at odd depth become cavities.
+void vtkMedialTriangleMesh::OrientByNesting(const vtkMedialTriangleBVH& tree)
+{
+  const int ns = static_cast<int>(this->Shells.size());
+  auto counts = [this](int s) { return this->Shells[s].Closed && this->Shells[s].Orientable; };
+  int closed = 0;
+  for (int s = 0; s < ns; ++s)
+  {
+    closed += counts(s) ? 1 : 0;
+  }
+  if (closed < 2)
+  {
+    return;
+  }
+  // Ray origins: the centroids of a few of each shell's first non-degenerate triangles.
+  std::vector<std::vector<vtkIdType>> origins(ns);
+  for (vtkIdType t = 0; t < this->GetNumberOfTriangles(); ++t)
+  {
+    auto& o = origins[this->ShellOfTriangle[t]];
+    if (this->Areas[t] > 0.0 && o.size() < static_cast<size_t>(NestingTrials))
+    {
+      o.push_back(t);
+    }
+  }
+  // Contacts are sorted by (A, B), A < B.
+  auto touching = [this](int a, int b) {
+    ShellContact key;
+    key.A = std::min(a, b);
+    key.B = std::max(a, b);
+    return std::binary_search(this->Contacts.begin(), this->Contacts.end(), key,
+      [](const ShellContact& x, const ShellContact& y) { return x.A < y.A || (x.A == y.A && x.B < y.B); });
+  };
+  const double tolerance = 1e-9 * this->Diagonal;
+  std::vector<std::vector<int>> enclosing(ns);
+  std::vector<int> crossings(ns, 0);
+  for (int s = 0; s < ns; ++s)
+  {
+    if (!counts(s))
+    {
+      continue;
+    }
+    for (vtkIdType t : origins[s])
+    {
+      const vtkIdType* v = this->GetTriangle(t);
+      double x[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        x[k] = (this->GetPoint(v[0])[k] + this->GetPoint(v[1])[k] + this->GetPoint(v[2])[k]) / 3.0;
+      }
+      const double lo[3] = { x[0], x[1], x[2] };
+      const double hi[3] = { this->Bounds[1] + this->Diagonal, x[1], x[2] };
+      std::fill(crossings.begin(), crossings.end(), 0);
+      bool undecided = false;
+      tree.VisitBox(lo, hi, [&](vtkIdType u) {
+        const int other = this->ShellOfTriangle[u];
+        if (other == s || !counts(other) || touching(s, other))
+        {
+          return true;
+        }
+        const vtkIdType* w = this->GetTriangle(u);
+        const int crossing = RayCrossing(
+          x, this->GetPoint(w[0]), this->GetPoint(w[1]), this->GetPoint(w[2]), tolerance);
+        undecided = crossing < 0;
+        crossings[other] += crossing > 0 ? 1 : 0;
+        return !undecided;
+      });
+      if (!undecided)
+      {
+        for (int other = 0; other < ns; ++other)
+        {
+          if (crossings[other] % 2 == 1)
+          {
+            enclosing[s].push_back(other);
+          }
+        }
+        break;
+      }
+    }
+    this->Shells[s].Depth = static_cast<int>(enclosing[s].size());
+  }
+  for (int s = 0; s < ns; ++s)
+  {
+    for (int other : enclosing[s])
+    {
+      const int parent = this->Shells[s].Parent;
+      if (parent < 0 || this->Shells[other].Depth > this->Shells[parent].Depth)
+      {
+        this->Shells[s].Parent = other;
+      }
+    }
+    if (this->Shells[s].Depth % 2 == 1)
+    {
+      this->FlipShell(s);
+    }
+  }
+}
+
+void vtkMedialTriangleMesh::FlipShell(int shell)
+{
+  for (vtkIdType t = 0; t < this->GetNumberOfTriangles(); ++t)
+  {
+    if (this->ShellOfTriangle[t] == shell)
+    {
+      std::swap(this->Triangles[3 * t], this->Triangles[3 * t + 2]);
+      for (int k = 0; k < 3; ++k)
+      {
+        this->Normals[3 * t + k] = -this->Normals[3 * t + k];
+      }
+    }
+  }
+  this->Shells[shell].Volume = -this->Shells[shell].Volume;
+  ++this->FlippedComponents;
+}
+
+bool vtkMedialTriangleMesh::BuildAreaCdf(std::string& error)
+{
+  this->AreaCdf.resize(this->Areas.size());
+  double sum = 0.0;
+  for (size_t t = 0; t < this->Areas.size(); ++t)
+  {
+    sum += this->Areas[t];
     this->AreaCdf[t] = sum;
   }
   this->TotalArea = sum;
@@ -361,6 +846,77 @@ bool vtkMedialTriangleMesh::Build(
   }
   this->AreaCdf.back() = 1.0;
   return true;
+}
+
+std::string vtkMedialTriangleMesh::ShellName(int shell) const
+{
+  std::ostringstream os;
+  os << "shell " << shell << " (input cell " << this->SourceCellIds[this->Shells[shell].FirstTriangle]
+     << ")";
+  return os.str();
+}
+
+std::vector<std::string> vtkMedialTriangleMesh::Warnings() const
+{
+  std::vector<std::string> warnings;
+  if (this->DuplicateTriangles > 0)
+  {
+    std::ostringstream os;
+    os << "Input has " << this->DuplicateTriangles << " duplicate triangles; they were ignored.";
+    warnings.push_back(os.str());
+  }
+  if (this->NonManifoldEdges > 0)
+  {
+    std::ostringstream os;
+    os << "Input has " << this->NonManifoldEdges
+       << " non-manifold edges; inside and outside may be ambiguous there.";
+    warnings.push_back(os.str());
+  }
+  if (this->NonOrientableComponents > 0)
+  {
+    std::ostringstream os;
+    os << this->NonOrientableComponents
+       << " component(s) cannot be oriented consistently (non-orientable surface).";
+    warnings.push_back(os.str());
+  }
+  if (this->Cavities > 0)
+  {
+    std::ostringstream os;
+    os << "Nested shells handled: " << this->Shells.size() << " shells make " << this->Bodies
+       << (this->Bodies == 1 ? " solid body" : " solid bodies") << " and " << this->Cavities
+       << (this->Cavities == 1 ? " cavity" : " cavities")
+       << ". A shell inside an odd number of others bounds a cavity; its normals now point into "
+          "the cavity: ";
+    size_t listed = 0;
+    for (size_t s = 0; s < this->Shells.size() && listed < ListedInMessages; ++s)
+    {
+      const Shell& shell = this->Shells[s];
+      if (shell.Closed && shell.Depth % 2 == 1)
+      {
+        os << (listed++ ? ", " : "") << this->ShellName(static_cast<int>(s)) << " inside "
+           << this->ShellName(shell.Parent);
+      }
+    }
+    os << (static_cast<vtkIdType>(listed) < this->Cavities ? ", ..." : "") << ".";
+    warnings.push_back(os.str());
+  }
+  if (!this->Contacts.empty())
+  {
+    std::ostringstream os;
+    const size_t n = this->Contacts.size();
+    os << (n == 1 ? "Two shells touch or intersect: " : std::to_string(n) + " pairs of shells touch or intersect: ");
+    for (size_t i = 0; i < n && i < ListedInMessages; ++i)
+    {
+      const ShellContact& c = this->Contacts[i];
+      os << (i ? "; " : "") << this->ShellName(c.A) << " and " << this->ShellName(c.B) << " near "
+         << FormatPoint(c.Point);
+    }
+    os << (n > ListedInMessages ? "; ..." : "")
+       << ". They are neither one solid nor separate ones, so balls and thickness near the contact "
+          "are unreliable; join the bodies (boolean union) or move them apart.";
+    warnings.push_back(os.str());
+  }
+  return warnings;
 }
 
 vtkIdType vtkMedialTriangleMesh::PickTriangleByArea(double u) const

@@ -1,22 +1,34 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class vtkMedialTriangleMesh
- * @brief Internal: a validated, consistently oriented triangle mesh in double precision.
+ * @brief Internal: a validated triangle mesh in double precision, oriented as a solid.
  *
- * Build() takes any vtkPolyData surface and:
- *  1. rejects empty input and NaN/Inf coordinates;
- *  2. triangulates polygons and strips (vtkTriangleFilter), remembering the input cell id;
- *  3. merges exactly coincident points (vtkStaticCleanPolyData, tolerance 0), so
- *     that soups from STL/OBJ become connected;
- *  4. orients each edge-connected component consistently by a breadth-first walk
- *     over manifold edges, then flips every component whose signed volume is
- *     negative, so normals point outward whatever the file's winding;
- *  5. computes unit outward normals, areas and the area CDF used for sampling.
+ * Build() takes any vtkPolyData surface and runs these passes:
+ *  1. ValidateInput: rejects empty input, NaN/Inf coordinates, input without surface cells;
+ *  2. ImportTriangles: triangulates polygons and strips (vtkTriangleFilter), remembering
+ *     the input cell id, and merges exactly coincident points (vtkStaticCleanPolyData,
+ *     tolerance 0), so that soups from STL/OBJ become connected; drops collapsed and
+ *     duplicate triangles;
+ *  3. BuildAdjacency: the triangles sharing each edge; counts boundary and non-manifold edges;
+ *  4. OrientShells, MarkClosedShells, OrientByVolume: each shell (edge-connected
+ *     component) is wound consistently by a breadth-first walk over manifold edges,
+ *     marked closed when each of its edges is used an even number of times by it, and
+ *     turned so that its own signed volume is positive;
+ *  5. ComputeNormalsAndAreas: unit normals and areas;
+ *  6. FindShellContacts (two shells or more): pairs of shells whose triangles touch or
+ *     intersect, through a vtkMedialTriangleBVH box query and exact triangle tests;
+ *  7. OrientByNesting (two closed shells or more): a ray from a point of each closed
+ *     shell counts how many other closed shells enclose it (parity of the crossings).
+ *     A shell inside an odd number of others bounds a cavity: it is turned so that its
+ *     normals point into the cavity (out of the solid), as the 2D code does for holes.
+ *     Disjoint shells at even depth are separate solid bodies. Shells that touch or
+ *     intersect each other do not count for each other's depth;
+ *  8. the area CDF used for sampling.
+ * After Build, every normal points out of the solid, whatever the file's winding.
  *
- * It counts boundary edges (open mesh), non-manifold edges, components that could
- * not be oriented, and degenerate (zero-area) triangles, so callers can warn.
- * Limitation: a component nested inside another (a cavity) is oriented by its own
- * volume sign, i.e. as a separate solid.
+ * It counts boundary edges (open mesh), non-manifold edges, shells that could not be
+ * oriented, degenerate (zero-area) and duplicate triangles, cavities and touching
+ * shells; Warnings() turns them into the messages every filter prints.
  */
 #ifndef vtkMedialTriangleMesh_h
 #define vtkMedialTriangleMesh_h
@@ -28,16 +40,18 @@
 #include <vector>
 
 class vtkPolyData;
+class vtkMedialTriangleBVH;
 
 class vtkMedialTriangleMesh
 {
 public:
   /// Returns false and fills `error` with a one-line reason on unusable input.
-  /// `aborted`, when given, is polled between stages; true stops the build
+  /// `aborted`, when given, is polled between passes; true stops the build
   /// (false, error "aborted") so that a caller's abort is honoured promptly.
   bool Build(vtkPolyData* input, std::string& error, const std::function<bool()>& aborted = {});
 
   vtkIdType GetNumberOfTriangles() const { return static_cast<vtkIdType>(this->Areas.size()); }
+  vtkIdType GetNumberOfPoints() const { return static_cast<vtkIdType>(this->Points.size() / 3); }
   const double* GetPoint(vtkIdType i) const { return &this->Points[3 * i]; }
   const vtkIdType* GetTriangle(vtkIdType t) const { return &this->Triangles[3 * t]; }
   const double* GetNormal(vtkIdType t) const { return &this->Normals[3 * t]; }
@@ -51,17 +65,47 @@ public:
   /// Index of the triangle whose cumulative area bracket holds u in [0, 1).
   vtkIdType PickTriangleByArea(double u) const;
 
+  /// One line per problem or notable fact of the input (duplicate triangles,
+  /// non-manifold edges, non-orientable shells, cavities taken from nesting, touching
+  /// or intersecting shells), for the filters to print as warnings. Open surfaces
+  /// and discarded samples are reported by the sampler, which knows the counts.
+  std::vector<std::string> Warnings() const;
+
+  /// Name of a shell in messages: "shell K (input cell C)".
+  std::string ShellName(int shell) const;
+
+  struct Shell
+  {
+    vtkIdType FirstTriangle = -1; // its lowest triangle id
+    vtkIdType Triangles = 0;
+    bool Closed = false;     // every edge is used an even number of times within the shell
+    bool Orientable = true;  // the breadth-first walk found no contradiction
+    int Depth = 0;           // closed shells enclosing it (parity of the crossings)
+    int Parent = -1;         // the innermost closed shell enclosing it
+    double Volume = 0.0;     // signed, after orientation: > 0 a solid, < 0 a cavity
+    double Bounds[6] = { 0, 0, 0, 0, 0, 0 };
+  };
+  /// Two shells whose triangles touch or intersect (within 1e-6 of the diagonal).
+  struct ShellContact
+  {
+    int A = -1, B = -1;           // shell indices, A < B
+    double Point[3] = { 0, 0, 0 }; // where: the centroid of one of the touching triangles
+  };
+
   std::vector<double> Points;          // 3 per point
   std::vector<vtkIdType> Triangles;    // 3 per triangle, counter-clockwise seen from outside
   std::vector<vtkIdType> SourceCellIds; // input cell id of each triangle
-  std::vector<double> Normals;         // unit outward normal, 3 per triangle
+  std::vector<double> Normals;         // unit normal out of the solid, 3 per triangle
   std::vector<double> Areas;
   std::vector<double> AreaCdf; // normalised cumulative area, last entry 1
+  std::vector<int> ShellOfTriangle;
+  std::vector<Shell> Shells; // in the order of their first triangle
+  std::vector<ShellContact> Contacts;
 
   double Bounds[6] = { 0, 0, 0, 0, 0, 0 };
   double Diagonal = 0.0;
   double TotalArea = 0.0;
-  double Volume = 0.0; // enclosed volume after orientation (meaningful when closed)
+  double Volume = 0.0; // enclosed volume: solids minus cavities (meaningful when closed)
   vtkIdType BoundaryEdges = 0;
   vtkIdType Edges = 0;      // distinct edges of the kept triangles
   vtkIdType UsedPoints = 0; // points referenced by the kept triangles
@@ -69,11 +113,27 @@ public:
   vtkIdType NonOrientableComponents = 0;
   vtkIdType DegenerateTriangles = 0;
   vtkIdType DuplicateTriangles = 0; // same three vertices as an earlier triangle: dropped
-  vtkIdType Components = 0;
-  vtkIdType FlippedComponents = 0;
+  vtkIdType Components = 0;         // shells
+  vtkIdType FlippedComponents = 0;  // shells turned over (volume sign or nesting)
+  vtkIdType Cavities = 0;           // closed shells at odd depth
+  vtkIdType Bodies = 0;             // closed shells at even depth, and open shells
 
 private:
+  // Manifold neighbours of each triangle and the sorted edge uses (see BuildAdjacency).
+  struct Adjacency;
+
+  bool ValidateInput(vtkPolyData* input, std::string& error) const;
+  void ImportTriangles(vtkPolyData* input);
   void DropDuplicateTriangles();
+  bool BuildAdjacency(Adjacency& adjacency, const std::function<bool()>& aborted);
+  void OrientShells(const Adjacency& adjacency);
+  void MarkClosedShells(const Adjacency& adjacency);
+  void OrientByVolume();
+  void ComputeNormalsAndAreas();
+  bool FindShellContacts(const vtkMedialTriangleBVH& tree, const std::function<bool()>& aborted);
+  void OrientByNesting(const vtkMedialTriangleBVH& tree);
+  void FlipShell(int shell);
+  bool BuildAreaCdf(std::string& error);
 };
 
 #endif

@@ -163,20 +163,9 @@ bool vtkMedialAxisSampler::vtkInternals::PrepareSurface(
   }
   self->BoundaryEdges = mesh.BoundaryEdges;
   self->NumberOfTriangles = mesh.GetNumberOfTriangles();
-  if (mesh.DuplicateTriangles > 0)
+  for (const std::string& warning : mesh.Warnings())
   {
-    vtkWarningWithObjectMacro(
-      self, << "Input has " << mesh.DuplicateTriangles << " duplicate triangles; they were ignored.");
-  }
-  if (mesh.NonManifoldEdges > 0)
-  {
-    vtkWarningWithObjectMacro(self, << "Input has " << mesh.NonManifoldEdges
-                                    << " non-manifold edges; inside and outside may be ambiguous there.");
-  }
-  if (mesh.NonOrientableComponents > 0)
-  {
-    vtkWarningWithObjectMacro(self, << mesh.NonOrientableComponents
-                                    << " component(s) cannot be oriented consistently (non-orientable surface).");
+    vtkWarningWithObjectMacro(self, << warning);
   }
   if (!query.Build(&mesh, error, aborted))
   {
@@ -272,7 +261,7 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh
     output->GetFieldData()->GetArray(vtkMedialArrayNames::RequestedSamples)->SetTuple1(0, static_cast<double>(count));
     this->WriteCoverage(output);
   }
-  this->WarnDiscarded(mesh, count);
+  this->WarnDiscarded(mesh, used);
   return 1;
 }
 
@@ -385,6 +374,8 @@ vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangl
   return count;
 }
 
+// Shared by every 3D strategy: an open surface, or rays that met the surface from
+// outside (a surface folded over itself, or shells that touch or intersect).
 void vtkMedialAxisSampler::vtkInternals::WarnDiscarded(const vtkMedialTriangleMesh& mesh, vtkIdType count) const
 {
   vtkMedialAxisSampler* self = this->Self;
@@ -394,25 +385,51 @@ void vtkMedialAxisSampler::vtkInternals::WarnDiscarded(const vtkMedialTriangleMe
                                     << self->DiscardedSamples << " of " << count
                                     << " samples were discarded because their ray escaped through a hole.");
   }
+  else if (self->DiscardedSamples > 0 && !mesh.Contacts.empty())
+  {
+    vtkWarningWithObjectMacro(self, << self->DiscardedSamples << " of " << count
+                                    << " samples were discarded: their inward ray met the surface from outside, "
+                                       "where shells touch or intersect (see the warning naming them).");
+  }
   else if (self->DiscardedSamples > 0)
   {
     // Closed, yet a ray left the solid: a folded-over or self-intersecting patch.
     vtkWarningWithObjectMacro(self, << self->DiscardedSamples << " of " << count
-                                    << " samples were discarded: their inward ray met the surface from outside "
-                                       "(folded-over or self-intersecting triangles?).");
+                                    << " samples were discarded: their inward ray met the surface from outside, "
+                                       "so the surface folds over or intersects itself (self-intersecting triangles).");
   }
 }
 
+// FACE_DISTANCE ran out of faces before the budget and the coverage: say why.
+void vtkMedialAxisSampler::vtkInternals::WarnStoppedEarly(const vtkMedialTriangleMesh& mesh,
+  const vtkMedialIterativeSettings& settings, const vtkMedialIterativeResult& result) const
+{
+  const vtkIdType evaluated = static_cast<vtkIdType>(result.Records.size());
+  if (settings.Strategy != vtkMedialIterativeSettings::FACE_DISTANCE || evaluated >= settings.Budget ||
+    result.CoverageReached || result.WorstFace < 0)
+  {
+    return;
+  }
+  vtkWarningWithObjectMacro(this->Self,
+    << "face-distance stopped after " << evaluated << " of " << settings.Budget
+    << " samples without reaching the coverage: " << result.GivenUpFaces << " faces were given up ("
+    << (result.GivenUpFaces == 1 ? "its" : "their") << " own samples failed " << settings.MaximumFaceAttempts
+    << " times to cover them: next to a hole, or where no admissible ball reaches). The largest gap, "
+    << result.MaxGap / mesh.Diagonal << " of the diagonal, is at (" << result.WorstPoint[0] << ", "
+    << result.WorstPoint[1] << ", " << result.WorstPoint[2] << ") on input cell "
+    << mesh.SourceCellIds[result.WorstFace] << ".");
+}
+
+static_assert(static_cast<int>(vtkMedialAxisSampler::BISECTION) == vtkMedialBallParameters::BISECTION &&
+    static_cast<int>(vtkMedialAxisSampler::SHRINKING_BALL) == vtkMedialBallParameters::SHRINKING_BALL &&
+    static_cast<int>(vtkMedialAxisSampler::ONE_PASS) == vtkMedialBallParameters::ONE_PASS,
+  "the solver's methods are the sampler's");
+
 vtkMedialBallParameters vtkMedialAxisSampler::vtkInternals::MakeBallParameters(double diagonal) const
 {
-  vtkMedialBallParameters param;
-  param.Method = this->Self->Method;
-  param.Tolerance = this->Self->Tolerance * diagonal;
-  param.CosMinAngle = this->Self->MinimumSeparationAngle > 0.0
-    ? std::cos(this->Self->MinimumSeparationAngle * 3.14159265358979323846 / 180.0)
-    : 1.0;
-  param.MaximumIterations = this->Self->MaximumIterations;
-  return param;
+  const vtkMedialAxisSampler* self = this->Self;
+  return vtkMedialMakeBallParameters(self->Method, self->Tolerance, self->MinimumSeparationAngle,
+    self->MaximumProtrusion, self->MaximumIterations, diagonal);
 }
 
 int vtkMedialAxisSampler::vtkInternals::SampleIterative(
@@ -460,6 +477,8 @@ int vtkMedialAxisSampler::vtkInternals::SampleIterative(
   self->CoverageReached = result.CoverageReached;
   self->MaxCoverageGap = result.MaxGap / mesh.Diagonal;
   this->WriteSamples(output, evaluated, result.Records);
+  this->WarnDiscarded(mesh, evaluated);
+  this->WarnStoppedEarly(mesh, settings, result);
   // RequestedSamples is the budget; the samples used are EvaluatedSamples.
   output->GetFieldData()->GetArray(vtkMedialArrayNames::RequestedSamples)->SetTuple1(0, static_cast<double>(settings.Budget));
   vtkIdType validSeeds = 0;
@@ -601,6 +620,7 @@ void vtkMedialAxisSampler::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Method: " << GetMethodName(this->Method) << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "MinimumSeparationAngle: " << this->MinimumSeparationAngle << "\n";
+  os << indent << "MaximumProtrusion: " << this->MaximumProtrusion << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "MaximumIterations: " << this->MaximumIterations << "\n";

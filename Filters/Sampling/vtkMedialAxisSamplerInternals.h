@@ -20,6 +20,8 @@
 #include <vector>
 
 class vtkMedialCoverage;
+struct vtkMedialIterativeResult;
+struct vtkMedialIterativeSettings;
 class vtkMedialSurfaceQuery;
 class vtkMedialTriangleMesh;
 
@@ -79,8 +81,11 @@ private:
   vtkIdType SolveBlocks(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int threads,
     vtkIdType block, const std::vector<vtkIdType>& triangles, const std::vector<vtkIdType>& order,
     std::vector<vtkMedialSampleRecord>& results, vtkMedialCoverage* coverage);
-  // Warns about samples discarded on an open or folded surface.
+  // Warns about samples discarded on an open or folded surface, or where shells touch.
   void WarnDiscarded(const vtkMedialTriangleMesh& mesh, vtkIdType count) const;
+  // Warns when FACE_DISTANCE gave up faces and stopped short of the budget and the coverage.
+  void WarnStoppedEarly(const vtkMedialTriangleMesh& mesh, const vtkMedialIterativeSettings& settings,
+    const vtkMedialIterativeResult& result) const;
   // Adds a one-value field-data array.
   static void AddField(vtkPolyData* output, const char* name, double value);
   // CoverageReached and MaxCoverageGap.

@@ -305,6 +305,23 @@ double vtkMedialCoverage::MaxGap()
   return worst;
 }
 
+vtkIdType vtkMedialCoverage::WorstFace() const
+{
+  vtkIdType worst = -1;
+  double gap = -HUGE_VAL;
+  const vtkIdType nf = this->Impl->Mesh->GetNumberOfTriangles();
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    const double g = this->FaceGap(f);
+    if (g > gap)
+    {
+      gap = g;
+      worst = f;
+    }
+  }
+  return worst;
+}
+
 //------------------------------------------------------------------------------
 namespace
 {
@@ -502,8 +519,13 @@ void Runner::FaceDistance()
     }
     if (this->EndOfRound())
     {
-      return;
+      break;
     }
+  }
+  this->R.GivenUpFaces = 0;
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    this->R.GivenUpFaces += key[f] > tol && attempts[f] >= this->S.MaximumFaceAttempts ? 1 : 0;
   }
 }
 
@@ -818,5 +840,10 @@ void vtkMedialRunIterativeSampling(const vtkMedialTriangleMesh& mesh, const vtkM
   {
     result.MaxGap = runner.Coverage.MaxGap();
     result.CoverageReached = result.MaxGap <= settings.CoverageTolerance;
+    result.WorstFace = runner.Coverage.WorstFace();
+    if (result.WorstFace >= 0)
+    {
+      runner.Coverage.WorstPoint(result.WorstFace, result.WorstPoint);
+    }
   }
 }

@@ -95,6 +95,8 @@ public:
   void WorstPoint(vtkIdType face, double x[3]) const;
   /// Largest gap over all faces (recomputed; also refreshes the internal bound).
   double MaxGap();
+  /// The face of largest gap (lowest id among ties).
+  vtkIdType WorstFace() const;
 
 private:
   struct Internals;
@@ -128,6 +130,9 @@ struct vtkMedialIterativeResult
   std::vector<vtkIdType> InitialLink; // 1 per link: the step-1 link it refines
   bool CoverageReached = false;
   double MaxGap = 0.0; // absolute
+  vtkIdType WorstFace = -1;  // the face of MaxGap
+  double WorstPoint[3] = { 0, 0, 0 }; // its least covered point (vertex or centroid)
+  vtkIdType GivenUpFaces = 0; // FACE_DISTANCE: faces left uncovered after MaximumFaceAttempts
   bool Aborted = false;
 };
 

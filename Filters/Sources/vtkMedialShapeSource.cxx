@@ -117,6 +117,49 @@ void MakeSphere(MeshBuilder& m, double radius, int levels)
   }
 }
 
+// Two concentric geodesic spheres; the inner one's triangles face into the cavity.
+void MakeHollowSphere(MeshBuilder& m, double outer, double inner, int levels)
+{
+  MakeSphere(m, outer, levels);
+  MeshBuilder cavity;
+  MakeSphere(cavity, inner, levels);
+  const vtkIdType offset = static_cast<vtkIdType>(m.Points.size());
+  for (const auto& p : cavity.Points)
+  {
+    m.Add(p[0], p[1], p[2]);
+  }
+  for (const auto& t : cavity.Triangles)
+  {
+    m.Tri(offset + t[0], offset + t[2], offset + t[1]);
+  }
+}
+
+// A ring of radius `ring` in the z = 0 plane swept by a circle of radius `tube`.
+void MakeTorus(MeshBuilder& m, double ring, double tube, int resolution)
+{
+  const int around = 4 * resolution;
+  const int across = std::max(6, static_cast<int>(std::lround(around * tube / ring)));
+  for (int i = 0; i < around; ++i)
+  {
+    const double u = 2.0 * Pi * i / around;
+    for (int j = 0; j < across; ++j)
+    {
+      const double v = 2.0 * Pi * j / across;
+      const double w = ring + tube * std::cos(v);
+      m.Add(w * std::cos(u), w * std::sin(u), tube * std::sin(v));
+    }
+  }
+  auto id = [&](int i, int j) { return static_cast<vtkIdType>((i % around) * across + j % across); };
+  for (int i = 0; i < around; ++i)
+  {
+    for (int j = 0; j < across; ++j)
+    {
+      m.Tri(id(i, j), id(i + 1, j), id(i + 1, j + 1));
+      m.Tri(id(i, j), id(i + 1, j + 1), id(i, j + 1));
+    }
+  }
+}
+
 void MakeBox(MeshBuilder& m, const double lengths[3], int n)
 {
   // Shared grid points: index by integer lattice coordinates on the box surface.
@@ -427,6 +470,25 @@ int vtkMedialShapeSource::RequestData(vtkInformation*, vtkInformationVector**, v
     case CAPSULE:
       MakeCapsule(m, this->Radius, this->Length, this->Resolution);
       break;
+    case TORUS:
+      if (!(this->TubeRadius < this->Radius))
+      {
+        vtkErrorMacro(<< "TORUS tube radius " << this->TubeRadius << " is not below the ring radius "
+                      << this->Radius << ".");
+        return 0;
+      }
+      MakeTorus(m, this->Radius, this->TubeRadius, this->Resolution);
+      break;
+    case HOLLOW_SPHERE:
+      if (this->Resolution > 8 || !(this->InnerRadius < this->Radius))
+      {
+        vtkErrorMacro(<< "HOLLOW_SPHERE needs a resolution of at most 8 and an inner radius below "
+                         "the outer one (got "
+                      << this->Resolution << ", " << this->InnerRadius << " and " << this->Radius << ").");
+        return 0;
+      }
+      MakeHollowSphere(m, this->Radius, this->InnerRadius, this->Resolution);
+      break;
     case L_SHAPE:
     case RECTANGLE:
     case SQUARE_FRAME:
@@ -453,6 +515,8 @@ void vtkMedialShapeSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Resolution: " << this->Resolution << "\n";
   os << indent << "Radius: " << this->Radius << "\n";
   os << indent << "Length: " << this->Length << "\n";
+  os << indent << "TubeRadius: " << this->TubeRadius << "\n";
+  os << indent << "InnerRadius: " << this->InnerRadius << "\n";
   os << indent << "Genus: " << this->Genus << "\n";
   os << indent << "BoxLengths: " << this->BoxLengths[0] << " " << this->BoxLengths[1] << " "
      << this->BoxLengths[2] << "\n";

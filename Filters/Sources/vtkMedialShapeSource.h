@@ -16,6 +16,12 @@
  *    Resolution x Resolution squares of two triangles.
  *  - CAPSULE: a cylinder of radius Radius and length Length along z with
  *    hemispherical caps, 4 * Resolution segments around.
+ *  - TORUS: a ring of radius Radius in the z = 0 plane swept by a circle of radius
+ *    TubeRadius, 4 * Resolution segments around the ring (and as many around the tube
+ *    as keep the quads about square, at least 6). Its wall thickness is 2 TubeRadius.
+ *  - HOLLOW_SPHERE: a geodesic sphere of radius Radius with a concentric spherical
+ *    cavity of radius InnerRadius (both split Resolution times, as SPHERE); the
+ *    cavity's triangles face into it. Its wall thickness is Radius - InnerRadius.
  *  - RINGS: Genus rings (ring radius 1, tube radius 0.35) side by side along x in the
  *    z = 0 plane, 1.7 apart, blended where they overlap: a solid of genus Genus, for
  *    topology tests. Contoured like JACK.
@@ -62,9 +68,11 @@ public:
     RECTANGLE = 5,
     SQUARE_FRAME = 6,
     STAR = 7,
-    RINGS = 8,
-    ELLIPSE = 9,
-    TREFOIL = 10
+    TORUS = 8,
+    HOLLOW_SPHERE = 9,
+    RINGS = 10,
+    ELLIPSE = 11,
+    TREFOIL = 12
   };
 
   ///@{
@@ -79,11 +87,16 @@ public:
   void SetShapeToRectangle() { this->SetShape(RECTANGLE); }
   void SetShapeToSquareFrame() { this->SetShape(SQUARE_FRAME); }
   void SetShapeToStar() { this->SetShape(STAR); }
+  void SetShapeToTorus() { this->SetShape(TORUS); }
+  void SetShapeToHollowSphere() { this->SetShape(HOLLOW_SPHERE); }
   void SetShapeToRings() { this->SetShape(RINGS); }
   void SetShapeToEllipse() { this->SetShape(ELLIPSE); }
   void SetShapeToTrefoil() { this->SetShape(TREFOIL); }
   /// True for the planar (2D) shapes.
-  static bool IsPlanar(int shape) { return shape != RINGS && shape >= L_SHAPE; }
+  static bool IsPlanar(int shape)
+  {
+    return (shape >= L_SHAPE && shape <= STAR) || shape == ELLIPSE || shape == TREFOIL;
+  }
   ///@}
 
   ///@{
@@ -102,6 +115,18 @@ public:
   /// Length of the CAPSULE's cylinder (default 2).
   vtkSetClampMacro(Length, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Length, double);
+  ///@}
+
+  ///@{
+  /// Tube radius of the TORUS (default 0.3); below Radius.
+  vtkSetClampMacro(TubeRadius, double, 1e-300, VTK_DOUBLE_MAX);
+  vtkGetMacro(TubeRadius, double);
+  ///@}
+
+  ///@{
+  /// Cavity radius of the HOLLOW_SPHERE (default 0.7); below Radius.
+  vtkSetClampMacro(InnerRadius, double, 1e-300, VTK_DOUBLE_MAX);
+  vtkGetMacro(InnerRadius, double);
   ///@}
 
   ///@{
@@ -126,6 +151,8 @@ protected:
   int Resolution = 16;
   double Radius = 1.0;
   double Length = 2.0;
+  double TubeRadius = 0.3;
+  double InnerRadius = 0.7;
   int Genus = 1;
   double BoxLengths[3] = { 3.0, 2.0, 1.0 };
 

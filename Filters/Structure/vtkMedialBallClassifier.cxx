@@ -158,7 +158,14 @@ int vtkMedialBallClassifier::RequestData(
           p[k] = surfacePoint->GetComponent(i, k);
         }
       }
-      surface.Governors.Classify(record.Centre, record.Radius, surfacePoint ? p : nullptr, record.Governors);
+      // An inscribed ball the sampler shrank away from its cap no longer reaches P; its
+      // contacts are those of the angle-rule ball through P, which the cap rule reads.
+      double contactRadius = record.Radius;
+      if (surfacePoint)
+      {
+        contactRadius = std::max(contactRadius, std::sqrt(vtkMath::Distance2BetweenPoints(record.Centre, p)));
+      }
+      surface.Governors.Classify(record.Centre, contactRadius, surfacePoint ? p : nullptr, record.Governors);
     }
     this->UpdateProgress((this->ComputeExactPoints ? 0.5 : 1.0) * static_cast<double>(end) / n);
   }

@@ -9,7 +9,9 @@
  *     features: planes (coplanar faces), lines (sharp edges) and points (vertices).
  *  2. Each ball (input 0: points with a Radius array; an optional SurfacePoint
  *     array gives the sample P the ball is tangent at) gets its governors: the
- *     connected regions of surface within Tolerance * diagonal of its sphere. With
+ *     connected regions of surface within Tolerance * diagonal of its sphere. A ball
+ *     the sampler shrank to be inscribed (|C - P| > Radius) is read through its
+ *     angle-rule sphere of radius |C - P|, whose contacts it stands for. With
  *     theta = MinimumSeparationAngle > 0 the sampler's rule applies: the contacts
  *     less than theta from P, seen from the centre, are one governor (P's cap; the
  *     surface the ball overlaps is there), and other regions less than theta apart

@@ -190,24 +190,35 @@ vtkSmartPointer<vtkPolyData> FoldedBox()
   return out;
 }
 
-// Two unit boxes touching along one edge: 4 triangles meet there.
-vtkSmartPointer<vtkPolyData> BoxesSharingAnEdge()
+// Several generated shapes in one mesh: each moved by Offset, its triangles reversed
+// when asked (a naive export winds every shell outward; nesting must sort it out).
+struct Body
 {
-  vtkNew<vtkMedialShapeSource> box;
-  box->SetShapeToBox();
-  box->SetBoxLengths(1, 1, 1);
-  box->SetResolution(1);
-  box->Update();
-  vtkPolyData* b = box->GetOutput();
+  int Shape;
+  int Resolution;
+  double Size;       // radius of a sphere, side of a cube
+  double Offset[3];
+  bool Reversed;
+};
+vtkSmartPointer<vtkPolyData> Bodies(const std::vector<Body>& bodies)
+{
   std::vector<std::array<double, 3>> pts;
   Polys tris;
-  for (int copy = 0; copy < 2; ++copy)
+  for (const Body& body : bodies)
   {
+    vtkNew<vtkMedialShapeSource> source;
+    source->SetShape(body.Shape);
+    source->SetResolution(body.Resolution);
+    source->SetRadius(body.Size);
+    source->SetBoxLengths(body.Size, body.Size, body.Size);
+    source->Update();
+    vtkPolyData* b = source->GetOutput();
+    const vtkIdType first = static_cast<vtkIdType>(pts.size());
     for (vtkIdType i = 0; i < b->GetNumberOfPoints(); ++i)
     {
       double x[3];
       b->GetPoint(i, x);
-      pts.push_back({ x[0] + copy, x[1] + copy, x[2] });
+      pts.push_back({ x[0] + body.Offset[0], x[1] + body.Offset[1], x[2] + body.Offset[2] });
     }
     for (vtkIdType c = 0; c < b->GetNumberOfCells(); ++c)
     {
@@ -217,12 +228,23 @@ vtkSmartPointer<vtkPolyData> BoxesSharingAnEdge()
       std::vector<vtkIdType> t;
       for (vtkIdType k = 0; k < n; ++k)
       {
-        t.push_back(ids[k] + copy * b->GetNumberOfPoints());
+        t.push_back(ids[k] + first);
+      }
+      if (body.Reversed)
+      {
+        std::reverse(t.begin(), t.end());
       }
       tris.push_back(t);
     }
   }
   return Make(pts, tris);
+}
+
+// Two unit boxes touching along one edge: 4 triangles meet there.
+vtkSmartPointer<vtkPolyData> BoxesSharingAnEdge()
+{
+  const int box = vtkMedialShapeSource::BOX;
+  return Bodies({ { box, 1, 1.0, { 0, 0, 0 }, false }, { box, 1, 1.0, { 1, 1, 0 }, false } });
 }
 
 bool WriteText(const std::string& path, const std::string& text)
@@ -285,6 +307,21 @@ int Generate(const std::string& dir)
   }));
   ok &= WriteVtp(dir + "/non-manifold.vtp", BoxesSharingAnEdge());
   ok &= WriteVtp(dir + "/folded.vtp", FoldedBox());
+  {
+    // Solids as users have them: shells as a naive export writes them (all outward).
+    const int ball = vtkMedialShapeSource::SPHERE, box = vtkMedialShapeSource::BOX;
+    ok &= WriteVtp(dir + "/hollow-sphere.vtp",
+      Bodies({ { ball, 4, 1.0, { 0, 0, 0 }, false }, { ball, 4, 0.7, { 0, 0, 0 }, false } }));
+    ok &= WriteVtp(dir + "/solid-in-cavity.vtp", Bodies({ { ball, 4, 1.0, { 0, 0, 0 }, true },
+      { ball, 4, 0.7, { 0, 0, 0 }, false }, { ball, 4, 0.4, { 0, 0, 0 }, true } }));
+    ok &= WriteVtp(dir + "/two-bodies.vtp",
+      Bodies({ { ball, 4, 1.0, { 0, 0, 0 }, false }, { ball, 4, 0.5, { 3, 0, 0 }, true } }));
+    // Face to face, with different tessellations: no vertex in common.
+    ok &= WriteVtp(dir + "/touching-boxes.vtp",
+      Bodies({ { box, 2, 1.0, { 0, 0, 0 }, false }, { box, 3, 1.0, { 1, 0, 0 }, false } }));
+    ok &= WriteVtp(dir + "/intersecting-spheres.vtp",
+      Bodies({ { ball, 4, 1.0, { 0, 0, 0 }, false }, { ball, 4, 1.0, { 1.5, 0, 0 }, false } }));
+  }
   {
     // Every triangle twice.
     auto doubled = EditTriangles(sphere, [](vtkIdType, std::vector<vtkIdType>&) { return true; });

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // An open mesh, a sphere with a hole cut in it: one warning with the boundary-edge
-// count, DiscardedSamples > 0, and every kept ball inside the sphere. The bunny and the
-// non-manifold case are rows of Testing/BadInput/cases.tsv.
+// count, DiscardedSamples > 0, and every kept ball inside the sphere. The iterative
+// strategies warn the same way, and face-distance says why it stopped short of its
+// budget (faces given up, where the largest gap is). The bunny and the non-manifold
+// case are rows of Testing/BadInput/cases.tsv.
 #include "MedialTestUtilities.h"
 
 #include "vtkCellArray.h"
@@ -65,5 +67,49 @@ int TestMedialSamplerOpenMesh(int, char*[])
       static_cast<long long>(i), centre, Value(out, "Radius", i));
   }
 
+
+  // The iterative strategies: the same warning (they used to say nothing).
+  for (int strategy : { vtkMedialAxisSampler::FACE_DISTANCE, vtkMedialAxisSampler::CLOSEST_NEIGHBOR })
+  {
+    EventLog iterative;
+    vtkNew<vtkMedialAxisSampler> s;
+    iterative.Watch(s);
+    s->SetInputData(open);
+    s->SetNumberOfSamples(3000);
+    s->SetSamplingStrategy(strategy);
+    s->Update();
+    const std::string warning = iterative.LineWith("Input surface is open (68 boundary edges)");
+    std::printf("%s: %s\n", vtkMedialAxisSampler::GetSamplingStrategyName(strategy), warning.c_str());
+    MEDIAL_CHECK(s->GetDiscardedSamples() > 0 && !warning.empty() &&
+        warning.find(std::to_string(s->GetDiscardedSamples()) + " of " + std::to_string(s->GetEvaluatedSamples())) !=
+          std::string::npos,
+      "%s: %s", vtkMedialAxisSampler::GetSamplingStrategyName(strategy), iterative.Text.c_str());
+  }
+  // Face-distance with a coverage it cannot reach: it gives faces up and stops early.
+  EventLog early;
+  vtkNew<vtkMedialAxisSampler> s;
+  early.Watch(s);
+  s->SetInputData(open);
+  s->SetNumberOfSamples(40000);
+  s->SetSamplingStrategyToFaceDistance();
+  s->SetCoverageTolerance(0.0003);
+  s->Update();
+  const std::string stopped = early.LineWith("face-distance stopped after");
+  std::printf("%s\n", stopped.c_str());
+  MEDIAL_CHECK(s->GetEvaluatedSamples() < 40000 && !s->GetCoverageReached(), "evaluated %lld",
+    static_cast<long long>(s->GetEvaluatedSamples()));
+  MEDIAL_CHECK(stopped.find("face-distance stopped after " + std::to_string(s->GetEvaluatedSamples()) +
+                 " of 40000 samples without reaching the coverage: ") != std::string::npos &&
+      stopped.find(" faces were given up") != std::string::npos && stopped.find(" faces were given up") != 0 &&
+      stopped.find("The largest gap, ") != std::string::npos,
+    "message: %s", early.Text.c_str());
+  // The place it names is on the sphere, on the named cell.
+  double where[3];
+  const size_t at = stopped.find(" is at (");
+  MEDIAL_CHECK(at != std::string::npos &&
+      std::sscanf(stopped.c_str() + at, " is at (%lf, %lf, %lf)", where, where + 1, where + 2) == 3,
+    "no place in: %s", stopped.c_str());
+  const double norm = std::sqrt(where[0] * where[0] + where[1] * where[1] + where[2] * where[2]);
+  MEDIAL_CHECK(norm > 0.98 && norm < 1.0 + 1e-9, "the worst gap at |x| = %g is not on the sphere", norm);
   return EXIT_SUCCESS;
 }

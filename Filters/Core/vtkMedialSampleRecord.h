@@ -18,10 +18,12 @@ struct vtkMedialSampleRecord
   double Contact[3]; // the second touching point
   double Angle;      // P-centre-contact, degrees
   vtkIdType SourceCell;
-  vtkIdType ContactTriangle; // mesh triangle of Contact (ONE_PASS), else -1
+  vtkIdType ContactTriangle; // ONE_PASS: the triangle where the angle rule's ball stopped
+                             // (a hint for the next sample), else -1
   int Iterations;
   bool Valid; // false: discarded (ray escaped, degenerate start)
   bool Capped;
+  bool Shrunk; // the cap's surface entered it: shrunk about its centre to be inscribed
 };
 
 #endif

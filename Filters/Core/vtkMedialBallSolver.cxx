@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialBallSolver.h"
 
-#include "vtkMedialAxisSampler.h"
 #include "vtkMedialGeometry.h"
 #include "vtkMedialSampleRecord.h"
 #include "vtkMedialSurfaceQuery.h"
@@ -13,6 +12,43 @@
 namespace
 {
 namespace G = vtkMedialGeometry;
+
+// With theta > 0 the surface in the cap around p is ignored, so a ball can cross it
+// there, where the shape curves faster than the ball. A ball that the cap's surface
+// enters deeper than `allowed` is shrunk about its centre to the distance to that
+// surface (the rest of the surface is outside it already): it stays centred on the
+// smooth axis and becomes inscribed, touching the surface at its new contact. (The
+// one-pass traversal does this itself, on the surface it set aside.)
+void Inscribe(const vtkMedialSurfaceQuery& query, const vtkMedialSurfaceQuery::ContactFilter& admissible,
+  double allowed, vtkMedialSampleRecord& out)
+{
+  if (!(admissible.CosMinAngle < 1.0) || !(allowed < out.Radius))
+  {
+    return;
+  }
+  vtkMedialSurfaceQuery::ContactFilter cap = admissible;
+  cap.CapOnly = true;
+  vtkMedialSurfaceQuery::ClosestHit closest;
+  if (query.ClosestPoint(out.Centre, out.Radius - allowed, closest, &cap))
+  {
+    out.Radius = closest.Distance;
+    std::copy(closest.Point, closest.Point + 3, out.Contact);
+    out.Angle = G::AngleDegrees(out.Centre, out.Surface, closest.Point);
+    out.Shrunk = true;
+  }
+}
+}
+
+vtkMedialBallParameters vtkMedialMakeBallParameters(int method, double tolerance,
+  double minimumAngle, double maximumProtrusion, int maximumIterations, double diagonal)
+{
+  vtkMedialBallParameters param;
+  param.Method = method;
+  param.Tolerance = tolerance * diagonal;
+  param.CosMinAngle = minimumAngle > 0.0 ? std::cos(minimumAngle * 3.14159265358979323846 / 180.0) : 1.0;
+  param.MaximumProtrusion = maximumProtrusion >= 1.0 ? HUGE_VAL : maximumProtrusion * diagonal;
+  param.MaximumIterations = maximumIterations;
+  return param;
 }
 
 // Finds the maximal admissible ball tangent at p (on `triangle`) along the inward normal.
@@ -20,23 +56,27 @@ void vtkMedialSolveBall(const vtkMedialSurfaceQuery& query, const vtkMedialTrian
   const vtkMedialBallParameters& param, vtkIdType triangle, const double p[3], vtkMedialSampleRecord& out,
   vtkIdType hintTriangle)
 {
+  const double* outward = mesh.GetNormal(triangle);
+  const double n[3] = { -outward[0], -outward[1], -outward[2] };
+  vtkMedialSolveBallAlong(query, mesh, param, triangle, p, n, out, hintTriangle);
+}
+
+void vtkMedialSolveBallAlong(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& mesh,
+  const vtkMedialBallParameters& param, vtkIdType triangle, const double p[3], const double n[3],
+  vtkMedialSampleRecord& out, vtkIdType hintTriangle)
+{
   out.Valid = false;
   out.ContactTriangle = -1;
   out.Capped = false;
+  out.Shrunk = false;
   out.Iterations = 0;
-  out.SourceCell = mesh.SourceCellIds[triangle];
+  out.SourceCell = triangle >= 0 ? mesh.SourceCellIds[triangle] : -1;
   std::copy(p, p + 3, out.Surface);
-  const double* outward = mesh.GetNormal(triangle);
-  const double n[3] = { -outward[0], -outward[1], -outward[2] };
 
   vtkMedialSurfaceQuery::RayHit hit;
-  if (!query.Intersect(p, n, 1e-9 * mesh.Diagonal, HUGE_VAL, triangle, hit))
+  if (!query.IntersectFromInside(p, n, 1e-9 * mesh.Diagonal, triangle, hit))
   {
-    return; // escaped through a hole
-  }
-  if (G::Dot(mesh.GetNormal(hit.Triangle), n) <= 0.0)
-  {
-    return; // hit a face from outside: the ray left through a hole
+    return; // escaped through a hole, or met a face from outside (self-intersection)
   }
   double q[3];
   G::AddScaled(p, hit.Distance, n, q);
@@ -51,25 +91,27 @@ void vtkMedialSolveBall(const vtkMedialSurfaceQuery& query, const vtkMedialTrian
   bool haveContact = false;
   vtkMedialSurfaceQuery::ClosestHit closest;
 
-  if (param.Method == vtkMedialAxisSampler::ONE_PASS)
+  if (param.Method == vtkMedialBallParameters::ONE_PASS)
   {
     vtkMedialSurfaceQuery::TangentBall ball;
     ball.Radius = radius;
     std::copy(q, q + 3, ball.Contact);
     ball.ContactTriangle = hit.Triangle;
     ball.HintTriangle = hintTriangle;
-    query.MaximalTangentBall(p, n, filter, ball);
+    query.MaximalTangentBall(p, n, filter, param.MaximumProtrusion, ball);
     out.Iterations = 1 + ball.Steps;
     out.Capped = ball.Capped;
-    out.ContactTriangle = ball.ContactTriangle;
     G::AddScaled(p, ball.Radius, n, out.Centre);
-    out.Radius = ball.Radius;
-    std::copy(ball.Contact, ball.Contact + 3, out.Contact);
-    out.Angle = G::AngleDegrees(out.Centre, p, ball.Contact);
+    out.Shrunk = ball.Shrunk;
+    out.Radius = ball.Shrunk ? ball.InscribedRadius : ball.Radius;
+    out.ContactTriangle = ball.ContactTriangle; // the angle rule's: the next sample's hint
+    const double* contact = ball.Shrunk ? ball.InscribedContact : ball.Contact;
+    std::copy(contact, contact + 3, out.Contact);
+    out.Angle = G::AngleDegrees(out.Centre, p, contact);
     out.Valid = true;
     return;
   }
-  if (param.Method == vtkMedialAxisSampler::SHRINKING_BALL)
+  if (param.Method == vtkMedialBallParameters::SHRINKING_BALL)
   {
     for (;;)
     {
@@ -128,4 +170,5 @@ void vtkMedialSolveBall(const vtkMedialSurfaceQuery& query, const vtkMedialTrian
   std::copy(closest.Point, closest.Point + 3, out.Contact);
   out.Angle = G::AngleDegrees(centre, p, closest.Point);
   out.Valid = true;
+  Inscribe(query, filter, param.MaximumProtrusion, out);
 }

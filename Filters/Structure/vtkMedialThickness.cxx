@@ -1,0 +1,528 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkMedialThickness.h"
+
+#include "vtkMedialArrayNames.h"
+#include "vtkMedialBallSolver.h"
+#include "vtkMedialGeometry.h"
+#include "vtkMedialSampleRecord.h"
+#include "vtkMedialSurfaceQuery.h"
+#include "vtkMedialTriangleMesh.h"
+
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+vtkStandardNewMacro(vtkMedialThickness);
+
+namespace
+{
+namespace G = vtkMedialGeometry;
+constexpr double Pi = 3.14159265358979323846;
+// Consecutive items (in the tree's leaf order) solved on one thread, each hinted with
+// the previous one's contact; groups start at multiples of Chain whatever the thread
+// count, so the output does not depend on it (as in the sampler).
+constexpr vtkIdType Chain = 8;
+// Items per block between progress reports and abort checks.
+constexpr vtkIdType Block = 8192;
+
+const double NaN = std::nan("");
+
+// Max's weight of a triangle (at, b, c) for the normal at vertex `at`: its area vector
+// divided by |b - at|^2 |c - at|^2 (N. Max, "Weights for computing vertex normals from
+// facet normals", 1999). The sum is exact when the neighbours lie on a sphere.
+void AddMaxWeighted(const double* at, const double* b, const double* c, double n[3])
+{
+  double u[3], v[3], w[3];
+  G::Sub(b, at, u);
+  G::Sub(c, at, v);
+  G::Cross(u, v, w);
+  const double weight = G::Dot(u, u) * G::Dot(v, v);
+  if (weight > 0.0)
+  {
+    G::AddScaled(n, -1.0 / weight, w, n); // inward
+  }
+}
+
+// The triangles around each prepared vertex, as offsets `start` into `around`.
+void TrianglesAroundVertices(
+  const vtkMedialTriangleMesh& mesh, std::vector<vtkIdType>& start, std::vector<vtkIdType>& around)
+{
+  const vtkIdType np = mesh.GetNumberOfPoints();
+  const vtkIdType nt = mesh.GetNumberOfTriangles();
+  start.assign(np + 1, 0);
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      ++start[mesh.GetTriangle(t)[j] + 1];
+    }
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  around.resize(start.back());
+  std::vector<vtkIdType> next(start.begin(), start.end() - 1);
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      around[next[mesh.GetTriangle(t)[j]]++] = t;
+    }
+  }
+}
+
+// Runs solve(item, hint) for every (item, triangle) pair, in the tree's leaf order of
+// the triangles (neighbours touch the same nodes), in fixed groups of Chain in parallel;
+// solve returns the contact triangle to hint the next item with. Reports progress from
+// `from` over `span` between blocks; false when aborted.
+template <class Solve>
+bool SolveInLeafOrder(vtkAlgorithm* self, const vtkMedialSurfaceQuery& query,
+  std::vector<std::pair<vtkIdType, vtkIdType>> items, int threads, double from, double span, Solve solve)
+{
+  const std::vector<std::int32_t>& rank = query.GetLeafRanks();
+  std::stable_sort(items.begin(), items.end(),
+    [&](const auto& a, const auto& b) { return rank[a.second] < rank[b.second]; });
+  const vtkIdType n = static_cast<vtkIdType>(items.size());
+  for (vtkIdType begin = 0; begin < n; begin += Block)
+  {
+    const vtkIdType end = std::min(n, begin + Block);
+    const vtkIdType groups = (end - begin + Chain - 1) / Chain;
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
+    for (vtkIdType g = 0; g < groups; ++g)
+    {
+      vtkIdType hint = -1;
+      for (vtkIdType k = begin + g * Chain; k < std::min(end, begin + (g + 1) * Chain); ++k)
+      {
+        hint = solve(items[k].first, hint);
+      }
+    }
+    self->UpdateProgress(from + span * static_cast<double>(end) / static_cast<double>(n));
+    if (self->GetAbortExecute())
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The ball of a valid record as a radius and a centre; its contact triangle hints the
+// next item.
+vtkIdType Keep(const vtkMedialSampleRecord& ball, vtkIdType hint, double& radius, double centre[3])
+{
+  if (!ball.Valid)
+  {
+    return hint;
+  }
+  radius = ball.Radius;
+  std::copy(ball.Centre, ball.Centre + 3, centre);
+  return ball.ContactTriangle;
+}
+
+// Distance along the inward direction n from p to the surface beyond, or NaN when the
+// ray escapes or meets a face from outside.
+double RayLength(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& mesh,
+  const double p[3], const double n[3], vtkIdType ownTriangle)
+{
+  vtkMedialSurfaceQuery::RayHit hit;
+  return query.IntersectFromInside(p, n, 1e-9 * mesh.Diagonal, ownTriangle, hit) ? hit.Distance : NaN;
+}
+
+// Coordinates as a sort key; + 0.0 turns -0 into +0, which the point merge treats alike.
+std::array<double, 3> Key(const double x[3])
+{
+  return { x[0] + 0.0, x[1] + 0.0, x[2] + 0.0 };
+}
+}
+
+vtkMedialThickness::vtkMedialThickness() = default;
+
+int vtkMedialThickness::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+int vtkMedialThickness::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // Rays need the whole surface whatever piece is requested downstream.
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  return 1;
+}
+
+void vtkMedialThickness::VertexNormals(const vtkMedialTriangleMesh& mesh,
+  const std::vector<vtkIdType>& start, const std::vector<vtkIdType>& around,
+  std::vector<double>& normals, std::vector<char>& sharp)
+{
+  const vtkIdType np = mesh.GetNumberOfPoints();
+  normals.assign(3 * np, 0.0);
+  sharp.assign(np, 0);
+  const double cosSpread = std::cos(this->MinimumSeparationAngle * Pi / 180.0);
+  for (vtkIdType v = 0; v < np; ++v)
+  {
+    double* n = &normals[3 * v];
+    double lowestCos = 1.0;
+    for (vtkIdType i = start[v]; i < start[v + 1]; ++i)
+    {
+      const vtkIdType t = around[i];
+      const vtkIdType* tri = mesh.GetTriangle(t);
+      const int j = tri[0] == v ? 0 : (tri[1] == v ? 1 : 2);
+      AddMaxWeighted(mesh.GetPoint(v), mesh.GetPoint(tri[(j + 1) % 3]), mesh.GetPoint(tri[(j + 2) % 3]), n);
+      for (vtkIdType k = start[v]; k < i; ++k)
+      {
+        if (mesh.Areas[t] > 0.0 && mesh.Areas[around[k]] > 0.0)
+        {
+          lowestCos = std::min(lowestCos, G::Dot(mesh.GetNormal(t), mesh.GetNormal(around[k])));
+        }
+      }
+    }
+    const double length = std::sqrt(G::Dot(n, n));
+    for (int k = 0; k < 3; ++k)
+    {
+      n[k] = length > 0.0 ? n[k] / length : 0.0;
+    }
+    sharp[v] = !(length > 0.0) || lowestCos < cosSpread;
+    this->SharpVertices += sharp[v];
+  }
+}
+
+bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
+  const vtkMedialSurfaceQuery& query, const vtkMedialBallParameters& param,
+  const std::vector<vtkIdType>& start, const std::vector<vtkIdType>& around,
+  const std::vector<double>& normals, const std::vector<char>& sharp, std::vector<Measure>& measures)
+{
+  const vtkIdType np = mesh.GetNumberOfPoints();
+  measures.assign(np, Measure{ NaN, { NaN, NaN, NaN }, NaN });
+  std::vector<std::pair<vtkIdType, vtkIdType>> items; // (vertex, one of its triangles)
+  for (vtkIdType v = 0; v < np; ++v)
+  {
+    if (start[v + 1] > start[v])
+    {
+      items.emplace_back(v, around[start[v]]);
+    }
+  }
+  auto solve = [&](vtkIdType v, vtkIdType hint) {
+    const double* p = mesh.GetPoint(v);
+    const double* n = &normals[3 * v];
+    vtkMedialSampleRecord best;
+    best.Valid = false;
+    if (!sharp[v])
+    {
+      vtkMedialSolveBallAlong(query, mesh, param, -1, p, n, best, hint);
+    }
+    if (!best.Valid) // sharp, or the mean normal leaves the solid at once (a fold)
+    {
+      // The smallest ball over the adjacent faces' normals.
+      for (vtkIdType i = start[v]; i < start[v + 1]; ++i)
+      {
+        const vtkIdType t = around[i];
+        vtkMedialSampleRecord along;
+        if (mesh.Areas[t] > 0.0)
+        {
+          vtkMedialSolveBall(query, mesh, param, t, p, along, hint);
+        }
+        if (along.Valid && (!best.Valid || along.Radius < best.Radius))
+        {
+          best = along;
+        }
+      }
+    }
+    Measure& m = measures[v];
+    if (!best.Valid && mesh.BoundaryEdges == 0)
+    {
+      // Closed, yet every direction leaves the solid at once: a fold (adjacent faces
+      // nearly opposite) where no ball fits.
+      best.Valid = true;
+      best.Radius = 0.0;
+      std::copy(p, p + 3, best.Centre);
+    }
+    m.Ray = RayLength(query, mesh, p, n, -1);
+    if (std::isnan(m.Ray) && best.Valid)
+    {
+      // The mean normal leaves the solid: the ray along the chosen ball's direction.
+      double d[3];
+      G::Sub(best.Centre, p, d);
+      const double length = std::sqrt(G::Dot(d, d));
+      for (double& x : d)
+      {
+        x = length > 0.0 ? x / length : 0.0;
+      }
+      m.Ray = length > 0.0 ? RayLength(query, mesh, p, d, -1) : 0.0;
+    }
+    return Keep(best, hint, m.Radius, m.Centre);
+  };
+  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  return SolveInLeafOrder(this, query, items, threads, 0.1, 0.6, solve);
+}
+
+bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
+  const vtkMedialSurfaceQuery& query, const vtkMedialBallParameters& param, vtkIdType cells,
+  std::vector<Measure>& measures)
+{
+  measures.assign(cells, Measure{ NaN, { NaN, NaN, NaN }, NaN });
+  // Each cell is represented by its largest triangle (the first among equals).
+  std::vector<vtkIdType> largest(cells, -1);
+  for (vtkIdType t = 0; t < mesh.GetNumberOfTriangles(); ++t)
+  {
+    vtkIdType& l = largest[mesh.SourceCellIds[t]];
+    if (mesh.Areas[t] > 0.0 && (l < 0 || mesh.Areas[t] > mesh.Areas[l]))
+    {
+      l = t;
+    }
+  }
+  std::vector<std::pair<vtkIdType, vtkIdType>> items; // (cell, its largest triangle)
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    if (largest[c] >= 0)
+    {
+      items.emplace_back(c, largest[c]);
+    }
+  }
+  auto solve = [&](vtkIdType c, vtkIdType hint) {
+    const vtkIdType t = largest[c];
+    const vtkIdType* v = mesh.GetTriangle(t);
+    double p[3], n[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      p[k] = (mesh.GetPoint(v[0])[k] + mesh.GetPoint(v[1])[k] + mesh.GetPoint(v[2])[k]) / 3.0;
+      n[k] = -mesh.GetNormal(t)[k];
+    }
+    vtkMedialSampleRecord ball;
+    vtkMedialSolveBall(query, mesh, param, t, p, ball, hint);
+    Measure& m = measures[c];
+    m.Ray = RayLength(query, mesh, p, n, t);
+    return Keep(ball, hint, m.Radius, m.Centre);
+  };
+  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  return SolveInLeafOrder(this, query, items, threads, 0.7, 0.3, solve);
+}
+
+void vtkMedialThickness::ThinRegions(const vtkMedialTriangleMesh& mesh,
+  const std::vector<vtkIdType>& start, const std::vector<vtkIdType>& around,
+  const std::vector<Measure>& cells)
+{
+  const vtkIdType nt = mesh.GetNumberOfTriangles();
+  auto thin = [&](vtkIdType t) {
+    return 2.0 * cells[mesh.SourceCellIds[t]].Radius < this->ThinThreshold; // NaN: not thin
+  };
+  double thinArea = 0.0;
+  std::vector<vtkIdType> parent(nt);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](vtkIdType t) {
+    while (parent[t] != t)
+    {
+      t = parent[t] = parent[parent[t]];
+    }
+    return t;
+  };
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    thinArea += thin(t) ? mesh.Areas[t] : 0.0;
+  }
+  // Thin triangles around one vertex belong to one region.
+  for (vtkIdType v = 0; v + 1 < static_cast<vtkIdType>(start.size()); ++v)
+  {
+    vtkIdType first = -1;
+    for (vtkIdType i = start[v]; i < start[v + 1]; ++i)
+    {
+      if (thin(around[i]))
+      {
+        if (first < 0)
+        {
+          first = root(around[i]);
+        }
+        else
+        {
+          parent[root(around[i])] = first;
+        }
+      }
+    }
+  }
+  this->ThinRegionCount = 0;
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    this->ThinRegionCount += thin(t) && root(t) == t ? 1 : 0;
+  }
+  this->ThinAreaFraction = mesh.TotalArea > 0.0 ? thinArea / mesh.TotalArea : 0.0;
+}
+
+void vtkMedialThickness::WriteArrays(vtkPolyData* output, const vtkMedialTriangleMesh& mesh,
+  const std::vector<Measure>& vertices, const std::vector<Measure>& cells)
+{
+  // Input point -> prepared vertex: the same coordinates, since the preparation merges
+  // exactly coincident points only.
+  std::vector<vtkIdType> sorted(mesh.GetNumberOfPoints());
+  std::iota(sorted.begin(), sorted.end(), 0);
+  std::sort(sorted.begin(), sorted.end(),
+    [&](vtkIdType a, vtkIdType b) { return Key(mesh.GetPoint(a)) < Key(mesh.GetPoint(b)); });
+  auto write = [](vtkDataSetAttributes* data, const std::vector<Measure>& measures,
+                 const std::vector<vtkIdType>& source) {
+    const vtkIdType n = static_cast<vtkIdType>(source.size());
+    auto make = [&](const char* name, int components) {
+      vtkNew<vtkDoubleArray> a;
+      a->SetName(name);
+      a->SetNumberOfComponents(components);
+      a->SetNumberOfTuples(n);
+      data->AddArray(a);
+      return a.GetPointer();
+    };
+    vtkDoubleArray* thickness = make(vtkMedialArrayNames::Thickness, 1);
+    vtkDoubleArray* radius = make(vtkMedialArrayNames::MedialRadius, 1);
+    vtkDoubleArray* centre = make(vtkMedialArrayNames::MedialCentre, 3);
+    vtkDoubleArray* ray = make(vtkMedialArrayNames::RayThickness, 1);
+    const Measure missing{ NaN, { NaN, NaN, NaN }, NaN };
+    vtkIdType withoutValue = 0;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const Measure& m = source[i] >= 0 ? measures[source[i]] : missing;
+      thickness->SetValue(i, 2.0 * m.Radius);
+      radius->SetValue(i, m.Radius);
+      centre->SetTypedTuple(i, m.Centre);
+      ray->SetValue(i, m.Ray);
+      withoutValue += std::isnan(m.Radius) ? 1 : 0;
+    }
+    data->SetActiveScalars(vtkMedialArrayNames::Thickness);
+    return withoutValue;
+  };
+  std::vector<vtkIdType> vertexOf(output->GetNumberOfPoints(), -1);
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    output->GetPoint(i, x);
+    const auto key = Key(x);
+    auto it = std::lower_bound(sorted.begin(), sorted.end(), key,
+      [&](vtkIdType a, const std::array<double, 3>& k) { return Key(mesh.GetPoint(a)) < k; });
+    if (it != sorted.end() && Key(mesh.GetPoint(*it)) == key)
+    {
+      vertexOf[i] = *it;
+    }
+  }
+  this->MissingPoints = write(output->GetPointData(), vertices, vertexOf);
+  if (this->ComputeCellThickness)
+  {
+    std::vector<vtkIdType> cellOf(cells.size());
+    std::iota(cellOf.begin(), cellOf.end(), 0);
+    write(output->GetCellData(), cells, cellOf);
+  }
+}
+
+int vtkMedialThickness::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  this->SharpVertices = 0;
+  this->MissingPoints = 0;
+  this->ThinAreaFraction = 0.0;
+  this->ThinRegionCount = 0;
+  if (!input)
+  {
+    vtkErrorMacro(<< "No input.");
+    return 0;
+  }
+
+  // Pass 1: the solid and its queries (the sampler's preparation).
+  auto aborted = [this]() { return (this->GetAbortExecute() != 0); };
+  vtkMedialTriangleMesh mesh;
+  std::string error;
+  if (!mesh.Build(input, error, aborted))
+  {
+    if (aborted())
+    {
+      return 1;
+    }
+    vtkErrorMacro(<< "Cannot measure the thickness: " << error << ".");
+    return 0;
+  }
+  for (const std::string& warning : mesh.Warnings())
+  {
+    vtkWarningMacro(<< warning);
+  }
+  vtkMedialSurfaceQuery query;
+  if (!query.Build(&mesh, error, aborted))
+  {
+    if (aborted())
+    {
+      return 1;
+    }
+    vtkErrorMacro(<< "Cannot build the surface queries: " << error << ".");
+    return 0;
+  }
+  this->UpdateProgress(0.1);
+
+  const vtkMedialBallParameters param = vtkMedialMakeBallParameters(vtkMedialBallParameters::ONE_PASS,
+    1e-6, this->MinimumSeparationAngle, this->MaximumProtrusion, 100, mesh.Diagonal);
+
+  // Passes 2 to 4.
+  std::vector<vtkIdType> start, around;
+  TrianglesAroundVertices(mesh, start, around);
+  std::vector<double> normals;
+  std::vector<char> sharp;
+  this->VertexNormals(mesh, start, around, normals, sharp);
+  std::vector<Measure> vertices, cells;
+  const bool cellData = this->ComputeCellThickness || this->ThinThreshold > 0.0;
+  if (!this->VertexBalls(mesh, query, param, start, around, normals, sharp, vertices) ||
+    (cellData && !this->CellBalls(mesh, query, param, input->GetNumberOfCells(), cells)))
+  {
+    return 1; // aborted: leave the output empty
+  }
+
+  output->ShallowCopy(input);
+  this->WriteArrays(output, mesh, vertices, cells);
+  if (this->ThinThreshold > 0.0)
+  {
+    // Pass 5.
+    this->ThinRegions(mesh, start, around, cells);
+    for (const auto& field : { std::make_pair(vtkMedialArrayNames::ThinAreaFraction, this->ThinAreaFraction),
+           std::make_pair(vtkMedialArrayNames::ThinRegionCount, static_cast<double>(this->ThinRegionCount)) })
+    {
+      vtkNew<vtkDoubleArray> a;
+      a->SetName(field.first);
+      a->InsertNextValue(field.second);
+      output->GetFieldData()->AddArray(a);
+    }
+  }
+  if (mesh.BoundaryEdges > 0)
+  {
+    vtkWarningMacro(<< "Input surface is open (" << mesh.BoundaryEdges << " boundary edges): "
+                    << this->MissingPoints << " of " << input->GetNumberOfPoints()
+                    << " points have no thickness (NaN): their ray escaped through a hole.");
+  }
+  else if (this->MissingPoints > 0)
+  {
+    vtkWarningMacro(<< this->MissingPoints << " of " << input->GetNumberOfPoints()
+                    << " points have no thickness (NaN): no cell uses them, or their ray met the "
+                       "surface from outside.");
+  }
+  return 1;
+}
+
+void vtkMedialThickness::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "MinimumSeparationAngle: " << this->MinimumSeparationAngle << "\n";
+  os << indent << "MaximumProtrusion: " << this->MaximumProtrusion << "\n";
+  os << indent << "ComputeCellThickness: " << this->ComputeCellThickness << "\n";
+  os << indent << "ThinThreshold: " << this->ThinThreshold << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "SharpVertices: " << this->SharpVertices << "\n";
+  os << indent << "MissingPoints: " << this->MissingPoints << "\n";
+  os << indent << "ThinAreaFraction: " << this->ThinAreaFraction << "\n";
+  os << indent << "ThinRegionCount: " << this->ThinRegionCount << "\n";
+}
