@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <queue>
 
 namespace
@@ -266,7 +267,7 @@ double vtkMedialQuadricSimplification::CollapseCost(vtkIdType a, vtkIdType b, do
   return best;
 }
 
-bool vtkMedialQuadricSimplification::LinkCondition(vtkIdType a, vtkIdType b) const
+int vtkMedialQuadricSimplification::LinkCondition(vtkIdType a, vtkIdType b) const
 {
   std::vector<vtkIdType> third;
   std::vector<std::array<vtkIdType, 2>> linkA, linkB;
@@ -308,16 +309,21 @@ bool vtkMedialQuadricSimplification::LinkCondition(vtkIdType a, vtkIdType b) con
   std::set_intersection(this->Neighbours[a].begin(), this->Neighbours[a].end(), this->Neighbours[b].begin(),
     this->Neighbours[b].end(), std::back_inserter(common));
   std::sort(third.begin(), third.end());
-  if (common != third)
-  {
-    return false;
-  }
-  // No edge of both links.
+  // And no edge of both links.
   std::sort(linkA.begin(), linkA.end());
   std::sort(linkB.begin(), linkB.end());
   std::vector<std::array<vtkIdType, 2>> shared;
   std::set_intersection(linkA.begin(), linkA.end(), linkB.begin(), linkB.end(), std::back_inserter(shared));
-  return shared.empty();
+  if (common == third && shared.empty())
+  {
+    return LINK_HOLDS;
+  }
+  // The collapse merges the edges to each common neighbour and the triangles on each
+  // shared link edge, and removes the triangles on ab: chi changes by
+  // |common| - |third| - |shared|.
+  const std::ptrdiff_t change = static_cast<std::ptrdiff_t>(common.size()) -
+    static_cast<std::ptrdiff_t>(third.size()) - static_cast<std::ptrdiff_t>(shared.size());
+  return change == 0 ? KEEPS_EULER : CHANGES_EULER;
 }
 
 void vtkMedialQuadricSimplification::Collapse(vtkIdType a, vtkIdType b, const double m[4])
@@ -336,6 +342,20 @@ void vtkMedialQuadricSimplification::Collapse(vtkIdType a, vtkIdType b, const do
     }
     std::replace(tri.begin(), tri.end(), b, a);
     this->VertexTriangles[a].push_back(t);
+  }
+  // A collapse allowed without the link condition can make two triangles one.
+  std::map<std::array<vtkIdType, 3>, vtkIdType> corners;
+  for (vtkIdType t : this->VertexTriangles[a])
+  {
+    if (this->TriangleAlive[t])
+    {
+      std::array<vtkIdType, 3> key = this->AllTriangles[t];
+      std::sort(key.begin(), key.end());
+      if (!corners.emplace(key, t).second)
+      {
+        this->TriangleAlive[t] = 0;
+      }
+    }
   }
   for (vtkIdType x : this->Neighbours[b])
   {
@@ -455,10 +475,32 @@ bool vtkMedialQuadricSimplification::Run(
   }
   // Collapses refused by the link condition, by ball: tried again when a neighbour changes.
   std::map<vtkIdType, std::vector<std::array<vtkIdType, 2>>> blocked;
+  std::set<std::array<vtkIdType, 2>> waiting; // the pairs in `blocked`, each once
   vtkIdType alive = nv;
   vtkIdType made = 0;
-  while (alive > target && !heap.empty())
+  bool relaxed = false;
+  while (alive > target)
   {
+    if (heap.empty())
+    {
+      if (relaxed || waiting.empty())
+      {
+        break;
+      }
+      // Stuck under the link condition: the waiting collapses that keep the Euler
+      // characteristic may go now (a cycle and a cavity of the complex can vanish together).
+      relaxed = true;
+      for (const auto& p : waiting)
+      {
+        if (this->Alive[p[0]] && this->Alive[p[1]])
+        {
+          push(p[0], p[1]);
+        }
+      }
+      waiting.clear();
+      blocked.clear();
+      continue;
+    }
     const Candidate next = heap.top();
     heap.pop();
     if (!this->Alive[next.A] || !this->Alive[next.B] ||
@@ -466,10 +508,15 @@ bool vtkMedialQuadricSimplification::Run(
     {
       continue;
     }
-    if (!this->LinkCondition(next.A, next.B))
+    const int verdict = this->LinkCondition(next.A, next.B);
+    if (verdict == CHANGES_EULER || (verdict == KEEPS_EULER && !relaxed))
     {
-      blocked[next.A].push_back({ next.A, next.B });
-      blocked[next.B].push_back({ next.A, next.B });
+      // Once per pair: a pair waiting under both balls must not come back twice.
+      if (waiting.insert({ next.A, next.B }).second)
+      {
+        blocked[next.A].push_back({ next.A, next.B });
+        blocked[next.B].push_back({ next.A, next.B });
+      }
       continue;
     }
     if ((++made & 1023) == 0 && aborted && aborted())
@@ -498,7 +545,7 @@ bool vtkMedialQuadricSimplification::Run(
       blocked.erase(found);
       for (const auto& p : pairs)
       {
-        if (this->Alive[p[0]] && this->Alive[p[1]] && std::binary_search(this->Neighbours[p[0]].begin(),
+        if (waiting.erase(p) && this->Alive[p[0]] && this->Alive[p[1]] && std::binary_search(this->Neighbours[p[0]].begin(),
                                                         this->Neighbours[p[0]].end(), p[1]))
         {
           push(p[0], p[1]);
@@ -509,11 +556,7 @@ bool vtkMedialQuadricSimplification::Run(
   this->BlockedCollapses = 0;
   if (alive > target)
   {
-    for (const auto& entry : blocked)
-    {
-      this->BlockedCollapses += static_cast<vtkIdType>(entry.second.size());
-    }
-    this->BlockedCollapses /= 2;
+    this->BlockedCollapses = static_cast<vtkIdType>(waiting.size());
   }
   this->Extract();
   return true;

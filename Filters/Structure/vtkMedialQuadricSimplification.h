@@ -21,6 +21,12 @@
  * on both a and b; Dey et al. 1999) is skipped until its neighbourhood changes.
  * Collapses keep the homotopy type: components and Euler characteristic stay.
  *
+ * When no collapse is left under the link condition before the target, the refused
+ * collapses that keep the Euler characteristic are allowed (the medial mesh of a
+ * sampled surface has small cycles bounding small cavities: such a collapse removes one
+ * of each), still cheapest first; the components and the Euler characteristic never
+ * change.
+ *
  * Stops at the target number of balls, or earlier when no collapse is allowed.
  */
 #ifndef vtkMedialQuadricSimplification_h
@@ -76,7 +82,13 @@ private:
 
   void InitialQuadrics(const vtkMedialSimplicialComplex& complex);
   double CollapseCost(vtkIdType a, vtkIdType b, double m[4]) const;
-  bool LinkCondition(vtkIdType a, vtkIdType b) const;
+  enum LinkVerdict
+  {
+    LINK_HOLDS = 0,   // the collapse keeps the homotopy type
+    KEEPS_EULER = 1,  // it does not, but keeps the Euler characteristic
+    CHANGES_EULER = 2 // refused
+  };
+  int LinkCondition(vtkIdType a, vtkIdType b) const;
   void Collapse(vtkIdType a, vtkIdType b, const double m[4]);
   void Extract();
 

@@ -112,12 +112,15 @@ int vtkMedialSimplifyFilter::RequestData(
   }
   output->GetPointData()->AddArray(types);
 
-  const std::vector<char> allVertices(static_cast<size_t>(kept), 1);
-  const std::vector<char> allEdges(simplification.Edges.size(), 1);
-  const std::vector<char> allTriangles(simplification.Triangles.size(), 1);
-  this->EulerCharacteristic = vtkMedialSimplicialComplex::EulerCharacteristic(allVertices, allEdges, allTriangles);
+  // The topology of the result, counted from its own complex.
   vtkMedialSimplicialComplex result;
+  result.Points = simplification.Points;
+  result.Radii = simplification.Radii;
   result.Assemble(kept, simplification.Edges, simplification.Triangles);
+  const std::vector<char> allVertices(static_cast<size_t>(kept), 1);
+  const std::vector<char> allEdges(result.Edges.size(), 1);
+  const std::vector<char> allTriangles(result.Triangles.size(), 1);
+  this->EulerCharacteristic = vtkMedialSimplicialComplex::EulerCharacteristic(allVertices, allEdges, allTriangles);
   this->NumberOfComponents = result.CountComponents(allVertices, allEdges);
   // Collapses keep the topology: the input's figures (the medial mesh's and the solid's) hold.
   output->GetFieldData()->PassData(input->GetFieldData());
