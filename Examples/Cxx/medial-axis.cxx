@@ -15,6 +15,8 @@
 #include "vtkMedialJunctionFilter.h"
 #include "vtkMedialMeshFilter.h"
 #include "vtkMedialMeshWriter.h"
+#include "vtkMedialPruneFilter.h"
+#include "vtkMedialSimplifyFilter.h"
 #include "vtkMedialReconstructionError.h"
 #include "vtkMedialScene.h"
 #include "vtkMedialShapeSource.h"
@@ -65,7 +67,8 @@ const char* Usage =
   "  INPUT        closed surface: .vtp .vtk .ply .stl .obj .off; or planar polygons / closed\n"
   "               polylines (any plane, holes allowed) for the 2D medial axis;\n"
   "               or a demo: demo:jack (3D, the default with no INPUT), demo:l-shape,\n"
-  "               demo:rectangle, demo:frame (square with a square hole), demo:star (2D)\n"
+  "               demo:rectangle, demo:frame (square with a square hole), demo:star,\n"
+  "               demo:ellipse, demo:trefoil (2D)\n"
   "  -n N         number of surface samples (default 10000)\n"
   "  --method M   one-pass (default, fastest), bisection (the report's) or shrinking-ball\n"
   "  --strategy S where the samples go (3D): random (default), closest-neighbor (Poisson-disk\n"
@@ -96,6 +99,13 @@ const char* Usage =
   "  --junctions OUT.vtp  2D input only: write the medial graph (junctions, end points,\n"
   "               linear and parabolic arcs; point data Radius, MedialPointType,\n"
   "               GovernorCount; cell data ArcType). --render then draws it too.\n"
+  "  --prune      remove the insignificant branches, keeping the topology: of the 2D graph\n"
+  "               (--junctions, --render) or of the medial mesh (--medial-mesh); the\n"
+  "               default measure (tubularity) and threshold; --stats adds pruned_branches\n"
+  "  --prune-threshold X  --prune with this threshold instead (tubularity, in [0, 1])\n"
+  "  --simplify K  3D, with --medial-mesh: simplify the medial mesh to exactly K balls\n"
+  "               (Q-MAT's quadric error, edge collapses, topology kept); --reconstruct then\n"
+  "               rebuilds from its envelope; --stats adds kept_balls and simplify_seconds\n"
   "  --medial-mesh OUT  3D input only: write the medial mesh (the balls joined by edges and\n"
   "               triangles, with the solid's topology) as .vtp (point data Radius,\n"
   "               MedialPointType, ...; cell data MedialCellType) or .ma (Q-MAT's form);\n"
@@ -125,6 +135,9 @@ struct Options
   std::string Render;
   std::string Junctions;
   std::string MedialMesh;
+  bool Prune = false;
+  double PruneThreshold = -1.0;
+  long long Simplify = 0;
   bool Stats = false;
   std::string Reconstruct;
   int Resolution = 128;
@@ -346,6 +359,19 @@ Options Parse(int argc, char* argv[])
     {
       o.MedialMesh = need(i);
     }
+    else if (a == "--prune")
+    {
+      o.Prune = true;
+    }
+    else if (a == "--prune-threshold")
+    {
+      o.Prune = true;
+      o.PruneThreshold = number(i, 0, 1);
+    }
+    else if (a == "--simplify")
+    {
+      o.Simplify = static_cast<long long>(integer(i, 1, 1e9));
+    }
     else if (a == "--resolution")
     {
       o.Resolution = static_cast<int>(integer(i, 8, 2048));
@@ -459,11 +485,16 @@ vtkSmartPointer<vtkPolyData> Run(vtkPolyDataAlgorithm* filter, MessageSink& sink
   return result;
 }
 
-// Union of the medial balls, written to `path` by its extension.
-vtkSmartPointer<vtkPolyData> Reconstruct(vtkPolyData* medial, const Options& opt, MessageSink& sink)
+// Union of the medial balls (or, with `envelope`, the interpolated envelope of the medial
+// mesh), written to `path` by its extension.
+vtkSmartPointer<vtkPolyData> Reconstruct(vtkPolyData* medial, const Options& opt, MessageSink& sink, bool envelope)
 {
   vtkNew<vtkMedialBallUnion> ballUnion;
   ballUnion->SetInputData(medial);
+  if (envelope)
+  {
+    ballUnion->SetPrimitives(vtkMedialBallUnion::MEDIAL_MESH);
+  }
   ballUnion->SetSampleDimensions(opt.Resolution, opt.Resolution, opt.Resolution);
   ballUnion->SetNumberOfThreads(opt.Threads);
   return Run(ballUnion, sink);
@@ -569,6 +600,14 @@ bool MakeDemo(const std::string& name, vtkSmartPointer<vtkPolyData>& out)
     demo->SetShapeToStar();
     demo->SetResolution(9);
   }
+  else if (name == "demo:ellipse")
+  {
+    demo->SetShapeToEllipse(); // 256 vertices: a smooth curve, for --prune
+  }
+  else if (name == "demo:trefoil")
+  {
+    demo->SetShapeToTrefoil(); // a rounded 3-armed star, 256 vertices, for --prune
+  }
   else
   {
     return false;
@@ -671,7 +710,7 @@ vtkSmartPointer<vtkPolyData> LoadInput(const Options& opt, MessageSink& sink)
   {
     if (!MakeDemo(opt.Input, surface))
     {
-      Fail("unknown demo '" + opt.Input + "' (demo:jack, demo:l-shape, demo:rectangle, demo:frame, demo:star)");
+      Fail("unknown demo '" + opt.Input + "' (demo:jack, demo:l-shape, demo:rectangle, demo:frame, demo:star, demo:ellipse, demo:trefoil)");
     }
   }
   else
@@ -766,22 +805,49 @@ vtkSmartPointer<vtkMedialAxisSampler> Sample(vtkPolyData* surface, const Options
   return sampler;
 }
 
+// --prune: the graph or medial mesh pruned with the default measure (or --prune-threshold).
+vtkSmartPointer<vtkPolyData> RunPrune(vtkPolyData* axis, const Options& opt, MessageSink& sink, long long& pruned)
+{
+  vtkNew<vtkMedialPruneFilter> prune;
+  prune->SetInputData(axis);
+  prune->SetThreshold(opt.PruneThreshold);
+  vtkSmartPointer<vtkPolyData> result = Run(prune, sink);
+  pruned = prune->GetNumberOfPrunedBranches();
+  return result;
+}
+
+// Figures of --prune and --simplify for --stats.
+struct Reduction
+{
+  long long PrunedBranches = -1;
+  double SimplifySeconds = -1.0;
+};
+
 // --medial-mesh: the medial mesh of the sampled balls (given on port 1, so the sampling
-// is not repeated), written as .vtp or .ma.
+// is not repeated), pruned (--prune) and simplified (--simplify K), written as .vtp or .ma.
 vtkSmartPointer<vtkPolyData> RunMedialMesh(vtkPolyData* surface, vtkPolyData* balls, const Options& opt,
-  MessageSink& sink)
+  MessageSink& sink, Reduction& reduction)
 {
   vtkNew<vtkMedialMeshFilter> filter;
   filter->SetInputData(surface);
   filter->SetBallsData(balls);
   filter->SetNumberOfThreads(opt.Threads);
-  filter->Update();
-  if (!sink.LastError.empty())
+  vtkSmartPointer<vtkPolyData> mesh = Run(filter, sink);
+  if (opt.Prune)
   {
-    Fail(sink.LastError);
+    long long pruned = 0;
+    mesh = RunPrune(mesh, opt, sink, pruned);
+    reduction.PrunedBranches = pruned;
   }
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->ShallowCopy(filter->GetOutput());
+  if (opt.Simplify > 0)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    vtkNew<vtkMedialSimplifyFilter> simplify;
+    simplify->SetInputData(mesh);
+    simplify->SetNumberOfBalls(opt.Simplify);
+    mesh = Run(simplify, sink);
+    reduction.SimplifySeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
   if (Extension(opt.MedialMesh) == ".ma")
   {
     vtkNew<vtkMedialMeshWriter> writer;
@@ -957,6 +1023,25 @@ std::string ProtrusionStats(vtkPolyData* surface, vtkPolyData* medial, const Opt
 }
 
 // JSON members of the 2D medial graph.
+// JSON members of --prune and --simplify.
+std::string ReductionStats(const Reduction& reduction, vtkPolyData* medialMesh)
+{
+  std::ostringstream js;
+  if (reduction.PrunedBranches >= 0)
+  {
+    js << ", \"pruned_branches\": " << reduction.PrunedBranches;
+  }
+  if (medialMesh && (reduction.PrunedBranches >= 0 || reduction.SimplifySeconds >= 0.0))
+  {
+    js << ", \"kept_balls\": " << (medialMesh ? medialMesh->GetNumberOfPoints() : 0);
+  }
+  if (reduction.SimplifySeconds >= 0.0)
+  {
+    js << ", \"simplify_seconds\": " << reduction.SimplifySeconds;
+  }
+  return js.str();
+}
+
 std::string GraphStats(vtkPolyData* graph)
 {
   vtkIdType junctions = 0, ends = 0;
@@ -990,6 +1075,10 @@ int main(int argc, char* argv[])
   {
     Fail("--medial-mesh needs a closed surface; '" + opt.Input + "' is planar (see --junctions)");
   }
+  if (opt.Simplify > 0 && (planar || opt.MedialMesh.empty()))
+  {
+    Fail("--simplify K simplifies the medial mesh of a closed surface: give --medial-mesh OUT.ma|.vtp");
+  }
   if (!opt.Junctions.empty() && !planar)
   {
     Fail("--junctions needs planar polygons or closed polylines; '" + opt.Input + "' is not planar");
@@ -1003,6 +1092,13 @@ int main(int argc, char* argv[])
   if (planar && (!opt.Junctions.empty() || !opt.Render.empty() || opt.Stats))
   {
     graph = RunJunctions(surface, opt.Threads, sink);
+  }
+  Reduction reduction;
+  if (graph && opt.Prune)
+  {
+    long long pruned = 0;
+    graph = RunPrune(graph, opt, sink, pruned);
+    reduction.PrunedBranches = pruned;
   }
   if (!opt.Junctions.empty())
   {
@@ -1021,7 +1117,7 @@ int main(int argc, char* argv[])
   if (!opt.MedialMesh.empty())
   {
     const auto start = std::chrono::steady_clock::now();
-    medialMesh = RunMedialMesh(surface, medial, opt, sink);
+    medialMesh = RunMedialMesh(surface, medial, opt, sink, reduction);
     medialMeshSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   vtkSmartPointer<vtkPolyData> reconstruction;
@@ -1029,7 +1125,9 @@ int main(int argc, char* argv[])
   if (!opt.Reconstruct.empty())
   {
     const auto start = std::chrono::steady_clock::now();
-    reconstruction = Reconstruct(medial, opt, sink);
+    // A pruned or simplified medial mesh is rebuilt from its envelope; else the balls' union.
+    const bool envelope = medialMesh && (opt.Prune || opt.Simplify > 0);
+    reconstruction = Reconstruct(envelope ? medialMesh.Get() : medial, opt, sink, envelope);
     reconstructionSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     WriteReconstruction(reconstruction, opt.Reconstruct, sink);
   }
@@ -1057,7 +1155,8 @@ int main(int argc, char* argv[])
               << (planar ? std::string() : ProtrusionStats(surface, medial, opt, sink))
               << ReconstructionStats(surface, reconstruction, reconstructionSeconds, sampler, opt, sink)
               << MedialMeshStats(medialMesh, medialMeshSeconds) << (graph ? GraphStats(graph) : std::string())
-              << (thickness ? ThicknessReport(thickness, opt) : std::string()) << "}" << std::endl;
+              << (thickness ? ThicknessReport(thickness, opt) : std::string()) << ReductionStats(reduction, medialMesh)
+              << "}" << std::endl;
   }
   return 0;
 }
