@@ -9,6 +9,7 @@
 
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialBallClassifier.h"
 #include "vtkMedialBallProtrusion.h"
 #include "vtkMedialBallUnion.h"
 #include "vtkMedialFileReader.h"
@@ -832,6 +833,7 @@ vtkSmartPointer<vtkPolyData> RunMedialMesh(vtkPolyData* surface, vtkPolyData* ba
   filter->SetInputData(surface);
   filter->SetBallsData(balls);
   filter->SetNumberOfThreads(opt.Threads);
+  filter->GetClassifier()->SetMinimumSeparationAngle(opt.MinAngle); // the balls' theta
   vtkSmartPointer<vtkPolyData> mesh = Run(filter, sink);
   if (opt.Prune)
   {

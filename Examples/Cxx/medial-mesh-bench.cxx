@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // medial-mesh-bench: the medial mesh (vtkMedialMeshFilter) of the shared meshes.
 //
-// For each mesh: vtkMedialAxisSampler with its defaults (10000 samples, theta 45,
+// For each mesh (default: the five shared meshes, then generated solids: sphere, box,
+// torus, hollow sphere, and RINGS of genus 1, 2 and 3): vtkMedialAxisSampler with its defaults (10000 samples, theta 45,
 // one-pass) on T threads (default 2), then vtkMedialMeshFilter on those balls, both
 // timed (wall); the mesh's V, E, F, Euler characteristic and components beside the
 // solid's; the balls dropped and the largest radius reduction (inscribing). Prints a
@@ -13,8 +14,9 @@
 // Not a test: it checks nothing.
 //
 // usage: medial-mesh-bench [--threads T] [--samples N] [--resolution N] [--protrusion E] [MESH...]
-//        (--protrusion: the filter's ProtrusionTolerance; -1 turns the pruning off)
-//        (default: the five meshes of ../shared/data/meshes)
+//        [--no-classifier] (--protrusion: the filter's ProtrusionTolerance; -1 turns the
+//        pruning off; --no-classifier: no governors, exact junctions or point types from them)
+//        (MESH: a file, or generated:sphere|box|torus|hollow-sphere|rings1|rings2|rings3)
 
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialAxisSampler.h"
@@ -22,6 +24,7 @@
 #include "vtkMedialFileReader.h"
 #include "vtkMedialMeshFilter.h"
 #include "vtkMedialReconstructionError.h"
+#include "vtkMedialShapeSource.h"
 
 #include "vtkDataArray.h"
 #include "vtkNew.h"
@@ -55,6 +58,49 @@ vtkIdType CountType(vtkPolyData* mesh, int type)
   }
   return n;
 }
+
+// A generated solid by name ("generated:torus", ...), or null for a file name.
+vtkSmartPointer<vtkPolyData> Generated(const std::string& name)
+{
+  const std::string prefix = "generated:";
+  if (name.rfind(prefix, 0) != 0)
+  {
+    return nullptr;
+  }
+  const std::string shape = name.substr(prefix.size());
+  vtkNew<vtkMedialShapeSource> source;
+  if (shape == "sphere")
+  {
+    source->SetShapeToSphere();
+    source->SetResolution(4);
+  }
+  else if (shape == "box")
+  {
+    source->SetShapeToBox();
+    source->SetResolution(8);
+  }
+  else if (shape == "torus")
+  {
+    source->SetShapeToTorus();
+    source->SetResolution(16);
+  }
+  else if (shape == "hollow-sphere")
+  {
+    source->SetShapeToHollowSphere();
+    source->SetResolution(4);
+  }
+  else if (shape.rfind("rings", 0) == 0)
+  {
+    source->SetShapeToRings();
+    source->SetGenus(std::atoi(shape.c_str() + 5));
+  }
+  else
+  {
+    return nullptr;
+  }
+  source->Update();
+  return source->GetOutput();
+}
 }
 
 int main(int argc, char* argv[])
@@ -63,6 +109,7 @@ int main(int argc, char* argv[])
   vtkIdType samples = 10000;
   int resolution = 128;
   double protrusion = -2.0; // below -1: the filter's default
+  bool classify = true;
   std::vector<std::string> meshes;
   for (int i = 1; i < argc; ++i)
   {
@@ -83,10 +130,14 @@ int main(int argc, char* argv[])
     {
       protrusion = std::atof(argv[++i]);
     }
+    else if (a == "--no-classifier")
+    {
+      classify = false;
+    }
     else if (!a.empty() && a[0] == '-')
     {
       std::printf("usage: medial-mesh-bench [--threads T] [--samples N] [--resolution N] [--protrusion E] "
-                  "[MESH...]\n");
+                  "[--no-classifier] [MESH...]\n");
       return a == "-h" || a == "--help" ? 0 : 1;
     }
     else
@@ -105,6 +156,10 @@ int main(int argc, char* argv[])
         meshes.push_back(path);
       }
     }
+    for (const char* name : { "sphere", "box", "torus", "hollow-sphere", "rings1", "rings2", "rings3" })
+    {
+      meshes.push_back(std::string("generated:") + name);
+    }
   }
   double load[3] = { -1, -1, -1 };
   if (FILE* f = std::fopen("/proc/loadavg", "r"))
@@ -115,9 +170,9 @@ int main(int argc, char* argv[])
     }
     std::fclose(f);
   }
-  std::printf("threads %d, %lld samples, sampler defaults otherwise; load average at start %.2f %.2f "
+  std::printf("classifier %s, threads %d, %lld samples, sampler defaults otherwise; load average at start %.2f %.2f "
               "%.2f; times in seconds (wall)\n",
-    threads, static_cast<long long>(samples), load[0], load[1], load[2]);
+    classify ? "on" : "off", threads, static_cast<long long>(samples), load[0], load[1], load[2]);
   std::printf("%-20s %6s %6s %6s %4s %5s %8s %5s %6s %6s %7s %9s %8s %8s %8s\n", "mesh", "V", "E", "F",
     "chi", "comp", "solid_chi", "solid", "seams", "junct", "dropped", "shrink%", "sample_s", "mesh_s",
     "total_s");
@@ -133,11 +188,15 @@ int main(int argc, char* argv[])
   std::vector<ErrorRow> errors;
   for (const std::string& path : meshes)
   {
-    vtkNew<vtkMedialFileReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    vtkPolyData* surface = reader->GetOutput();
-    const std::string name = path.substr(path.find_last_of('/') + 1);
+    vtkSmartPointer<vtkPolyData> surface = Generated(path);
+    if (!surface)
+    {
+      vtkNew<vtkMedialFileReader> reader;
+      reader->SetFileName(path.c_str());
+      reader->Update();
+      surface = reader->GetOutput();
+    }
+    const std::string name = path.substr(path.find_last_of("/:") + 1);
     vtkNew<vtkMedialAxisSampler> sampler;
     sampler->SetInputData(surface);
     sampler->SetNumberOfSamples(samples);
@@ -149,6 +208,10 @@ int main(int argc, char* argv[])
     filter->SetInputData(surface);
     filter->SetBallsConnection(sampler->GetOutputPort());
     filter->SetNumberOfThreads(threads);
+    if (!classify)
+    {
+      filter->SetClassifier(nullptr);
+    }
     if (protrusion >= -1.0)
     {
       filter->SetProtrusionTolerance(protrusion);

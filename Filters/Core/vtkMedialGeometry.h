@@ -269,7 +269,7 @@ inline bool SegmentCrossesTriangle(
  * other (the intersection of two non-coplanar triangles is a segment whose ends lie
  * on their edges). Touching and coplanar contact do not count.
  */
-inline bool TrianglesCross(const double* t[3], const double* u[3])
+inline bool TrianglesCross(const double* const t[3], const double* const u[3])
 {
   for (int i = 0; i < 3; ++i)
   {

@@ -394,22 +394,6 @@ void vtkMedialSurfaceQuery::MaximalTangentBall(const double p[3], const double n
   this->Tree.MaximalTangentBall(p, n, filter.OwnTriangle, filter.CosMinAngle, this->Slack, allowed, ball);
 }
 
-void vtkMedialSurfaceQuery::TrianglesWithin(
-  const double x[3], double distance, std::vector<ClosestHit>& hits, const ContactFilter* filter) const
-{
-  hits.clear();
-  this->Tree.VisitWithin(x, distance, filter ? filter->SamplePoint : nullptr, filter ? filter->CosMinAngle : 1.0,
-    [&](double d2, const double* q, vtkIdType t) {
-    ClosestHit hit;
-    std::copy(q, q + 3, hit.Point);
-    hit.Distance = std::sqrt(d2);
-    hit.Triangle = t;
-    hits.push_back(hit);
-  });
-  std::sort(hits.begin(), hits.end(),
-    [](const ClosestHit& a, const ClosestHit& b) { return a.Triangle < b.Triangle; });
-}
-
 int vtkMedialSurfaceQuery::CountCrossings(
   const double origin[3], const double direction[3], double tMax) const
 {
@@ -449,35 +433,57 @@ bool vtkMedialSurfaceQuery::IsInside(const double x[3]) const
 
 bool vtkMedialSurfaceQuery::SegmentCrossesSurface(const double p[3], const double q[3]) const
 {
-  double lo[3], hi[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    lo[k] = std::min(p[k], q[k]);
-    hi[k] = std::max(p[k], q[k]);
-  }
-  bool crosses = false;
-  this->Tree.VisitTrianglesInBox(lo, hi, [&](vtkIdType, const double* v) {
-    crosses = G::SegmentCrossesTriangle(p, q, v, v + 3, v + 6);
-    return !crosses;
-  });
-  return crosses;
+  const double* ends[2] = { p, q };
+  return this->CrossesSurface(ends, 2);
 }
 
 bool vtkMedialSurfaceQuery::TriangleCrossesSurface(
   const double a[3], const double b[3], const double c[3]) const
 {
-  double lo[3], hi[3];
-  for (int k = 0; k < 3; ++k)
+  const double* corners[3] = { a, b, c };
+  return this->CrossesSurface(corners, 3);
+}
+
+bool vtkMedialSurfaceQuery::CrossesSurface(const double* const points[], int n) const
+{
+  // Candidates: the triangles within the smallest ball about the centroid that holds
+  // the points (a crossing point lies in it).
+  double centre[3] = { 0, 0, 0 }, reach2 = 0.0;
+  for (int j = 0; j < n; ++j)
   {
-    lo[k] = std::min({ a[k], b[k], c[k] });
-    hi[k] = std::max({ a[k], b[k], c[k] });
+    G::AddScaled(centre, 1.0 / n, points[j], centre);
   }
-  const double* t[3] = { a, b, c };
+  for (int j = 0; j < n; ++j)
+  {
+    reach2 = std::max(reach2, G::Distance2(centre, points[j]));
+  }
+  const double reach = std::sqrt(reach2) * (1.0 + 1e-9) + this->Slack;
   bool crosses = false;
-  this->Tree.VisitTrianglesInBox(lo, hi, [&](vtkIdType, const double* v) {
-    const double* u[3] = { v, v + 3, v + 6 };
-    crosses = G::TrianglesCross(t, u);
-    return !crosses;
+  this->Tree.VisitWithin(centre, reach, nullptr, 1.0, [&](double, const double*, vtkIdType t) {
+    if (crosses)
+    {
+      return;
+    }
+    const vtkIdType* v = this->Mesh->GetTriangle(t);
+    const double* u[3] = { this->Mesh->GetPoint(v[0]), this->Mesh->GetPoint(v[1]), this->Mesh->GetPoint(v[2]) };
+    crosses = n == 2 ? G::SegmentCrossesTriangle(points[0], points[1], u[0], u[1], u[2])
+                     : G::TrianglesCross(points, u);
   });
   return crosses;
+}
+
+void vtkMedialSurfaceQuery::TrianglesWithin(
+  const double x[3], double distance, std::vector<ClosestHit>& hits, const ContactFilter* filter) const
+{
+  hits.clear();
+  this->Tree.VisitWithin(x, distance, filter ? filter->SamplePoint : nullptr, filter ? filter->CosMinAngle : 1.0,
+    [&](double d2, const double* q, vtkIdType t) {
+    ClosestHit hit;
+    std::copy(q, q + 3, hit.Point);
+    hit.Distance = std::sqrt(d2);
+    hit.Triangle = t;
+    hits.push_back(hit);
+  });
+  std::sort(hits.begin(), hits.end(),
+    [](const ClosestHit& a, const ClosestHit& b) { return a.Triangle < b.Triangle; });
 }

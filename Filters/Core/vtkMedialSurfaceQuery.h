@@ -15,7 +15,8 @@
  *
  * Ray queries (and IsInside, CountCrossings) always use Embree. The crossing tests
  * of segments and triangles (SegmentCrossesSurface, TriangleCrossesSurface) take
- * their candidates from the internal tree and decide in double precision.
+ * their candidates from the internal tree (VisitWithin) and decide in double
+ * precision.
  * Point queries (closest point, contains ball)
  * use Embree or, with SetPointQueryEngine(OWN_TREE), the internal
  * vtkMedialTriangleBVH; MaximalTangentBall always uses the latter, because its
@@ -158,6 +159,8 @@ public:
   struct Internals;
 
 private:
+  // Segment (n = 2) or triangle (n = 3) against the triangles near it.
+  bool CrossesSurface(const double* const points[], int n) const;
   bool IntersectFrom(const double rayOrigin[3], const double origin[3], const double direction[3],
     double tMin, double tMax, vtkIdType ignoreTriangle, RayHit& hit) const;
 

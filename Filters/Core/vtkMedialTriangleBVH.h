@@ -106,15 +106,6 @@ public:
   void VisitWithin(const double x[3], double distance, const double samplePoint[3], double cosMinAngle,
     const std::function<void(double, const double*, vtkIdType)>& visit) const;
 
-  /**
-   * Calls visit(triangle, vertices) for every triangle whose leaf box overlaps the
-   * box [lo, hi] (mesh coordinates); `vertices` holds its 9 coordinates. visit
-   * returns false to stop. Returns false when stopped. Used for the crossing tests
-   * of the medial mesh (vtkMedialSurfaceQuery::TriangleCrossesSurface).
-   */
-  bool VisitTrianglesInBox(const double lo[3], const double hi[3],
-    const std::function<bool(vtkIdType, const double*)>& visit) const;
-
   /// Position of each mesh triangle in leaf order: nearby triangles get nearby ranks.
   const std::vector<std::int32_t>& GetLeafRanks() const { return this->LeafRank; }
   vtkIdType GetNumberOfNodes() const { return static_cast<vtkIdType>(this->Nodes.size()); }

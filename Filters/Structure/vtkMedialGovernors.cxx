@@ -191,6 +191,10 @@ bool MarkCap(const double c[3], double radius, const double* surfacePoint, doubl
   const int k = static_cast<int>(hits.size());
   s.Cap.assign(static_cast<size_t>(k), 0);
   const double* anchor = surfacePoint;
+  if (!anchor && k == 0)
+  {
+    return false; // an untouched ball without its sample point: no cap
+  }
   if (!anchor)
   {
     int deepest = 0;

@@ -3,10 +3,10 @@
 #include "vtkMedialArrayNames.h"
 
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialBallClassifier.h"
 #include "vtkMedialDisjointSets.h"
 #include "vtkMedialMeshComplex.h"
 #include "vtkMedialPowerComplex.h"
-#include "vtkMedialSimplicialComplex.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
 
@@ -37,6 +37,7 @@
 
 vtkStandardNewMacro(vtkMedialMeshFilter);
 vtkCxxSetObjectMacro(vtkMedialMeshFilter, Sampler, vtkMedialAxisSampler);
+vtkCxxSetObjectMacro(vtkMedialMeshFilter, Classifier, vtkMedialBallClassifier);
 
 // The balls the mesh is built on: centres, inscribed radii, and the index of each in
 // the ball input.
@@ -50,27 +51,83 @@ struct vtkMedialMeshFilter::BallSet
 
 namespace
 {
-// Connected component of each triangle of the prepared surface (shared vertices).
-std::vector<vtkIdType> TriangleComponents(const vtkMedialTriangleMesh& mesh)
+// Medial point type from the mesh around each vertex (when the balls carry none).
+int MeshPointType(int seamEdges, int rimEdges, int curveEdges, int degree)
 {
-  const vtkIdType points = static_cast<vtkIdType>(mesh.Points.size() / 3);
-  vtkMedialDisjointSets sets(points);
+  if (seamEdges >= 3 || curveEdges >= 3)
+  {
+    return 3; // junction
+  }
+  if (seamEdges >= 1)
+  {
+    return 2; // seam
+  }
+  if (rimEdges >= 1 || degree <= 1)
+  {
+    return 0; // rim, the free end of a curve, or an isolated ball
+  }
+  return 1; // sheet, or inside a curve
+}
+
+// The solid body of each triangle of the prepared surface: its shell, or for a cavity
+// (a closed shell at odd depth) the shell enclosing it, so that a hollow solid is one.
+std::vector<vtkIdType> TriangleBodies(const vtkMedialTriangleMesh& mesh)
+{
   const vtkIdType nt = mesh.GetNumberOfTriangles();
+  std::vector<vtkIdType> bodies(nt);
   for (vtkIdType t = 0; t < nt; ++t)
   {
-    const vtkIdType* v = mesh.GetTriangle(t);
-    sets.Join(v[0], v[1]);
-    sets.Join(v[0], v[2]);
+    const int shell = mesh.ShellOfTriangle[t];
+    const vtkMedialTriangleMesh::Shell& s = mesh.Shells[shell];
+    bodies[t] = s.Closed && s.Depth % 2 == 1 && s.Parent >= 0 ? s.Parent : shell;
   }
-  std::vector<vtkIdType> label(points, -1), components(nt);
-  vtkIdType next = 0;
-  for (vtkIdType t = 0; t < nt; ++t)
+  return bodies;
+}
+
+// The balls followed by the exact seam and junction balls: every point array of the
+// balls, the exact ones' values where they have the array (same name and width),
+// NaN (or -1 for integer arrays) where they do not.
+vtkSmartPointer<vtkPolyData> AppendExactBalls(vtkPolyData* balls, vtkPolyData* exact)
+{
+  const vtkIdType n = balls->GetNumberOfPoints(), m = exact ? exact->GetNumberOfPoints() : 0;
+  auto all = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(n + m);
+  for (vtkIdType i = 0; i < n + m; ++i)
   {
-    vtkIdType& l = label[sets.Find(mesh.GetTriangle(t)[0])];
-    l = l < 0 ? next++ : l;
-    components[t] = l;
+    points->SetPoint(i, i < n ? balls->GetPoint(i) : exact->GetPoint(i - n));
   }
-  return components;
+  all->SetPoints(points);
+  vtkPointData* in = balls->GetPointData();
+  for (int a = 0; a < in->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = in->GetArray(a);
+    if (!array || !array->GetName())
+    {
+      continue;
+    }
+    const int width = array->GetNumberOfComponents();
+    vtkDataArray* other = m ? exact->GetPointData()->GetArray(array->GetName()) : nullptr;
+    other = other && other->GetNumberOfComponents() == width ? other : nullptr;
+    const double missing = array->GetDataType() == VTK_FLOAT || array->GetDataType() == VTK_DOUBLE
+      ? std::nan("")
+      : -1.0;
+    auto joined = vtk::TakeSmartPointer(array->NewInstance());
+    joined->SetName(array->GetName());
+    joined->SetNumberOfComponents(width);
+    joined->SetNumberOfTuples(n + m);
+    for (vtkIdType i = 0; i < n + m; ++i)
+    {
+      for (int c = 0; c < width; ++c)
+      {
+        joined->SetComponent(i, c,
+          i < n ? array->GetComponent(i, c) : (other ? other->GetComponent(i - n, c) : missing));
+      }
+    }
+    all->GetPointData()->AddArray(joined);
+  }
+  return all;
 }
 
 void AddCount(vtkFieldData* fd, const char* name, vtkIdType value)
@@ -86,11 +143,13 @@ vtkMedialMeshFilter::vtkMedialMeshFilter()
 {
   this->SetNumberOfInputPorts(2);
   this->Sampler = vtkMedialAxisSampler::New();
+  this->Classifier = vtkMedialBallClassifier::New();
 }
 
 vtkMedialMeshFilter::~vtkMedialMeshFilter()
 {
   this->SetSampler(nullptr);
+  this->SetClassifier(nullptr);
 }
 
 vtkMTimeType vtkMedialMeshFilter::GetMTime()
@@ -99,6 +158,10 @@ vtkMTimeType vtkMedialMeshFilter::GetMTime()
   if (this->Sampler)
   {
     time = std::max(time, this->Sampler->GetMTime());
+  }
+  if (this->Classifier)
+  {
+    time = std::max(time, this->Classifier->GetMTime());
   }
   return time;
 }
@@ -189,7 +252,16 @@ int vtkMedialMeshFilter::RequestData(
                      "array named 'Radius'.");
     return 0;
   }
-  this->UpdateProgress(0.6);
+  if (this->Classifier)
+  {
+    balls = this->Classify(balls, surface, !ballInput);
+    if (!balls)
+    {
+      return this->GetAbortExecute() ? 1 : 0;
+    }
+    radius = balls->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
+  }
+  this->UpdateProgress(0.65);
 
   // 2. Inscribed balls.
   BallSet set;
@@ -241,7 +313,7 @@ int vtkMedialMeshFilter::RequestData(
   {
     this->HasSolidTopology = true;
     this->SolidEulerCharacteristic = mesh.GetEulerCharacteristic() / 2;
-    this->SolidComponents = mesh.Components;
+    this->SolidComponents = mesh.Bodies;
     AddCount(fd, vtkMedialArrayNames::SolidEulerCharacteristic, this->SolidEulerCharacteristic);
     AddCount(fd, vtkMedialArrayNames::SolidComponents, this->SolidComponents);
     if (this->SolidEulerCharacteristic != this->EulerCharacteristic ||
@@ -262,6 +334,29 @@ int vtkMedialMeshFilter::RequestData(
   return 1;
 }
 
+bool vtkMedialMeshFilter::RunStage(vtkAlgorithm* stage, double from, double to)
+{
+  struct Span
+  {
+    vtkMedialMeshFilter* Self;
+    double From, To;
+  } span{ this, from, to };
+  vtkNew<vtkCallbackCommand> forward;
+  forward->SetClientData(&span);
+  forward->SetCallback([](vtkObject* caller, unsigned long, void* client, void* data) {
+    auto* s = static_cast<Span*>(client);
+    s->Self->UpdateProgress(s->From + (s->To - s->From) * *static_cast<double*>(data));
+    if (s->Self->GetAbortExecute())
+    {
+      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+    }
+  });
+  const unsigned long tag = stage->AddObserver(vtkCommand::ProgressEvent, forward);
+  const int ok = stage->UpdatePiece(0, 1, 0);
+  stage->RemoveObserver(tag);
+  return ok && !this->GetAbortExecute();
+}
+
 vtkSmartPointer<vtkPointSet> vtkMedialMeshFilter::RunSampler(vtkPolyData* surface)
 {
   if (!this->Sampler)
@@ -269,23 +364,10 @@ vtkSmartPointer<vtkPointSet> vtkMedialMeshFilter::RunSampler(vtkPolyData* surfac
     vtkErrorMacro(<< "Cannot build the medial mesh: no balls on input 1 and no Sampler.");
     return nullptr;
   }
-  // The sampler's progress is the first 60% of ours; an abort here aborts it.
-  vtkNew<vtkCallbackCommand> forward;
-  forward->SetClientData(this);
-  forward->SetCallback([](vtkObject* caller, unsigned long, void* client, void* data) {
-    auto* self = static_cast<vtkMedialMeshFilter*>(client);
-    self->UpdateProgress(0.05 + 0.55 * *static_cast<double*>(data));
-    if (self->GetAbortExecute())
-    {
-      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
-    }
-  });
-  const unsigned long tag = this->Sampler->AddObserver(vtkCommand::ProgressEvent, forward);
   vtkNew<vtkPolyData> copy;
   copy->ShallowCopy(surface);
   this->Sampler->SetInputData(copy);
-  const int ok = this->Sampler->UpdatePiece(0, 1, 0);
-  this->Sampler->RemoveObserver(tag);
+  const bool ok = this->RunStage(this->Sampler, 0.05, 0.55);
   auto balls = vtkSmartPointer<vtkPolyData>::New();
   balls->ShallowCopy(this->Sampler->GetOutput());
   this->Sampler->SetInputData(nullptr);
@@ -299,6 +381,33 @@ vtkSmartPointer<vtkPointSet> vtkMedialMeshFilter::RunSampler(vtkPolyData* surfac
     return nullptr;
   }
   return balls;
+}
+
+vtkSmartPointer<vtkPointSet> vtkMedialMeshFilter::Classify(
+  vtkPointSet* balls, vtkPolyData* surface, bool sampled)
+{
+  vtkNew<vtkPolyData> points; // the classifier takes polydata
+  points->SetPoints(balls->GetPoints());
+  points->GetPointData()->ShallowCopy(balls->GetPointData());
+  vtkNew<vtkPolyData> copy;
+  copy->ShallowCopy(surface);
+  this->Classifier->SetInputData(0, points);
+  this->Classifier->SetSurfaceData(copy);
+  this->Classifier->SetNumberOfThreads(this->NumberOfThreads);
+  if (sampled && this->Sampler)
+  {
+    this->Classifier->SetMinimumSeparationAngle(this->Sampler->GetMinimumSeparationAngle());
+  }
+  const bool ok = this->RunStage(this->Classifier, 0.55, 0.65);
+  vtkSmartPointer<vtkPolyData> result =
+    ok ? AppendExactBalls(this->Classifier->GetOutput(0), this->Classifier->GetOutput(1)) : nullptr;
+  this->Classifier->SetInputData(0, nullptr);
+  this->Classifier->SetSurfaceData(nullptr);
+  if (!ok && !this->GetAbortExecute())
+  {
+    vtkErrorMacro(<< "Cannot build the medial mesh: the ball classifier failed.");
+  }
+  return result;
 }
 
 bool vtkMedialMeshFilter::InscribeBalls(vtkPointSet* balls, vtkDataArray* radius,
@@ -322,7 +431,7 @@ bool vtkMedialMeshFilter::InscribeBalls(vtkPointSet* balls, vtkDataArray* radius
   // Closest surface point of each centre: the inscribed radius, and the surface (hence
   // solid) component the ball belongs to.
   const vtkMedialTriangleMesh& mesh = *query.GetMesh();
-  const std::vector<vtkIdType> triangleComponent = TriangleComponents(mesh);
+  const std::vector<vtkIdType> triangleBody = TriangleBodies(mesh);
   std::vector<double> reduction(n, 0.0);
   std::vector<vtkIdType> component(n, -1);
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
@@ -341,7 +450,7 @@ bool vtkMedialMeshFilter::InscribeBalls(vtkPointSet* balls, vtkDataArray* radius
     {
       reduction[i] = std::max(0.0, radii[i] - hit.Distance);
       radii[i] = std::min(radii[i], hit.Distance);
-      component[i] = triangleComponent[hit.Triangle];
+      component[i] = triangleBody[hit.Triangle];
     }
   }
   BallSet& out = set;
@@ -392,20 +501,65 @@ void vtkMedialMeshFilter::WriteMesh(
   outPD->AddArray(radius);
   output->SetPoints(points);
 
-  // Cells on the output's point ids (vtkMedialSimplicialComplex::WriteCells: vertices,
-  // curve and seam lines, triangles, MedialCellType, the point types from the mesh).
-  std::vector<std::array<vtkIdType, 2>> edges(complex.Edges.size());
+  // Lines: edges of no triangle (curves) and of three or more (seams). Per vertex, the
+  // edges of each kind, for the point types.
+  std::vector<int> seam(nv, 0), rim(nv, 0), curve(nv, 0), degree(nv, 0);
+  vtkNew<vtkCellArray> lines;
+  std::vector<int> lineTypes;
   for (size_t e = 0; e < complex.Edges.size(); ++e)
   {
-    edges[e] = { pointOf[complex.Edges[e][0]], pointOf[complex.Edges[e][1]] };
+    const vtkIdType ends[2] = { pointOf[complex.Edges[e][0]], pointOf[complex.Edges[e][1]] };
+    const int triangles = complex.EdgeTriangles[e];
+    for (vtkIdType v : ends)
+    {
+      ++degree[v];
+      seam[v] += triangles >= 3;
+      rim[v] += triangles == 1;
+      curve[v] += triangles == 0;
+    }
+    if (triangles == 0 || triangles >= 3)
+    {
+      lines->InsertNextCell(2, ends);
+      lineTypes.push_back(triangles == 0 ? CURVE_EDGE : SEAM_EDGE);
+    }
   }
-  std::vector<std::array<vtkIdType, 3>> triangles(complex.Triangles.size());
-  for (size_t t = 0; t < complex.Triangles.size(); ++t)
+  vtkNew<vtkCellArray> verts;
+  for (vtkIdType k = 0; k < nv; ++k)
   {
-    const auto& c = complex.Triangles[t];
-    triangles[t] = { pointOf[c[0]], pointOf[c[1]], pointOf[c[2]] };
+    if (degree[k] == 0)
+    {
+      verts->InsertNextCell(1, &k);
+    }
   }
-  const auto cells = vtkMedialSimplicialComplex::WriteCells(nv, edges, complex.EdgeTriangles, triangles, output);
+  vtkNew<vtkCellArray> polys;
+  polys->AllocateExact(static_cast<vtkIdType>(complex.Triangles.size()), 3 * complex.Triangles.size());
+  for (const auto& t : complex.Triangles)
+  {
+    const vtkIdType ids[3] = { pointOf[t[0]], pointOf[t[1]], pointOf[t[2]] };
+    polys->InsertNextCell(3, ids);
+  }
+  output->SetVerts(verts);
+  output->SetLines(lines);
+  output->SetPolys(polys);
+
+  // Cell data in VTK's cell order: vertices, lines, polygons.
+  vtkNew<vtkIntArray> cellTypes;
+  cellTypes->SetName(vtkMedialArrayNames::MedialCellType);
+  cellTypes->Allocate(output->GetNumberOfCells());
+  for (vtkIdType k = 0; k < verts->GetNumberOfCells(); ++k)
+  {
+    cellTypes->InsertNextValue(ISOLATED_BALL);
+  }
+  for (int type : lineTypes)
+  {
+    cellTypes->InsertNextValue(type);
+  }
+  for (vtkIdType k = 0; k < polys->GetNumberOfCells(); ++k)
+  {
+    cellTypes->InsertNextValue(SHEET_TRIANGLE);
+  }
+  output->GetCellData()->AddArray(cellTypes);
+
   if (!outPD->GetArray(vtkMedialArrayNames::MedialPointType))
   {
     vtkNew<vtkIntArray> types;
@@ -413,7 +567,7 @@ void vtkMedialMeshFilter::WriteMesh(
     types->SetNumberOfTuples(nv);
     for (vtkIdType k = 0; k < nv; ++k)
     {
-      types->SetValue(k, cells.PointTypes[k]);
+      types->SetValue(k, MeshPointType(seam[k], rim[k], curve[k], degree[k]));
     }
     outPD->AddArray(types);
   }
@@ -423,6 +577,7 @@ void vtkMedialMeshFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Sampler: " << this->Sampler << "\n";
+  os << indent << "Classifier: " << this->Classifier << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "ProtrusionTolerance: " << this->ProtrusionTolerance << "\n";
   os << indent << "PrunedTriangles: " << this->PrunedTriangles << "\n";

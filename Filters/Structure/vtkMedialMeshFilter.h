@@ -8,6 +8,13 @@
  *  1. Balls: the ones on input port 1 when it is connected, otherwise the output of
  *     the Sampler (a vtkMedialAxisSampler; all its settings apply: theta, method,
  *     strategy, seed, number of samples, threads) run on the surface of port 0.
+ *     Then, unless the Classifier is null, vtkMedialBallClassifier gives each ball
+ *     its GovernorCount and MedialPointType, and its exact seam points and junction
+ *     vertices join the balls (so that the mesh's junction vertices are the exact
+ *     ones where they could be solved). When this filter samples, the classifier
+ *     takes the sampler's MinimumSeparationAngle (balls and governors must share it;
+ *     with balls on port 1, set the classifier's to theirs), and always this filter's
+ *     NumberOfThreads.
  *  2. Inscribed balls: each radius is lowered to the distance from its centre to the
  *     surface (an exact closest-point query), so every ball is inside the shape
  *     (sampler balls with a MinimumSeparationAngle above 0 may cross it slightly). On
@@ -40,9 +47,10 @@
  *    feature size. This is checked on every run rather than assumed: for a closed,
  *    manifold surface the solid's Euler characteristic is half the surface's, and
  *    EulerCharacteristic, NumberOfComponents, SolidEulerCharacteristic and
- *    SolidComponents are reported (a warning when they differ). Measured equal on
- *    the five shared meshes and on generated genus 0, 1 and 2 solids with the
- *    sampler's defaults (see the README). Open surfaces have no solid: the result
+ *    SolidComponents are reported (a warning when they differ); a cavity counts with
+ *    the body around it (a hollow sphere is one solid of characteristic 2). Measured
+ *    equal on the four closed shared meshes and on generated solids of genus 0 to 3
+ *    and a hollow sphere with the sampler's defaults (see the README). Open surfaces have no solid: the result
  *    is built the same way (inside tests by ray parity are then unreliable near the
  *    holes) and nothing is promised.
  *
@@ -51,11 +59,13 @@
  * (e.g. a vtkMedialAxisSampler's output, or balls read from a file).
  *
  * Output: vtkPolyData with double-precision points (the kept ball centres) and
- *  - point data: every array of the balls (Radius lowered as in step 2), and
- *    MedialPointType (0 rim, 1 sheet, 2 seam, 3 junction): when the balls do not
- *    carry it, it is read from the mesh: junction where three or more seam edges
- *    meet, seam on a seam edge (one with three or more triangles), rim on a rim
- *    edge (one triangle) or at the free end of a curve, sheet otherwise;
+ *  - point data: every array of the balls (Radius lowered as in step 2; on the exact
+ *    points, arrays they do not have are NaN, or -1 for integers), with
+ *    GovernorCount and MedialPointType (0 rim, 1 sheet, 2 seam, 3 junction) from the
+ *    classifier. Without a classifier (and when the balls do not carry it),
+ *    MedialPointType is read from the mesh instead: junction where three or more
+ *    seam edges meet, seam on a seam edge (one with three or more triangles), rim on
+ *    a rim edge (one triangle) or at the free end of a curve, sheet otherwise;
  *  - cells: a vertex for each isolated ball, lines for the 1D parts (edges of no
  *    triangle: tubes, where the medial surface degenerates to a curve) and for the
  *    seam edges, triangles for the sheets; cell data MedialCellType (0 isolated
@@ -76,6 +86,7 @@
 
 class vtkDataArray;
 class vtkMedialAxisSampler;
+class vtkMedialBallClassifier;
 class vtkMedialMeshComplex;
 class vtkMedialSurfaceQuery;
 class vtkPointSet;
@@ -100,6 +111,13 @@ public:
   /// vtkMedialAxisSampler with its defaults). This filter sets its input.
   virtual void SetSampler(vtkMedialAxisSampler*);
   vtkGetObjectMacro(Sampler, vtkMedialAxisSampler);
+  ///@}
+
+  ///@{
+  /// The classifier of the balls (default: a vtkMedialBallClassifier with its
+  /// defaults); nullptr: no classification. This filter sets its inputs.
+  virtual void SetClassifier(vtkMedialBallClassifier*);
+  vtkGetObjectMacro(Classifier, vtkMedialBallClassifier);
   ///@}
 
   ///@{
@@ -145,7 +163,7 @@ public:
   vtkGetMacro(PrunedTriangles, vtkIdType);
   ///@}
 
-  /// Includes the sampler's modification time.
+  /// Includes the sampler's and the classifier's modification times.
   vtkMTimeType GetMTime() override;
 
 protected:
@@ -159,6 +177,12 @@ protected:
   struct BallSet;
   // Runs the sampler on a copy of the surface; null (after an error) when it fails.
   vtkSmartPointer<vtkPointSet> RunSampler(vtkPolyData* surface);
+  // Governors and point types, and the exact seam and junction balls appended; null
+  // (after an error) when the classifier fails.
+  vtkSmartPointer<vtkPointSet> Classify(vtkPointSet* balls, vtkPolyData* surface, bool sampled);
+  // Runs a sub-filter (sampler, classifier) with its progress mapped to [from, to] of
+  // this filter's and this filter's abort passed on; false when it failed.
+  bool RunStage(vtkAlgorithm* stage, double from, double to);
   // Step 2: radii lowered to the distance to the surface, outside centres dropped.
   bool InscribeBalls(vtkPointSet* balls, vtkDataArray* radius, const vtkMedialSurfaceQuery& query,
     bool closed, int threads, BallSet& set);
@@ -167,6 +191,7 @@ protected:
     vtkPolyData* output);
 
   vtkMedialAxisSampler* Sampler = nullptr;
+  vtkMedialBallClassifier* Classifier = nullptr;
   int NumberOfThreads = 0;
   double ProtrusionTolerance = 1e-3;
 

@@ -12,7 +12,7 @@
 #include "vtkStaticCellLocator.h"
 #include "vtkMedialDisjointSets.h"
 #include "vtkMedialShapeSource.h"
-#include "vtkOBJReader.h"
+#include "vtkMedialFileReader.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
@@ -36,20 +36,16 @@ inline vtkSmartPointer<vtkPolyData> MakeSolid(int shape, int genus = 1, int reso
   return source->GetOutput();
 }
 
-/// A shared mesh by name (.ply or .obj), or null when ../shared is absent.
+/// A shared mesh by name, or null when ../shared is absent.
 inline vtkSmartPointer<vtkPolyData> ReadSharedMesh(const std::string& name)
 {
-  if (name.size() > 4 && name.substr(name.size() - 4) == ".ply")
-  {
-    return ReadSharedPLY(name.c_str());
-  }
   const std::string path = SharedMesh(name.c_str());
   if (path.empty())
   {
     std::printf("shared meshes absent: %s part skipped\n", name.c_str());
     return nullptr;
   }
-  vtkNew<vtkOBJReader> reader;
+  vtkNew<vtkMedialFileReader> reader;
   reader->SetFileName(path.c_str());
   reader->Update();
   return reader->GetOutput();

@@ -21,6 +21,7 @@
 #include "vtkImageData.h"
 #include "vtkPointData.h"
 #include "vtkIntersectionPolyDataFilter.h"
+#include "vtkMath.h"
 #include "vtkPoints.h"
 #include "vtkTriangle.h"
 
@@ -47,17 +48,6 @@ Crossings CountCrossings(vtkPolyData* surface, vtkPolyData* mesh)
     return c;
   }
   vtkNew<vtkTriangle> triangle;
-  auto boxOf = [](const double* p[], int n, double lo[3], double hi[3]) {
-    for (int k = 0; k < 3; ++k)
-    {
-      lo[k] = hi[k] = p[0][k];
-      for (int i = 1; i < n; ++i)
-      {
-        lo[k] = std::min(lo[k], p[i][k]);
-        hi[k] = std::max(hi[k], p[i][k]);
-      }
-    }
-  };
   auto cells = [&](vtkCellArray* array, bool isTriangle) {
     auto it = vtk::TakeSmartPointer(array->NewIterator());
     for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
@@ -71,11 +61,31 @@ Crossings CountCrossings(vtkPolyData* surface, vtkPolyData* mesh)
       {
         mesh->GetPoint(ids[k], x[k]);
       }
-      double lo[3], hi[3];
-      boxOf(p, static_cast<int>(n), lo, hi);
+      // Candidates: the surface triangles within the ball about the cell's centroid
+      // that holds it.
+      double centre[3] = { 0, 0, 0 }, reach = 0.0;
+      for (vtkIdType k = 0; k < n; ++k)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          centre[c] += p[k][c] / n;
+        }
+      }
+      for (vtkIdType k = 0; k < n; ++k)
+      {
+        reach = std::max(reach, std::sqrt(vtkMath::Distance2BetweenPoints(centre, p[k])));
+      }
       bool crosses = false;
-      tree.VisitTrianglesInBox(lo, hi, [&](vtkIdType, const double* v) {
-        double a[3] = { v[0], v[1], v[2] }, b[3] = { v[3], v[4], v[5] }, d[3] = { v[6], v[7], v[8] };
+      tree.VisitWithin(centre, reach * (1.0 + 1e-9), nullptr, 1.0, [&](double, const double*, vtkIdType t) {
+        const vtkIdType* v = prepared.GetTriangle(t);
+        double a[3], b[3], d[3];
+        std::copy(prepared.GetPoint(v[0]), prepared.GetPoint(v[0]) + 3, a);
+        std::copy(prepared.GetPoint(v[1]), prepared.GetPoint(v[1]) + 3, b);
+        std::copy(prepared.GetPoint(v[2]), prepared.GetPoint(v[2]) + 3, d);
+        if (crosses)
+        {
+          return;
+        }
         if (isTriangle)
         {
           int coplanar = 0;
@@ -88,11 +98,10 @@ Crossings CountCrossings(vtkPolyData* surface, vtkPolyData* mesh)
           triangle->GetPoints()->SetPoint(0, a);
           triangle->GetPoints()->SetPoint(1, b);
           triangle->GetPoints()->SetPoint(2, d);
-          double t, q[3], pcoords[3];
+          double tHit, q[3], pcoords[3];
           int sub;
-          crosses = triangle->IntersectWithLine(x[0], x[1], 1e-12, t, q, pcoords, sub) == 1;
+          crosses = triangle->IntersectWithLine(x[0], x[1], 1e-12, tHit, q, pcoords, sub) == 1;
         }
-        return !crosses;
       });
       (isTriangle ? c.Triangles : c.Lines) += crosses;
     }

@@ -2,7 +2,8 @@
 // vtkMedialMeshFilter's inputs and outputs: balls on port 1 give the same mesh as the
 // internal sampler with the same settings; any thread count gives the same mesh; the
 // sampler's settings take effect and re-execute the filter; the balls' arrays are
-// carried over (Radius never grows); cell types match the cells; and bad input gives
+// carried over (Radius never grows; the other vertices are the classifier's exact
+// seam and junction balls); cell types match the cells; and bad input gives
 // one clear error (or a warning for an open surface or balls outside the shape).
 #include "MedialMeshTestUtilities.h"
 
@@ -172,17 +173,27 @@ int TestMedialMeshInputs(int, char*[])
   // Arrays carried over; radii never grow; cell types in step with the cells.
   vtkPointData* pd = mesh->GetPointData();
   for (const char* name : { vtkMedialArrayNames::SurfacePoint, vtkMedialArrayNames::SourceCellId,
-         vtkMedialArrayNames::MedialPointType })
+         vtkMedialArrayNames::MedialPointType, vtkMedialArrayNames::GovernorCount })
   {
     MEDIAL_CHECK(pd->GetArray(name) != nullptr, "no point array %s", name);
   }
   vtkPolyData* balls = sampler->GetOutput();
   vtkDataArray* surfacePoint = pd->GetArray(vtkMedialArrayNames::SurfacePoint);
+  vtkIdType exact = 0;
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
   {
-    // The sample P identifies the ball: its radius may only have been lowered.
+    // The sample P identifies the ball: its radius may only have been lowered. The
+    // classifier's exact seam and junction balls have none.
     double p[3];
     surfacePoint->GetTuple(i, p);
+    if (std::isnan(p[0]))
+    {
+      const int type = static_cast<int>(medialtest::Value(mesh, vtkMedialArrayNames::MedialPointType, i));
+      MEDIAL_CHECK(type >= 2 && medialtest::Value(mesh, vtkMedialArrayNames::GovernorCount, i) >= 3,
+        "vertex %lld: no sample point, yet not an exact seam or junction ball", static_cast<long long>(i));
+      ++exact;
+      continue;
+    }
     bool found = false;
     for (vtkIdType j = 0; j < balls->GetNumberOfPoints() && !found; ++j)
     {
@@ -196,6 +207,8 @@ int TestMedialMeshInputs(int, char*[])
     }
     MEDIAL_CHECK(found, "vertex %lld is no input ball", static_cast<long long>(i));
   }
+  std::printf("%lld vertices, %lld of them exact seam or junction balls\n",
+    static_cast<long long>(mesh->GetNumberOfPoints()), static_cast<long long>(exact));
   vtkDataArray* cellTypes = mesh->GetCellData()->GetArray(vtkMedialArrayNames::MedialCellType);
   MEDIAL_CHECK(cellTypes && cellTypes->GetNumberOfTuples() == mesh->GetNumberOfCells(), "MedialCellType size");
   for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
@@ -217,8 +230,15 @@ int TestMedialMeshInputs(int, char*[])
   internal->GetSampler()->SetNumberOfSamples(2000);
   internal->Update();
   MEDIAL_CHECK(internal->GetOutput()->GetNumberOfPoints() != before &&
-      internal->GetOutput()->GetNumberOfPoints() <= 2000,
+      internal->GetOutput()->GetNumberOfPoints() < before,
     "the sampler's settings were not used");
+  // Without a classifier: only the sampled balls, types from the mesh, no governors.
+  internal->SetClassifier(nullptr);
+  internal->Update();
+  MEDIAL_CHECK(internal->GetOutput()->GetNumberOfPoints() <= 2000 &&
+      internal->GetOutput()->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType) &&
+      !internal->GetOutput()->GetPointData()->GetArray(vtkMedialArrayNames::GovernorCount),
+    "without a classifier");
   std::ostringstream print;
   internal->Print(print);
   MEDIAL_CHECK(print.str().find("EulerCharacteristic") != std::string::npos, "PrintSelf");
