@@ -39,8 +39,12 @@ print(f"trefoil graph: {before[0]} end points, {before[1]} junctions; pruned "
 
 k = int(sys.argv[1]) if len(sys.argv) > 1 else 50
 jack = medialaxis.vtkMedialShapeSource()  # the demo solid (JACK)
+balls = medialaxis.vtkMedialAxisSampler()
+balls.SetInputConnection(jack.GetOutputPort())
+balls.SetNumberOfSamples(3000)
 mesh = medialaxis.vtkMedialMeshFilter()
 mesh.SetInputConnection(jack.GetOutputPort())
+mesh.SetBallsConnection(balls.GetOutputPort())
 simplify = medialaxis.vtkMedialSimplifyFilter()
 simplify.SetInputConnection(mesh.GetOutputPort())
 simplify.SetNumberOfBalls(k)
