@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialFileReader.h"
 
+#include "vtkMedialBallCSVReader.h"
+#include "vtkMedialBallPLYReader.h"
 #include "vtkMedialMeshReader.h"
+#include "vtkMedialFormatTable.h"
 #include "vtkMedialMessageRelay.h"
 #include "vtkMedialOFFReader.h"
 
@@ -14,6 +17,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPLYReader.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataReader.h"
 #include "vtkSTLReader.h"
 #include "vtkSmartPointer.h"
 #include "vtkXMLPolyDataReader.h"
@@ -51,20 +55,15 @@ const Format Formats[] = {
   { ".obj", vtkMedialFileReader::SURFACE, &NewNamed<vtkOBJReader>, false },
   { ".off", vtkMedialFileReader::SURFACE, &NewNamed<vtkMedialOFFReader>, false },
   { ".ma", vtkMedialFileReader::BALLS, &NewNamed<vtkMedialMeshReader>, false },
+  { ".ply", vtkMedialFileReader::BALLS, &NewNamed<vtkMedialBallPLYReader>, false },
   { ".vtp", vtkMedialFileReader::BALLS, &NewNamed<vtkXMLPolyDataReader>, false },
+  { ".vtk", vtkMedialFileReader::BALLS, &NewNamed<vtkPolyDataReader>, false },
+  { ".csv", vtkMedialFileReader::BALLS, &NewNamed<vtkMedialBallCSVReader>, false },
 };
 
 const Format* FindFormat(const char* fileName, int content)
 {
-  const std::string extension = vtkMedialFileReader::GetExtension(fileName);
-  for (const Format& format : Formats)
-  {
-    if (format.Content == content && extension == format.Extension)
-    {
-      return &format;
-    }
-  }
-  return nullptr;
+  return vtkMedialFindFormat(Formats, fileName, content);
 }
 }
 
@@ -76,15 +75,7 @@ vtkAlgorithm* vtkMedialFileReader::NewReader(const char* fileName, int content)
 
 std::string vtkMedialFileReader::GetExtensions(int content)
 {
-  std::string list;
-  for (const Format& format : Formats)
-  {
-    if (format.Content == content)
-    {
-      list += (list.empty() ? "" : " ") + std::string(format.Extension);
-    }
-  }
-  return list;
+  return vtkMedialFormatExtensions(Formats, content);
 }
 
 int vtkMedialFileReader::CanReadExtension(const char* fileName, int content)
@@ -118,6 +109,7 @@ int vtkMedialFileReader::RequestData(
     return 0;
   }
   const Format* format = FindFormat(this->FileName, this->Content);
+  this->SetProgressText(this->Content == BALLS ? "Reading the balls" : "Reading the surface");
   if (!format)
   {
     vtkErrorMacro("unsupported input extension '" << GetExtension(this->FileName) << "' ("
@@ -131,6 +123,7 @@ int vtkMedialFileReader::RequestData(
   relay->Outer = this;
   relay->Relay(reader);
   relay->Mute(reader->GetExecutive());
+  relay->RelayProgress(reader, 0.0, format->ExtractSurface ? 0.9 : 1.0);
   vtkSmartPointer<vtkAlgorithm> last = reader;
   if (format->ExtractSurface)
   {

@@ -15,13 +15,19 @@
  * | SURFACE | .obj | vtkOBJReader |
  * | SURFACE | .off | vtkMedialOFFReader |
  * | BALLS | .ma | vtkMedialMeshReader (centres, `Radius`, edges and faces) |
+ * | BALLS | .ply | vtkMedialBallPLYReader (vertices with a `radius` property, edges, faces) |
  * | BALLS | .vtp | vtkXMLPolyDataReader (e.g. the sampler's output saved by `medial-axis -o`) |
+ * | BALLS | .vtk | vtkPolyDataReader |
+ * | BALLS | .csv | vtkMedialBallCSVReader (columns x, y, z, radius) |
  *
  * As a reader (SetFileName, Update) it runs the chosen reader and passes its output
  * on. The chosen reader's errors and warnings are reported again as this reader's
  * own, with the same text, so an observer on this reader (or the output window)
  * sees them, and the update fails after an error. A file name without a reader for
- * the Content is an error that lists the extensions there are readers for.
+ * the Content is an error that lists the extensions there are readers for. The
+ * chosen reader's progress is reported as this reader's, with the progress text
+ * "Reading the surface" or "Reading the balls". Every format vtkMedialFileWriter
+ * writes for a Content is read back for the same Content.
  *
  * The static methods serve callers that want the stock reader itself (to set its
  * own options), a usage line, or a check before any work: NewReader(),
@@ -30,7 +36,7 @@
  *
  * Output: vtkPolyData.
  *
- * @sa vtkMedialOFFReader vtkMedialMeshReader
+ * @sa vtkMedialOFFReader vtkMedialMeshReader vtkMedialBallPLYReader vtkMedialFileWriter
  */
 #ifndef vtkMedialFileReader_h
 #define vtkMedialFileReader_h

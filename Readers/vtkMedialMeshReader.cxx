@@ -12,6 +12,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include "vtkMedialBallRecords.h"
 #include "vtkMedialTextParsing.h"
 
 #include <string>
@@ -23,13 +24,7 @@ namespace
 {
 using medialreaders::Quote;
 
-struct MedialMesh
-{
-  std::vector<double> Coordinates; // x y z per vertex
-  std::vector<double> Radii;
-  std::vector<vtkIdType> Edges; // 2 per edge
-  std::vector<vtkIdType> Faces; // 3 per face
-};
+using MedialMesh = medialballs::BallMesh; // faces: 3 ids each
 
 class MedialMeshParser : public medialreaders::RecordParser
 {
@@ -188,35 +183,7 @@ int vtkMedialMeshReader::RequestData(
     return 0;
   }
 
-  const vtkIdType nv = static_cast<vtkIdType>(mesh.Radii.size());
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(nv);
-  vtkNew<vtkDoubleArray> radius;
-  radius->SetName(vtkMedialArrayNames::Radius);
-  radius->SetNumberOfTuples(nv);
-  for (vtkIdType i = 0; i < nv; ++i)
-  {
-    points->SetPoint(i, &mesh.Coordinates[3 * i]);
-    radius->SetValue(i, mesh.Radii[i]);
-  }
-  vtkNew<vtkCellArray> lines;
-  lines->AllocateExact(static_cast<vtkIdType>(mesh.Edges.size() / 2), mesh.Edges.size());
-  for (size_t i = 0; i < mesh.Edges.size(); i += 2)
-  {
-    lines->InsertNextCell(2, &mesh.Edges[i]);
-  }
-  vtkNew<vtkCellArray> triangles;
-  triangles->AllocateExact(static_cast<vtkIdType>(mesh.Faces.size() / 3), mesh.Faces.size());
-  for (size_t i = 0; i < mesh.Faces.size(); i += 3)
-  {
-    triangles->InsertNextCell(3, &mesh.Faces[i]);
-  }
-  output->SetPoints(points);
-  output->GetPointData()->AddArray(radius);
-  output->GetPointData()->SetActiveScalars(vtkMedialArrayNames::Radius); // colours by radius, like the sampler
-  output->SetLines(lines);
-  output->SetPolys(triangles);
+  medialballs::ToPolyData(mesh, output);
   return 1;
 }
 

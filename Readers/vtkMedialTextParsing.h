@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -63,6 +64,10 @@ public:
     while (!this->AtEnd && std::getline(this->Stream, this->Line))
     {
       ++this->LinesRead;
+      if (this->Progress && this->FileSize > 0 && this->LinesRead % 16384 == 0)
+      {
+        this->Progress(std::min(1.0, static_cast<double>(this->Stream.tellg()) / static_cast<double>(this->FileSize)));
+      }
       this->LineNumber = this->LinesRead;
       if (this->LinesRead == 1 && this->Line.compare(0, 3, "\xEF\xBB\xBF") == 0)
       {
@@ -83,6 +88,9 @@ public:
 
   const std::vector<std::string_view>& GetTokens() const { return this->Tokens; }
   vtkIdType GetLineNumber() const { return this->LineNumber; }
+
+  /// Called with the fraction of the file read, every 16384 lines.
+  std::function<void(double)> Progress;
 
   /// An upper bound on how many records of at least `minimumBytes` bytes (newline
   /// included) the file can hold, and at most `count`. Used to cap reserve(), so
@@ -201,6 +209,9 @@ public:
   std::string Error;
   vtkIdType ErrorLine = 0; // 0: the error is not about a line
 
+  /// Reports the fraction of the file read as the lines go by.
+  void SetProgress(const std::function<void(double)>& progress) { this->Lines.Progress = progress; }
+
   /// "Cannot read WHAT 'FILE', line N: ERROR" (without ", line N" when ErrorLine is 0).
   std::string Describe(const char* what, const char* fileName) const
   {
@@ -232,10 +243,11 @@ protected:
 };
 
 /// The parse step of a reader's RequestData: reads `fileName` with a new Parser into
-/// `mesh`. False, with the error reported on `reader` ("No FileName set.", or the
-/// parser's "Cannot read WHAT 'FILE', line N: ..."), when it cannot.
-template <class Parser, class Mesh>
-bool ParseFile(vtkObject* reader, const char* fileName, const char* what, Mesh& mesh)
+/// `mesh`, reporting progress on `reader`. False, with the error reported on
+/// `reader` ("No FileName set.", or the parser's "Cannot read WHAT 'FILE', line N:
+/// ..."), when it cannot.
+template <class Parser, class Mesh, class Reader>
+bool ParseFile(Reader* reader, const char* fileName, const char* what, Mesh& mesh)
 {
   if (!fileName || !*fileName)
   {
@@ -243,6 +255,7 @@ bool ParseFile(vtkObject* reader, const char* fileName, const char* what, Mesh& 
     return false;
   }
   Parser parser;
+  parser.SetProgress([reader](double fraction) { reader->UpdateProgress(fraction); });
   if (!parser.Parse(fileName, mesh))
   {
     vtkErrorWithObjectMacro(reader, << parser.Describe(what, fileName));

@@ -26,6 +26,7 @@
 #include "vtkProperty.h"
 #include "vtkRegularPolygonSource.h"
 #include "vtkRenderWindow.h"
+#include "vtkRendererCollection.h"
 #include "vtkRenderer.h"
 #include "vtkScalarBarActor.h"
 #include "vtkSphereSource.h"
@@ -34,6 +35,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <string>
 #include <utility>
 #include <vector>
@@ -117,6 +119,54 @@ vtkSmartPointer<vtkActor> NodeActor(vtkPolyData* graph, int type, double size, c
   return actor;
 }
 
+// The balls with one vertex cell per point when they have none (a .ma file's
+// centres), so that every centre is drawn.
+vtkSmartPointer<vtkPolyData> WithVertices(vtkPolyData* balls)
+{
+  auto drawn = vtkSmartPointer<vtkPolyData>::New();
+  drawn->ShallowCopy(balls);
+  if (balls->GetNumberOfVerts() == 0 && balls->GetNumberOfPoints() > 0)
+  {
+    vtkNew<vtkCellArray> verts;
+    verts->AllocateExact(balls->GetNumberOfPoints(), balls->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < balls->GetNumberOfPoints(); ++i)
+    {
+      verts->InsertNextCell(1, &i);
+    }
+    drawn->SetVerts(verts);
+  }
+  return drawn;
+}
+
+// Calls visit(point) for every point of everything drawn.
+template <class Visit>
+void ForEachDrawnPoint(std::initializer_list<vtkPolyData*> data, Visit&& visit)
+{
+  for (vtkPolyData* pd : data)
+  {
+    for (vtkIdType i = 0; pd && i < pd->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      pd->GetPoint(i, p);
+      visit(p);
+    }
+  }
+}
+
+// The index of the largest-magnitude component.
+int MajorComponent(const double v[3])
+{
+  int major = 0;
+  for (int k = 1; k < 3; ++k)
+  {
+    if (std::abs(v[k]) > std::abs(v[major]))
+    {
+      major = k;
+    }
+  }
+  return major;
+}
+
 // Unit normal of the points' least-squares plane, its largest component positive.
 void PlaneNormal(vtkPolyData* shape, double normal[3])
 {
@@ -138,6 +188,8 @@ void PlaneNormal(vtkPolyData* shape, double normal[3])
 }
 }
 
+const char* const ViewNames[] = { "auto", "+x", "-x", "+y", "-y", "+z", "-z", "iso" };
+
 vtkMedialScene::vtkMedialScene() = default;
 
 vtkMedialScene::~vtkMedialScene()
@@ -146,6 +198,34 @@ vtkMedialScene::~vtkMedialScene()
   this->SetMedial(nullptr);
   this->SetGraph(nullptr);
   this->SetReconstruction(nullptr);
+}
+
+void vtkMedialScene::SetViewDirection(int direction)
+{
+  direction = std::min(std::max(direction, static_cast<int>(VIEW_AUTO)), static_cast<int>(VIEW_ISO));
+  if (direction != this->ViewDirection || this->CustomView)
+  {
+    this->ViewDirection = direction;
+    this->CustomView = false;
+    this->Modified();
+  }
+}
+
+const char* vtkMedialScene::GetViewDirectionName(int direction)
+{
+  return direction >= VIEW_AUTO && direction <= VIEW_ISO ? ViewNames[direction] : nullptr;
+}
+
+int vtkMedialScene::GetViewDirectionFromName(const char* name)
+{
+  for (int d = VIEW_AUTO; d <= VIEW_ISO; ++d)
+  {
+    if (name && std::string(name) == ViewNames[d])
+    {
+      return d;
+    }
+  }
+  return -1;
 }
 
 void vtkMedialScene::SetView(const double position[3], const double focalPoint[3], const double viewUp[3])
@@ -185,9 +265,10 @@ void PointTypeTable(vtkLookupTable* lut, double range[2])
 }
 
 // Colours what `mapper` draws by the point array `name` of `data`, blue (low) to red
-// (high) over its range (MedialPointType: one named colour per 3D code), and adds the
-// scale (with ScalarBarVisibility).
-void vtkMedialScene::ColourBy(vtkPolyDataMapper* mapper, vtkPolyData* data, const char* name, vtkRenderer* renderer)
+// (high) over its range (MedialPointType: one named colour per 3D code); returns the
+// renderer of the scale (nullptr without ScalarBarVisibility), to be given a strip of
+// its own beside the model.
+vtkSmartPointer<vtkRenderer> vtkMedialScene::ColourBy(vtkPolyDataMapper* mapper, vtkPolyData* data, const char* name)
 {
   double range[2] = { 0.0, 1.0 };
   vtkDataArray* values = data->GetPointData()->GetArray(name);
@@ -211,25 +292,30 @@ void vtkMedialScene::ColourBy(vtkPolyDataMapper* mapper, vtkPolyData* data, cons
   mapper->SelectColorArray(name);
   mapper->SetScalarRange(range);
   mapper->ScalarVisibilityOn();
-  if (this->ScalarBarVisibility)
+  if (!this->ScalarBarVisibility)
   {
-    vtkNew<vtkScalarBarActor> bar;
-    bar->SetLookupTable(lut);
-    bar->SetTitle(name);
-    bar->SetNumberOfLabels(5);
-    bar->SetWidth(0.09);
-    bar->SetHeight(0.6);
-    bar->SetPosition(0.89, 0.2);
-    bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
-    bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
-    renderer->AddActor2D(bar);
+    return nullptr;
   }
+  vtkNew<vtkScalarBarActor> bar;
+  bar->SetLookupTable(lut);
+  bar->SetTitle(name);
+  bar->SetNumberOfLabels(5);
+  bar->SetPosition(0.1, 0.12); // in the strip's own viewport
+  bar->SetWidth(0.8);
+  bar->SetHeight(0.76);
+  bar->SetBarRatio(0.3);
+  bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
+  bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
+  auto strip = vtkSmartPointer<vtkRenderer>::New();
+  strip->SetBackground(1, 1, 1);
+  strip->AddActor2D(bar);
+  return strip;
 }
 
-// The translucent surface, the medial points (or mesh) coloured by radius or point type
-// and the scale; or,
-// with SurfaceScalars, the opaque surface coloured by that array and its scale.
-void vtkMedialScene::AddBalls(vtkRenderer* renderer)
+// The translucent surface and the medial points (or mesh) coloured by radius or point
+// type; or, with SurfaceScalars, the opaque surface coloured by that array. Returns the
+// renderer of the scale (nullptr without one).
+vtkSmartPointer<vtkRenderer> vtkMedialScene::AddBalls(vtkRenderer* renderer)
 {
   if (this->Surface && !this->SurfaceScalars.empty())
   {
@@ -239,11 +325,11 @@ void vtkMedialScene::AddBalls(vtkRenderer* renderer)
     normals->Update();
     vtkNew<vtkPolyDataMapper> mapper;
     mapper->SetInputConnection(normals->GetOutputPort());
-    this->ColourBy(mapper, normals->GetOutput(), this->SurfaceScalars.c_str(), renderer);
+    vtkSmartPointer<vtkRenderer> strip = this->ColourBy(mapper, normals->GetOutput(), this->SurfaceScalars.c_str());
     vtkNew<vtkActor> surface;
     surface->SetMapper(mapper);
     renderer->AddActor(surface);
-    return;
+    return strip;
   }
   if (this->Surface)
   {
@@ -253,20 +339,21 @@ void vtkMedialScene::AddBalls(vtkRenderer* renderer)
   }
   if (!this->Medial)
   {
-    return;
+    return nullptr;
   }
   vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(this->Medial);
+  mapper->SetInputData(WithVertices(this->Medial));
   const bool byType = this->ColorBy == POINT_TYPE &&
     this->Medial->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
-  this->ColourBy(mapper, this->Medial,
-    byType ? vtkMedialArrayNames::MedialPointType : vtkMedialArrayNames::Radius, renderer);
+  vtkSmartPointer<vtkRenderer> strip = this->ColourBy(
+    mapper, this->Medial, byType ? vtkMedialArrayNames::MedialPointType : vtkMedialArrayNames::Radius);
   vtkNew<vtkActor> medial;
   medial->SetMapper(mapper);
   medial->GetProperty()->SetPointSize(this->PointSize);
   medial->GetProperty()->SetLineWidth(this->LineWidth);
   medial->GetProperty()->RenderPointsAsSpheresOn();
   renderer->AddActor(medial);
+  return strip;
 }
 
 // The polygon (black), the arcs (blue linear, orange parabolic), the maximal disks of
@@ -329,95 +416,213 @@ void vtkMedialScene::AddGraph(vtkRenderer* renderer, const double normal[3])
   renderer->AddActor(NodeActor(graph, vtkMedialJunctionFilter::END_POINT, 0.009 * diagonal, green));
 }
 
-// The input on the left, the reconstruction on the right through the same camera.
-void vtkMedialScene::AddReconstructionView(vtkRenderWindow* window, vtkRenderer* left)
+// The reconstruction, seen through the camera of `left` (the input).
+vtkSmartPointer<vtkRenderer> vtkMedialScene::AddReconstructionView(vtkRenderer* left)
 {
-  left->SetViewport(0.0, 0.0, 0.5, 1.0);
   vtkNew<vtkPolyDataNormals> normals;
   normals->SetInputData(this->Reconstruction);
   normals->SplittingOff();
   normals->Update();
-  vtkNew<vtkRenderer> right;
-  right->SetViewport(0.5, 0.0, 1.0, 1.0);
+  auto right = vtkSmartPointer<vtkRenderer>::New();
   right->SetBackground(1, 1, 1);
   right->AddActor(ActorOf(normals->GetOutput(), 0.90, 0.62, 0.40));
   right->SetActiveCamera(left->GetActiveCamera());
-  window->AddRenderer(right);
-  int* size = window->GetSize();
-  window->SetSize(2 * size[0], size[1]);
+  return right;
 }
 
-// 3D: from 30 degrees azimuth and 20 elevation; 2D: straight at the plane; or the
-// chosen view. Then framed and zoomed.
-void vtkMedialScene::Frame(vtkRenderer* renderer, const double normal[3])
+// The camera's frame: right across the picture, up, and toward the camera (see the
+// class comment for how each view direction chooses them).
+void vtkMedialScene::ViewAxes(double right[3], double up[3], double toward[3]) const
 {
-  vtkCamera* camera = renderer->GetActiveCamera();
+  const auto drawn = { this->Surface, this->Medial, this->Graph, this->Reconstruction };
+  // Extent of everything drawn along a unit direction.
+  auto extent = [&](const double d[3]) {
+    double lo = VTK_DOUBLE_MAX, hi = -VTK_DOUBLE_MAX;
+    ForEachDrawnPoint(drawn, [&](const double p[3]) {
+      const double t = vtkMath::Dot(p, d);
+      lo = std::min(lo, t);
+      hi = std::max(hi, t);
+    });
+    return hi >= lo ? hi - lo : 0.0;
+  };
+  const double worldAxes[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+  double axes[3][3]; // candidates, sorted by decreasing extent below
   if (this->CustomView)
   {
-    camera->SetPosition(this->ViewPosition);
-    camera->SetFocalPoint(this->ViewFocalPoint);
-    camera->SetViewUp(this->ViewUp);
-  }
-  else if (this->Graph)
-  {
-    double bounds[6], centre[3];
-    (this->Surface ? this->Surface : this->Graph)->GetBounds(bounds);
     for (int k = 0; k < 3; ++k)
     {
-      centre[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
+      toward[k] = this->ViewPosition[k] - this->ViewFocalPoint[k];
+      up[k] = this->ViewUp[k];
     }
-    camera->SetFocalPoint(centre);
-    camera->SetPosition(centre[0] + normal[0], centre[1] + normal[1], centre[2] + normal[2]);
-    const bool flat = std::abs(normal[1]) > 0.9;
-    camera->SetViewUp(flat ? 1.0 : 0.0, flat ? 0.0 : 1.0, 0.0);
+    vtkMath::Normalize(toward);
+    const double along = vtkMath::Dot(up, toward);
+    for (int k = 0; k < 3; ++k)
+    {
+      up[k] -= along * toward[k];
+    }
+    vtkMath::Normalize(up);
+    vtkMath::Cross(up, toward, right);
+    return;
+  }
+  // The principal axes, or the world axes when each principal axis lies within 20
+  // degrees of one.
+  std::vector<double> xyz;
+  ForEachDrawnPoint(drawn, [&](const double p[3]) { xyz.insert(xyz.end(), p, p + 3); });
+  double centre[3], values[3], pca[3][3];
+  vtkMedialPlane::FitPoints(static_cast<vtkIdType>(xyz.size() / 3),
+    [&xyz](vtkIdType i, double p[3]) { std::copy_n(&xyz[3 * i], 3, p); }, centre, values, pca);
+  bool aligned = true;
+  for (int a = 0; a < 3; ++a)
+  {
+    const double column[3] = { pca[0][a], pca[1][a], pca[2][a] };
+    std::copy_n(column, 3, axes[a]);
+    aligned = aligned && std::abs(column[MajorComponent(column)]) > std::cos(vtkMath::RadiansFromDegrees(20.0));
+  }
+  if (aligned || xyz.size() < 9)
+  {
+    std::copy_n(&worldAxes[0][0], 9, &axes[0][0]);
+  }
+  int order[3] = { 0, 1, 2 };
+  double extents[3] = { extent(axes[0]), extent(axes[1]), extent(axes[2]) };
+  std::stable_sort(order, order + 3, [&](int a, int b) { return extents[a] > extents[b]; });
+  const int direction = this->ViewDirection;
+  if (direction >= VIEW_PLUS_X && direction <= VIEW_MINUS_Z)
+  {
+    // Look along a world axis; of the other two, the longer one runs across.
+    const int look = (direction - VIEW_PLUS_X) / 2;
+    const double sign = (direction - VIEW_PLUS_X) % 2 == 0 ? 1.0 : -1.0;
+    const int a = (look + 1) % 3, b = (look + 2) % 3;
+    const int vertical = extent(worldAxes[a]) >= extent(worldAxes[b]) ? b : a;
+    for (int k = 0; k < 3; ++k)
+    {
+      toward[k] = -sign * worldAxes[look][k];
+      up[k] = worldAxes[vertical][k];
+    }
   }
   else
   {
-    renderer->ResetCamera();
-    camera->Azimuth(30);
-    camera->Elevation(20);
+    std::copy_n(axes[order[1]], 3, up);
+    std::copy_n(axes[order[2]], 3, toward);
+    vtkMedialPlane::CanonicalSign(up);
+    vtkMedialPlane::CanonicalSign(toward);
+    if (direction == VIEW_ISO)
+    {
+      // Up: the world axis nearest the automatic view's, made perpendicular to the view.
+      const int major = MajorComponent(up);
+      for (int k = 0; k < 3; ++k)
+      {
+        toward[k] = 1.0 / std::sqrt(3.0);
+        up[k] = worldAxes[major][k] - toward[k] / std::sqrt(3.0);
+      }
+      vtkMath::Normalize(up);
+    }
   }
-  renderer->ResetCamera();
-  camera->Zoom(this->Zoom > 0.0 ? this->Zoom : (this->Graph ? 1.3 : 1.6));
+  vtkMath::Cross(up, toward, right);
+}
+
+// Points the camera along the view axes, fits the projected extent of everything
+// drawn into a view of `aspect` (width / height) less the margins, then zooms.
+void vtkMedialScene::Frame(vtkRenderer* renderer, double aspect)
+{
+  double right[3], up[3], toward[3];
+  this->ViewAxes(right, up, toward);
+  double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  ForEachDrawnPoint({ this->Surface, this->Medial, this->Graph, this->Reconstruction }, [&](const double p[3]) {
+    const double t[3] = { vtkMath::Dot(p, right), vtkMath::Dot(p, up), vtkMath::Dot(p, toward) };
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min(lo[k], t[k]);
+      hi[k] = std::max(hi[k], t[k]);
+    }
+  });
+  double centre[3] = { 0, 0, 0 };
+  double size[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    size[k] = hi[k] - lo[k];
+    const double mid = 0.5 * (lo[k] + hi[k]);
+    const double* axis = k == 0 ? right : (k == 1 ? up : toward);
+    for (int c = 0; c < 3; ++c)
+    {
+      centre[c] += mid * axis[c];
+    }
+  }
+  const double span = std::max({ size[0], size[1], size[2] }) > 0.0 ? std::max({ size[0], size[1], size[2] }) : 1.0;
+  const double fill = 1.0 - 2.0 * this->Margin;
+  // Half the visible height: the larger of what the height and the width need.
+  double halfHeight = 0.5 * std::max(size[1], size[0] / aspect) / fill;
+  if (!(halfHeight > 0.0))
+  {
+    halfHeight = 0.5 * span;
+  }
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  camera->SetFocalPoint(centre);
+  camera->SetPosition(centre[0] + span * toward[0], centre[1] + span * toward[1], centre[2] + span * toward[2]);
+  camera->SetViewUp(up);
+  camera->SetParallelScale(halfHeight / this->Zoom);
+  renderer->ResetCameraClippingRange();
 }
 
 vtkRenderWindow* vtkMedialScene::Render()
 {
-  this->Window = nullptr;
   if (!this->Surface && !this->Medial && !this->Graph)
   {
+    this->Window = nullptr;
     vtkErrorMacro("Nothing to draw: set a Surface, Medial balls or a Graph.");
     return nullptr;
   }
   const bool planar = this->Graph != nullptr;
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(1, 1, 1);
-  double normal[3] = { 0.0, 0.0, 1.0 };
+  vtkSmartPointer<vtkRenderer> bar;
   if (planar)
   {
+    double normal[3];
     PlaneNormal(this->Surface ? this->Surface : this->Graph, normal);
     this->AddGraph(renderer, normal);
   }
   else
   {
-    this->AddBalls(renderer);
+    bar = this->AddBalls(renderer);
   }
-  this->Frame(renderer, normal); // before the window: framed as a square view
-  auto window = vtkSmartPointer<vtkRenderWindow>::New();
-  window->SetOffScreenRendering(1);
-  if (this->WindowSize[0] > 0 && this->WindowSize[1] > 0)
+  vtkSmartPointer<vtkRenderer> rebuilt = this->Reconstruction && !planar ? this->AddReconstructionView(renderer) : nullptr;
+
+  // Layout: the view (and the reconstruction's, as wide), then the scale's strip.
+  int size[2] = { this->WindowSize[0], this->WindowSize[1] };
+  if (size[0] <= 0 || size[1] <= 0)
   {
-    window->SetSize(this->WindowSize[0], this->WindowSize[1]);
+    size[0] = (rebuilt ? 1800 : 900);
+    size[1] = planar ? 700 : 640;
   }
-  else
+  const double strip = bar ? std::min(0.4, 120.0 / size[0]) : 0.0;
+  const double viewWidth = (1.0 - strip) / (rebuilt ? 2.0 : 1.0);
+  renderer->SetViewport(0.0, 0.0, viewWidth, 1.0);
+  // One window per scene, emptied for each render: an X connection is not free.
+  vtkSmartPointer<vtkRenderWindow> window = this->Window;
+  if (!window)
   {
-    window->SetSize(900, planar ? 700 : 640);
+    window = vtkSmartPointer<vtkRenderWindow>::New();
+    window->SetOffScreenRendering(1);
   }
+  while (window->GetRenderers()->GetNumberOfItems() > 0)
+  {
+    window->RemoveRenderer(window->GetRenderers()->GetFirstRenderer());
+  }
+  window->SetSize(size[0], size[1]);
   window->AddRenderer(renderer);
-  if (this->Reconstruction && !planar)
+  if (rebuilt)
   {
-    this->AddReconstructionView(window, renderer);
+    rebuilt->SetViewport(viewWidth, 0.0, 2.0 * viewWidth, 1.0);
+    window->AddRenderer(rebuilt);
   }
+  if (bar)
+  {
+    bar->SetViewport(1.0 - strip, 0.0, 1.0, 1.0);
+    window->AddRenderer(bar);
+  }
+  this->Frame(renderer, viewWidth * size[0] / static_cast<double>(size[1]));
   window->Render();
   this->Window = window;
   return window;
@@ -459,6 +664,8 @@ void vtkMedialScene::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ColorBy: " << (this->ColorBy == POINT_TYPE ? "PointType" : "Radius") << "\n";
   os << indent << "WindowSize: " << this->WindowSize[0] << " " << this->WindowSize[1] << "\n";
   os << indent << "Zoom: " << this->Zoom << "\n";
+  os << indent << "Margin: " << this->Margin << "\n";
+  os << indent << "ViewDirection: " << GetViewDirectionName(this->ViewDirection) << "\n";
   os << indent << "CustomView: " << this->CustomView << "\n";
   os << indent << "ViewPosition: " << this->ViewPosition[0] << " " << this->ViewPosition[1] << " "
      << this->ViewPosition[2] << "\n";

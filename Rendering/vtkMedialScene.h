@@ -6,32 +6,48 @@
  *
  * What is drawn depends on what is given:
  *  - 3D (no Graph): the Surface as a light grey translucent shell (SurfaceOpacity),
- *    the Medial balls' centres (and any link lines) coloured by their `Radius` array
- *    from blue (thin) to red (thick), drawn as spheres of PointSize pixels, with a
- *    scalar bar (ScalarBarVisibility). Medial may also be a medial mesh
- *    (vtkMedialMeshFilter's output; its triangles and lines are drawn), and with
- *    ColorBy POINT_TYPE it is coloured by `MedialPointType`: rim blue, sheet grey,
- *    seam orange, junction red, with their names in the legend. With SurfaceScalars
- *    (e.g. "Thickness" from vtkMedialThickness), the Surface is drawn opaque and
- *    coloured by that point array instead, with its scale, and the Medial balls are
- *    left out. Given a Reconstruction, the window gets a
- *    second view on its right: the reconstruction, shaded in copper, seen through the
+ *    the Medial balls' centres (and any link lines or medial-mesh faces) coloured by
+ *    their `Radius` array from blue (thin) to red (thick), the centres drawn as
+ *    spheres of PointSize pixels, with a scalar bar (ScalarBarVisibility). Medial may
+ *    be a medial mesh (vtkMedialMeshFilter's output), and with ColorBy POINT_TYPE it
+ *    is coloured by `MedialPointType`: rim blue, sheet grey, seam orange, junction
+ *    red, with their names in the legend. With SurfaceScalars (e.g. "Thickness" from
+ *    vtkMedialThickness), the Surface is drawn opaque and coloured by that point array
+ *    instead, with its scale, and the Medial balls are left out. Given a
+ *    Reconstruction, the picture gets a second view on the right of the first: the
+ *    reconstruction, shaded in copper, seen through the
  *    same camera.
  *  - 2D (a Graph, vtkMedialJunctionFilter's output): the Surface's loops as black
  *    outlines, the graph's arcs by `ArcType` (blue linear, orange parabolic), the
  *    maximal disks of the six largest junctions (grey circles), junctions (red) and
- *    end points (green), seen straight along the plane's normal.
+ *    end points (green).
  *
- * Camera: the 3D view looks from 30 degrees azimuth and 20 degrees elevation off the
- * +z view, the 2D view straight at the plane (from its normal's positive side); both
- * frame the Surface (or the medial data) and then zoom by Zoom (0: 1.6 in 3D, 1.3 in
- * 2D). SetView() chooses the camera position, focal point and view up instead; the
- * view is then framed and zoomed the same way.
+ * Camera (parallel projection). The view direction comes from ViewDirection:
+ *  - VIEW_AUTO (default): from the principal axes of everything drawn (the
+ *    eigenvectors of the points' scatter matrix, taken as the world axes when each
+ *    lies within 20 degrees of one): the axis of largest extent runs across the
+ *    picture, the second upwards (its largest component positive), and the camera
+ *    looks along the third (from the side where its largest component is
+ *    positive). A planar input is seen straight along its normal.
+ *  - VIEW_PLUS_X ... VIEW_MINUS_Z: the camera looks along that world axis (as
+ *    ParaView's "set view direction" buttons); of the two other world axes the one
+ *    with the larger extent runs across, the other points up.
+ *  - VIEW_ISO: the camera looks along -(1, 1, 1), with the automatic view's upward
+ *    world axis pointing up.
+ *  - SetView(): the given position, focal point and view up.
+ * Whatever the direction, the view is then framed: the projected extent of
+ * everything drawn fills the view but for Margin (a fraction of the view's width and
+ * height on each side), and then zoomed by Zoom (1: framed; 2: twice as large,
+ * cropping).
  *
- * Render() builds the scene in a new offscreen render window of WindowSize pixels
- * (0, 0: 900 x 640 in 3D, 900 x 700 in 2D; the reconstruction view doubles the width)
+ * The scalar bar gets a strip of its own, 120 pixels wide, on the right of the
+ * picture, so it never covers the model.
+ *
+ * Render() builds the scene in the scene's offscreen render window of WindowSize pixels
+ * (0, 0: 900 x 640 in 3D, 900 x 700 in 2D, and twice as wide with a reconstruction)
  * on a white background, renders it and returns the window. WritePNG() renders and
- * saves the picture; the PNG writer's errors are reported as this object's. Rendering needs an X display with Debian's VTK (xvfb-run).
+ * saves the picture; the PNG writer's errors are reported as this object's.
+ * Rendering needs an X display with Debian's VTK (xvfb-run).
  *
  * @sa vtkMedialAxisSampler vtkMedialJunctionFilter vtkMedialBallUnion
  */
@@ -124,25 +140,56 @@ public:
   ///@}
 
   ///@{
-  /// Size of one view in pixels; 0, 0 (default) takes the scene's own.
+  /// Size of the whole picture in pixels; 0, 0 (default) takes the scene's own.
   vtkSetVector2Macro(WindowSize, int);
   vtkGetVector2Macro(WindowSize, int);
   ///@}
 
   ///@{
-  /// Zoom after framing; 0 (default) takes the scene's own (1.6 in 3D, 1.3 in 2D).
-  vtkSetClampMacro(Zoom, double, 0.0, 1000.0);
+  /// Zoom after framing (default 1: everything drawn fits, with the margin).
+  vtkSetClampMacro(Zoom, double, 0.01, 1000.0);
   vtkGetMacro(Zoom, double);
   ///@}
 
+  ///@{
+  /// Empty border around the framed model, as a fraction of the view's width and
+  /// height on each side (default 0.05).
+  vtkSetClampMacro(Margin, double, 0.0, 0.45);
+  vtkGetMacro(Margin, double);
+  ///@}
+
+  /// The camera's direction (see the class comment).
+  enum ViewDirections
+  {
+    VIEW_AUTO = 0,
+    VIEW_PLUS_X,
+    VIEW_MINUS_X,
+    VIEW_PLUS_Y,
+    VIEW_MINUS_Y,
+    VIEW_PLUS_Z,
+    VIEW_MINUS_Z,
+    VIEW_ISO
+  };
+
+  ///@{
+  /// The view direction (default VIEW_AUTO). Setting it drops a SetView() view.
+  virtual void SetViewDirection(int direction);
+  vtkGetMacro(ViewDirection, int);
+  ///@}
+
+  /// The name of a view direction: "auto", "+x", "-x", "+y", "-y", "+z", "-z", "iso".
+  static const char* GetViewDirectionName(int direction);
+  /// The view direction of a name (see GetViewDirectionName), or -1.
+  static int GetViewDirectionFromName(const char* name);
+
   /// Looks from `position` at `focalPoint` with `viewUp` instead of the scene's view.
   void SetView(const double position[3], const double focalPoint[3], const double viewUp[3]);
-  /// Back to the scene's own view.
+  /// Back to the scene's own view (ViewDirection).
   void ResetView() { this->CustomView = false; }
 
-  /// Builds the scene in a new offscreen window, renders it and returns the window
-  /// (kept by this object until the next Render()). nullptr, with an error, without
-  /// anything to draw.
+  /// Builds the scene in this object's offscreen window (created by the first
+  /// Render() and emptied by each one), renders it and returns the window. nullptr,
+  /// with an error, without anything to draw.
   vtkRenderWindow* Render();
 
   /// Renders and writes the picture as a PNG file. 1 on success, 0 on failure (error).
@@ -166,7 +213,9 @@ protected:
   bool ScalarBarVisibility = true;
   int ColorBy = RADIUS;
   int WindowSize[2] = { 0, 0 };
-  double Zoom = 0.0;
+  double Zoom = 1.0;
+  double Margin = 0.05;
+  int ViewDirection = VIEW_AUTO;
   bool CustomView = false;
   double ViewPosition[3] = { 0, 0, 1 };
   double ViewFocalPoint[3] = { 0, 0, 0 };
@@ -176,11 +225,12 @@ private:
   vtkMedialScene(const vtkMedialScene&) = delete;
   void operator=(const vtkMedialScene&) = delete;
 
-  void AddBalls(vtkRenderer* renderer);
-  void ColourBy(vtkPolyDataMapper* mapper, vtkPolyData* data, const char* name, vtkRenderer* renderer);
+  vtkSmartPointer<vtkRenderer> AddBalls(vtkRenderer* renderer);
+  vtkSmartPointer<vtkRenderer> ColourBy(vtkPolyDataMapper* mapper, vtkPolyData* data, const char* name);
   void AddGraph(vtkRenderer* renderer, const double normal[3]);
-  void AddReconstructionView(vtkRenderWindow* window, vtkRenderer* left);
-  void Frame(vtkRenderer* renderer, const double normal[3]);
+  vtkSmartPointer<vtkRenderer> AddReconstructionView(vtkRenderer* left);
+  void ViewAxes(double right[3], double up[3], double toward[3]) const;
+  void Frame(vtkRenderer* renderer, double aspect);
 
   vtkSmartPointer<vtkRenderWindow> Window;
 };

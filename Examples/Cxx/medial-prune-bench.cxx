@@ -14,8 +14,8 @@
 //     CLEAN surface (vtkMedialReconstructionError: vertex Hausdorff, the larger of both
 //     directions, and the mean), and its ratio to the clean unpruned reconstruction's.
 //  3. K balls: horse, fandisk and rocker-arm meshed, then simplified to K = 500, 100, 30
-//     vertices; the envelope's two-sided vertex Hausdorff to the original (% of the
-//     diagonal), and the seconds of sampling + meshing + simplifying (the pipeline from
+//     vertices (and, K = all, the unsimplified mesh); the envelope's two-sided vertex
+//     Hausdorff to the original (% of the diagonal), and the seconds of sampling + meshing + simplifying (the pipeline from
 //     mesh to K balls) and of simplifying alone.
 //
 // usage: medial-prune-bench [--threads T] [--resolution N] [--tables 123]
@@ -322,6 +322,10 @@ void SimplifyTable(int threads, int resolution)
     vtkSmartPointer<vtkPolyData> surface = Read(path);
     double meshSeconds = 0.0;
     vtkSmartPointer<vtkPolyData> mesh = MedialMesh(surface, threads, &meshSeconds);
+    const Reconstruction whole = Rebuild(mesh, surface, resolution, threads);
+    std::printf("%-16s %6lld %5s %6lld %6lld %9.3f %9.4f %10s %11.2f\n", name,
+      static_cast<long long>(mesh->GetNumberOfPoints()), "all", static_cast<long long>(mesh->GetNumberOfPoints()),
+      static_cast<long long>(mesh->GetNumberOfPolys()), 100 * whole.Hausdorff, 100 * whole.Mean, "-", meshSeconds);
     for (vtkIdType k : { 500, 100, 30 })
     {
       vtkNew<vtkMedialSimplifyFilter> simplify;

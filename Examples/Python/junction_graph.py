@@ -1,23 +1,31 @@
 #!/usr/bin/env python3
-"""The 2D medial graph of a polygon with a hole: junctions, end points and arcs.
+"""The 2D medial graph of planar polygons: junctions, end points and arcs.
 
 Usage (from the build tree):
-  PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 Examples/Python/junction_graph.py [OUT.vtp]
-Prints every junction with its radius and governor count, and the arc counts.
+  PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 Examples/Python/junction_graph.py \\
+      [POLYGONS.vtp|.vtk|.ply|.stl|.obj|.off] [OUT.vtp|.vtk|.ply|.ma|.csv]
+Without an input it uses a square with a square hole. Prints every junction with its
+radius and governor count, and the arc counts; OUT is written in the format its
+extension names.
 """
 import sys
 
 import numpy as np
 
 import medialaxis
+from example_io import BALLS, check_output, open_input, write
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
+out = sys.argv[2] if len(sys.argv) > 2 else None
+check_output(out, BALLS)
 frame = medialaxis.vtkMedialShapeSource()
 frame.SetShapeToSquareFrame()  # the square [-2, 2]^2 with the hole [-1, 1]^2
+source = open_input(sys.argv[1] if len(sys.argv) > 1 else None, frame)
 junctions = medialaxis.vtkMedialJunctionFilter()
-junctions.SetInputConnection(frame.GetOutputPort())
+junctions.SetInputConnection(source.GetOutputPort())
 junctions.Update()
+if junctions.GetErrorCode() or junctions.GetOutput().GetNumberOfPoints() == 0:
+    sys.exit(1)  # the filter said why
 graph = junctions.GetOutput()
 
 points = vtk_to_numpy(graph.GetPoints().GetData())
@@ -31,8 +39,5 @@ for i in np.flatnonzero(kind == 2):
 print(f"{(kind == 0).sum()} end points, {(arc_type == 0).sum()} linear and "
       f"{(arc_type == 1).sum()} parabolic arcs")
 
-if len(sys.argv) > 1:
-    writer = vtkXMLPolyDataWriter()
-    writer.SetInputData(graph)
-    writer.SetFileName(sys.argv[1])
-    writer.Write()
+if out:
+    write(graph, out, BALLS)

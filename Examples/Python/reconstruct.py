@@ -3,8 +3,9 @@
 
 Usage (from the build tree):
   PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 Examples/Python/reconstruct.py \\
-      [MESH.ply|.obj|.stl|.off|.vtp|.vtk] [OUT.stl]
-Without a mesh it uses the built-in demo shape. Prints the distance between the
+      [MESH.ply|.obj|.stl|.off|.vtp|.vtk] [OUT.vtp|.vtk|.stl|.ply|.obj]
+Without a mesh it uses the built-in demo shape; OUT is written in the format its
+extension names. Prints the distance between the
 reconstruction and the original in both directions (from the vertices, and from points
 spread over the surfaces by area), relative to the original's bounding-box diagonal.
 """
@@ -13,14 +14,12 @@ import sys
 import numpy as np
 
 import medialaxis
+from example_io import SURFACE, check_output, open_input, write
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOGeometry import vtkSTLWriter
 
-if len(sys.argv) > 1:
-    source = medialaxis.vtkMedialFileReader()
-    source.SetFileName(sys.argv[1])
-else:
-    source = medialaxis.vtkMedialShapeSource()
+out = sys.argv[2] if len(sys.argv) > 2 else None
+check_output(out, SURFACE)
+source = open_input(sys.argv[1] if len(sys.argv) > 1 else None, medialaxis.vtkMedialShapeSource())
 
 sampler = medialaxis.vtkMedialAxisSampler()
 sampler.SetInputConnection(source.GetOutputPort())
@@ -47,8 +46,5 @@ print(f"original to reconstruction: max {100 * error.GetVertexMaxError()[to_rebu
       f"mean {100 * error.GetVertexMeanError()[to_rebuilt]:.4f}% "
       f"(by area: max {100 * error.GetAreaMaxError()[to_rebuilt]:.3f}%)")
 
-if len(sys.argv) > 2:
-    writer = vtkSTLWriter()
-    writer.SetInputData(rebuilt)
-    writer.SetFileName(sys.argv[2])
-    writer.Write()
+if out:
+    write(rebuilt, out, SURFACE)

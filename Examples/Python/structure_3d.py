@@ -3,20 +3,25 @@
 and the exact seam points and junction vertices between them.
 
 Usage (from the build tree):
-  PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 Examples/Python/structure_3d.py [OUT.vtp]
-Prints the balls per MedialPointType, then every junction vertex with its radius and
-governor count. OUT.vtp gets the exact seam points and junction vertices.
+  PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 Examples/Python/structure_3d.py \\
+      [MESH.vtp|.vtk|.ply|.stl|.obj|.off] [OUT.vtp|.vtk|.ply|.ma|.csv]
+Without a mesh it uses a 3 x 2 x 1 box. Prints the balls per MedialPointType, then
+every junction vertex with its radius and governor count. OUT gets the exact seam
+points and junction vertices, in the format its extension names.
 """
 import sys
 
 import numpy as np
 
 import medialaxis
+from example_io import BALLS, check_output, open_input, write
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
+out = sys.argv[2] if len(sys.argv) > 2 else None
+check_output(out, BALLS)
 box = medialaxis.vtkMedialShapeSource()
 box.SetShapeToBox()  # 3 x 2 x 1, centred at the origin
+box = open_input(sys.argv[1] if len(sys.argv) > 1 else None, box)
 sampler = medialaxis.vtkMedialAxisSampler()
 sampler.SetInputConnection(box.GetOutputPort())
 sampler.SetNumberOfSamples(3000)
@@ -42,8 +47,5 @@ for i in order[exact_kind[order] == 3]:
     x, y, z = points[i] + 0.0  # no negative zeros
     print(f"junction ({x:+.6f}, {y:+.6f}, {z:+.6f})  radius {radius[i]:.6f}  governors {governors[i]}")
 
-if len(sys.argv) > 1:
-    writer = vtkXMLPolyDataWriter()
-    writer.SetInputData(exact)
-    writer.SetFileName(sys.argv[1])
-    writer.Write()
+if out:
+    write(exact, out, BALLS)

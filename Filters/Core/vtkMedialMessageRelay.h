@@ -8,11 +8,13 @@
  * of the outer object, or the output window, reads the inner object's words, and the
  * outer object fails in its own name. Errors are counted. Mute() swallows (and counts)
  * an object's errors that only repeat another's, such as an executive's "returned
- * failure for request". Header only; not installed.
+ * failure for request". RelayProgress() reports an inner algorithm's progress as
+ * the outer algorithm's, mapped into a share of its range. Header only; not installed.
  */
 #ifndef vtkMedialMessageRelay_h
 #define vtkMedialMessageRelay_h
 
+#include "vtkAlgorithm.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkNew.h"
@@ -38,6 +40,15 @@ public:
   {
     inner->AddObserver(vtkCommand::ErrorEvent, this);
     inner->AddObserver(vtkCommand::WarningEvent, this);
+  }
+
+  /// Reports `inner`'s progress p as the outer algorithm's start + share * p (Outer
+  /// must then be a vtkAlgorithm).
+  void RelayProgress(vtkAlgorithm* inner, double start = 0.0, double share = 1.0)
+  {
+    this->ProgressStart = start;
+    this->ProgressShare = share;
+    inner->AddObserver(vtkCommand::ProgressEvent, this->Progress);
   }
 
   /// Counts `source`'s errors without reporting them.
@@ -72,11 +83,22 @@ protected:
     this->Muted->SetClientData(this);
     this->Muted->SetCallback(
       [](vtkObject*, unsigned long, void* client, void*) { ++static_cast<vtkMedialMessageRelay*>(client)->Errors; });
+    this->Progress->SetClientData(this);
+    this->Progress->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
+      auto* self = static_cast<vtkMedialMessageRelay*>(client);
+      if (auto* outer = vtkAlgorithm::SafeDownCast(self->Outer))
+      {
+        outer->UpdateProgress(self->ProgressStart + self->ProgressShare * *static_cast<double*>(data));
+      }
+    });
   }
   ~vtkMedialMessageRelay() override = default;
 
 private:
   vtkNew<vtkCallbackCommand> Muted;
+  vtkNew<vtkCallbackCommand> Progress;
+  double ProgressStart = 0.0;
+  double ProgressShare = 1.0;
 };
 
 #endif

@@ -88,11 +88,14 @@ bool vtkMedialPolygon::Build(vtkPolyData* input, std::string& error)
   this->Points.clear();
   this->Edges.clear();
   this->LoopEdges.clear();
+  this->LoopPolygons.clear();
+  this->PolygonDiagonals.clear();
+  this->NumberOfPolygons = 0;
   LoopSet set;
   // The passes of the class comment, in order; each one stops at the first problem.
   return this->MergePoints(input, set, error) && this->ReadLoops(input, set, error) &&
     this->ChainOpenPolylines(set, error) && this->FitFrame(set, error) && this->ProjectLoops(set, error) &&
-    this->CleanLoops(set, error) && this->OrientLoops(set, error) && this->CheckNesting(error);
+    this->CleanLoops(set, error) && this->OrientLoops(set, error) && this->MeasurePolygons();
 }
 
 // 1. Merges coincident points; keeps the 3D coordinates of the canonical points.
@@ -509,48 +512,59 @@ bool vtkMedialPolygon::CleanLoops(LoopSet& set, std::string& error)
   return true;
 }
 
-// 5. Orientation: the loop of largest area is the outer boundary, made counter-
-// clockwise, the holes clockwise; then the edges, vertex kinds and the grid, and the
-// check that no two edges touch.
+// 5. Nesting and orientation: a loop inside an even number of others is an outer
+// boundary, made counter-clockwise; inside an odd number, a hole of the smallest loop
+// around it, made clockwise. Each outer boundary with its holes is one polygon. Then
+// the edges, vertex kinds and the grid, and the check that no two edges touch.
 bool vtkMedialPolygon::OrientLoops(LoopSet& set, std::string& error)
 {
   const auto& loops = set.Loops;
   const auto& pts2 = set.Points2D;
   std::vector<double> areas;
-  int outer = 0;
+  for (const auto& l : loops)
+  {
+    areas.push_back(SignedArea(pts2, l));
+  }
+  std::vector<int> parent, depth;
+  NestLoops(set, areas, parent, depth);
+  // Polygons by decreasing outer area (input order on ties); in each, the outer loop
+  // first, then its holes in input order: deterministic ids.
+  std::vector<int> outers;
   for (size_t i = 0; i < loops.size(); ++i)
   {
-    areas.push_back(SignedArea(pts2, loops[i]));
-    if (std::abs(areas[i]) > std::abs(areas[outer]))
+    if (depth[i] % 2 == 0)
     {
-      outer = static_cast<int>(i);
+      outers.push_back(static_cast<int>(i));
     }
   }
-  // Vertices: one per loop corner (a point shared by two loops is a touch and rejected below).
-  std::vector<std::vector<int>> ordered(loops.size());
-  for (size_t i = 0; i < loops.size(); ++i)
+  std::stable_sort(outers.begin(), outers.end(),
+    [&](int a, int b) { return std::abs(areas[a]) > std::abs(areas[b]); });
+  std::vector<int> order;
+  this->LoopPolygons.clear();
+  for (size_t p = 0; p < outers.size(); ++p)
   {
-    ordered[i] = loops[i];
-    const bool ccw = areas[i] > 0.0;
-    if ((static_cast<int>(i) == outer) != ccw)
+    order.push_back(outers[p]);
+    for (size_t i = 0; i < loops.size(); ++i)
     {
-      std::reverse(ordered[i].begin(), ordered[i].end());
+      if (parent[i] == outers[p] && depth[i] % 2 == 1)
+      {
+        order.push_back(static_cast<int>(i));
+      }
     }
+    this->LoopPolygons.resize(order.size(), static_cast<int>(p));
   }
-  // Outer first, then holes in input order: deterministic ids.
-  std::vector<int> order = { outer };
-  for (size_t i = 0; i < loops.size(); ++i)
-  {
-    if (static_cast<int>(i) != outer)
-    {
-      order.push_back(static_cast<int>(i));
-    }
-  }
+  this->NumberOfPolygons = static_cast<int>(outers.size());
   this->NumberOfLoops = static_cast<int>(loops.size());
   this->LoopEdges.assign(loops.size(), {});
   for (int li = 0; li < this->NumberOfLoops; ++li)
   {
-    this->AddLoop(pts2, ordered[order[li]], li, set.LoopCells[order[li]]);
+    const int i = order[li];
+    std::vector<int> ordered = loops[i];
+    if ((depth[i] % 2 == 0) != (areas[i] > 0.0))
+    {
+      std::reverse(ordered.begin(), ordered.end());
+    }
+    this->AddLoop(pts2, ordered, li, set.LoopCells[i]);
   }
   this->ClassifyVertices();
   this->BuildGrid();
@@ -558,12 +572,54 @@ bool vtkMedialPolygon::OrientLoops(LoopSet& set, std::string& error)
   {
     return false;
   }
-  if (!(std::abs(areas[outer]) > 0.0))
+  if (!(std::abs(areas[outers.front()]) > 0.0))
   {
     error = "loops enclose no area";
     return false;
   }
   return true;
+}
+
+// The loop directly around each loop (-1 for none) and how many loops surround it.
+// Loops do not cross (CheckTouchingEdges rejects them otherwise), so a loop is inside
+// another when one of its vertices is; only larger loops whose box holds it are tried.
+void vtkMedialPolygon::NestLoops(
+  const LoopSet& set, const std::vector<double>& areas, std::vector<int>& parent, std::vector<int>& depth)
+{
+  const auto& loops = set.Loops;
+  const auto& pts2 = set.Points2D;
+  const size_t n = loops.size();
+  std::vector<std::array<double, 4>> boxes(n, { HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL });
+  for (size_t i = 0; i < n; ++i)
+  {
+    for (int v : loops[i])
+    {
+      boxes[i][0] = std::min(boxes[i][0], pts2[2 * v]);
+      boxes[i][1] = std::max(boxes[i][1], pts2[2 * v]);
+      boxes[i][2] = std::min(boxes[i][2], pts2[2 * v + 1]);
+      boxes[i][3] = std::max(boxes[i][3], pts2[2 * v + 1]);
+    }
+  }
+  parent.assign(n, -1);
+  depth.assign(n, 0);
+  for (size_t i = 0; i < n; ++i)
+  {
+    const double* p = &pts2[2 * loops[i][0]];
+    for (size_t j = 0; j < n; ++j)
+    {
+      const auto& b = boxes[j];
+      if (j == i || std::abs(areas[j]) <= std::abs(areas[i]) || p[0] < b[0] || p[0] > b[1] || p[1] < b[2] ||
+        p[1] > b[3] || !InsideLoop(pts2, loops[j], p))
+      {
+        continue;
+      }
+      ++depth[i];
+      if (parent[i] < 0 || std::abs(areas[j]) < std::abs(areas[parent[i]]))
+      {
+        parent[i] = static_cast<int>(j);
+      }
+    }
+  }
 }
 
 // Appends loop `li` (vertices in boundary order, interior on the left) and its edges.
@@ -659,33 +715,24 @@ bool vtkMedialPolygon::CheckTouchingEdges(std::string& error) const
   return true;
 }
 
-// 6. Every hole inside the outer loop and in no other hole.
-bool vtkMedialPolygon::CheckNesting(std::string& error) const
+// 6. The diagonal of each polygon's box (its outer loop's), for per-polygon densities.
+bool vtkMedialPolygon::MeasurePolygons()
 {
-  auto loopVertices = [this](int loop) {
-    std::vector<int> ids;
-    for (int e : this->LoopEdges[loop])
-    {
-      ids.push_back(this->Edges[e].A);
-    }
-    return ids;
-  };
-  for (int li = 1; li < this->NumberOfLoops; ++li)
+  this->PolygonDiagonals.assign(static_cast<size_t>(this->NumberOfPolygons), 0.0);
+  for (int li = 0; li < this->NumberOfLoops; ++li)
   {
-    const double* p = this->GetPoint(this->Edges[this->LoopEdges[li][0]].A);
-    if (!InsideLoop(this->Points, loopVertices(0), p))
+    double lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL };
+    for (int e : this->LoopEdges[li])
     {
-      error = "a loop lies outside the outer boundary (only one outer boundary is supported)";
-      return false;
-    }
-    for (int lj = 1; lj < this->NumberOfLoops; ++lj)
-    {
-      if (lj != li && InsideLoop(this->Points, loopVertices(lj), p))
+      const double* p = this->GetPoint(this->Edges[e].A);
+      for (int k = 0; k < 2; ++k)
       {
-        error = "a loop lies inside a hole (nested islands are not supported)";
-        return false;
+        lo[k] = std::min(lo[k], p[k]);
+        hi[k] = std::max(hi[k], p[k]);
       }
     }
+    double& diagonal = this->PolygonDiagonals[this->LoopPolygons[li]];
+    diagonal = std::max(diagonal, std::hypot(hi[0] - lo[0], hi[1] - lo[1]));
   }
   return true;
 }

@@ -20,13 +20,21 @@
  *     of it;
  *  4. CleanLoops: repeated points and straight (180 degree) vertices are dropped;
  *     a loop needs 3 distinct vertices;
- *  5. OrientLoops: the loop of largest area is the outer boundary, made counter-
- *     clockwise, the holes clockwise, so the interior is always on the left of an
- *     edge whatever the input point order; then the edges, the vertex kinds and the
- *     grid, and loops must not cross or touch themselves or each other
- *     (CheckTouchingEdges: the grid, double-precision orientation tests);
- *  6. CheckNesting: every other loop lies inside the outer one and not inside
- *     another hole.
+ *  5. OrientLoops, NestLoops: a loop inside an even number of loops is an outer
+ *     boundary, made counter-clockwise; inside an odd number, a hole of the
+ *     smallest loop around it, made clockwise; so the interior is always on the
+ *     left of an edge whatever the input point order. Each outer boundary with the
+ *     holes directly inside it is one polygon (islands inside holes are polygons
+ *     again); polygons are numbered by decreasing area, and their loops follow
+ *     one another (outer first, then its holes in input order). Then the edges,
+ *     the vertex kinds and the grid, and loops must not cross or touch themselves
+ *     or each other (CheckTouchingEdges: the grid, double-precision orientation
+ *     tests);
+ *  6. MeasurePolygons: the diagonal of each polygon's box.
+ *
+ * Several polygons need no special care in the queries: a disk centred inside one
+ * polygon and empty of its boundary lies inside it, so the polygons' medial axes
+ * never meet.
  *
  * Queries (const, thread-safe after Build) run on a uniform grid over the edges
  * and decide in double precision: ray cast, bounded closest point, contains-ball,
@@ -84,6 +92,12 @@ public:
   int GetIncomingEdge(int v) const { return this->Incoming[v]; }
   int GetOutgoingEdge(int v) const { return this->Outgoing[v]; }
   int GetNumberOfLoops() const { return this->NumberOfLoops; }
+  /// Polygons: outer loops with their holes, numbered by decreasing area.
+  int GetNumberOfPolygons() const { return this->NumberOfPolygons; }
+  /// The polygon a loop bounds (its own as an outer loop, its outer loop's as a hole).
+  int GetLoopPolygon(int loop) const { return this->LoopPolygons[loop]; }
+  /// The diagonal of the bounding box of a polygon (in the plane).
+  double GetPolygonDiagonal(int polygon) const { return this->PolygonDiagonals[polygon]; }
   /// Edges of a loop in boundary order (interior on the left).
   const std::vector<int>& GetLoopEdges(int loop) const { return this->LoopEdges[loop]; }
   double GetDiagonal() const { return this->Diagonal; }
@@ -122,10 +136,12 @@ private:
   bool ProjectLoops(LoopSet& set, std::string& error) const;
   static bool CleanLoops(LoopSet& set, std::string& error);
   bool OrientLoops(LoopSet& set, std::string& error);
+  static void NestLoops(
+    const LoopSet& set, const std::vector<double>& areas, std::vector<int>& parent, std::vector<int>& depth);
+  bool MeasurePolygons();
   void AddLoop(const std::vector<double>& pts2, const std::vector<int>& loop, int index, vtkIdType cell);
   void ClassifyVertices();
   bool CheckTouchingEdges(std::string& error) const;
-  bool CheckNesting(std::string& error) const;
 
   void BuildGrid();
   bool EdgesTouch(int e, int f) const;
@@ -137,6 +153,9 @@ private:
   std::vector<int> Kinds, Incoming, Outgoing;
   std::vector<std::vector<int>> LoopEdges;
   int NumberOfLoops = 0;
+  int NumberOfPolygons = 0;
+  std::vector<int> LoopPolygons;
+  std::vector<double> PolygonDiagonals;
   double Diagonal = 0.0;
   double Frame[4][3] = {}; // origin, U, V, normal
 

@@ -3,6 +3,7 @@
 #include "vtkMedialArrayNames.h"
 
 #include "vtkMedialPolygon.h"
+#include "vtkMedialProgress.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -813,9 +814,11 @@ struct Node
   double Radius;
   int Type;
   int Count;
+  int Polygon;
 };
 
-// Merges nodes closer than a tolerance (a junction is found from every side).
+// Merges nodes of one polygon closer than a tolerance (a junction is found from
+// every side).
 class NodeSet
 {
 public:
@@ -823,7 +826,7 @@ public:
     : Tol(tol)
   {
   }
-  int Add(const Event& ev)
+  int Add(const Event& ev, int polygon)
   {
     const long long ix = static_cast<long long>(std::floor(ev.Centre[0] / this->Tol));
     const long long iy = static_cast<long long>(std::floor(ev.Centre[1] / this->Tol));
@@ -842,7 +845,7 @@ public:
         for (int id : it->second)
         {
           Node& n = this->Nodes[id];
-          if (std::hypot(n.Centre[0] - ev.Centre[0], n.Centre[1] - ev.Centre[1]) <= this->Tol)
+          if (n.Polygon == polygon && std::hypot(n.Centre[0] - ev.Centre[0], n.Centre[1] - ev.Centre[1]) <= this->Tol)
           {
             n.Count = std::max(n.Count, ev.Count);
             n.Type = n.Type == vtkMedialJunctionFilter::END_POINT ? n.Type : std::max(n.Type, type);
@@ -852,7 +855,7 @@ public:
       }
     }
     const int id = static_cast<int>(this->Nodes.size());
-    this->Nodes.push_back({ { ev.Centre[0], ev.Centre[1] }, ev.Radius, type, ev.IsEnd ? 2 : ev.Count });
+    this->Nodes.push_back({ { ev.Centre[0], ev.Centre[1] }, ev.Radius, type, ev.IsEnd ? 2 : ev.Count, polygon });
     this->Cells[Key(ix, iy)].push_back(id);
     return id;
   }
@@ -864,11 +867,13 @@ private:
   std::unordered_map<long long, std::vector<int>> Cells;
 };
 
-// An arc of the graph between nodes A and B, with the governor pair that traces it.
+// An arc of the graph between nodes A and B of one polygon, with the governor pair
+// that traces it.
 struct Arc
 {
   int A, B;
   Governors Pair;
+  int Polygon;
 };
 
 // The passes of vtkMedialJunctionFilter::RequestData on one prepared polygon, in the
@@ -889,10 +894,11 @@ public:
   vtkIdType Walk(double samplesPerUnitLength, int minimumSamplesPerEdge)
   {
     const vtkMedialPolygon& poly = this->Poly;
-    const double diagonal = poly.GetDiagonal();
     this->Walks.assign(static_cast<size_t>(poly.GetNumberOfLoops()), {});
     for (int loop = 0; loop < poly.GetNumberOfLoops(); ++loop)
     {
+      // Each polygon is sampled as if it were alone: by its own diagonal.
+      const double diagonal = poly.GetPolygonDiagonal(poly.GetLoopPolygon(loop));
       auto& walk = this->Walks[loop];
       for (int e : poly.GetLoopEdges(loop))
       {
@@ -926,7 +932,7 @@ public:
   bool SolveSamples()
   {
     const vtkIdType count = static_cast<vtkIdType>(this->ToSolve.size());
-    return this->InBlocks(count, 0.0, 0.5, [this](vtkIdType i) {
+    return this->InBlocks(count, [this](vtkIdType i) {
       Sample& s = this->Walks[this->ToSolve[i].first][this->ToSolve[i].second];
       s = this->S.SampleAt(s.Before);
     });
@@ -947,7 +953,7 @@ public:
     this->Found.assign(intervals.size(), {});
     std::vector<int> failed(intervals.size(), 0);
     const bool done =
-      this->InBlocks(static_cast<vtkIdType>(intervals.size()), 0.5, 0.4, [&](vtkIdType i) {
+      this->InBlocks(static_cast<vtkIdType>(intervals.size()), [&](vtkIdType i) {
         const auto& walk = this->Walks[intervals[i].first];
         const size_t k = intervals[i].second;
         this->S.FindEvents(walk[k], walk[(k + 1) % walk.size()], 0, this->Found[i], failed[i]);
@@ -997,7 +1003,7 @@ public:
         if (items[i].IsEvent)
         {
           eventAt.push_back(i);
-          nodeOf.push_back(nodes.Add(items[i].Ev));
+          nodeOf.push_back(nodes.Add(items[i].Ev, this->Poly.GetLoopPolygon(loop)));
         }
       }
       for (size_t j = 0; j < eventAt.size(); ++j)
@@ -1011,7 +1017,7 @@ public:
         auto key = std::make_tuple(std::min(a, b), std::max(a, b), pair);
         if (seen.emplace(key, true).second)
         {
-          arcs.push_back({ a, b, pair });
+          arcs.push_back({ a, b, pair, this->Poly.GetLoopPolygon(loop) });
         }
       }
     }
@@ -1026,10 +1032,10 @@ private:
     this->Walks[loop].push_back(s);
   }
 
-  // Runs work(i) for i in [0, count) in parallel blocks; progress goes from `start`
-  // over `share`. False when aborted.
+  // Runs work(i) for i in [0, count) in parallel blocks, reporting the fraction done
+  // (the stage's progress). False when aborted.
   template <class Work>
-  bool InBlocks(vtkIdType count, double start, double share, Work&& work) const
+  bool InBlocks(vtkIdType count, Work&& work) const
   {
     const vtkIdType block = 16384;
     for (vtkIdType begin = 0; begin < count && !this->Self->GetAbortExecute(); begin += block)
@@ -1040,7 +1046,7 @@ private:
       {
         work(i);
       }
-      this->Self->UpdateProgress(start + share * static_cast<double>(end) / static_cast<double>(count));
+      this->Self->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
     }
     return !this->Self->GetAbortExecute();
   }
@@ -1126,6 +1132,8 @@ void WriteGraph(const vtkMedialPolygon& poly, NodeSet& nodes, const std::vector<
   vtkNew<vtkCellArray> lines;
   vtkNew<vtkIntArray> arcType;
   arcType->SetName(vtkMedialArrayNames::ArcType);
+  vtkNew<vtkIntArray> polygonId;
+  polygonId->SetName(vtkMedialArrayNames::PolygonId);
   const int E = poly.GetNumberOfEdges();
   for (const Arc& arc : arcs)
   {
@@ -1159,6 +1167,7 @@ void WriteGraph(const vtkMedialPolygon& poly, NodeSet& nodes, const std::vector<
     ids.push_back(arc.B);
     lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
     arcType->InsertNextValue(parabolic ? vtkMedialJunctionFilter::PARABOLIC_ARC : vtkMedialJunctionFilter::LINEAR_ARC);
+    polygonId->InsertNextValue(arc.Polygon);
   }
   output->SetPoints(points);
   output->SetLines(lines);
@@ -1167,6 +1176,7 @@ void WriteGraph(const vtkMedialPolygon& poly, NodeSet& nodes, const std::vector<
   output->GetPointData()->AddArray(type);
   output->GetPointData()->AddArray(governors);
   output->GetCellData()->AddArray(arcType);
+  output->GetCellData()->AddArray(polygonId);
 }
 }
 
@@ -1187,7 +1197,10 @@ int vtkMedialJunctionFilter::RequestData(
   this->NumberOfEndPoints = 0;
   this->NumberOfBoundarySamples = 0;
   this->UnresolvedIntervals = 0;
+  this->NumberOfPolygons = 0;
 
+  vtkMedialStages stages(this);
+  stages.Begin("Preparing the polygon", 0.0, 0.02);
   vtkMedialPolygon poly;
   std::string error;
   if (!poly.Build(input, error))
@@ -1195,14 +1208,22 @@ int vtkMedialJunctionFilter::RequestData(
     vtkErrorMacro(<< "Cannot compute the medial graph: " << error << ".");
     return 0;
   }
+  this->NumberOfPolygons = poly.GetNumberOfPolygons();
   const Solver solver(poly, this->Tolerance);
   const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
   JunctionPasses passes(this, poly, solver, threads);
   this->NumberOfBoundarySamples = passes.Walk(this->SamplesPerUnitLength, this->MinimumSamplesPerEdge);
-  if (!passes.SolveSamples() || !passes.FindAllEvents(this->UnresolvedIntervals))
+  stages.Begin("Solving the boundary disks", 0.02, 0.5);
+  if (!passes.SolveSamples())
   {
     return 1; // aborted: leave the output empty
   }
+  stages.Begin("Finding the junctions", 0.5, 0.9);
+  if (!passes.FindAllEvents(this->UnresolvedIntervals))
+  {
+    return 1;
+  }
+  stages.Begin("Connecting the graph", 0.9, 1.0);
   NodeSet nodes(1e-8 * poly.GetDiagonal());
   std::vector<Arc> arcs;
   passes.Connect(nodes, arcs);
@@ -1229,4 +1250,5 @@ void vtkMedialJunctionFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfEndPoints: " << this->NumberOfEndPoints << "\n";
   os << indent << "NumberOfBoundarySamples: " << this->NumberOfBoundarySamples << "\n";
   os << indent << "UnresolvedIntervals: " << this->UnresolvedIntervals << "\n";
+  os << indent << "NumberOfPolygons: " << this->NumberOfPolygons << "\n";
 }

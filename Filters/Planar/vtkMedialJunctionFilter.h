@@ -1,16 +1,19 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class vtkMedialJunctionFilter
- * @brief Medial graph of a planar polygon (with holes): junctions, end points and
- * the linear and parabolic arcs between them.
+ * @brief Medial graph of planar polygons (with holes, several outer boundaries,
+ * islands in holes): junctions, end points and the linear and parabolic arcs
+ * between them, one graph per polygon.
  *
  * Algorithm:
  *  1. The input loops are prepared by vtkMedialPolygon (plane frame, validation,
- *     nesting, interior on the left of every edge). Governors are the edges and
- *     the reflex vertices.
+ *     nesting, interior on the left of every edge): each outer loop with the holes
+ *     directly inside it is one polygon, and an island inside a hole is a polygon
+ *     again. Governors are the edges and the reflex vertices.
  *  2. The boundary is walked in order. Every edge gets
  *     max(MinimumSamplesPerEdge, SamplesPerUnitLength * length / diagonal)
- *     samples; every reflex vertex gets samples over its cone of inward directions;
+ *     samples, the diagonal being its polygon's (so each polygon's graph is the
+ *     one it would have alone); every reflex vertex gets samples over its cone of inward directions;
  *     every convex vertex is an end point (radius 0). For each sample the maximal
  *     inscribed disk tangent there is computed exactly (ray for an upper bound,
  *     then closest blockers until none is left) and its governor set recorded:
@@ -29,16 +32,19 @@
  *     (ends, junctions, transitions) are joined by one arc, found once from each
  *     side and emitted once.
  *
- * Input: vtkPolyData with polygon cells or closed polylines in any plane, one outer
- * boundary and any number of holes (see vtkMedialPolygon for what is rejected).
+ * Input: vtkPolyData with polygon cells or closed polylines in any plane: any
+ * number of outer boundaries, holes and islands, none touching another (see
+ * vtkMedialPolygon for what is rejected).
  *
  * Output (in the input's plane): points = junctions, end points, transitions and
  * the inner points of parabolic arcs; lines = one cell per arc between events
  * (2 points when linear, ArcResolution + 2 when parabolic). Point data Radius
  * (double), MedialPointType (int: 0 end, 1 regular/arc sample, 2 junction; the 3D
  * codes of vtkMedialBallClassifier are 0 rim, 1 sheet, 2 seam, 3 junction),
- * GovernorCount (int); cell data ArcType (int: 0 linear, 1 parabolic). Bisectors
- * of two reflex vertices are straight and reported as linear.
+ * GovernorCount (int); cell data ArcType (int: 0 linear, 1 parabolic) and
+ * PolygonId (int: the polygon the arc lies in, 0 for the largest; the arcs of one
+ * polygon follow one another). Bisectors of two reflex vertices are straight and
+ * reported as linear.
  *
  * Output is identical for any thread count.
  *
@@ -110,6 +116,8 @@ public:
   /// not the sampler's NumberOfSamples, which is an input).
   vtkGetMacro(NumberOfBoundarySamples, vtkIdType);
   vtkGetMacro(UnresolvedIntervals, vtkIdType);
+  /// Polygons (outer boundaries with their holes) of the input.
+  vtkGetMacro(NumberOfPolygons, int);
   ///@}
 
 protected:
@@ -129,6 +137,7 @@ protected:
   vtkIdType NumberOfEndPoints = 0;
   vtkIdType NumberOfBoundarySamples = 0;
   vtkIdType UnresolvedIntervals = 0;
+  int NumberOfPolygons = 0;
 
 private:
   vtkMedialJunctionFilter(const vtkMedialJunctionFilter&) = delete;

@@ -2,6 +2,7 @@
 #include "vtkMedialBallProtrusion.h"
 
 #include "vtkMedialArrayNames.h"
+#include "vtkMedialProgress.h"
 #include "vtkMedialBoundaryDistance.h"
 #include "vtkMedialPipeline.h"
 
@@ -68,6 +69,8 @@ int vtkMedialBallProtrusion::RequestData(
   }
   vtkMedialBoundaryDistance boundary;
   std::string error;
+  vtkMedialStages stages(this);
+  stages.Begin("Building the distance queries", 0.0, 0.3);
   if (!boundary.Build(
         surface, vtkMedialBoundaryDistance::IsPlanar(surface), vtkMedialBoundaryDistance::OWN_BVH, error))
   {
@@ -75,6 +78,7 @@ int vtkMedialBallProtrusion::RequestData(
     return 0;
   }
   const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  stages.Begin("Measuring the balls", 0.3, 1.0);
   const std::vector<double> distance = boundary.Distances(balls->GetPoints(), threads);
   vtkNew<vtkDoubleArray> protrusion;
   protrusion->SetName(vtkMedialArrayNames::Protrusion);

@@ -2,6 +2,7 @@
 #include "vtkMedialBallUnion.h"
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialEnvelope.h"
+#include "vtkMedialProgress.h"
 #include "vtkMedialPipeline.h"
 #include "vtkMedialPlane.h"
 #include "vtkMedialUniformGrid.h"
@@ -945,7 +946,7 @@ bool FillField(vtkMedialBallUnion* self, const std::vector<Ball>& balls, const G
         filler.Refine(gathered, first, last, 0, levels);
       }
     }
-    self->UpdateProgress(0.9 * (sz + 1) / bins.GetSupers(2));
+    self->UpdateProgress(static_cast<double>(sz + 1) / bins.GetSupers(2));
   }
   return !self->GetAbortExecute();
 }
@@ -1216,6 +1217,8 @@ int vtkMedialBallUnion::RequestData(
   };
 
   // 1. The balls.
+  vtkMedialStages stages(this);
+  stages.Begin("Gathering the balls", 0.0, 0.02);
   if (!input || input->GetNumberOfPoints() == 0)
   {
     return fail("the input has no points");
@@ -1293,6 +1296,7 @@ int vtkMedialBallUnion::RequestData(
   field->SetName(vtkMedialArrayNames::Distance);
   field->SetNumberOfTuples(static_cast<vtkIdType>(grid.Dims[0]) * grid.Dims[1] * grid.Dims[2]);
   const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  stages.Begin("Filling the distance field", 0.02, 0.9);
   if (!FillField(this, envelope ? envelope->Bounds : balls, grid, band, slack, threads,
         field->GetPointer(0), envelope.get()))
   {
@@ -1301,6 +1305,7 @@ int vtkMedialBallUnion::RequestData(
 
   // 5. Outputs: the field image, and its zero level contoured on an axis-aligned
   // copy in the grid's frame.
+  stages.Begin(dimension == 3 ? "Contouring the surface" : "Contouring the curves", 0.9, 1.0);
   WriteFieldImage(image, imageInfo, grid, dimension, frame, field);
   vtkNew<vtkImageData> local;
   local->SetDimensions(grid.Dims);

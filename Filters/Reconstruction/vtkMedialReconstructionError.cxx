@@ -2,6 +2,7 @@
 #include "vtkMedialReconstructionError.h"
 
 #include "vtkMedialArrayNames.h"
+#include "vtkMedialProgress.h"
 #include "vtkMedialBoundaryDistance.h"
 #include "vtkMedialPipeline.h"
 
@@ -121,6 +122,8 @@ int vtkMedialReconstructionError::RequestData(
                                                           : vtkMedialBoundaryDistance::OWN_BVH;
   vtkMedialBoundaryDistance toOriginal, toReconstruction;
   std::string error;
+  vtkMedialStages stages(this);
+  stages.Begin("Building the distance queries", 0.0, 0.2);
   if (!toOriginal.Build(original, curves, engine, error))
   {
     vtkErrorMacro("Cannot measure the reconstruction error: the original: " << error << ".");
@@ -131,7 +134,7 @@ int vtkMedialReconstructionError::RequestData(
     vtkErrorMacro("Cannot measure the reconstruction error: the reconstruction: " << error << ".");
     return 0;
   }
-  this->UpdateProgress(0.2);
+  stages.Begin("Measuring from the vertices", 0.2, 0.5);
   const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
   const double diagonal = original->GetLength();
 
@@ -139,7 +142,7 @@ int vtkMedialReconstructionError::RequestData(
   const std::vector<double> reconstructionVertices = toOriginal.Distances(reconstruction->GetPoints(), threads);
   const std::vector<double> originalVertices = toReconstruction.Distances(original->GetPoints(), threads);
   const Summary vertex[2] = { Summarize(reconstructionVertices, diagonal), Summarize(originalVertices, diagonal) };
-  this->UpdateProgress(0.5);
+  stages.Begin("Measuring from area samples", 0.5, 1.0);
   if (this->GetAbortExecute())
   {
     return 1;
@@ -151,7 +154,7 @@ int vtkMedialReconstructionError::RequestData(
   {
     area[RECONSTRUCTION_TO_ORIGINAL] = Summarize(toOriginal.Distances(
       toReconstruction.SamplePoints(this->NumberOfAreaSamples, this->RandomSeed, threads), threads), diagonal);
-    this->UpdateProgress(0.75);
+    this->UpdateProgress(0.5);
     area[ORIGINAL_TO_RECONSTRUCTION] = Summarize(toReconstruction.Distances(
       toOriginal.SamplePoints(this->NumberOfAreaSamples, this->RandomSeed, threads), threads), diagonal);
   }

@@ -8,6 +8,7 @@
 #include "vtkMedialIterativeSampling.h"
 #include "vtkMedialPlane.h"
 #include "vtkMedialPolygon.h"
+#include "vtkMedialProgress.h"
 #include "vtkMedialRandom.h"
 #include "vtkMedialSampleRecord.h"
 #include "vtkMedialSurfaceQuery.h"
@@ -118,6 +119,8 @@ int vtkMedialAxisSampler::RequestData(
     ? std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
     : 1;
   vtkInternals passes(this);
+  // Progress: each stage its share and its name (vtkMedialProgress.h).
+  vtkMedialStages stages(this);
 
   // Planar polygons or closed polylines: the 2D mode (vtkMedialAxisSampler2D.cxx).
   if (IsPlanarInput(input))
@@ -127,31 +130,35 @@ int vtkMedialAxisSampler::RequestData(
       vtkWarningMacro(<< "SamplingStrategy " << GetSamplingStrategyName(this->SamplingStrategy)
                       << " is for 3D surfaces; planar input is sampled at random.");
     }
-    return passes.Sample2D(input, piece, pieces, output);
+    return passes.Sample2D(input, piece, pieces, output, stages);
   }
 
   vtkMedialTriangleMesh mesh;
   vtkMedialSurfaceQuery query;
   int status = 0;
-  if (!passes.PrepareSurface(input, mesh, query, status))
+  if (!passes.PrepareSurface(input, mesh, query, status, stages))
   {
     return status;
   }
   if (this->SamplingStrategy != RANDOM)
   {
+    stages.Begin(this->SamplingStrategy == CLOSEST_NEIGHBOR ? "Sampling (closest-neighbor strategy)"
+                                                            : "Sampling (face-distance strategy)",
+      0.1, 1.0);
     return passes.SampleIterative(mesh, query, piece, output);
   }
-  return passes.SampleRandom(mesh, query, piece, pieces, output);
+  return passes.SampleRandom(mesh, query, piece, pieces, output, stages);
 }
 
 //------------------------------------------------------------------------------
-bool vtkMedialAxisSampler::vtkInternals::PrepareSurface(
-  vtkPolyData* input, vtkMedialTriangleMesh& mesh, vtkMedialSurfaceQuery& query, int& status)
+bool vtkMedialAxisSampler::vtkInternals::PrepareSurface(vtkPolyData* input, vtkMedialTriangleMesh& mesh,
+  vtkMedialSurfaceQuery& query, int& status, vtkMedialStages& stages)
 {
   vtkMedialAxisSampler* self = this->Self;
   // Preparation takes seconds on big meshes: the abort flag is polled between stages.
   auto aborted = [self]() { return self->GetAbortExecute() != 0; };
   std::string error;
+  stages.Begin("Preparing the surface", 0.0, 0.05);
   if (!mesh.Build(input, error, aborted))
   {
     status = aborted() ? 1 : 0; // aborted: leave the output empty
@@ -167,6 +174,7 @@ bool vtkMedialAxisSampler::vtkInternals::PrepareSurface(
   {
     vtkWarningWithObjectMacro(self, << warning);
   }
+  stages.Begin("Building the surface queries", 0.05, 0.1);
   if (!query.Build(&mesh, error, aborted))
   {
     status = aborted() ? 1 : 0;
@@ -199,7 +207,7 @@ void vtkMedialAxisSampler::vtkInternals::ReportAllocationFailure(vtkIdType count
 }
 
 int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh& mesh,
-  const vtkMedialSurfaceQuery& query, int piece, int pieces, vtkPolyData* output)
+  const vtkMedialSurfaceQuery& query, int piece, int pieces, vtkPolyData* output, vtkMedialStages& stages)
 {
   vtkMedialAxisSampler* self = this->Self;
   const vtkIdType total = self->NumberOfSamples;
@@ -231,12 +239,14 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh
   // enough that threads rarely wait at the block's end, short enough (about
   // 30 ms on a 1.5M-triangle mesh) that an abort is honoured at once.
   const vtkIdType block = coverage ? 1024 : 1024 * threads;
+  stages.Begin("Drawing the samples", 0.1, 0.15);
   this->DrawSamples(mesh, first, threads, triangles, results);
   if (self->GetAbortExecute())
   {
     return 1;
   }
   SortByLeaf(query, triangles, coverage ? block : 0, order);
+  stages.Begin("Sampling", 0.15, 1.0);
   const vtkIdType used =
     this->SolveBlocks(mesh, query, threads, block, triangles, order, results, coverage.get());
   if (self->GetAbortExecute())
@@ -268,12 +278,20 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh
 void vtkMedialAxisSampler::vtkInternals::DrawSamples(const vtkMedialTriangleMesh& mesh, vtkIdType first,
   int threads, std::vector<vtkIdType>& triangles, std::vector<vtkMedialSampleRecord>& results) const
 {
+  vtkMedialAxisSampler* self = this->Self;
   const vtkIdType count = static_cast<vtkIdType>(results.size());
-  const vtkTypeUInt64 seed = this->Self->RandomSeed;
-#pragma omp parallel for num_threads(threads) schedule(static)
-  for (vtkIdType i = 0; i < count; ++i)
+  const vtkTypeUInt64 seed = self->RandomSeed;
+  // Blocks: progress, and an abort honoured while millions of samples are drawn.
+  const vtkIdType block = 1 << 18;
+  for (vtkIdType begin = 0; begin < count && !self->GetAbortExecute(); begin += block)
   {
-    vtkMedialDrawSurfacePoint(mesh, seed, first + i, triangles[i], results[i].Surface);
+    const vtkIdType end = std::min(count, begin + block);
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      vtkMedialDrawSurfacePoint(mesh, seed, first + i, triangles[i], results[i].Surface);
+    }
+    self->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
   }
 }
 

@@ -7,6 +7,7 @@
 
 #include "vtkMedialGeometry.h"
 #include "vtkMedialPolygon.h"
+#include "vtkMedialProgress.h"
 #include "vtkMedialSampleRecord.h"
 #include "vtkMedialRandom.h"
 
@@ -158,11 +159,13 @@ void Solve2D(const vtkMedialPolygon& poly, int method, double tolerance, double 
 }
 }
 
-int vtkMedialAxisSampler::vtkInternals::Sample2D(vtkPolyData* input, int piece, int pieces, vtkPolyData* output)
+int vtkMedialAxisSampler::vtkInternals::Sample2D(
+  vtkPolyData* input, int piece, int pieces, vtkPolyData* output, vtkMedialStages& stages)
 {
   vtkMedialAxisSampler* self = this->Self;
   vtkMedialPolygon poly;
   std::string error;
+  stages.Begin("Preparing the polygon", 0.0, 0.05);
   if (!poly.Build(input, error))
   {
     vtkErrorWithObjectMacro(self, << "Cannot sample the medial axis: " << error << ".");
@@ -193,6 +196,7 @@ int vtkMedialAxisSampler::vtkInternals::Sample2D(vtkPolyData* input, int piece, 
     : 1.0;
   const int threads = self->NumberOfThreads > 0 ? self->NumberOfThreads : omp_get_num_procs();
   const vtkIdType block = 8192;
+  stages.Begin("Sampling", 0.05, 1.0);
   for (vtkIdType begin = 0; begin < count && !self->GetAbortExecute(); begin += block)
   {
     const vtkIdType end = std::min(count, begin + block);

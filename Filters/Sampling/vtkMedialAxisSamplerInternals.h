@@ -20,6 +20,7 @@
 #include <vector>
 
 class vtkMedialCoverage;
+class vtkMedialStages;
 struct vtkMedialIterativeResult;
 struct vtkMedialIterativeSettings;
 class vtkMedialSurfaceQuery;
@@ -35,15 +36,16 @@ public:
 
   /// The 3D surface: mesh preparation (with its warnings) and the queries. False
   /// when RequestData must return `status` (0 on error, 1 when aborted).
-  bool PrepareSurface(vtkPolyData* input, vtkMedialTriangleMesh& mesh, vtkMedialSurfaceQuery& query, int& status);
+  bool PrepareSurface(vtkPolyData* input, vtkMedialTriangleMesh& mesh, vtkMedialSurfaceQuery& query, int& status,
+    vtkMedialStages& stages);
   /// RANDOM: this piece's share of the samples, drawn, sorted by BVH leaf, solved in blocks.
   int SampleRandom(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int piece, int pieces,
-    vtkPolyData* output);
+    vtkPolyData* output, vtkMedialStages& stages);
   /// CLOSEST_NEIGHBOR and FACE_DISTANCE (vtkMedialIterativeSampling), in piece 0.
   int SampleIterative(
     const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int piece, vtkPolyData* output);
   /// The 2D mode, for planar polygons or closed polylines (vtkMedialAxisSampler2D.cxx).
-  int Sample2D(vtkPolyData* input, int piece, int pieces, vtkPolyData* output);
+  int Sample2D(vtkPolyData* input, int piece, int pieces, vtkPolyData* output, vtkMedialStages& stages);
 
   /// Refuses up front what cannot fit in this machine's memory: `count` samples of
   /// about `bytesPerSample` each. `advice` ends the error message.

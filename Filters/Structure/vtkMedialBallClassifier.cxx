@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialBallClassifier.h"
 #include "vtkMedialArrayNames.h"
+#include "vtkMedialProgress.h"
 
 #include "vtkMedialGovernors.h"
 #include "vtkMedialPipeline.h"
@@ -120,6 +121,8 @@ int vtkMedialBallClassifier::RequestData(
   auto aborted = [this]() { return this->GetAbortExecute() != 0; };
   Surface surface;
   std::string error;
+  vtkMedialStages stages(this);
+  stages.Begin("Preparing the surface and its governors", 0.0, 0.1);
   if (!surface.Mesh.Build(surfaceData, error, aborted) || !surface.Query.Build(&surface.Mesh, error, aborted) ||
     !surface.Governors.Build(surface.Mesh, surface.Query,
       { this->Tolerance, this->MinimumSeparationAngle }, error))
@@ -138,6 +141,7 @@ int vtkMedialBallClassifier::RequestData(
   }
 
   // 1. Governors of every ball.
+  stages.Begin("Classifying the balls", 0.1, this->ComputeExactPoints ? 0.5 : 1.0);
   const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
   std::vector<vtkMedialSeamSolver::Ball> records(static_cast<size_t>(n));
   const vtkIdType block = 4096;
@@ -167,7 +171,7 @@ int vtkMedialBallClassifier::RequestData(
       }
       surface.Governors.Classify(record.Centre, contactRadius, surfacePoint ? p : nullptr, record.Governors);
     }
-    this->UpdateProgress((this->ComputeExactPoints ? 0.5 : 1.0) * static_cast<double>(end) / n);
+    this->UpdateProgress(static_cast<double>(end) / n);
   }
   if (aborted())
   {
@@ -197,6 +201,7 @@ int vtkMedialBallClassifier::RequestData(
   vtkMedialSeamSolver::Result result;
   if (this->ComputeExactPoints && n > 1)
   {
+    stages.Begin("Solving seams and junctions", 0.5, 1.0);
     std::vector<double> centres(static_cast<size_t>(3 * n));
     for (vtkIdType i = 0; i < n; ++i)
     {

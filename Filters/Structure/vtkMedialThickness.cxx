@@ -4,6 +4,7 @@
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialBallSolver.h"
 #include "vtkMedialGeometry.h"
+#include "vtkMedialProgress.h"
 #include "vtkMedialSampleRecord.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
@@ -86,11 +87,11 @@ void TrianglesAroundVertices(
 
 // Runs solve(item, hint) for every (item, triangle) pair, in the tree's leaf order of
 // the triangles (neighbours touch the same nodes), in fixed groups of Chain in parallel;
-// solve returns the contact triangle to hint the next item with. Reports progress from
-// `from` over `span` between blocks; false when aborted.
+// solve returns the contact triangle to hint the next item with. Reports the stage's
+// progress (0 to 1) between blocks; false when aborted.
 template <class Solve>
 bool SolveInLeafOrder(vtkAlgorithm* self, const vtkMedialSurfaceQuery& query,
-  std::vector<std::pair<vtkIdType, vtkIdType>> items, int threads, double from, double span, Solve solve)
+  std::vector<std::pair<vtkIdType, vtkIdType>> items, int threads, Solve solve)
 {
   const std::vector<std::int32_t>& rank = query.GetLeafRanks();
   std::stable_sort(items.begin(), items.end(),
@@ -109,7 +110,7 @@ bool SolveInLeafOrder(vtkAlgorithm* self, const vtkMedialSurfaceQuery& query,
         hint = solve(items[k].first, hint);
       }
     }
-    self->UpdateProgress(from + span * static_cast<double>(end) / static_cast<double>(n));
+    self->UpdateProgress(static_cast<double>(end) / static_cast<double>(n));
     if (self->GetAbortExecute())
     {
       return false;
@@ -268,7 +269,7 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
     return Keep(best, hint, m.Radius, m.Centre);
   };
   const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
-  return SolveInLeafOrder(this, query, items, threads, 0.1, 0.6, solve);
+  return SolveInLeafOrder(this, query, items, threads, solve);
 }
 
 bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
@@ -310,7 +311,7 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
     return Keep(ball, hint, m.Radius, m.Centre);
   };
   const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
-  return SolveInLeafOrder(this, query, items, threads, 0.7, 0.3, solve);
+  return SolveInLeafOrder(this, query, items, threads, solve);
 }
 
 void vtkMedialThickness::ThinRegions(const vtkMedialTriangleMesh& mesh,
@@ -439,6 +440,9 @@ int vtkMedialThickness::RequestData(
 
   // Pass 1: the solid and its queries (the sampler's preparation).
   auto aborted = [this]() { return (this->GetAbortExecute() != 0); };
+  const bool cellData = this->ComputeCellThickness || this->ThinThreshold > 0.0;
+  vtkMedialStages stages(this);
+  stages.Begin("Preparing the surface", 0.0, 0.05);
   vtkMedialTriangleMesh mesh;
   std::string error;
   if (!mesh.Build(input, error, aborted))
@@ -454,6 +458,7 @@ int vtkMedialThickness::RequestData(
   {
     vtkWarningMacro(<< warning);
   }
+  stages.Begin("Building the surface queries", 0.05, 0.1);
   vtkMedialSurfaceQuery query;
   if (!query.Build(&mesh, error, aborted))
   {
@@ -464,23 +469,29 @@ int vtkMedialThickness::RequestData(
     vtkErrorMacro(<< "Cannot build the surface queries: " << error << ".");
     return 0;
   }
-  this->UpdateProgress(0.1);
 
   const vtkMedialBallParameters param = vtkMedialMakeBallParameters(vtkMedialBallParameters::ONE_PASS,
     1e-6, this->MinimumSeparationAngle, this->MaximumProtrusion, 100, mesh.Diagonal);
 
   // Passes 2 to 4.
+  stages.Begin("Measuring the thickness at the vertices", 0.1, cellData ? 0.65 : 1.0);
   std::vector<vtkIdType> start, around;
   TrianglesAroundVertices(mesh, start, around);
   std::vector<double> normals;
   std::vector<char> sharp;
   this->VertexNormals(mesh, start, around, normals, sharp);
   std::vector<Measure> vertices, cells;
-  const bool cellData = this->ComputeCellThickness || this->ThinThreshold > 0.0;
-  if (!this->VertexBalls(mesh, query, param, start, around, normals, sharp, vertices) ||
-    (cellData && !this->CellBalls(mesh, query, param, input->GetNumberOfCells(), cells)))
+  if (!this->VertexBalls(mesh, query, param, start, around, normals, sharp, vertices))
   {
     return 1; // aborted: leave the output empty
+  }
+  if (cellData)
+  {
+    stages.Begin("Measuring the thickness at the cells", 0.65, 1.0);
+    if (!this->CellBalls(mesh, query, param, input->GetNumberOfCells(), cells))
+    {
+      return 1;
+    }
   }
 
   output->ShallowCopy(input);

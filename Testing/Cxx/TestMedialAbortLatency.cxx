@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <string>
 #include <thread>
 
 namespace
@@ -100,11 +101,13 @@ int main()
   Watch watch;
   vtkNew<vtkCallbackCommand> progress;
   progress->SetClientData(&watch);
-  progress->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
+  progress->SetCallback([](vtkObject* caller, unsigned long, void* client, void* data) {
     auto* w = static_cast<Watch*>(client);
     const double fraction = *static_cast<double*>(data);
+    const char* stage = static_cast<vtkAlgorithm*>(caller)->GetProgressText();
     w->Fraction = fraction;
-    if (fraction > 0.0 && !w->Sampling) // the pipeline reports 0 before RequestData
+    // The sampling blocks begin with the stage "Sampling" (preparation reports its own stages).
+    if (stage && std::string(stage) == "Sampling" && !w->Sampling)
     {
       w->FirstBlock = Clock::now();
       w->Sampling = true;
@@ -131,7 +134,7 @@ int main()
 
   const double preparation = std::chrono::duration<double>(watch.FirstBlock - start).count();
   const double latency = std::chrono::duration<double>(returned - abortAt).count();
-  std::printf("preparation %.3f s, aborted at %.2f%% of the samples, Update returned %.3f s after the abort\n",
+  std::printf("preparation %.3f s, aborted at %.2f%% of its progress, Update returned %.3f s after the abort\n",
     preparation, 100.0 * fractionAtAbort, latency);
   MEDIAL_CHECK(fractionAtAbort < 0.5, "the run was too short to test an abort (%.2f done)", fractionAtAbort);
   MEDIAL_CHECK(latency <= std::max(0.5, 0.25 * preparation), "abort took %.3f s (preparation %.3f s)",

@@ -10,6 +10,7 @@ import sys
 import numpy as np
 
 import medialaxis
+from checks import check, finish
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOPLY import vtkPLYReader, vtkPLYWriter
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
@@ -20,15 +21,6 @@ import medial_axis_png  # noqa: E402
 
 baseline, temp = sys.argv[1], sys.argv[2]
 os.makedirs(temp, exist_ok=True)
-failures = []
-
-
-def check(condition, message):
-    print(("ok   " if condition else "FAIL ") + message)
-    if not condition:
-        failures.append(message)
-
-
 # A capsule written to PLY and read back by VTK's reader feeds the sampler.
 capsule = medialaxis.vtkMedialShapeSource()
 capsule.SetShapeToCapsule()
@@ -151,5 +143,4 @@ for arg in ("-V", baseline, "-T", temp):
 testing.SetRenderWindow(window)
 check(testing.RegressionTest(10) == vtkTesting.PASSED, "rendered image matches " + os.path.basename(baseline))
 
-print(f"{len(failures)} failure(s)")
-sys.exit(1 if failures else 0)
+finish()

@@ -1,13 +1,18 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Helpers shared by the reader tests: a temporary folder and file writing, cells as id
-// lists (error capture
+// Helpers shared by the reader tests: a temporary folder and file writing, a read
+// through vtkMedialFileReader, cells as id lists (error capture
 // and MEDIAL_CHECK come from Testing/Cxx/MedialTestSupport.h).
 #ifndef ReaderTestUtilities_h
 #define ReaderTestUtilities_h
 
 #include "MedialTestSupport.h"
 
+#include "vtkMedialFileReader.h"
+
 #include "vtkCellArray.h"
+#include "vtkExecutive.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -52,6 +57,24 @@ public:
 
 /// Error capture shared with the other modules' tests.
 using medialtest::EventLog;
+
+/// One run of vtkMedialFileReader: whether the update succeeded, its output, its messages.
+struct Read
+{
+  bool Ok = false;
+  vtkSmartPointer<vtkPolyData> Output;
+  EventLog Log;
+};
+
+inline void ReadFile(const std::string& path, int content, Read& result)
+{
+  vtkNew<vtkMedialFileReader> reader;
+  result.Log.Watch(reader);
+  reader->SetFileName(path.c_str());
+  reader->SetContent(content);
+  result.Ok = reader->GetExecutive()->Update() == 1;
+  result.Output = reader->GetOutput();
+}
 
 /// The cells of a cell array as lists of point ids, for exact comparisons.
 using Cells = std::vector<std::vector<vtkIdType>>;

@@ -42,23 +42,6 @@ const char* const TetraGrid = "# vtk DataFile Version 3.0\ntetra\nASCII\nDATASET
                               "POINTS 4 double\n0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n";
 const char* const Balls = "2 1 0\nv 0 0 0 1\nv 2 0 0 0.5\ne 0 1\n";
 
-struct Read
-{
-  bool Ok = false;
-  vtkSmartPointer<vtkPolyData> Output;
-  EventLog Log;
-};
-
-void ReadFile(const std::string& path, int content, Read& result)
-{
-  vtkNew<vtkMedialFileReader> reader;
-  result.Log.Watch(reader);
-  reader->SetFileName(path.c_str());
-  reader->SetContent(content);
-  result.Ok = reader->GetExecutive()->Update() == 1;
-  result.Output = reader->GetOutput();
-}
-
 vtkIdType SurfaceTriangles(vtkPolyData* pd)
 {
   vtkIdType triangles = 0;
@@ -78,7 +61,7 @@ int TestMedialFileReader(int, char*[])
   // The format table.
   MEDIAL_CHECK(vtkMedialFileReader::GetExtensions(vtkMedialFileReader::SURFACE) == ".vtp .vtk .ply .stl .obj .off",
     "surface extensions: %s", vtkMedialFileReader::GetExtensions(vtkMedialFileReader::SURFACE).c_str());
-  MEDIAL_CHECK(vtkMedialFileReader::GetExtensions(vtkMedialFileReader::BALLS) == ".ma .vtp", "ball extensions: %s",
+  MEDIAL_CHECK(vtkMedialFileReader::GetExtensions(vtkMedialFileReader::BALLS) == ".ma .ply .vtp .vtk .csv", "ball extensions: %s",
     vtkMedialFileReader::GetExtensions(vtkMedialFileReader::BALLS).c_str());
   MEDIAL_CHECK(vtkMedialFileReader::GetExtension("/a.b/Mesh.PLY") == ".ply", "extension of Mesh.PLY");
   MEDIAL_CHECK(vtkMedialFileReader::GetExtension("/a.b/mesh").empty(), "a dot in a folder is no extension");

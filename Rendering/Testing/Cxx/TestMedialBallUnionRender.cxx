@@ -29,7 +29,6 @@ int TestMedialBallUnionRender(int argc, char* argv[])
   scene->SetReconstruction(ballUnion->GetOutput());
   const double position[3] = { 3, 4, 7 }, focalPoint[3] = { 0, 0.3, 0 }, viewUp[3] = { 0, 1, 0 };
   scene->SetView(position, focalPoint, viewUp);
-  scene->SetZoom(1.1);
   scene->SetWindowSize(300, 300);
   vtkRenderWindow* window = scene->Render();
   return !vtkRegressionTestImage(window);

@@ -25,7 +25,6 @@ int TestMedialDemoRender(int argc, char* argv[])
   scene->ScalarBarVisibilityOff();
   const double position[3] = { 3, 4, 7 }, focalPoint[3] = { 0, 0.3, 0 }, viewUp[3] = { 0, 1, 0 };
   scene->SetView(position, focalPoint, viewUp);
-  scene->SetZoom(1.7);
   scene->SetWindowSize(400, 300);
   vtkRenderWindow* window = scene->Render();
   return !vtkRegressionTestImage(window);

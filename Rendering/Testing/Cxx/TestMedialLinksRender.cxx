@@ -45,7 +45,6 @@ int TestMedialLinksRender(int argc, char* argv[])
   scene->SetLineWidth(1.5);
   const double position[3] = { 2.5, 1.2, 3.0 }, focalPoint[3] = { 0, 0, 0 }, viewUp[3] = { 0, 1, 0 };
   scene->SetView(position, focalPoint, viewUp);
-  scene->SetZoom(1.15);
   scene->SetWindowSize(500, 400);
   vtkRenderWindow* window = scene->Render();
   return !vtkRegressionTestImage(window);
