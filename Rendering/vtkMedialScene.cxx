@@ -27,6 +27,7 @@
 #include "vtkRegularPolygonSource.h"
 #include "vtkRenderWindow.h"
 #include "vtkRendererCollection.h"
+#include "vtkRenderingOpenGLConfigure.h" // VTK_USE_X
 #include "vtkRenderer.h"
 #include "vtkScalarBarActor.h"
 #include "vtkSphereSource.h"
@@ -563,6 +564,15 @@ void vtkMedialScene::Frame(vtkRenderer* renderer, double aspect)
   camera->SetViewUp(up);
   camera->SetParallelScale(halfHeight / this->Zoom);
   renderer->ResetCameraClippingRange();
+}
+
+bool vtkMedialScene::NeedsDisplay()
+{
+#ifdef VTK_USE_X
+  return true;
+#else
+  return false;
+#endif
 }
 
 vtkRenderWindow* vtkMedialScene::Render()

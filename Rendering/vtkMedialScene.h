@@ -47,7 +47,8 @@
  * (0, 0: 900 x 640 in 3D, 900 x 700 in 2D, and twice as wide with a reconstruction)
  * on a white background, renders it and returns the window. WritePNG() renders and
  * saves the picture; the PNG writer's errors are reported as this object's.
- * Rendering needs an X display with Debian's VTK (xvfb-run).
+ * Rendering needs an X display with Debian's VTK (xvfb-run), not with a VTK built for
+ * OSMesa or EGL (scripts/vtk-osmesa.sh): NeedsDisplay() says which.
  *
  * @sa vtkMedialAxisSampler vtkMedialJunctionFilter vtkMedialBallUnion
  */
@@ -197,6 +198,10 @@ public:
 
   /// The window of the last Render(), or nullptr.
   vtkRenderWindow* GetRenderWindow();
+
+  /// True when this VTK renders through X, so that even offscreen rendering needs an X
+  /// display (Debian's VTK); false for a VTK built for OSMesa or EGL.
+  static bool NeedsDisplay();
 
 protected:
   vtkMedialScene();

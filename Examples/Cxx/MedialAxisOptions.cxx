@@ -419,7 +419,7 @@ void CheckOutputs(const Options& o)
   if (!o.Render.empty())
   {
     const char* display = std::getenv("DISPLAY");
-    if (!display || !*display)
+    if (vtkMedialScene::NeedsDisplay() && (!display || !*display))
     {
       Fail("--render needs an X display and none is set (DISPLAY is empty); run under "
            "xvfb-run, e.g. 'xvfb-run -a medial-axis ... --render out.png'");

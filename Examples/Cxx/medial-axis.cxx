@@ -332,7 +332,7 @@ void Program::Sample()
   sampler->SetMethod(o.Method);
   sampler->SetSamplingStrategy(o.Strategy);
   sampler->SetCoverageTolerance(o.Coverage);
-  sampler->SetRandomSeed(o.Seed);
+  sampler->SetRandomSeed(static_cast<vtkTypeInt64>(o.Seed)); // at most 9e15 (MedialAxisOptions)
   sampler->SetNumberOfThreads(o.Threads);
   sampler->SetTolerance(o.Tolerance);
   sampler->SetMinimumSeparationAngle(o.MinAngle);

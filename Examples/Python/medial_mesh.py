@@ -3,7 +3,7 @@
 
 Usage (from the build tree; the picture needs an X display, e.g. under xvfb-run):
   PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 \\
-      Examples/Python/medial_mesh.py [MESH.ply|.obj|.stl|.off|.vtp|.vtk] [OUT.ma] [OUT.png] [--by-type]
+      Examples/Python/medial_mesh.py [MESH.ply|.obj|.stl|.off|.vtp|.vtk] [OUT.ma|.vtp|.vtk|.ply|.csv] [OUT.png] [--by-type]
 Without a mesh it uses the built-in demo shape. Prints the mesh's size and topology next
 to the solid's. The picture (vtkMedialScene) shows the mesh inside the translucent
 surface, coloured by ball radius (or, with --by-type, by MedialPointType), seen along
@@ -12,7 +12,7 @@ the surface's shortest bounding-box side with the middle one up.
 import sys
 
 import medialaxis
-from medial_axis_png import surface_source  # the demo shape, or the file's reader
+from example_io import BALLS, check_output, open_input, write
 
 
 def render(surface, mesh, out_png, by_type=False):
@@ -38,10 +38,17 @@ def render(surface, mesh, out_png, by_type=False):
 
 def main(argv):
     args = [a for a in argv[1:] if a != "--by-type"]
-    mesh_path = args.pop(0) if args and not args[0].endswith((".ma", ".png")) else None
-    ma_path = next((a for a in args if a.endswith(".ma")), None)
     png_path = next((a for a in args if a.endswith(".png")), None)
-    source = surface_source(mesh_path)
+    args = [a for a in args if a != png_path]
+    # The first name is the input when a second one (the mesh) follows it, or when it
+    # is a surface format that cannot hold balls.
+    ball_formats = medialaxis.vtkMedialFileWriter.GetExtensions(BALLS).split()
+    mesh_path = None
+    if len(args) > 1 or (args and not args[0].lower().endswith(tuple(ball_formats))):
+        mesh_path = args.pop(0)
+    out_path = args[0] if args else None
+    check_output(out_path, BALLS)
+    source = open_input(mesh_path, medialaxis.vtkMedialShapeSource())
     source.Update()
     medial_mesh = medialaxis.vtkMedialMeshFilter()
     medial_mesh.SetInputConnection(source.GetOutputPort())
@@ -52,11 +59,8 @@ def main(argv):
     print(f"medial mesh: {mesh.GetNumberOfPoints()} vertices, {medial_mesh.GetNumberOfEdges()} edges, "
           f"{mesh.GetNumberOfPolys()} triangles; Euler characteristic {medial_mesh.GetEulerCharacteristic()}, "
           f"{medial_mesh.GetNumberOfComponents()} component(s); {solid}")
-    if ma_path:
-        writer = medialaxis.vtkMedialMeshWriter()
-        writer.SetInputData(mesh)
-        writer.SetFileName(ma_path)
-        writer.Write()
+    if out_path:
+        write(mesh, out_path, BALLS)
     if png_path:
         render(source.GetOutputDataObject(0), mesh, png_path, "--by-type" in argv)
     return 0

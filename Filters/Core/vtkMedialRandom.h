@@ -47,6 +47,15 @@ private:
   std::uint64_t State;
 };
 
+/// Triangle of sample `index` of stream `seed`, the one vtkMedialDrawSurfacePoint picks,
+/// without drawing the point (the sampler orders all samples by it to split them by piece).
+inline vtkIdType vtkMedialPickSampleTriangle(
+  const vtkMedialTriangleMesh& mesh, std::uint64_t seed, vtkIdType index)
+{
+  vtkMedialSampleRandom random(seed, static_cast<std::uint64_t>(index));
+  return mesh.PickTriangleByArea(random.Uniform());
+}
+
 /// Surface point of sample `index` of stream `seed`: a triangle picked by area, a uniform
 /// point on it. The vertex order of the triangle does not matter (vertices are taken in
 /// id order), so re-wound input gives the same point.
@@ -54,7 +63,7 @@ inline void vtkMedialDrawSurfacePoint(const vtkMedialTriangleMesh& mesh, std::ui
   vtkIdType index, vtkIdType& triangle, double p[3])
 {
   vtkMedialSampleRandom random(seed, static_cast<std::uint64_t>(index));
-  triangle = mesh.PickTriangleByArea(random.Uniform());
+  triangle = mesh.PickTriangleByArea(random.Uniform()); // as vtkMedialPickSampleTriangle
   vtkIdType v[3] = { mesh.GetTriangle(triangle)[0], mesh.GetTriangle(triangle)[1],
     mesh.GetTriangle(triangle)[2] };
   std::sort(v, v + 3);

@@ -2,6 +2,8 @@
 #include "vtkMedialJunctionFilter.h"
 #include "vtkMedialArrayNames.h"
 
+#include "vtkMedialPieces.h"
+#include "vtkMedialPipeline.h"
 #include "vtkMedialPolygon.h"
 #include "vtkMedialProgress.h"
 
@@ -1188,6 +1190,14 @@ int vtkMedialJunctionFilter::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
+int vtkMedialJunctionFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // The graph needs every loop of the polygon, whatever piece is requested.
+  vtkMedialRequestWholeInput(inputVector);
+  return 1;
+}
+
 int vtkMedialJunctionFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -1198,6 +1208,10 @@ int vtkMedialJunctionFilter::RequestData(
   this->NumberOfBoundarySamples = 0;
   this->UnresolvedIntervals = 0;
   this->NumberOfPolygons = 0;
+  if (!vtkMedialPieces::FromRequest(outputVector->GetInformationObject(0)).IsFirst())
+  {
+    return 1; // piece 0 holds the whole graph
+  }
 
   vtkMedialStages stages(this);
   stages.Begin("Preparing the polygon", 0.0, 0.02);

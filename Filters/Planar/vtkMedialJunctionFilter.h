@@ -48,6 +48,10 @@
  *
  * Output is identical for any thread count.
  *
+ * Pieces (see vtkMedialPieces.h): the graph needs the whole polygon, and it is cheap:
+ * the filter requests the whole input and computes the graph in piece 0; the other
+ * pieces are empty.
+ *
  * @sa vtkMedialAxisSampler
  */
 #ifndef vtkMedialJunctionFilter_h
@@ -125,6 +129,7 @@ protected:
   ~vtkMedialJunctionFilter() override = default;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double SamplesPerUnitLength = 100.0;

@@ -4,6 +4,7 @@
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialProgress.h"
 #include "vtkMedialBoundaryDistance.h"
+#include "vtkMedialPieces.h"
 #include "vtkMedialPipeline.h"
 
 #include "vtkDataArray.h"
@@ -42,6 +43,7 @@ int vtkMedialBallProtrusion::FillInputPortInformation(int, vtkInformation* info)
 int vtkMedialBallProtrusion::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
+  // Distances need entire shapes, whatever piece is requested downstream.
   vtkMedialRequestWholeInput(inputVector, 2);
   return 1;
 }
@@ -53,6 +55,11 @@ int vtkMedialBallProtrusion::RequestData(
   vtkPolyData* surface = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* balls = vtkPolyData::GetData(inputVector[1], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!vtkMedialPieces::FromRequest(outputVector->GetInformationObject(0)).IsFirst())
+  {
+    this->MaxProtrusion = 0.0;
+    return 1; // piece 0 measures every ball
+  }
   if (!surface || !balls)
   {
     vtkErrorMacro("Cannot measure the protrusion: both inputs are required (port 0 the surface, port 1 the balls).");

@@ -22,6 +22,10 @@
  * surface's bounding box, 0 when no ball crosses (also from GetMaxProtrusion()).
  * No balls is no error: the output is empty and the largest protrusion 0.
  *
+ * Pieces (see vtkMedialPieces.h): every piece asks for both whole inputs and piece 0
+ * measures every ball, so that MaxProtrusion is the largest over all of them; the
+ * other pieces are empty.
+ *
  * @sa vtkMedialReconstructionError vtkMedialAxisSampler
  */
 #ifndef vtkMedialBallProtrusion_h

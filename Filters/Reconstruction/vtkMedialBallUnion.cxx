@@ -2,6 +2,7 @@
 #include "vtkMedialBallUnion.h"
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialEnvelope.h"
+#include "vtkMedialPieces.h"
 #include "vtkMedialProgress.h"
 #include "vtkMedialPipeline.h"
 #include "vtkMedialPlane.h"
@@ -1195,10 +1196,15 @@ int vtkMedialBallUnion::RequestInformation(
 }
 
 int vtkMedialBallUnion::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  // Every ball can reach every part of the union: always ask for all of them.
-  vtkMedialRequestWholeInput(inputVector);
+  // Every ball can reach every part of the union: all of them are needed. With one
+  // process per piece each keeps its own piece and RequestData gathers them;
+  // otherwise every piece asks for all of the input (vtkMedialPieces.h).
+  if (!vtkMedialPieces::FromRequest(outputVector->GetInformationObject(0)).IsDistributed())
+  {
+    vtkMedialRequestWholeInput(inputVector);
+  }
   return 1;
 }
 
@@ -1216,6 +1222,39 @@ int vtkMedialBallUnion::RequestData(
     return 0;
   };
 
+  int association = -1;
+  vtkDataArray* radii = input && input->GetNumberOfPoints() > 0
+    ? this->GetInputArrayToProcess(0, inputVector, association)
+    : nullptr;
+  vtkInformation* arrayInfo = this->GetInputArrayInformation(0);
+  const char* name = arrayInfo->Has(vtkDataObject::FIELD_NAME()) ? arrayInfo->Get(vtkDataObject::FIELD_NAME()) : nullptr;
+
+  // 0. Pieces: process 0 builds the whole union from every process's balls; the
+  // other pieces stay empty.
+  const vtkMedialPieces pieces = vtkMedialPieces::FromRequest(outputVector->GetInformationObject(0));
+  vtkSmartPointer<vtkPolyData> gathered;
+  if (pieces.IsDistributed())
+  {
+    const std::string arrayName = name ? name : vtkMedialArrayNames::Radius;
+    std::string error;
+    gathered = pieces.GatherToFirst(input,
+      association == vtkDataObject::FIELD_ASSOCIATION_POINTS ? radii : nullptr, arrayName.c_str(), error);
+    if (!error.empty())
+    {
+      return fail(error);
+    }
+    if (gathered)
+    {
+      input = gathered;
+      radii = gathered->GetPointData()->GetArray(arrayName.c_str());
+      association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+    }
+  }
+  if (!pieces.IsFirst())
+  {
+    return 1;
+  }
+
   // 1. The balls.
   vtkMedialStages stages(this);
   stages.Begin("Gathering the balls", 0.0, 0.02);
@@ -1223,10 +1262,6 @@ int vtkMedialBallUnion::RequestData(
   {
     return fail("the input has no points");
   }
-  int association = -1;
-  vtkDataArray* radii = this->GetInputArrayToProcess(0, inputVector, association);
-  vtkInformation* arrayInfo = this->GetInputArrayInformation(0);
-  const char* name = arrayInfo->Has(vtkDataObject::FIELD_NAME()) ? arrayInfo->Get(vtkDataObject::FIELD_NAME()) : nullptr;
   std::vector<Ball> balls;
   std::string error = GatherBalls(input, radii, association, name, balls);
   if (!error.empty())

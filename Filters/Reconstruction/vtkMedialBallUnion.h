@@ -70,6 +70,13 @@
  * balls it is given: balls that cross the original surface (a sampler with a
  * MinimumSeparationAngle above 0 allows it) make the reconstruction cross it too.
  *
+ * Pieces (see vtkMedialPieces.h): every ball can reach every part of the surface.
+ * With one MPI process per piece (ParaView, pvbatch) each process keeps its piece of
+ * the balls (the sampler's share), process 0 gathers them all and builds the whole
+ * union, and the other pieces are empty; the field is a minimum over the balls, so
+ * the result does not depend on the number of processes. Without MPI every piece
+ * requests the whole input and piece 0 computes.
+ *
  * @sa vtkMedialAxisSampler vtkFlyingEdges3D vtkSignedDistance
  */
 #ifndef vtkMedialBallUnion_h

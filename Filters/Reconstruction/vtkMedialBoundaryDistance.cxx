@@ -10,13 +10,10 @@
 
 #include "vtkCellArray.h"
 #include "vtkGenericCell.h"
-#include "vtkInformation.h"
-#include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStaticCellLocator.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <omp.h>
 

@@ -4,6 +4,7 @@
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialProgress.h"
 #include "vtkMedialBoundaryDistance.h"
+#include "vtkMedialPieces.h"
 #include "vtkMedialPipeline.h"
 
 #include "vtkDoubleArray.h"
@@ -20,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -99,6 +101,7 @@ int vtkMedialReconstructionError::FillInputPortInformation(int, vtkInformation* 
 int vtkMedialReconstructionError::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
+  // Distances need entire shapes, whatever piece is requested downstream.
   vtkMedialRequestWholeInput(inputVector, 2);
   return 1;
 }
@@ -111,6 +114,10 @@ int vtkMedialReconstructionError::RequestData(
   vtkPolyData* reconstruction = vtkPolyData::GetData(inputVector[1], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* originalOutput = vtkPolyData::GetData(outputVector, 1);
+  if (!vtkMedialPieces::FromRequest(outputVector->GetInformationObject(0)).IsFirst())
+  {
+    return 1; // piece 0 measures the whole shapes
+  }
   if (!original || !reconstruction)
   {
     vtkErrorMacro("Cannot measure the reconstruction error: both inputs are required "
@@ -153,10 +160,10 @@ int vtkMedialReconstructionError::RequestData(
   if (this->NumberOfAreaSamples > 0)
   {
     area[RECONSTRUCTION_TO_ORIGINAL] = Summarize(toOriginal.Distances(
-      toReconstruction.SamplePoints(this->NumberOfAreaSamples, this->RandomSeed, threads), threads), diagonal);
+      toReconstruction.SamplePoints(this->NumberOfAreaSamples, static_cast<std::uint64_t>(this->RandomSeed), threads), threads), diagonal);
     this->UpdateProgress(0.5);
     area[ORIGINAL_TO_RECONSTRUCTION] = Summarize(toReconstruction.Distances(
-      toOriginal.SamplePoints(this->NumberOfAreaSamples, this->RandomSeed, threads), threads), diagonal);
+      toOriginal.SamplePoints(this->NumberOfAreaSamples, static_cast<std::uint64_t>(this->RandomSeed), threads), threads), diagonal);
   }
   for (int d = 0; d < 2; ++d)
   {

@@ -36,6 +36,10 @@
  *
  * An input without points or cells, or with non-finite coordinates, is an error.
  *
+ * Pieces (see vtkMedialPieces.h): distances need entire shapes, so every piece asks
+ * for both whole inputs and piece 0 measures; the other pieces are empty. Upstream
+ * filters then run whole on every process.
+ *
  * @sa vtkMedialBallUnion vtkMedialBallProtrusion
  */
 #ifndef vtkMedialReconstructionError_h
@@ -89,9 +93,10 @@ public:
   ///@}
 
   ///@{
-  /// Seed of the area samples' random streams (default 1).
-  vtkSetMacro(RandomSeed, vtkTypeUInt64);
-  vtkGetMacro(RandomSeed, vtkTypeUInt64);
+  /// Seed of the area samples' random streams (default 1). Signed, as the sampler's:
+  /// ParaView's client-server wrapping cannot pass an unsigned 64-bit argument.
+  vtkSetClampMacro(RandomSeed, vtkTypeInt64, 0, VTK_TYPE_INT64_MAX);
+  vtkGetMacro(RandomSeed, vtkTypeInt64);
   ///@}
 
   ///@{
@@ -129,7 +134,7 @@ protected:
 
   int DistanceEngine = BVH;
   vtkIdType NumberOfAreaSamples = 100000;
-  vtkTypeUInt64 RandomSeed = 1;
+  vtkTypeInt64 RandomSeed = 1;
   int NumberOfThreads = 0;
 
   double VertexMaxError[2];

@@ -2,6 +2,7 @@
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialAxisSamplerInternals.h"
 #include "vtkMedialArrayNames.h"
+#include "vtkMedialPieces.h"
 #include "vtkMedialPipeline.h"
 
 #include "vtkMedialBallSolver.h"
@@ -25,7 +26,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <omp.h>
 #include <unistd.h>
@@ -33,11 +33,22 @@
 #include <algorithm>
 #include <atomic>
 #include <memory>
+#include <numeric>
 #include <cmath>
 #include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkMedialAxisSampler);
+
+namespace
+{
+// Consecutive samples in leaf order that run on one thread, each hinted with the
+// previous one's contact. Chains start at multiples of HintChain whatever the thread
+// count and the piece, so the output depends on neither. (A hint changes the
+// visiting order only: the ball is the same up to the 1e-12 slack, which can decide
+// nearly flat contacts either way.)
+constexpr vtkIdType HintChain = 8;
+}
 
 vtkMedialAxisSampler::vtkMedialAxisSampler() = default;
 
@@ -110,14 +121,10 @@ int vtkMedialAxisSampler::RequestData(
   this->SeedSamples = 0;
   this->CoverageReached = false;
   this->MaxCoverageGap = -1.0;
-  // This piece's share of the samples; sample indices stay global so that the
-  // union of all pieces equals a single-piece run.
-  const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    : 0;
-  const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
-    ? std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
-    : 1;
+  // Pieces (vtkMedialPieces.h): RANDOM splits the samples; the iterative strategies
+  // and a coverage stop are sequential, so piece 0 runs them whole and the other
+  // pieces skip even the preparation.
+  const vtkMedialPieces pieces = vtkMedialPieces::FromRequest(outInfo);
   vtkInternals passes(this);
   // Progress: each stage its share and its name (vtkMedialProgress.h).
   vtkMedialStages stages(this);
@@ -130,7 +137,11 @@ int vtkMedialAxisSampler::RequestData(
       vtkWarningMacro(<< "SamplingStrategy " << GetSamplingStrategyName(this->SamplingStrategy)
                       << " is for 3D surfaces; planar input is sampled at random.");
     }
-    return passes.Sample2D(input, piece, pieces, output, stages);
+    return passes.Sample2D(input, pieces, output, stages);
+  }
+  if ((this->SamplingStrategy != RANDOM || this->CoverageTolerance > 0.0) && !pieces.IsFirst())
+  {
+    return 1;
   }
 
   vtkMedialTriangleMesh mesh;
@@ -145,9 +156,9 @@ int vtkMedialAxisSampler::RequestData(
     stages.Begin(this->SamplingStrategy == CLOSEST_NEIGHBOR ? "Sampling (closest-neighbor strategy)"
                                                             : "Sampling (face-distance strategy)",
       0.1, 1.0);
-    return passes.SampleIterative(mesh, query, piece, output);
+    return passes.SampleIterative(mesh, query, output);
   }
-  return passes.SampleRandom(mesh, query, piece, pieces, output, stages);
+  return passes.SampleRandom(mesh, query, pieces, output, stages);
 }
 
 //------------------------------------------------------------------------------
@@ -207,18 +218,19 @@ void vtkMedialAxisSampler::vtkInternals::ReportAllocationFailure(vtkIdType count
 }
 
 int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh& mesh,
-  const vtkMedialSurfaceQuery& query, int piece, int pieces, vtkPolyData* output, vtkMedialStages& stages)
+  const vtkMedialSurfaceQuery& query, const vtkMedialPieces& pieces, vtkPolyData* output, vtkMedialStages& stages)
 {
   vtkMedialAxisSampler* self = this->Self;
   const vtkIdType total = self->NumberOfSamples;
-  const vtkIdType first = total * piece / pieces;
-  const vtkIdType count = total * (piece + 1) / pieces - first;
-  // The per-sample results plus the output arrays.
-  const double bytesPerSample = sizeof(vtkMedialSampleRecord) + 12 * sizeof(double) + 3 * sizeof(vtkIdType);
-  std::vector<vtkMedialSampleRecord> results;
-  std::vector<vtkIdType> triangles, order;
-  if (!this->CheckMemory(count, bytesPerSample, "use fewer samples or several pieces") ||
-    !this->Allocate(count, results, triangles, order))
+  // This piece's share, at most total / pieces rounded up to whole hint chains; sample
+  // indices stay global so that the union of the pieces is a one-piece run.
+  const vtkIdType share = self->CoverageTolerance > 0.0 ? total
+    : std::min(total, ((total + HintChain - 1) / HintChain + pieces.NumberOfPieces - 1) /
+        pieces.NumberOfPieces * HintChain);
+  // The per-sample results plus the output arrays, and the leaf order of all samples.
+  const double bytesPerSample = sizeof(vtkMedialSampleRecord) + 12 * sizeof(double) + 3 * sizeof(vtkIdType) +
+    2.0 * sizeof(vtkIdType) * static_cast<double>(total) / std::max<vtkIdType>(share, 1);
+  if (!this->CheckMemory(share, bytesPerSample, "use fewer samples or several pieces"))
   {
     return 0;
   }
@@ -230,6 +242,23 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh
   {
     coverage.reset(new vtkMedialCoverage(mesh));
   }
+  std::vector<vtkIdType> index, order;
+  try
+  {
+    this->SelectSamples(mesh, query, pieces, coverage != nullptr, threads, index, order);
+  }
+  catch (const std::bad_alloc&)
+  {
+    this->ReportAllocationFailure(share);
+    return 0;
+  }
+  const vtkIdType count = static_cast<vtkIdType>(index.size());
+  std::vector<vtkMedialSampleRecord> results;
+  std::vector<vtkIdType> triangles;
+  if (!this->Allocate(count, results, triangles))
+  {
+    return 0;
+  }
   // Draw every sample first, then solve them in the BVH's leaf order: samples
   // close on the surface touch the same nodes, so the caches stay warm. Each
   // result still goes to its own index, so the order cannot change the output.
@@ -240,12 +269,15 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh
   // 30 ms on a 1.5M-triangle mesh) that an abort is honoured at once.
   const vtkIdType block = coverage ? 1024 : 1024 * threads;
   stages.Begin("Drawing the samples", 0.1, 0.15);
-  this->DrawSamples(mesh, first, threads, triangles, results);
+  this->DrawSamples(mesh, index, threads, triangles, results);
   if (self->GetAbortExecute())
   {
     return 1;
   }
-  SortByLeaf(query, triangles, coverage ? block : 0, order);
+  if (coverage)
+  {
+    SortByLeaf(query, triangles, block, order);
+  }
   stages.Begin("Sampling", 0.15, 1.0);
   const vtkIdType used =
     this->SolveBlocks(mesh, query, threads, block, triangles, order, results, coverage.get());
@@ -275,12 +307,55 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh
   return 1;
 }
 
-void vtkMedialAxisSampler::vtkInternals::DrawSamples(const vtkMedialTriangleMesh& mesh, vtkIdType first,
-  int threads, std::vector<vtkIdType>& triangles, std::vector<vtkMedialSampleRecord>& results) const
+void vtkMedialAxisSampler::vtkInternals::SelectSamples(const vtkMedialTriangleMesh& mesh,
+  const vtkMedialSurfaceQuery& query, const vtkMedialPieces& pieces, bool coverage, int threads,
+  std::vector<vtkIdType>& index, std::vector<vtkIdType>& order) const
+{
+  const vtkIdType total = this->Self->NumberOfSamples;
+  if (coverage)
+  {
+    index.resize(static_cast<size_t>(total));
+    std::iota(index.begin(), index.end(), 0);
+    order.resize(index.size()); // set by SortByLeaf once the triangles are drawn
+    return;
+  }
+  // All samples in the leaf order of their triangles (a triangle pick is cheap next to
+  // a ball); the piece takes a contiguous run of that order cut at multiples of
+  // HintChain, so every piece forms the same hint chains as a one-piece run and the
+  // union of the pieces is that run bit for bit.
+  std::vector<vtkIdType> leafOrder;
+  {
+    const std::uint64_t seed = static_cast<std::uint64_t>(this->Self->RandomSeed);
+    std::vector<vtkIdType> allTriangles(static_cast<size_t>(total));
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (vtkIdType i = 0; i < total; ++i)
+    {
+      allTriangles[i] = vtkMedialPickSampleTriangle(mesh, seed, i);
+    }
+    leafOrder.resize(allTriangles.size());
+    SortByLeaf(query, allTriangles, 0, leafOrder);
+  }
+  vtkIdType firstChain = 0;
+  vtkIdType chains = 0;
+  pieces.GetShare((total + HintChain - 1) / HintChain, firstChain, chains);
+  const vtkIdType begin = std::min(total, firstChain * HintChain);
+  const vtkIdType end = std::min(total, (firstChain + chains) * HintChain);
+  index.assign(leafOrder.begin() + begin, leafOrder.begin() + end);
+  std::sort(index.begin(), index.end()); // the output keeps sample order
+  order.resize(index.size());
+  for (vtkIdType k = begin; k < end; ++k)
+  {
+    order[k - begin] = std::lower_bound(index.begin(), index.end(), leafOrder[k]) - index.begin();
+  }
+}
+
+void vtkMedialAxisSampler::vtkInternals::DrawSamples(const vtkMedialTriangleMesh& mesh,
+  const std::vector<vtkIdType>& index, int threads, std::vector<vtkIdType>& triangles,
+  std::vector<vtkMedialSampleRecord>& results) const
 {
   vtkMedialAxisSampler* self = this->Self;
   const vtkIdType count = static_cast<vtkIdType>(results.size());
-  const vtkTypeUInt64 seed = self->RandomSeed;
+  const std::uint64_t seed = static_cast<std::uint64_t>(self->RandomSeed);
   // Blocks: progress, and an abort honoured while millions of samples are drawn.
   const vtkIdType block = 1 << 18;
   for (vtkIdType begin = 0; begin < count && !self->GetAbortExecute(); begin += block)
@@ -289,7 +364,7 @@ void vtkMedialAxisSampler::vtkInternals::DrawSamples(const vtkMedialTriangleMesh
 #pragma omp parallel for num_threads(threads) schedule(static)
     for (vtkIdType i = begin; i < end; ++i)
     {
-      vtkMedialDrawSurfacePoint(mesh, seed, first + i, triangles[i], results[i].Surface);
+      vtkMedialDrawSurfacePoint(mesh, seed, index[i], triangles[i], results[i].Surface);
     }
     self->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
   }
@@ -343,18 +418,13 @@ vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangl
   for (vtkIdType begin = 0; begin < count && !self->GetAbortExecute(); begin += block)
   {
     const vtkIdType end = std::min(count, begin + block);
-    // Groups of Chain consecutive samples (in leaf order) run on one thread, each
-    // hinted with the previous one's contact. Groups start at multiples of Chain
-    // whatever the thread count, so the output does not depend on it. (A hint
-    // changes the visiting order only: the ball is the same up to the 1e-12
-    // slack, which can decide nearly flat contacts either way.)
-    constexpr vtkIdType Chain = 8;
-    const vtkIdType groups = (end - begin + Chain - 1) / Chain;
+    // Hint chains of HintChain samples in leaf order (blocks are whole chains).
+    const vtkIdType groups = (end - begin + HintChain - 1) / HintChain;
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
     for (vtkIdType g = 0; g < groups; ++g)
     {
-      const vtkIdType first = begin + g * Chain;
-      for (vtkIdType k = first; k < std::min(end, first + Chain); ++k)
+      const vtkIdType first = begin + g * HintChain;
+      for (vtkIdType k = first; k < std::min(end, first + HintChain); ++k)
       {
         const vtkIdType i = order[k];
         const vtkIdType hint = k > first ? results[order[k - 1]].ContactTriangle : -1;
@@ -451,17 +521,16 @@ vtkMedialBallParameters vtkMedialAxisSampler::vtkInternals::MakeBallParameters(d
 }
 
 int vtkMedialAxisSampler::vtkInternals::SampleIterative(
-  const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int piece, vtkPolyData* output)
+  const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, vtkPolyData* output)
 {
   vtkMedialAxisSampler* self = this->Self;
   vtkMedialIterativeSettings settings;
   settings.Strategy = self->SamplingStrategy == CLOSEST_NEIGHBOR ? vtkMedialIterativeSettings::CLOSEST_NEIGHBOR
                                                                  : vtkMedialIterativeSettings::FACE_DISTANCE;
-  // The run is sequential by nature: piece 0 holds all of it.
-  settings.Budget = piece == 0 ? self->NumberOfSamples : 0;
+  settings.Budget = self->NumberOfSamples; // sequential: piece 0 only (RequestData)
   settings.SeedFraction = self->SeedFraction;
   settings.CoverageTolerance = self->CoverageTolerance * mesh.Diagonal;
-  settings.Seed = self->RandomSeed;
+  settings.Seed = static_cast<std::uint64_t>(self->RandomSeed);
   settings.Threads = self->NumberOfThreads > 0 ? self->NumberOfThreads : omp_get_num_procs();
   settings.Ball = this->MakeBallParameters(mesh.Diagonal);
   if (!this->CheckMemory(settings.Budget,

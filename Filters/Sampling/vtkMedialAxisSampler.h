@@ -80,8 +80,13 @@
  * step is already a single closest-edge query), and give bit-identical output;
  * BISECTION is bisection. No warning is given, since ONE_PASS is the default.
  *
- * Pieces: the filter always requests the whole input (rays need the whole surface)
- * and splits the samples among output pieces.
+ * Pieces (see vtkMedialPieces.h): every piece requests the whole input (rays need the
+ * whole surface) and, with RANDOM, solves its share of the sample indices: the union
+ * of the pieces is exactly the one-piece output, for any number of pieces (MPI ranks
+ * under pvbatch), which is what makes the sampler scale. The iterative strategies
+ * and a CoverageTolerance above 0 are sequential (each ball depends on the previous
+ * ones): piece 0 computes them whole, the other pieces are empty and skip the
+ * preparation.
  *
  * @sa vtkMedialShapeSource
  */
@@ -200,9 +205,10 @@ public:
   ///@}
 
   ///@{
-  /// Seed of the per-sample random streams (default 1).
-  vtkSetMacro(RandomSeed, vtkTypeUInt64);
-  vtkGetMacro(RandomSeed, vtkTypeUInt64);
+  /// Seed of the per-sample random streams (default 1). Signed, because ParaView's
+  /// client-server wrapping cannot pass an unsigned 64-bit argument.
+  vtkSetClampMacro(RandomSeed, vtkTypeInt64, 0, VTK_TYPE_INT64_MAX);
+  vtkGetMacro(RandomSeed, vtkTypeInt64);
   ///@}
 
   ///@{
@@ -259,7 +265,7 @@ protected:
   double Tolerance = 1e-6;
   double MinimumSeparationAngle = 45.0;
   double MaximumProtrusion = 1e-4;
-  vtkTypeUInt64 RandomSeed = 1;
+  vtkTypeInt64 RandomSeed = 1;
   int NumberOfThreads = 0;
   int MaximumIterations = 100;
   int SamplingStrategy = RANDOM;

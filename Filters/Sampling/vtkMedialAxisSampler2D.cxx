@@ -6,6 +6,7 @@
 #include "vtkMedialAxisSamplerInternals.h"
 
 #include "vtkMedialGeometry.h"
+#include "vtkMedialPieces.h"
 #include "vtkMedialPolygon.h"
 #include "vtkMedialProgress.h"
 #include "vtkMedialSampleRecord.h"
@@ -19,7 +20,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <omp.h>
 
@@ -160,7 +160,7 @@ void Solve2D(const vtkMedialPolygon& poly, int method, double tolerance, double 
 }
 
 int vtkMedialAxisSampler::vtkInternals::Sample2D(
-  vtkPolyData* input, int piece, int pieces, vtkPolyData* output, vtkMedialStages& stages)
+  vtkPolyData* input, const vtkMedialPieces& pieces, vtkPolyData* output, vtkMedialStages& stages)
 {
   vtkMedialAxisSampler* self = this->Self;
   vtkMedialPolygon poly;
@@ -174,8 +174,9 @@ int vtkMedialAxisSampler::vtkInternals::Sample2D(
   self->NumberOfTriangles = 0;
   self->BoundaryEdges = 0;
   const vtkIdType total = self->NumberOfSamples;
-  const vtkIdType first = total * piece / pieces;
-  const vtkIdType count = total * (piece + 1) / pieces - first;
+  vtkIdType first = 0;
+  vtkIdType count = total;
+  pieces.GetShare(total, first, count); // disks are solved independently: any split will do
 
   // Edges are drawn with probability proportional to their length.
   std::vector<double> cumulative(static_cast<size_t>(poly.GetNumberOfEdges()));
@@ -203,7 +204,7 @@ int vtkMedialAxisSampler::vtkInternals::Sample2D(
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 64)
     for (vtkIdType i = begin; i < end; ++i)
     {
-      vtkMedialSampleRandom random(self->RandomSeed, static_cast<std::uint64_t>(first + i));
+      vtkMedialSampleRandom random(static_cast<std::uint64_t>(self->RandomSeed), static_cast<std::uint64_t>(first + i));
       const double pick = random.Uniform() * length;
       const int e = static_cast<int>(
         std::min<size_t>(cumulative.size() - 1,

@@ -20,6 +20,7 @@
 #include <vector>
 
 class vtkMedialCoverage;
+class vtkMedialPieces;
 class vtkMedialStages;
 struct vtkMedialIterativeResult;
 struct vtkMedialIterativeSettings;
@@ -38,14 +39,15 @@ public:
   /// when RequestData must return `status` (0 on error, 1 when aborted).
   bool PrepareSurface(vtkPolyData* input, vtkMedialTriangleMesh& mesh, vtkMedialSurfaceQuery& query, int& status,
     vtkMedialStages& stages);
-  /// RANDOM: this piece's share of the samples, drawn, sorted by BVH leaf, solved in blocks.
-  int SampleRandom(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int piece, int pieces,
-    vtkPolyData* output, vtkMedialStages& stages);
-  /// CLOSEST_NEIGHBOR and FACE_DISTANCE (vtkMedialIterativeSampling), in piece 0.
-  int SampleIterative(
-    const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int piece, vtkPolyData* output);
+  /// RANDOM: this piece's share of the samples, drawn, sorted by BVH leaf, solved in
+  /// blocks; with a coverage stop (RequestData runs it in piece 0 only) all of them.
+  int SampleRandom(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
+    const vtkMedialPieces& pieces, vtkPolyData* output, vtkMedialStages& stages);
+  /// CLOSEST_NEIGHBOR and FACE_DISTANCE (vtkMedialIterativeSampling); RequestData runs
+  /// them in piece 0 only.
+  int SampleIterative(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, vtkPolyData* output);
   /// The 2D mode, for planar polygons or closed polylines (vtkMedialAxisSampler2D.cxx).
-  int Sample2D(vtkPolyData* input, int piece, int pieces, vtkPolyData* output, vtkMedialStages& stages);
+  int Sample2D(vtkPolyData* input, const vtkMedialPieces& pieces, vtkPolyData* output, vtkMedialStages& stages);
 
   /// Refuses up front what cannot fit in this machine's memory: `count` samples of
   /// about `bytesPerSample` each. `advice` ends the error message.
@@ -72,10 +74,17 @@ public:
 private:
   // Bisection / shrinking-ball settings in absolute units.
   vtkMedialBallParameters MakeBallParameters(double diagonal) const;
-  // Sample points of the RANDOM strategy, then their order: by BVH leaf (within
-  // blocks of `block` samples when a coverage stop needs prefixes, else globally).
-  void DrawSamples(const vtkMedialTriangleMesh& mesh, vtkIdType first, int threads,
+  // The samples a piece solves and their order (see SampleRandom): `index` gets the
+  // piece's sample indices in increasing order, `order` positions in `index` in leaf
+  // order. With a coverage stop, all samples, ordered by leaf within blocks.
+  void SelectSamples(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
+    const vtkMedialPieces& pieces, bool coverage, int threads, std::vector<vtkIdType>& index,
+    std::vector<vtkIdType>& order) const;
+  // Sample points of the RANDOM strategy: sample index[i] into results[i].
+  void DrawSamples(const vtkMedialTriangleMesh& mesh, const std::vector<vtkIdType>& index, int threads,
     std::vector<vtkIdType>& triangles, std::vector<vtkMedialSampleRecord>& results) const;
+  // Order of items by BVH leaf of their triangle (within blocks of `block` items when a
+  // coverage stop needs prefixes, else a global, stable counting sort).
   static void SortByLeaf(const vtkMedialSurfaceQuery& query, const std::vector<vtkIdType>& triangles,
     vtkIdType block, std::vector<vtkIdType>& order);
   // Solves the samples block by block; with `coverage`, stops after the first block

@@ -4,6 +4,7 @@
 #include "vtkMedialProgress.h"
 
 #include "vtkMedialGovernors.h"
+#include "vtkMedialPieces.h"
 #include "vtkMedialPipeline.h"
 #include "vtkMedialSeamSolver.h"
 #include "vtkMedialSurfaceQuery.h"
@@ -97,6 +98,10 @@ int vtkMedialBallClassifier::RequestData(
   this->NumberOfRimBalls = this->NumberOfSheetBalls = this->NumberOfSeamBalls = 0;
   this->NumberOfJunctionBalls = this->NumberOfUntouchedBalls = 0;
   this->NumberOfSeamPoints = this->NumberOfJunctionVertices = this->NumberOfTracedSeams = 0;
+  if (!vtkMedialPieces::FromRequest(outputVector->GetInformationObject(0)).IsFirst())
+  {
+    return 1; // piece 0 classifies every ball
+  }
 
   if (!surfaceData)
   {

@@ -48,6 +48,10 @@
  *
  * Output is identical for any thread count.
  *
+ * Pieces (see vtkMedialPieces.h): contacts need the whole surface and the exact
+ * points neighbouring balls, so every piece asks for both whole inputs and piece 0
+ * classifies every ball; the other pieces are empty.
+ *
  * @sa vtkMedialAxisSampler vtkMedialJunctionFilter
  */
 #ifndef vtkMedialBallClassifier_h

@@ -7,6 +7,7 @@
 #include "vtkMedialDisjointSets.h"
 #include "vtkMedialMeshComplex.h"
 #include "vtkMedialPowerComplex.h"
+#include "vtkMedialProgress.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
 
@@ -215,6 +216,8 @@ int vtkMedialMeshFilter::RequestData(
     vtkErrorMacro(<< "Cannot build the medial mesh: input 0 has no surface.");
     return 0;
   }
+  vtkMedialStages stages(this);
+  stages.Begin("Preparing the surface", 0.0, 0.05);
   vtkMedialTriangleMesh mesh;
   vtkMedialSurfaceQuery query;
   std::string error;
@@ -233,12 +236,12 @@ int vtkMedialMeshFilter::RequestData(
                     << " boundary edges: it bounds no solid, so the medial mesh's topology is "
                        "not checked and inside tests near the holes are unreliable.");
   }
-  this->UpdateProgress(0.05);
 
   // 1. Balls.
   vtkSmartPointer<vtkPointSet> balls = ballInput;
   if (!balls)
   {
+    stages.Begin("Sampling", 0.05, 0.55);
     balls = this->RunSampler(surface);
     if (!balls)
     {
@@ -254,6 +257,7 @@ int vtkMedialMeshFilter::RequestData(
   }
   if (this->Classifier)
   {
+    stages.Begin("Classifying the balls", 0.55, 0.65);
     balls = this->Classify(balls, surface, !ballInput);
     if (!balls)
     {
@@ -261,9 +265,9 @@ int vtkMedialMeshFilter::RequestData(
     }
     radius = balls->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
   }
-  this->UpdateProgress(0.65);
 
   // 2. Inscribed balls.
+  stages.Begin("Inscribing the balls", 0.65, 0.7);
   BallSet set;
   if (!this->InscribeBalls(balls, radius, query, closed, threads, set))
   {
@@ -271,6 +275,7 @@ int vtkMedialMeshFilter::RequestData(
   }
 
   // 3. The regular triangulation and the union's dual complex.
+  stages.Begin("Building the regular triangulation", 0.7, 0.75);
   vtkMedialPowerComplex power;
   if (!power.Build(set.Centres, set.Radii, error))
   {
@@ -278,13 +283,13 @@ int vtkMedialMeshFilter::RequestData(
                   << " balls); a medial mesh needs balls spanning three dimensions.");
     return 0;
   }
-  this->UpdateProgress(0.75);
   if (this->GetAbortExecute())
   {
     return 1;
   }
 
   // 4. The complex.
+  stages.Begin("Building the medial mesh", 0.75, 0.95);
   vtkMedialMeshComplex complex;
   vtkMedialMeshComplex::Balls ballData;
   ballData.Centres = &set.Centres;
@@ -296,9 +301,9 @@ int vtkMedialMeshFilter::RequestData(
   {
     return 1; // aborted: empty output
   }
-  this->UpdateProgress(0.95);
 
   // 5. Output.
+  stages.Begin("Writing the mesh", 0.95, 1.0);
   this->WriteMesh(balls, set, complex, output);
   this->EulerCharacteristic = complex.GetEulerCharacteristic();
   this->NumberOfComponents = complex.GetNumberOfComponents();
@@ -334,19 +339,14 @@ int vtkMedialMeshFilter::RequestData(
   return 1;
 }
 
-bool vtkMedialMeshFilter::RunStage(vtkAlgorithm* stage, double from, double to)
+bool vtkMedialMeshFilter::RunStage(vtkAlgorithm* stage)
 {
-  struct Span
-  {
-    vtkMedialMeshFilter* Self;
-    double From, To;
-  } span{ this, from, to };
   vtkNew<vtkCallbackCommand> forward;
-  forward->SetClientData(&span);
+  forward->SetClientData(this);
   forward->SetCallback([](vtkObject* caller, unsigned long, void* client, void* data) {
-    auto* s = static_cast<Span*>(client);
-    s->Self->UpdateProgress(s->From + (s->To - s->From) * *static_cast<double*>(data));
-    if (s->Self->GetAbortExecute())
+    auto* self = static_cast<vtkMedialMeshFilter*>(client);
+    self->UpdateProgress(*static_cast<double*>(data));
+    if (self->GetAbortExecute())
     {
       static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
     }
@@ -367,7 +367,7 @@ vtkSmartPointer<vtkPointSet> vtkMedialMeshFilter::RunSampler(vtkPolyData* surfac
   vtkNew<vtkPolyData> copy;
   copy->ShallowCopy(surface);
   this->Sampler->SetInputData(copy);
-  const bool ok = this->RunStage(this->Sampler, 0.05, 0.55);
+  const bool ok = this->RunStage(this->Sampler);
   auto balls = vtkSmartPointer<vtkPolyData>::New();
   balls->ShallowCopy(this->Sampler->GetOutput());
   this->Sampler->SetInputData(nullptr);
@@ -398,7 +398,7 @@ vtkSmartPointer<vtkPointSet> vtkMedialMeshFilter::Classify(
   {
     this->Classifier->SetMinimumSeparationAngle(this->Sampler->GetMinimumSeparationAngle());
   }
-  const bool ok = this->RunStage(this->Classifier, 0.55, 0.65);
+  const bool ok = this->RunStage(this->Classifier);
   vtkSmartPointer<vtkPolyData> result =
     ok ? AppendExactBalls(this->Classifier->GetOutput(0), this->Classifier->GetOutput(1)) : nullptr;
   this->Classifier->SetInputData(0, nullptr);

@@ -180,9 +180,9 @@ protected:
   // Governors and point types, and the exact seam and junction balls appended; null
   // (after an error) when the classifier fails.
   vtkSmartPointer<vtkPointSet> Classify(vtkPointSet* balls, vtkPolyData* surface, bool sampled);
-  // Runs a sub-filter (sampler, classifier) with its progress mapped to [from, to] of
-  // this filter's and this filter's abort passed on; false when it failed.
-  bool RunStage(vtkAlgorithm* stage, double from, double to);
+  // Runs a sub-filter (sampler, classifier) as the current stage: its progress is the
+  // stage's and this filter's abort is passed on; false when it failed.
+  bool RunStage(vtkAlgorithm* stage);
   // Step 2: radii lowered to the distance to the surface, outside centres dropped.
   bool InscribeBalls(vtkPointSet* balls, vtkDataArray* radius, const vtkMedialSurfaceQuery& query,
     bool closed, int threads, BallSet& set);

@@ -4,6 +4,8 @@
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialBallSolver.h"
 #include "vtkMedialGeometry.h"
+#include "vtkMedialPieces.h"
+#include "vtkMedialPipeline.h"
 #include "vtkMedialProgress.h"
 #include "vtkMedialSampleRecord.h"
 #include "vtkMedialSurfaceQuery.h"
@@ -18,7 +20,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <omp.h>
 
@@ -160,10 +161,7 @@ int vtkMedialThickness::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // Rays need the whole surface whatever piece is requested downstream.
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  vtkMedialRequestWholeInput(inputVector);
   return 1;
 }
 
@@ -436,6 +434,10 @@ int vtkMedialThickness::RequestData(
   {
     vtkErrorMacro(<< "No input.");
     return 0;
+  }
+  if (!vtkMedialPieces::FromRequest(outputVector->GetInformationObject(0)).IsFirst())
+  {
+    return 1; // piece 0 measures the whole surface
   }
 
   // Pass 1: the solid and its queries (the sampler's preparation).

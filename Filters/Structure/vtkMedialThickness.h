@@ -41,6 +41,9 @@
  *
  * Deterministic: the output does not depend on NumberOfThreads.
  *
+ * Pieces (see vtkMedialPieces.h): rays need the whole surface, so every piece asks for
+ * the whole input and piece 0 measures it all; the other pieces are empty.
+ *
  * @sa vtkMedialAxisSampler
  */
 #ifndef vtkMedialThickness_h

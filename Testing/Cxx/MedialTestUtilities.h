@@ -49,11 +49,10 @@ inline std::string SharedMesh(const char* name)
   return stat(path.c_str(), &st) == 0 ? path : std::string();
 }
 
-/// Number of values that differ bit for bit (points, point arrays, lines); -1 when
-/// the shapes differ.
-inline long long BitDifferences(vtkPolyData* a, vtkPolyData* b)
+/// Number of points that differ bit for bit; -1 when the point counts differ.
+inline long long PointDifferences(vtkPolyData* a, vtkPolyData* b)
 {
-  if (a->GetNumberOfPoints() != b->GetNumberOfPoints() || a->GetNumberOfLines() != b->GetNumberOfLines())
+  if (a->GetNumberOfPoints() != b->GetNumberOfPoints())
   {
     return -1;
   }
@@ -65,6 +64,18 @@ inline long long BitDifferences(vtkPolyData* a, vtkPolyData* b)
     b->GetPoint(i, y);
     diff += std::memcmp(x, y, sizeof(x)) != 0;
   }
+  return diff;
+}
+
+/// Number of values that differ bit for bit (points, point arrays, lines); -1 when
+/// the shapes differ.
+inline long long BitDifferences(vtkPolyData* a, vtkPolyData* b)
+{
+  if (a->GetNumberOfPoints() != b->GetNumberOfPoints() || a->GetNumberOfLines() != b->GetNumberOfLines())
+  {
+    return -1;
+  }
+  long long diff = PointDifferences(a, b);
   for (const char* name : { "Radius", "SurfacePoint", "ContactPoint", "SeparationAngle", "SourceCellId" })
   {
     vtkDataArray* u = a->GetPointData()->GetArray(name);

@@ -14,6 +14,7 @@
 #include "vtkMedialFileReader.h"
 #include "vtkMedialFileWriter.h"
 #include "vtkMedialJunctionFilter.h"
+#include "vtkMedialMeshFilter.h"
 #include "vtkMedialReconstructionError.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkMedialThickness.h"
@@ -218,9 +219,22 @@ int ReadingAndSampling(const std::string& folder)
   thickness->SetThinThreshold(0.1); // cell thickness too
   Recorder measuringThickness(thickness);
   thickness->Update();
-  return Check("vtkMedialThickness", measuringThickness,
-    { { "Preparing the surface", false }, { "Building the surface queries", false },
-      { "Measuring the thickness at the vertices", true }, { "Measuring the thickness at the cells", true } });
+  if (Check("vtkMedialThickness", measuringThickness,
+        { { "Preparing the surface", false }, { "Building the surface queries", false },
+          { "Measuring the thickness at the vertices", true }, { "Measuring the thickness at the cells", true } }) !=
+    EXIT_SUCCESS)
+  {
+    return EXIT_FAILURE;
+  }
+  vtkNew<vtkMedialMeshFilter> medialMesh; // samples itself: the sampler's progress is a stage
+  medialMesh->SetInputConnection(reader->GetOutputPort());
+  medialMesh->GetSampler()->SetNumberOfSamples(3000);
+  Recorder meshing(medialMesh);
+  medialMesh->Update();
+  return Check("vtkMedialMeshFilter", meshing,
+    { { "Preparing the surface", false }, { "Sampling", true }, { "Classifying the balls", true },
+      { "Inscribing the balls", false }, { "Building the regular triangulation", false },
+      { "Building the medial mesh", false }, { "Writing the mesh", false } });
 }
 
 int Planar()

@@ -125,6 +125,24 @@ for ext in ("vtp", "vtk", "ply", "ma", "csv"):
     check(balls.GetNumberOfPoints() > 4 and balls.GetPointData().GetArray("Radius") is not None,
           f"structure_3d.py OUT.{ext}: {balls.GetNumberOfPoints()} points with Radius read back as .{ext}")
 
+# medial_mesh.py: the medial mesh of the 6 x 4 x 2 box (largest ball radius 1; the
+# example's own default shape is the jack) from every format, one component with the
+# solid's Euler characteristic 1; OUT in each ball format.
+mesh_topology = r"Euler characteristic 1, 1 component\(s\); the solid's 1 and 1"
+for name in write_all(shape("SetShapeToBox", 2.0), "box", formats):
+    ext = name.rsplit(".", 1)[1]
+    out = path(f"box-mesh-from-{ext}.ma")
+    result = run("medial_mesh.py", name, out)
+    check(re.search(mesh_topology, result.stdout) is not None, f"medial_mesh.py {os.path.basename(name)}: {result.stdout}")
+    radius = balls_back(out).GetPointData().GetArray("Radius").GetRange()[1]
+    check(0.99 <= radius <= 1.0 + 1e-9, f"medial_mesh.py {os.path.basename(name)}: largest radius {radius}, 1 expected")
+for ext in ("vtp", "ply", "csv"):
+    out = path(f"box-mesh.{ext}")
+    run("medial_mesh.py", path("box.obj"), out)
+    balls = balls_back(out)
+    check(balls.GetNumberOfPoints() > 4 and balls.GetPointData().GetArray("Radius") is not None,
+          f"medial_mesh.py OUT.{ext}: {balls.GetNumberOfPoints()} points with Radius read back as .{ext}")
+
 # junction_graph.py: a square frame (a hole) in every format that holds polygons, a
 # triangle in STL (triangles only).
 # The frame is twice the default one's size: junctions at (+-2 sqrt 2, +-2 sqrt 2), radius 4 - 2 sqrt 2.
@@ -164,7 +182,8 @@ with open(path("jack-rebuilt-from-off.vtp"), "rb") as f:
 with open(path("notes.txt"), "w") as f:
     f.write("not a mesh\n")
 for script, args in (("reconstruct.py", [path("notes.txt")]), ("structure_3d.py", [path("notes.txt")]),
-                     ("junction_graph.py", [path("notes.txt")]),
+                     ("junction_graph.py", [path("notes.txt")]), ("medial_mesh.py", [path("notes.txt")]),
+                     ("medial_mesh.py", [path("box.obj"), path("out.stl")]),
                      ("medial_axis_png.py", [path("notes.txt"), path("notes.png")]),
                      ("reconstruct.py", [path("box.obj"), path("out.xyz")]),
                      ("structure_3d.py", [path("box.obj"), path("out.stl")]),

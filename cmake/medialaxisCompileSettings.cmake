@@ -1,0 +1,12 @@
+# Compile settings shared by the main build (CMakeLists.txt) and the ParaView plugin build
+# (ParaView/CMakeLists.txt), which compile the same modules.
+set(CMAKE_CXX_STANDARD 17)
+set(CMAKE_CXX_STANDARD_REQUIRED ON)
+# Only classes marked with a module's export macro leave the shared libraries; the
+# private engines of Filters/Core stay inside each library that links them.
+set(CMAKE_CXX_VISIBILITY_PRESET hidden)
+set(CMAKE_VISIBILITY_INLINES_HIDDEN ON)
+set(CMAKE_POSITION_INDEPENDENT_CODE ON)
+if (NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
+  set(CMAKE_BUILD_TYPE Release CACHE STRING "Build type" FORCE)
+endif ()
