@@ -13,7 +13,8 @@
  *  - First piece: the result needs all of the input and the work is sequential
  *    (the 2D medial graph, the iterative sampling strategies, a coverage stop, the
  *    measures vtkMedialReconstructionError and vtkMedialBallProtrusion, the 3D
- *    classifier vtkMedialBallClassifier, the wall thickness vtkMedialThickness). The
+ *    classifier vtkMedialBallClassifier, the wall thickness vtkMedialThickness, the
+ *    medial mesh vtkMedialMeshFilter). The
  *    filter asks for the whole input and computes in piece 0; the other pieces stay
  *    empty and skip all work.
  *  - Gather: the result needs all of the input, which upstream pieces hold apart

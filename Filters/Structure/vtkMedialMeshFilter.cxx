@@ -6,6 +6,7 @@
 #include "vtkMedialBallClassifier.h"
 #include "vtkMedialDisjointSets.h"
 #include "vtkMedialMeshComplex.h"
+#include "vtkMedialPieces.h"
 #include "vtkMedialPowerComplex.h"
 #include "vtkMedialSimplicialComplex.h"
 #include "vtkMedialProgress.h"
@@ -198,6 +199,10 @@ int vtkMedialMeshFilter::RequestData(
   {
     vtkErrorMacro(<< "Cannot build the medial mesh: input 0 has no surface.");
     return 0;
+  }
+  if (!vtkMedialPieces::FromRequest(outputVector->GetInformationObject(0)).IsFirst())
+  {
+    return 1; // piece 0 builds the whole mesh; the other pieces stay empty
   }
   vtkMedialStages stages(this);
   stages.Begin("Preparing the surface", 0.0, 0.05);

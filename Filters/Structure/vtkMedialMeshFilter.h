@@ -54,6 +54,9 @@
  *    is built the same way (inside tests by ray parity are then unreliable near the
  *    holes) and nothing is promised.
  *
+ * Pieces (vtkMedialPieces): first piece. The filter asks for the whole surface and
+ * every ball, piece 0 builds the whole mesh, the other pieces stay empty.
+ *
  * Input 0: vtkPolyData, a closed triangle surface (the sampler's rules apply).
  * Input 1 (optional): any vtkPointSet of balls with a point-data array `Radius`
  * (e.g. a vtkMedialAxisSampler's output, or balls read from a file).

@@ -13,4 +13,4 @@ if [ ! -f "$DIR/build/CTestTestfile.cmake" ] || [ ! -x "$DIR/root/usr/bin/pvpyth
 fi
 cmake --build "$DIR/build"
 cd "$DIR/build"
-ctest --output-on-failure
+ctest --output-on-failure --no-tests=error

@@ -25,7 +25,7 @@ def check(condition, message):
 LoadPlugin(plugin, remote=False, ns=globals())
 check(all(name in globals() for name in (
     "MedialAxisSampler", "MedialJunctionFilter", "MedialBallUnion", "MedialShapeSource",
-    "MedialReconstructionError", "MedialBallProtrusion", "MedialBallClassifier", "MedialThickness",
+    "MedialReconstructionError", "MedialBallProtrusion", "MedialBallClassifier", "MedialThickness", "MedialMesh",
     "MedialMeshReader", "MedialOFFReader", "MedialBallPLYReader", "MedialBallCSVReader")),
       "the plugin defines every proxy")
 
@@ -100,6 +100,20 @@ exact = servermanager.Fetch(classifier, idx=1)
 types = classified.GetPointData().GetArray("MedialPointType")
 check(types is not None and classified.GetNumberOfPoints() == 2000 and exact.GetNumberOfPoints() > 0,
       "classifier: 2000 balls typed, %d exact seam and junction points" % exact.GetNumberOfPoints())
+
+# The medial mesh of a torus from the sampler's balls: one component with the solid's
+# Euler characteristic 0.
+torus = MedialShapeSource(Shape="Torus")  # noqa: F821
+torus_balls = MedialAxisSampler(Input=torus, NumberOfSamples=3000)  # noqa: F821
+medial_mesh = MedialMesh(Input=torus, Balls=torus_balls)  # noqa: F821
+meshed = servermanager.Fetch(medial_mesh)
+euler = meshed.GetFieldData().GetArray("EulerCharacteristic")
+components = meshed.GetFieldData().GetArray("Components")
+check(meshed.GetNumberOfPolys() > 0 and euler is not None and euler.GetValue(0) == 0
+      and components is not None and components.GetValue(0) == 1,
+      "medial mesh of a torus: %d triangles, Euler characteristic %s, %s component(s)"
+      % (meshed.GetNumberOfPolys(), euler.GetValue(0) if euler else None,
+         components.GetValue(0) if components else None))
 
 # Enumerations take their labels; the values reach the filter.
 sampler.Method = "Bisection"
