@@ -101,66 +101,81 @@ vtkSmartPointer<vtkPolyData> Generated(const std::string& name)
   source->Update();
   return source->GetOutput();
 }
-}
 
-int main(int argc, char* argv[])
+struct BenchOptions
 {
-  int threads = 2;
-  vtkIdType samples = 10000;
-  int resolution = 128;
-  double protrusion = -2.0; // below -1: the filter's default
-  bool classify = true;
-  std::vector<std::string> meshes;
+  int Threads = 2;
+  vtkIdType Samples = 10000;
+  int Resolution = 128;
+  double Protrusion = -2.0; // below -1: the filter's default
+  bool Classify = true;
+  std::vector<std::string> Meshes;
+};
+
+// False when the program should stop at once with `exitCode` (help or usage, printed).
+bool ParseArgs(int argc, char* argv[], BenchOptions& options, int& exitCode)
+{
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
     if (a == "--threads" && i + 1 < argc)
     {
-      threads = std::atoi(argv[++i]);
+      options.Threads = std::atoi(argv[++i]);
     }
     else if (a == "--samples" && i + 1 < argc)
     {
-      samples = std::atoll(argv[++i]);
+      options.Samples = std::atoll(argv[++i]);
     }
     else if (a == "--resolution" && i + 1 < argc)
     {
-      resolution = std::atoi(argv[++i]);
+      options.Resolution = std::atoi(argv[++i]);
     }
     else if (a == "--protrusion" && i + 1 < argc)
     {
-      protrusion = std::atof(argv[++i]);
+      options.Protrusion = std::atof(argv[++i]);
     }
     else if (a == "--no-classifier")
     {
-      classify = false;
+      options.Classify = false;
     }
     else if (!a.empty() && a[0] == '-')
     {
       std::printf("usage: medial-mesh-bench [--threads T] [--samples N] [--resolution N] [--protrusion E] "
                   "[--no-classifier] [MESH...]\n");
-      return a == "-h" || a == "--help" ? 0 : 1;
+      exitCode = a == "-h" || a == "--help" ? 0 : 1;
+      return false;
     }
     else
     {
-      meshes.push_back(a);
+      options.Meshes.push_back(a);
     }
   }
-  if (meshes.empty())
+  return true;
+}
+
+// The shared meshes that are present, then the generated solids.
+std::vector<std::string> DefaultMeshes()
+{
+  std::vector<std::string> meshes;
+  for (const char* name : { "horse.ply", "rocker-arm.obj", "fandisk.obj", "spot.obj", "stanford-bunny.obj" })
   {
-    for (const char* name : { "horse.ply", "rocker-arm.obj", "fandisk.obj", "spot.obj", "stanford-bunny.obj" })
+    const std::string path = std::string(MEDIALAXIS_SHARED_MESH_DIR) + "/" + name;
+    struct stat st;
+    if (stat(path.c_str(), &st) == 0)
     {
-      const std::string path = std::string(MEDIALAXIS_SHARED_MESH_DIR) + "/" + name;
-      struct stat st;
-      if (stat(path.c_str(), &st) == 0)
-      {
-        meshes.push_back(path);
-      }
-    }
-    for (const char* name : { "sphere", "box", "torus", "hollow-sphere", "rings1", "rings2", "rings3" })
-    {
-      meshes.push_back(std::string("generated:") + name);
+      meshes.push_back(path);
     }
   }
+  for (const char* name : { "sphere", "box", "torus", "hollow-sphere", "rings1", "rings2", "rings3" })
+  {
+    meshes.push_back(std::string("generated:") + name);
+  }
+  return meshes;
+}
+
+// The settings line (with the load average) and the medial mesh table's column names.
+void PrintHeader(const BenchOptions& options)
+{
   double load[3] = { -1, -1, -1 };
   if (FILE* f = std::fopen("/proc/loadavg", "r"))
   {
@@ -172,92 +187,96 @@ int main(int argc, char* argv[])
   }
   std::printf("classifier %s, threads %d, %lld samples, sampler defaults otherwise; load average at start %.2f %.2f "
               "%.2f; times in seconds (wall)\n",
-    classify ? "on" : "off", threads, static_cast<long long>(samples), load[0], load[1], load[2]);
+    options.Classify ? "on" : "off", options.Threads, static_cast<long long>(options.Samples), load[0], load[1],
+    load[2]);
   std::printf("%-20s %6s %6s %6s %4s %5s %8s %5s %6s %6s %7s %9s %8s %8s %8s\n", "mesh", "V", "E", "F",
     "chi", "comp", "solid_chi", "solid", "seams", "junct", "dropped", "shrink%", "sample_s", "mesh_s",
     "total_s");
-  struct Error
-  {
-    double Max[2], Mean[2], Area, Seconds;
-  };
-  struct ErrorRow
-  {
-    std::string Name;
-    Error Envelope, Union;
-  };
-  std::vector<ErrorRow> errors;
-  for (const std::string& path : meshes)
-  {
-    vtkSmartPointer<vtkPolyData> surface = Generated(path);
-    if (!surface)
-    {
-      vtkNew<vtkMedialFileReader> reader;
-      reader->SetFileName(path.c_str());
-      reader->Update();
-      surface = reader->GetOutput();
-    }
-    const std::string name = path.substr(path.find_last_of("/:") + 1);
-    vtkNew<vtkMedialAxisSampler> sampler;
-    sampler->SetInputData(surface);
-    sampler->SetNumberOfSamples(samples);
-    sampler->SetNumberOfThreads(threads);
-    auto start = std::chrono::steady_clock::now();
-    sampler->Update();
-    const double sampleSeconds = Seconds(start);
-    vtkNew<vtkMedialMeshFilter> filter;
-    filter->SetInputData(surface);
-    filter->SetBallsConnection(sampler->GetOutputPort());
-    filter->SetNumberOfThreads(threads);
-    if (!classify)
-    {
-      filter->SetClassifier(nullptr);
-    }
-    if (protrusion >= -1.0)
-    {
-      filter->SetProtrusionTolerance(protrusion);
-    }
-    start = std::chrono::steady_clock::now();
-    filter->Update();
-    const double meshSeconds = Seconds(start);
-    vtkPolyData* mesh = filter->GetOutput();
-    std::printf("%-20s %6lld %6lld %6lld %4lld %5lld %8s %5s %6lld %6lld %7lld %9.4f %8.2f %8.2f %8.2f\n",
-      name.c_str(), static_cast<long long>(mesh->GetNumberOfPoints()),
-      static_cast<long long>(filter->GetNumberOfEdges()), static_cast<long long>(mesh->GetNumberOfPolys()),
-      static_cast<long long>(filter->GetEulerCharacteristic()),
-      static_cast<long long>(filter->GetNumberOfComponents()),
-      filter->GetHasSolidTopology() ? std::to_string(filter->GetSolidEulerCharacteristic()).c_str() : "-",
-      filter->GetHasSolidTopology() ? std::to_string(filter->GetSolidComponents()).c_str() : "-",
-      static_cast<long long>(CountType(mesh, 2)), static_cast<long long>(CountType(mesh, 3)),
-      static_cast<long long>(filter->GetDroppedBalls()), 100 * filter->GetMaximumRadiusReduction(),
-      sampleSeconds, meshSeconds, sampleSeconds + meshSeconds);
-    std::fflush(stdout);
+}
 
-    ErrorRow row{ name, {}, {} };
-    for (int primitives : { vtkMedialBallUnion::MEDIAL_MESH, vtkMedialBallUnion::BALLS })
-    {
-      vtkNew<vtkMedialBallUnion> rebuild;
-      rebuild->SetInputData(mesh);
-      rebuild->SetPrimitives(primitives);
-      rebuild->SetSampleDimensions(resolution, resolution, resolution);
-      rebuild->SetNumberOfThreads(threads);
-      start = std::chrono::steady_clock::now();
-      rebuild->Update();
-      Error& e = primitives == vtkMedialBallUnion::BALLS ? row.Union : row.Envelope;
-      e.Seconds = Seconds(start);
-      vtkNew<vtkMedialReconstructionError> measure;
-      measure->SetOriginalData(surface);
-      measure->SetReconstructionConnection(rebuild->GetOutputPort());
-      measure->SetNumberOfThreads(threads);
-      measure->Update();
-      for (int k = 0; k < 2; ++k)
-      {
-        e.Max[k] = measure->GetVertexMaxError()[k];
-        e.Mean[k] = measure->GetVertexMeanError()[k];
-      }
-      e.Area = measure->GetAreaHausdorff();
-    }
-    errors.push_back(row);
+// Samples the surface's balls, builds their medial mesh with `filter` and prints its row.
+void BenchMedialMesh(
+  vtkPolyData* surface, const std::string& name, vtkMedialMeshFilter* filter, const BenchOptions& options)
+{
+  vtkNew<vtkMedialAxisSampler> sampler;
+  sampler->SetInputData(surface);
+  sampler->SetNumberOfSamples(options.Samples);
+  sampler->SetNumberOfThreads(options.Threads);
+  auto start = std::chrono::steady_clock::now();
+  sampler->Update();
+  const double sampleSeconds = Seconds(start);
+  filter->SetInputData(surface);
+  filter->SetBallsConnection(sampler->GetOutputPort());
+  filter->SetNumberOfThreads(options.Threads);
+  if (!options.Classify)
+  {
+    filter->SetClassifier(nullptr);
   }
+  if (options.Protrusion >= -1.0)
+  {
+    filter->SetProtrusionTolerance(options.Protrusion);
+  }
+  start = std::chrono::steady_clock::now();
+  filter->Update();
+  const double meshSeconds = Seconds(start);
+  vtkPolyData* mesh = filter->GetOutput();
+  std::printf("%-20s %6lld %6lld %6lld %4lld %5lld %8s %5s %6lld %6lld %7lld %9.4f %8.2f %8.2f %8.2f\n",
+    name.c_str(), static_cast<long long>(mesh->GetNumberOfPoints()),
+    static_cast<long long>(filter->GetNumberOfEdges()), static_cast<long long>(mesh->GetNumberOfPolys()),
+    static_cast<long long>(filter->GetEulerCharacteristic()),
+    static_cast<long long>(filter->GetNumberOfComponents()),
+    filter->GetHasSolidTopology() ? std::to_string(filter->GetSolidEulerCharacteristic()).c_str() : "-",
+    filter->GetHasSolidTopology() ? std::to_string(filter->GetSolidComponents()).c_str() : "-",
+    static_cast<long long>(CountType(mesh, 2)), static_cast<long long>(CountType(mesh, 3)),
+    static_cast<long long>(filter->GetDroppedBalls()), 100 * filter->GetMaximumRadiusReduction(),
+    sampleSeconds, meshSeconds, sampleSeconds + meshSeconds);
+  std::fflush(stdout);
+}
+
+struct Error
+{
+  double Max[2], Mean[2], Area, Seconds;
+};
+struct ErrorRow
+{
+  std::string Name;
+  Error Envelope, Union;
+};
+
+// The shape rebuilt from the medial mesh (envelope, then the union of its balls) and
+// each one's error against the surface.
+ErrorRow MeasureReconstruction(
+  vtkPolyData* surface, vtkPolyData* mesh, const std::string& name, const BenchOptions& options)
+{
+  ErrorRow row{ name, {}, {} };
+  for (int primitives : { vtkMedialBallUnion::MEDIAL_MESH, vtkMedialBallUnion::BALLS })
+  {
+    vtkNew<vtkMedialBallUnion> rebuild;
+    rebuild->SetInputData(mesh);
+    rebuild->SetPrimitives(primitives);
+    rebuild->SetSampleDimensions(options.Resolution, options.Resolution, options.Resolution);
+    rebuild->SetNumberOfThreads(options.Threads);
+    const auto start = std::chrono::steady_clock::now();
+    rebuild->Update();
+    Error& e = primitives == vtkMedialBallUnion::BALLS ? row.Union : row.Envelope;
+    e.Seconds = Seconds(start);
+    vtkNew<vtkMedialReconstructionError> measure;
+    measure->SetOriginalData(surface);
+    measure->SetReconstructionConnection(rebuild->GetOutputPort());
+    measure->SetNumberOfThreads(options.Threads);
+    measure->Update();
+    for (int k = 0; k < 2; ++k)
+    {
+      e.Max[k] = measure->GetVertexMaxError()[k];
+      e.Mean[k] = measure->GetVertexMeanError()[k];
+    }
+    e.Area = measure->GetAreaHausdorff();
+  }
+  return row;
+}
+
+void PrintErrors(const std::vector<ErrorRow>& errors, int resolution)
+{
   std::printf("\nreconstruction at %d^3, %% of the diagonal (max / mean), rebuilt -> original and "
               "original -> rebuilt\n",
     resolution);
@@ -272,5 +291,38 @@ int main(int argc, char* argv[])
         100 * e.Max[0], 100 * e.Mean[0], 100 * e.Max[1], 100 * e.Mean[1], 100 * e.Area, e.Seconds);
     }
   }
+}
+}
+
+int main(int argc, char* argv[])
+{
+  BenchOptions options;
+  int exitCode = 0;
+  if (!ParseArgs(argc, argv, options, exitCode))
+  {
+    return exitCode;
+  }
+  if (options.Meshes.empty())
+  {
+    options.Meshes = DefaultMeshes();
+  }
+  PrintHeader(options);
+  std::vector<ErrorRow> errors;
+  for (const std::string& path : options.Meshes)
+  {
+    vtkSmartPointer<vtkPolyData> surface = Generated(path);
+    if (!surface)
+    {
+      vtkNew<vtkMedialFileReader> reader;
+      reader->SetFileName(path.c_str());
+      reader->Update();
+      surface = reader->GetOutput();
+    }
+    const std::string name = path.substr(path.find_last_of("/:") + 1);
+    vtkNew<vtkMedialMeshFilter> filter;
+    BenchMedialMesh(surface, name, filter, options);
+    errors.push_back(MeasureReconstruction(surface, filter->GetOutput(), name, options));
+  }
+  PrintErrors(errors, options.Resolution);
   return 0;
 }

@@ -79,71 +79,91 @@ double Seconds(std::chrono::steady_clock::time_point since)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
+
+struct BenchOptions
+{
+  std::vector<long long> Samples = { 10000, 100000 };
+  std::vector<long long> Resolutions = { 128, 256 };
+  int Threads = 0;
+  double MinAngle = -1.0; // negative: the sampler's default
+  std::vector<std::string> Meshes;
+  std::vector<int> Strategies = { vtkMedialAxisSampler::RANDOM };
+  bool CompareLocator = false;
+};
+
+// The sampling strategy of that name, or -1.
+int StrategyByName(const std::string& name)
+{
+  int found = -1;
+  for (int k = vtkMedialAxisSampler::RANDOM; k <= vtkMedialAxisSampler::FACE_DISTANCE; ++k)
+  {
+    found = name == vtkMedialAxisSampler::GetSamplingStrategyName(k) ? k : found;
+  }
+  return found;
 }
 
-int main(int argc, char* argv[])
+// False when the program should stop at once, with `exitCode` (help, usage or an
+// unknown strategy, already printed).
+bool ParseArgs(int argc, char* argv[], BenchOptions& options, int& exitCode)
 {
-  std::vector<long long> samples = { 10000, 100000 };
-  std::vector<long long> resolutions = { 128, 256 };
-  int threads = 0;
-  double minAngle = -1.0; // negative: the sampler's default
-  std::vector<std::string> meshes;
-  std::vector<int> strategies = { vtkMedialAxisSampler::RANDOM };
-  bool compareLocator = false;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
     if (a == "--samples" && i + 1 < argc)
     {
-      samples = ParseList(argv[++i]);
+      options.Samples = ParseList(argv[++i]);
     }
     else if (a == "--resolutions" && i + 1 < argc)
     {
-      resolutions = ParseList(argv[++i]);
+      options.Resolutions = ParseList(argv[++i]);
     }
     else if (a == "--strategies" && i + 1 < argc)
     {
-      strategies.clear();
+      options.Strategies.clear();
       for (const std::string& name : ParseNames(argv[++i]))
       {
-        int found = -1;
-        for (int k = vtkMedialAxisSampler::RANDOM; k <= vtkMedialAxisSampler::FACE_DISTANCE; ++k)
-        {
-          found = name == vtkMedialAxisSampler::GetSamplingStrategyName(k) ? k : found;
-        }
+        const int found = StrategyByName(name);
         if (found < 0)
         {
           std::printf("unknown strategy '%s' (random, closest-neighbor, face-distance)\n", name.c_str());
-          return 1;
+          exitCode = 1;
+          return false;
         }
-        strategies.push_back(found);
+        options.Strategies.push_back(found);
       }
     }
     else if (a == "--min-angle" && i + 1 < argc)
     {
-      minAngle = std::atof(argv[++i]);
+      options.MinAngle = std::atof(argv[++i]);
     }
     else if (a == "--compare-locator")
     {
-      compareLocator = true;
+      options.CompareLocator = true;
     }
     else if (a == "--threads" && i + 1 < argc)
     {
-      threads = std::atoi(argv[++i]);
+      options.Threads = std::atoi(argv[++i]);
     }
     else if (a == "-h" || a == "--help" || (!a.empty() && a[0] == '-'))
     {
       std::printf("usage: medial-reconstruct-bench [--samples 10000,100000] [--resolutions 128,256] "
                   "[--strategies random,closest-neighbor,face-distance] [--threads T] [--min-angle DEG] "
                   "[--compare-locator] MESH...\n");
-      return a == "-h" || a == "--help" ? 0 : 1;
+      exitCode = a == "-h" || a == "--help" ? 0 : 1;
+      return false;
     }
     else
     {
-      meshes.push_back(a);
+      options.Meshes.push_back(a);
     }
   }
-  const int used = threads > 0 ? threads : omp_get_num_procs();
+  return true;
+}
+
+// The settings line (threads, angle, load average) and the column names.
+void PrintHeader(const BenchOptions& options)
+{
+  const int used = options.Threads > 0 ? options.Threads : omp_get_num_procs();
   {
     vtkNew<vtkMedialAxisSampler> defaults;
     double load[3] = { 0, 0, 0 };
@@ -157,17 +177,130 @@ int main(int argc, char* argv[])
     }
     std::printf("threads %d, min angle %g, load average at start %.2f %.2f %.2f; errors in %% of the "
                 "original's bounding-box diagonal, vertex to surface; times in seconds (wall)\n",
-      used, minAngle >= 0.0 ? minAngle : defaults->GetMinimumSeparationAngle(), load[0], load[1], load[2]);
+      used, options.MinAngle >= 0.0 ? options.MinAngle : defaults->GetMinimumSeparationAngle(), load[0], load[1],
+      load[2]);
   }
   std::printf("%-16s %-16s %8s %8s %5s %9s %9s %9s %9s %9s %9s %9s %9s %9s %9s %8s %8s %9s", "mesh", "strategy",
     "samples", "used", "res", "hd_max", "hd_mean", "ar_max", "ar_mean", "rec>orig", "mean", "orig>rec", "mean",
     "voxel%", "protrude", "sample_s", "union_s", "measure_s");
-  if (compareLocator)
+  if (options.CompareLocator)
   {
     std::printf(" %8s %9s", "vertex_s", "locator_s");
   }
   std::printf("\n");
-  for (const std::string& path : meshes)
+}
+
+// The vertex measure alone (both directions, build included) with each engine:
+// prints the two timing columns.
+void PrintLocatorComparison(vtkPolyData* mesh, vtkMedialBallUnion* ballUnion, int threads)
+{
+  double engineSeconds[2];
+  double hausdorff[2];
+  for (int engine : { vtkMedialReconstructionError::BVH, vtkMedialReconstructionError::CELL_LOCATOR })
+  {
+    vtkNew<vtkMedialReconstructionError> vertexOnly;
+    vertexOnly->SetOriginalData(mesh);
+    vertexOnly->SetReconstructionConnection(ballUnion->GetOutputPort());
+    vertexOnly->SetNumberOfThreads(threads);
+    vertexOnly->SetNumberOfAreaSamples(0);
+    vertexOnly->SetDistanceEngine(engine);
+    const auto start = std::chrono::steady_clock::now();
+    vertexOnly->Update();
+    engineSeconds[engine] = Seconds(start);
+    hausdorff[engine] = vertexOnly->GetVertexHausdorff();
+  }
+  const bool same = std::fabs(hausdorff[0] - hausdorff[1]) <= 1e-12;
+  std::printf(" %8.2f %9.2f%s", engineSeconds[0], engineSeconds[1], same ? "" : " (DIFFERENT)");
+}
+
+// The balls of one sampler run, with their protrusion and the time they took.
+struct SampledBalls
+{
+  std::string MeshName;
+  int Strategy;
+  long long Count;
+  vtkMedialAxisSampler* Sampler;
+  vtkMedialBallProtrusion* Protrusion;
+  double SampleSeconds;
+};
+
+// One table row: the union of the balls at n^3 and its errors against the mesh.
+void PrintResolutionRow(vtkPolyData* mesh, const SampledBalls& balls, long long n, const BenchOptions& options)
+{
+  vtkNew<vtkMedialBallUnion> ballUnion;
+  ballUnion->SetInputConnection(balls.Sampler->GetOutputPort());
+  ballUnion->SetSampleDimensions(static_cast<int>(n), static_cast<int>(n), static_cast<int>(n));
+  ballUnion->SetNumberOfThreads(options.Threads);
+  auto start = std::chrono::steady_clock::now();
+  ballUnion->Update();
+  const double unionSeconds = Seconds(start);
+  vtkNew<vtkMedialReconstructionError> e;
+  e->SetOriginalData(mesh);
+  e->SetReconstructionConnection(ballUnion->GetOutputPort());
+  e->SetNumberOfThreads(options.Threads);
+  start = std::chrono::steady_clock::now();
+  e->Update();
+  const double measureSeconds = Seconds(start);
+  const double* vertexMax = e->GetVertexMaxError();
+  const double* vertexMean = e->GetVertexMeanError();
+  std::printf("%-16s %-16s %8lld %8lld %5lld %9.3f %9.4f %9.3f %9.4f %9.3f %9.4f %9.3f %9.4f %9.3f %9.3f "
+              "%8.2f %8.2f %9.2f",
+    balls.MeshName.c_str(), vtkMedialAxisSampler::GetSamplingStrategyName(balls.Strategy), balls.Count,
+    static_cast<long long>(balls.Sampler->GetEvaluatedSamples()), n, 100 * e->GetVertexHausdorff(),
+    100 * e->GetVertexMeanHausdorff(), 100 * e->GetAreaHausdorff(), 100 * e->GetAreaMeanHausdorff(),
+    100 * vertexMax[0], 100 * vertexMean[0], 100 * vertexMax[1], 100 * vertexMean[1],
+    100 * ballUnion->GetVoxelSize() / mesh->GetLength(), 100 * balls.Protrusion->GetMaxProtrusion(),
+    balls.SampleSeconds, unionSeconds, measureSeconds);
+  if (options.CompareLocator)
+  {
+    PrintLocatorComparison(mesh, ballUnion, options.Threads);
+  }
+  std::printf("\n");
+  std::fflush(stdout);
+}
+
+// Samples `count` balls of the mesh with one strategy, then prints a row per resolution.
+void BenchSampling(
+  vtkPolyData* mesh, const std::string& name, long long count, int strategy, const BenchOptions& options)
+{
+  vtkNew<vtkMedialAxisSampler> sampler;
+  sampler->SetSamplingStrategy(strategy);
+  sampler->SetInputData(mesh);
+  sampler->SetNumberOfSamples(count);
+  sampler->SetMethodToBisection();
+  sampler->SetNumberOfThreads(options.Threads);
+  if (options.MinAngle >= 0.0)
+  {
+    sampler->SetMinimumSeparationAngle(options.MinAngle);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  sampler->Update();
+  const double sampleSeconds = Seconds(start);
+  // Balls crossing the surface (the sampler's separation angle allows it): the
+  // reconstruction cannot be closer than this.
+  vtkNew<vtkMedialBallProtrusion> protrusion;
+  protrusion->SetSurfaceData(mesh);
+  protrusion->SetBallsConnection(sampler->GetOutputPort());
+  protrusion->SetNumberOfThreads(options.Threads);
+  protrusion->Update();
+  const SampledBalls balls{ name, strategy, count, sampler, protrusion, sampleSeconds };
+  for (long long n : options.Resolutions)
+  {
+    PrintResolutionRow(mesh, balls, n, options);
+  }
+}
+}
+
+int main(int argc, char* argv[])
+{
+  BenchOptions options;
+  int exitCode = 0;
+  if (!ParseArgs(argc, argv, options, exitCode))
+  {
+    return exitCode;
+  }
+  PrintHeader(options);
+  for (const std::string& path : options.Meshes)
   {
     vtkSmartPointer<vtkPolyData> mesh = Read(path);
     const std::string name = path.substr(path.find_last_of('/') + 1);
@@ -176,80 +309,11 @@ int main(int argc, char* argv[])
       std::printf("%-16s cannot read\n", name.c_str());
       continue;
     }
-    for (long long count : samples)
+    for (long long count : options.Samples)
     {
-      for (int strategy : strategies)
+      for (int strategy : options.Strategies)
       {
-        vtkNew<vtkMedialAxisSampler> sampler;
-        sampler->SetSamplingStrategy(strategy);
-        sampler->SetInputData(mesh);
-        sampler->SetNumberOfSamples(count);
-        sampler->SetMethodToBisection();
-        sampler->SetNumberOfThreads(threads);
-        if (minAngle >= 0.0)
-        {
-          sampler->SetMinimumSeparationAngle(minAngle);
-        }
-        auto start = std::chrono::steady_clock::now();
-        sampler->Update();
-        const double sampleSeconds = Seconds(start);
-        // Balls crossing the surface (the sampler's separation angle allows it): the
-        // reconstruction cannot be closer than this.
-        vtkNew<vtkMedialBallProtrusion> protrusion;
-        protrusion->SetSurfaceData(mesh);
-        protrusion->SetBallsConnection(sampler->GetOutputPort());
-        protrusion->SetNumberOfThreads(threads);
-        protrusion->Update();
-        for (long long n : resolutions)
-        {
-          vtkNew<vtkMedialBallUnion> ballUnion;
-          ballUnion->SetInputConnection(sampler->GetOutputPort());
-          ballUnion->SetSampleDimensions(static_cast<int>(n), static_cast<int>(n), static_cast<int>(n));
-          ballUnion->SetNumberOfThreads(threads);
-          start = std::chrono::steady_clock::now();
-          ballUnion->Update();
-          const double unionSeconds = Seconds(start);
-          vtkNew<vtkMedialReconstructionError> e;
-          e->SetOriginalData(mesh);
-          e->SetReconstructionConnection(ballUnion->GetOutputPort());
-          e->SetNumberOfThreads(threads);
-          start = std::chrono::steady_clock::now();
-          e->Update();
-          const double measureSeconds = Seconds(start);
-          const double* vertexMax = e->GetVertexMaxError();
-          const double* vertexMean = e->GetVertexMeanError();
-          std::printf("%-16s %-16s %8lld %8lld %5lld %9.3f %9.4f %9.3f %9.4f %9.3f %9.4f %9.3f %9.4f %9.3f %9.3f "
-                      "%8.2f %8.2f %9.2f",
-            name.c_str(), vtkMedialAxisSampler::GetSamplingStrategyName(strategy), count,
-            static_cast<long long>(sampler->GetEvaluatedSamples()), n, 100 * e->GetVertexHausdorff(),
-            100 * e->GetVertexMeanHausdorff(), 100 * e->GetAreaHausdorff(), 100 * e->GetAreaMeanHausdorff(),
-            100 * vertexMax[0], 100 * vertexMean[0], 100 * vertexMax[1], 100 * vertexMean[1],
-            100 * ballUnion->GetVoxelSize() / mesh->GetLength(), 100 * protrusion->GetMaxProtrusion(),
-            sampleSeconds, unionSeconds, measureSeconds);
-          if (compareLocator)
-          {
-            // The vertex measure alone (both directions, build included) with each engine.
-            double engineSeconds[2];
-            double hausdorff[2];
-            for (int engine : { vtkMedialReconstructionError::BVH, vtkMedialReconstructionError::CELL_LOCATOR })
-            {
-              vtkNew<vtkMedialReconstructionError> vertexOnly;
-              vertexOnly->SetOriginalData(mesh);
-              vertexOnly->SetReconstructionConnection(ballUnion->GetOutputPort());
-              vertexOnly->SetNumberOfThreads(threads);
-              vertexOnly->SetNumberOfAreaSamples(0);
-              vertexOnly->SetDistanceEngine(engine);
-              start = std::chrono::steady_clock::now();
-              vertexOnly->Update();
-              engineSeconds[engine] = Seconds(start);
-              hausdorff[engine] = vertexOnly->GetVertexHausdorff();
-            }
-            const bool same = std::fabs(hausdorff[0] - hausdorff[1]) <= 1e-12;
-            std::printf(" %8.2f %9.2f%s", engineSeconds[0], engineSeconds[1], same ? "" : " (DIFFERENT)");
-          }
-          std::printf("\n");
-          std::fflush(stdout);
-        }
+        BenchSampling(mesh, name, count, strategy, options);
       }
     }
   }

@@ -58,6 +58,170 @@ std::vector<vtkIdType> Inverse(const std::vector<vtkIdType>& order)
   }
   return inverse;
 }
+
+using Cell = Triangulation::Cell_handle;
+
+// The finite tetrahedra: raw index (CGAL's order, stored in each cell's info, -1 for
+// infinite cells), sorted vertices, and the canonical order of those keys.
+struct TetIndex
+{
+  std::vector<std::array<vtkIdType, 4>> Keys; // by raw index
+  std::vector<Cell> Cells;                    // by raw index
+  std::vector<vtkIdType> Order;               // canonical -> raw
+  std::vector<vtkIdType> Rank;                // raw -> canonical
+
+  vtkIdType size() const { return static_cast<vtkIdType>(this->Cells.size()); }
+  vtkIdType CanonicalOf(Cell c) const { return c->info() < 0 ? -1 : this->Rank[c->info()]; }
+};
+
+TetIndex IndexTetrahedra(AlphaShape& shape)
+{
+  vtkIdType rawTets = 0;
+  for (auto c = shape.all_cells_begin(); c != shape.all_cells_end(); ++c)
+  {
+    c->info() = shape.is_infinite(c) ? -1 : rawTets++;
+  }
+  TetIndex tets;
+  tets.Keys.resize(rawTets);
+  tets.Cells.resize(rawTets);
+  for (auto c = shape.finite_cells_begin(); c != shape.finite_cells_end(); ++c)
+  {
+    auto& key = tets.Keys[c->info()];
+    for (int j = 0; j < 4; ++j)
+    {
+      key[j] = c->vertex(j)->info();
+    }
+    std::sort(key.begin(), key.end());
+    tets.Cells[c->info()] = c;
+  }
+  tets.Order = CanonicalOrder(tets.Keys);
+  tets.Rank = Inverse(tets.Order);
+  return tets;
+}
+
+// The triangles in raw order (found from the finite side with the smaller raw index).
+struct RawTriangles
+{
+  std::vector<std::array<vtkIdType, 3>> Keys;
+  std::vector<std::array<vtkIdType, 2>> Tets; // canonical tetrahedra on either side
+  std::vector<char> InUnion;
+  std::vector<vtkIdType> FacetTriangle; // raw triangle of (raw cell, CGAL index)
+};
+
+RawTriangles IndexTriangles(const AlphaShape& shape, const TetIndex& tets)
+{
+  RawTriangles tris;
+  tris.FacetTriangle.assign(4 * tets.size(), -1);
+  for (vtkIdType raw = 0; raw < tets.size(); ++raw)
+  {
+    const Cell c = tets.Cells[raw];
+    for (int j = 0; j < 4; ++j)
+    {
+      const Cell n = c->neighbor(j);
+      if (n->info() >= 0 && n->info() < raw)
+      {
+        continue; // done from n
+      }
+      const vtkIdType t = static_cast<vtkIdType>(tris.Keys.size());
+      std::array<vtkIdType, 3> key;
+      for (int m = 0, k = 0; m < 4; ++m)
+      {
+        if (m != j)
+        {
+          key[k++] = c->vertex(m)->info();
+        }
+      }
+      std::sort(key.begin(), key.end());
+      tris.Keys.push_back(key);
+      tris.Tets.push_back({ tets.CanonicalOf(c), tets.CanonicalOf(n) });
+      tris.InUnion.push_back(shape.classify(AlphaShape::Facet(c, j)) != AlphaShape::EXTERIOR);
+      tris.FacetTriangle[4 * raw + j] = t;
+      if (n->info() >= 0)
+      {
+        tris.FacetTriangle[4 * n->info() + n->index(c)] = t;
+      }
+    }
+  }
+  return tris;
+}
+
+// Tetrahedra in canonical order; neighbours and faces follow the sorted vertices.
+void CopyTetrahedra(const AlphaShape& shape, const TetIndex& tets, const RawTriangles& tris,
+  const std::vector<vtkIdType>& triRank, vtkMedialPowerComplex& complex)
+{
+  const vtkIdType rawTets = tets.size();
+  complex.TetVertices.resize(rawTets);
+  complex.TetNeighbours.resize(rawTets);
+  complex.TetTriangles.resize(rawTets);
+  complex.PowerCentres.resize(3 * rawTets);
+  complex.TetInUnion.resize(rawTets);
+  for (vtkIdType k = 0; k < rawTets; ++k)
+  {
+    const vtkIdType raw = tets.Order[k];
+    const Cell c = tets.Cells[raw];
+    const std::array<vtkIdType, 4>& key = tets.Keys[raw];
+    complex.TetVertices[k] = key;
+    for (int j = 0; j < 4; ++j)
+    {
+      const vtkIdType slot = std::find(key.begin(), key.end(), c->vertex(j)->info()) - key.begin();
+      complex.TetNeighbours[k][slot] = tets.CanonicalOf(c->neighbor(j));
+      complex.TetTriangles[k][slot] = triRank[tris.FacetTriangle[4 * raw + j]];
+    }
+    const Kernel::Point_3 w = shape.dual(c);
+    complex.PowerCentres[3 * k] = w.x();
+    complex.PowerCentres[3 * k + 1] = w.y();
+    complex.PowerCentres[3 * k + 2] = w.z();
+    complex.TetInUnion[k] = shape.classify(c) == AlphaShape::INTERIOR;
+  }
+}
+
+// Edges: the sides of the (canonical) triangles (every finite edge is one), sorted and
+// made unique; each is classified through a cell of the first triangle that has it.
+void IndexEdges(const AlphaShape& shape, const TetIndex& tets, const RawTriangles& tris,
+  const std::vector<vtkIdType>& triOrder, vtkMedialPowerComplex& complex)
+{
+  struct EdgeUse
+  {
+    std::array<vtkIdType, 2> Key;
+    vtkIdType Triangle; // canonical triangle index
+    int Side;           // 0: v0 v1, 1: v0 v2, 2: v1 v2
+    bool operator<(const EdgeUse& other) const
+    {
+      return this->Key < other.Key || (this->Key == other.Key && this->Triangle < other.Triangle);
+    }
+  };
+  const vtkIdType nf = static_cast<vtkIdType>(complex.TriangleVertices.size());
+  std::vector<EdgeUse> uses(3 * nf);
+  for (vtkIdType t = 0; t < nf; ++t)
+  {
+    const auto& v = complex.TriangleVertices[t];
+    uses[3 * t] = { { v[0], v[1] }, t, 0 };
+    uses[3 * t + 1] = { { v[0], v[2] }, t, 1 };
+    uses[3 * t + 2] = { { v[1], v[2] }, t, 2 };
+  }
+  std::sort(uses.begin(), uses.end());
+  complex.TriangleEdges.resize(nf);
+  complex.EdgeVertices.clear();
+  complex.EdgeInUnion.clear();
+  for (size_t k = 0; k < uses.size(); ++k)
+  {
+    if (k == 0 || uses[k].Key != uses[k - 1].Key)
+    {
+      const vtkIdType rawTriangle = triOrder[uses[k].Triangle];
+      const std::array<vtkIdType, 2>& triTets = tris.Tets[rawTriangle];
+      const Cell c = tets.Cells[tets.Order[triTets[0]]];
+      int i = -1, j = -1;
+      for (int m = 0; m < 4; ++m)
+      {
+        i = c->vertex(m)->info() == uses[k].Key[0] ? m : i;
+        j = c->vertex(m)->info() == uses[k].Key[1] ? m : j;
+      }
+      complex.EdgeVertices.push_back(uses[k].Key);
+      complex.EdgeInUnion.push_back(shape.classify(AlphaShape::Edge(c, i, j)) != AlphaShape::EXTERIOR);
+    }
+    complex.TriangleEdges[uses[k].Triangle][uses[k].Side] = static_cast<vtkIdType>(complex.EdgeVertices.size() - 1);
+  }
+}
 }
 
 bool vtkMedialPowerComplex::Build(
@@ -92,137 +256,14 @@ bool vtkMedialPowerComplex::Build(
     this->VertexInUnion[v->info()] = shape.classify(v) != AlphaShape::EXTERIOR;
   }
 
-  // Tetrahedra in CGAL's order (raw), each with its vertices sorted.
-  vtkIdType rawTets = 0;
-  for (auto c = shape.all_cells_begin(); c != shape.all_cells_end(); ++c)
-  {
-    c->info() = shape.is_infinite(c) ? -1 : rawTets++;
-  }
-  std::vector<std::array<vtkIdType, 4>> tetKeys(rawTets);
-  std::vector<Triangulation::Cell_handle> cells(rawTets);
-  for (auto c = shape.finite_cells_begin(); c != shape.finite_cells_end(); ++c)
-  {
-    auto& key = tetKeys[c->info()];
-    for (int j = 0; j < 4; ++j)
-    {
-      key[j] = c->vertex(j)->info();
-    }
-    std::sort(key.begin(), key.end());
-    cells[c->info()] = c;
-  }
-  const std::vector<vtkIdType> tetOrder = CanonicalOrder(tetKeys);
-  const std::vector<vtkIdType> tetRank = Inverse(tetOrder);
-  auto tetOf = [&tetRank](Triangulation::Cell_handle c) { return c->info() < 0 ? -1 : tetRank[c->info()]; };
-
-  // Triangles, once each (from the finite side with the smaller raw index).
-  std::vector<std::array<vtkIdType, 3>> triKeys;
-  std::vector<std::array<vtkIdType, 2>> triTets;
-  std::vector<char> triInUnion;
-  std::vector<vtkIdType> facetTriangle(4 * rawTets, -1); // raw triangle of (raw cell, CGAL index)
-  for (vtkIdType raw = 0; raw < rawTets; ++raw)
-  {
-    const Triangulation::Cell_handle c = cells[raw];
-    for (int j = 0; j < 4; ++j)
-    {
-      const Triangulation::Cell_handle n = c->neighbor(j);
-      if (n->info() >= 0 && n->info() < raw)
-      {
-        continue; // done from n
-      }
-      const vtkIdType t = static_cast<vtkIdType>(triKeys.size());
-      std::array<vtkIdType, 3> key;
-      for (int m = 0, k = 0; m < 4; ++m)
-      {
-        if (m != j)
-        {
-          key[k++] = c->vertex(m)->info();
-        }
-      }
-      std::sort(key.begin(), key.end());
-      triKeys.push_back(key);
-      triTets.push_back({ tetOf(c), tetOf(n) });
-      triInUnion.push_back(shape.classify(AlphaShape::Facet(c, j)) != AlphaShape::EXTERIOR);
-      facetTriangle[4 * raw + j] = t;
-      if (n->info() >= 0)
-      {
-        facetTriangle[4 * n->info() + n->index(c)] = t;
-      }
-    }
-  }
-  const std::vector<vtkIdType> triOrder = CanonicalOrder(triKeys);
+  const TetIndex tets = IndexTetrahedra(shape);
+  const RawTriangles tris = IndexTriangles(shape, tets);
+  const std::vector<vtkIdType> triOrder = CanonicalOrder(tris.Keys);
   const std::vector<vtkIdType> triRank = Inverse(triOrder);
-  this->TriangleVertices = Permute(triKeys, triOrder);
-  this->TriangleTets = Permute(triTets, triOrder);
-  this->TriangleInUnion = Permute(triInUnion, triOrder);
-
-  // Tetrahedra in canonical order; neighbours and faces follow the sorted vertices.
-  this->TetVertices.resize(rawTets);
-  this->TetNeighbours.resize(rawTets);
-  this->TetTriangles.resize(rawTets);
-  this->PowerCentres.resize(3 * rawTets);
-  this->TetInUnion.resize(rawTets);
-  for (vtkIdType k = 0; k < rawTets; ++k)
-  {
-    const vtkIdType raw = tetOrder[k];
-    const Triangulation::Cell_handle c = cells[raw];
-    this->TetVertices[k] = tetKeys[raw];
-    for (int j = 0; j < 4; ++j)
-    {
-      const vtkIdType slot =
-        std::find(tetKeys[raw].begin(), tetKeys[raw].end(), c->vertex(j)->info()) - tetKeys[raw].begin();
-      this->TetNeighbours[k][slot] = tetOf(c->neighbor(j));
-      this->TetTriangles[k][slot] = triRank[facetTriangle[4 * raw + j]];
-    }
-    const Kernel::Point_3 w = shape.dual(c);
-    this->PowerCentres[3 * k] = w.x();
-    this->PowerCentres[3 * k + 1] = w.y();
-    this->PowerCentres[3 * k + 2] = w.z();
-    this->TetInUnion[k] = shape.classify(c) == AlphaShape::INTERIOR;
-  }
-
-  // Edges: the sides of the triangles (every finite edge is one), sorted and made
-  // unique; each remembers one cell and indices to be classified by.
-  struct EdgeUse
-  {
-    std::array<vtkIdType, 2> Key;
-    vtkIdType Triangle; // canonical triangle index
-    int Side;           // 0: v0 v1, 1: v0 v2, 2: v1 v2
-    bool operator<(const EdgeUse& other) const
-    {
-      return this->Key < other.Key || (this->Key == other.Key && this->Triangle < other.Triangle);
-    }
-  };
-  const vtkIdType nf = static_cast<vtkIdType>(this->TriangleVertices.size());
-  std::vector<EdgeUse> uses(3 * nf);
-  for (vtkIdType t = 0; t < nf; ++t)
-  {
-    const auto& v = this->TriangleVertices[t];
-    uses[3 * t] = { { v[0], v[1] }, t, 0 };
-    uses[3 * t + 1] = { { v[0], v[2] }, t, 1 };
-    uses[3 * t + 2] = { { v[1], v[2] }, t, 2 };
-  }
-  std::sort(uses.begin(), uses.end());
-  this->TriangleEdges.resize(nf);
-  this->EdgeVertices.clear();
-  this->EdgeInUnion.clear();
-  for (size_t k = 0; k < uses.size(); ++k)
-  {
-    if (k == 0 || uses[k].Key != uses[k - 1].Key)
-    {
-      // Classified through a cell of the first triangle that has this edge.
-      const vtkIdType rawTriangle = triOrder[uses[k].Triangle];
-      const std::array<vtkIdType, 2>& tets = triTets[rawTriangle];
-      const Triangulation::Cell_handle c = cells[tetOrder[tets[0]]];
-      int i = -1, j = -1;
-      for (int m = 0; m < 4; ++m)
-      {
-        i = c->vertex(m)->info() == uses[k].Key[0] ? m : i;
-        j = c->vertex(m)->info() == uses[k].Key[1] ? m : j;
-      }
-      this->EdgeVertices.push_back(uses[k].Key);
-      this->EdgeInUnion.push_back(shape.classify(AlphaShape::Edge(c, i, j)) != AlphaShape::EXTERIOR);
-    }
-    this->TriangleEdges[uses[k].Triangle][uses[k].Side] = static_cast<vtkIdType>(this->EdgeVertices.size() - 1);
-  }
+  this->TriangleVertices = Permute(tris.Keys, triOrder);
+  this->TriangleTets = Permute(tris.Tets, triOrder);
+  this->TriangleInUnion = Permute(tris.InUnion, triOrder);
+  CopyTetrahedra(shape, tets, tris, triRank, *this);
+  IndexEdges(shape, tets, tris, triOrder, *this);
   return true;
 }
