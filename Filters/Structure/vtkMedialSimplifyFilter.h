@@ -7,8 +7,11 @@
  * starts with the spherical quadric error of the tangent planes of its slabs and cones;
  * edges are collapsed, cheapest first, each into the ball that minimises the summed
  * quadric; a collapse that would change the topology (the link condition) waits until
- * its neighbourhood changes. Collapses keep the homotopy type, so the components and
- * the Euler characteristic of the input are those of the output.
+ * its neighbourhood changes. When no collapse passes the link condition, collapses
+ * that keep the Euler characteristic and the components are allowed too: the
+ * components and the Euler characteristic of the input are those of the output, but
+ * such a collapse may remove a spurious cycle together with the cavity it bounds, so
+ * the homotopy type is not strictly kept.
  *
  * Input: a medial mesh (vtkPolyData with triangles and/or lines and a point-data radius,
  * input array 0, default Radius), e.g. vtkMedialMeshFilter's output or a .ma file.

@@ -25,7 +25,7 @@ def check(condition, message):
 LoadPlugin(plugin, remote=False, ns=globals())
 check(all(name in globals() for name in (
     "MedialAxisSampler", "MedialJunctionFilter", "MedialBallUnion", "MedialShapeSource",
-    "MedialReconstructionError", "MedialBallProtrusion", "MedialBallClassifier", "MedialThickness", "MedialMesh",
+    "MedialReconstructionError", "MedialBallProtrusion", "MedialBallClassifier", "MedialThickness", "MedialMesh", "MedialPrune", "MedialSimplify",
     "MedialMeshReader", "MedialOFFReader", "MedialBallPLYReader", "MedialBallCSVReader")),
       "the plugin defines every proxy")
 
@@ -114,6 +114,16 @@ check(meshed.GetNumberOfPolys() > 0 and euler is not None and euler.GetValue(0) 
       "medial mesh of a torus: %d triangles, Euler characteristic %s, %s component(s)"
       % (meshed.GetNumberOfPolys(), euler.GetValue(0) if euler else None,
          components.GetValue(0) if components else None))
+
+# Simplification to exactly 40 balls keeps the torus's topology; pruning keeps it too.
+simplified = servermanager.Fetch(MedialSimplify(Input=medial_mesh, NumberOfBalls=40))  # noqa: F821
+simple_euler = simplified.GetFieldData().GetArray("EulerCharacteristic")
+check(simplified.GetNumberOfPoints() == 40 and simple_euler is not None and simple_euler.GetValue(0) == 0,
+      "simplify: %d balls, Euler characteristic %s" % (simplified.GetNumberOfPoints(),
+                                                      simple_euler.GetValue(0) if simple_euler else None))
+pruned = servermanager.Fetch(MedialPrune(Input=medial_mesh, Measure="Separation angle"))  # noqa: F821
+check(pruned.GetCellData().GetArray("Significance") is not None and 0 < pruned.GetNumberOfPolys(),
+      "prune: %d of %d triangles kept, Significance per cell" % (pruned.GetNumberOfPolys(), meshed.GetNumberOfPolys()))
 
 # Enumerations take their labels; the values reach the filter.
 sampler.Method = "Bisection"
