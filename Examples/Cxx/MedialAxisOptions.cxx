@@ -32,7 +32,8 @@ const char* Usage =
   "  INPUT             closed surface (.vtp .vtk .ply .stl .obj .off) or planar polygons /\n"
   "                    closed polylines (any plane; holes, several outer boundaries, islands)\n"
   "                    for the 2D medial axis; or a demo: demo:jack (3D, the default with no\n"
-  "                    INPUT and no --balls), demo:l-shape, demo:rectangle, demo:frame, demo:star\n"
+  "                    INPUT and no --balls), demo:l-shape, demo:rectangle, demo:frame, demo:star,\n"
+  "                    demo:ellipse, demo:trefoil\n"
   "Sampling:\n"
   "  -n, --samples N   surface samples (default 10000; 10k, 1M accepted)\n"
   "  --method M        one-pass (default, fastest), bisection (the report's) or shrinking-ball\n"
@@ -72,6 +73,14 @@ const char* Usage =
   "                    medial_vertices, medial_edges, medial_faces, seams, junctions,\n"
   "                    euler_characteristic, components and medial_mesh_seconds; --render\n"
   "                    then draws it coloured by MedialPointType\n"
+  "  --prune           remove the insignificant branches, keeping the topology: of the 2D\n"
+  "                    graph (--junctions, --render) or of the medial mesh (--medial-mesh);\n"
+  "                    the default measure (tubularity) and threshold; --stats adds\n"
+  "                    pruned_branches and kept_balls\n"
+  "  --prune-threshold X  --prune with this threshold (tubularity, in [0, 1])\n"
+  "  --simplify K      with --medial-mesh: the medial mesh simplified to exactly K balls\n"
+  "                    (Q-MAT's quadric error, edge collapses, topology kept); --reconstruct\n"
+  "                    then rebuilds its envelope; --stats adds kept_balls, simplify_seconds\n"
   "  --thickness OUT   3D input: the surface with its wall thickness (point and cell data\n"
   "                    Thickness, MedialRadius, MedialCentre, RayThickness): .vtp .vtk;\n"
   "                    --render then draws the surface coloured by thickness; --stats adds\n"
@@ -230,6 +239,13 @@ const std::vector<Flag>& Flags()
     { "resolution", nullptr, F::COUNT, 8, 2048, [](Options& o, auto&, double v) { o.Resolution = static_cast<int>(v); } },
     { "junctions", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Junctions = t; } },
     { "medial-mesh", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.MedialMesh = t; } },
+    { "prune", nullptr, F::SWITCH, 0, 0, [](Options& o, auto&, double) { o.Prune = true; } },
+    { "prune-threshold", nullptr, F::NUMBER, 0, 1,
+      [](Options& o, auto&, double v) {
+        o.Prune = true;
+        o.PruneThreshold = v;
+      } },
+    { "simplify", nullptr, F::COUNT, 1, 1e9, [](Options& o, auto&, double v) { o.Simplify = static_cast<long long>(v); } },
     { "thickness", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Thickness = t; } },
     { "thickness-below", nullptr, F::NUMBER, 0, 1e300,
       [](Options& o, auto&, double v) {
@@ -429,6 +445,10 @@ void CheckOutputs(const Options& o)
   if (!o.MedialMesh.empty())
   {
     CheckWriter(o.MedialMesh, "--medial-mesh", vtkMedialFileWriter::BALLS);
+  }
+  if (o.Simplify > 0 && o.MedialMesh.empty())
+  {
+    Fail("--simplify K simplifies the medial mesh of a closed surface: give --medial-mesh OUT.ma|.vtp");
   }
   if (!o.Thickness.empty())
   {

@@ -23,6 +23,8 @@
 #include "vtkMedialBallClassifier.h"
 #include "vtkMedialJunctionFilter.h"
 #include "vtkMedialMeshFilter.h"
+#include "vtkMedialPruneFilter.h"
+#include "vtkMedialSimplifyFilter.h"
 #include "vtkMedialReconstructionError.h"
 #include "vtkMedialScene.h"
 #include "vtkMedialShapeSource.h"
@@ -130,6 +132,14 @@ vtkSmartPointer<vtkPolyData> MakeDemo(const std::string& name)
     demo->SetShapeToStar();
     demo->SetResolution(9);
   }
+  else if (name == "demo:ellipse")
+  {
+    demo->SetShapeToEllipse(); // 256 vertices: a smooth curve, for --prune
+  }
+  else if (name == "demo:trefoil")
+  {
+    demo->SetShapeToTrefoil(); // a rounded 3-armed star, 256 vertices, for --prune
+  }
   else if (name != "demo:jack")
   {
     return nullptr;
@@ -205,6 +215,9 @@ private:
   void Protrusion(bool sampled);
   void ThicknessReport();
   void MedialMeshReport(double seconds);
+  vtkSmartPointer<vtkPolyData> Prune(vtkPolyData* axis);
+  void Simplify();
+  void Rebuild(vtkPolyData* medial, bool envelope);
 
   const Options& Opt;
   Console& Out;
@@ -242,7 +255,7 @@ void Program::LoadInput()
     this->Surface = MakeDemo(input.empty() ? "demo:jack" : input);
     if (!this->Surface)
     {
-      Fail("unknown demo '" + input + "' (demo:jack, demo:l-shape, demo:rectangle, demo:frame, demo:star)");
+      Fail("unknown demo '" + input + "' (demo:jack, demo:l-shape, demo:rectangle, demo:frame, demo:star, demo:ellipse, demo:trefoil)");
     }
   }
   else
@@ -279,6 +292,10 @@ void Program::MedialGraph()
   Run(junctions, this->Out);
   this->Graph = Copy(junctions->GetOutput());
   this->Polygons = junctions->GetNumberOfPolygons();
+  if (this->Opt.Prune)
+  {
+    this->Graph = this->Prune(this->Graph);
+  }
   if (!this->Opt.Junctions.empty())
   {
     Write(this->Graph, this->Opt.Junctions, vtkMedialFileWriter::BALLS, this->Out);
@@ -378,15 +395,28 @@ void Program::Protrusion(bool sampled)
   this->Json << ", \"protrusion_max_rel\": " << protrusion->GetMaxProtrusion();
 }
 
-// --reconstruct: the union of the balls, and its error against a closed input.
+// --reconstruct: the union of the balls, and its error against a closed input; with
+// --prune or --simplify on a medial mesh, MedialMesh rebuilds its envelope instead.
 void Program::Reconstruct()
 {
-  if (this->Opt.Reconstruct.empty())
+  if (this->Opt.Reconstruct.empty() ||
+    (!this->Opt.MedialMesh.empty() && (this->Opt.Prune || this->Opt.Simplify > 0)))
   {
     return;
   }
+  this->Rebuild(this->Balls, false);
+}
+
+// The union of `medial`'s balls or, with `envelope`, the interpolated envelope of the
+// medial mesh (vtkMedialBallUnion MEDIAL_MESH).
+void Program::Rebuild(vtkPolyData* medial, bool envelope)
+{
   vtkNew<vtkMedialBallUnion> ballUnion;
-  ballUnion->SetInputData(this->Balls);
+  ballUnion->SetInputData(medial);
+  if (envelope)
+  {
+    ballUnion->SetPrimitives(vtkMedialBallUnion::MEDIAL_MESH);
+  }
   ballUnion->SetSampleDimensions(this->Opt.Resolution, this->Opt.Resolution, this->Opt.Resolution);
   ballUnion->SetNumberOfThreads(this->Opt.Threads);
   const Clock::time_point start = Clock::now();
@@ -430,8 +460,49 @@ void Program::MedialMesh()
   Run(filter, this->Out);
   const double seconds = SecondsSince(start);
   this->Mesh = Copy(filter->GetOutput());
-  Write(this->Mesh, this->Opt.MedialMesh, vtkMedialFileWriter::BALLS, this->Out);
   this->MedialMeshReport(seconds);
+  if (this->Opt.Prune)
+  {
+    this->Mesh = this->Prune(this->Mesh);
+  }
+  this->Simplify();
+  Write(this->Mesh, this->Opt.MedialMesh, vtkMedialFileWriter::BALLS, this->Out);
+  if (!this->Opt.Reconstruct.empty() && (this->Opt.Prune || this->Opt.Simplify > 0))
+  {
+    this->Rebuild(this->Mesh, true);
+  }
+}
+
+// --prune: the graph or medial mesh pruned with the default measure (or --prune-threshold).
+vtkSmartPointer<vtkPolyData> Program::Prune(vtkPolyData* axis)
+{
+  vtkNew<vtkMedialPruneFilter> prune;
+  prune->SetInputData(axis);
+  prune->SetThreshold(this->Opt.PruneThreshold);
+  Run(prune, this->Out);
+  this->Json << ", \"pruned_branches\": " << prune->GetNumberOfPrunedBranches();
+  if (this->Opt.Simplify <= 0)
+  {
+    this->Json << ", \"kept_balls\": " << prune->GetOutput()->GetNumberOfPoints();
+  }
+  return Copy(prune->GetOutput());
+}
+
+// --simplify K: the medial mesh reduced to K balls.
+void Program::Simplify()
+{
+  if (this->Opt.Simplify <= 0)
+  {
+    return;
+  }
+  vtkNew<vtkMedialSimplifyFilter> simplify;
+  simplify->SetInputData(this->Mesh);
+  simplify->SetNumberOfBalls(this->Opt.Simplify);
+  const Clock::time_point start = Clock::now();
+  Run(simplify, this->Out);
+  this->Json << ", \"kept_balls\": " << simplify->GetOutput()->GetNumberOfPoints()
+             << ", \"simplify_seconds\": " << SecondsSince(start);
+  this->Mesh = Copy(simplify->GetOutput());
 }
 
 // JSON members of the medial mesh: sizes, point types, topology and time.

@@ -41,6 +41,9 @@
  * radius minus its centre's distance to the surface); field data VertexMaxError,
  * VertexMeanError, AreaMaxError, AreaMeanError (two components: reconstruction to
  * original, original to reconstruction) and MaxProtrusion, relative to the diagonal.
+ *
+ * Pruning (vtkMedialPruneFilter): cell data Significance, the threshold of the chosen
+ * measure from which pruning removes the cell.
  */
 #ifndef vtkMedialArrayNames_h
 #define vtkMedialArrayNames_h
@@ -99,6 +102,9 @@ constexpr const char* VertexMeanError = "VertexMeanError";
 constexpr const char* AreaMaxError = "AreaMaxError";
 constexpr const char* AreaMeanError = "AreaMeanError";
 constexpr const char* MaxProtrusion = "MaxProtrusion";
+
+// Pruning (vtkMedialPruneFilter): the threshold from which a cell is removed.
+constexpr const char* Significance = "Significance";
 }
 
 #endif

@@ -337,6 +337,27 @@ void MakePlanar(vtkPolyData* out, int shape, const double lengths[3], double rad
       loops.push_back({ { -2, -2 }, { 2, -2 }, { 2, 2 }, { -2, 2 } });
       loops.push_back({ { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } });
       break;
+    case vtkMedialShapeSource::ELLIPSE:
+    case vtkMedialShapeSource::TREFOIL:
+    {
+      std::vector<std::array<double, 2>> curve;
+      const int n = 16 * resolution;
+      for (int i = 0; i < n; ++i)
+      {
+        const double t = 2.0 * Pi * i / n;
+        if (shape == vtkMedialShapeSource::ELLIPSE)
+        {
+          curve.push_back({ 0.5 * lengths[0] * std::cos(t), 0.5 * lengths[1] * std::sin(t) });
+        }
+        else
+        {
+          const double r = radius * (1.0 + 0.5 * std::cos(3.0 * t));
+          curve.push_back({ r * std::cos(t), r * std::sin(t) });
+        }
+      }
+      loops.push_back(curve);
+      break;
+    }
     default:
     {
       std::vector<std::array<double, 2>> star;
@@ -472,6 +493,8 @@ int vtkMedialShapeSource::RequestData(vtkInformation*, vtkInformationVector**, v
     case RECTANGLE:
     case SQUARE_FRAME:
     case STAR:
+    case ELLIPSE:
+    case TREFOIL:
       MakePlanar(output, this->Shape, this->BoxLengths, this->Radius, this->Resolution);
       return 1;
     case RINGS:

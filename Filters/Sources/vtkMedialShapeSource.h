@@ -35,6 +35,13 @@
  *  - STAR: Resolution spikes of outer radius Radius and inner radius Radius / 2,
  *    radii wobbled deterministically so the graph has no symmetric degeneracies
  *    (2 * Resolution vertices).
+ *  - ELLIPSE: semi-axes BoxLengths[0] / 2 and BoxLengths[1] / 2 (default 1.5 x 1),
+ *    16 * Resolution vertices at equal parameter steps: a finely polygonised smooth
+ *    curve whose medial axis is one segment (between the centres of curvature of its
+ *    two ends), for pruning.
+ *  - TREFOIL: a rounded 3-armed star, r(t) = Radius (1 + cos(3 t) / 2), 16 * Resolution
+ *    vertices: three round lobes with concave waists; its smooth medial axis is three
+ *    branches meeting at the centre.
  *
  * Output: vtkPolyData of triangles (polygons for the planar shapes), double-precision points.
  */
@@ -63,12 +70,14 @@ public:
     STAR = 7,
     TORUS = 8,
     HOLLOW_SPHERE = 9,
-    RINGS = 10
+    RINGS = 10,
+    ELLIPSE = 11,
+    TREFOIL = 12
   };
 
   ///@{
   /// Which shape to generate (default JACK).
-  vtkSetClampMacro(Shape, int, JACK, RINGS);
+  vtkSetClampMacro(Shape, int, JACK, TREFOIL);
   vtkGetMacro(Shape, int);
   void SetShapeToJack() { this->SetShape(JACK); }
   void SetShapeToSphere() { this->SetShape(SPHERE); }
@@ -81,8 +90,13 @@ public:
   void SetShapeToTorus() { this->SetShape(TORUS); }
   void SetShapeToHollowSphere() { this->SetShape(HOLLOW_SPHERE); }
   void SetShapeToRings() { this->SetShape(RINGS); }
+  void SetShapeToEllipse() { this->SetShape(ELLIPSE); }
+  void SetShapeToTrefoil() { this->SetShape(TREFOIL); }
   /// True for the planar (2D) shapes.
-  static bool IsPlanar(int shape) { return shape >= L_SHAPE && shape <= STAR; }
+  static bool IsPlanar(int shape)
+  {
+    return (shape >= L_SHAPE && shape <= STAR) || shape == ELLIPSE || shape == TREFOIL;
+  }
   ///@}
 
   ///@{

@@ -8,6 +8,7 @@
 #include "vtkMedialMeshComplex.h"
 #include "vtkMedialPieces.h"
 #include "vtkMedialPowerComplex.h"
+#include "vtkMedialSimplicialComplex.h"
 #include "vtkMedialProgress.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
@@ -53,24 +54,6 @@ struct vtkMedialMeshFilter::BallSet
 
 namespace
 {
-// Medial point type from the mesh around each vertex (when the balls carry none).
-int MeshPointType(int seamEdges, int rimEdges, int curveEdges, int degree)
-{
-  if (seamEdges >= 3 || curveEdges >= 3)
-  {
-    return 3; // junction
-  }
-  if (seamEdges >= 1)
-  {
-    return 2; // seam
-  }
-  if (rimEdges >= 1 || degree <= 1)
-  {
-    return 0; // rim, the free end of a curve, or an isolated ball
-  }
-  return 1; // sheet, or inside a curve
-}
-
 // The solid body of each triangle of the prepared surface: its shell, or for a cavity
 // (a closed shell at odd depth) the shell enclosing it, so that a hollow solid is one.
 std::vector<vtkIdType> TriangleBodies(const vtkMedialTriangleMesh& mesh)
@@ -506,65 +489,20 @@ void vtkMedialMeshFilter::WriteMesh(
   outPD->AddArray(radius);
   output->SetPoints(points);
 
-  // Lines: edges of no triangle (curves) and of three or more (seams). Per vertex, the
-  // edges of each kind, for the point types.
-  std::vector<int> seam(nv, 0), rim(nv, 0), curve(nv, 0), degree(nv, 0);
-  vtkNew<vtkCellArray> lines;
-  std::vector<int> lineTypes;
+  // Cells on the output's point ids (vtkMedialSimplicialComplex::WriteCells: vertices,
+  // curve and seam lines, triangles, MedialCellType, the point types from the mesh).
+  std::vector<std::array<vtkIdType, 2>> edges(complex.Edges.size());
   for (size_t e = 0; e < complex.Edges.size(); ++e)
   {
-    const vtkIdType ends[2] = { pointOf[complex.Edges[e][0]], pointOf[complex.Edges[e][1]] };
-    const int triangles = complex.EdgeTriangles[e];
-    for (vtkIdType v : ends)
-    {
-      ++degree[v];
-      seam[v] += triangles >= 3;
-      rim[v] += triangles == 1;
-      curve[v] += triangles == 0;
-    }
-    if (triangles == 0 || triangles >= 3)
-    {
-      lines->InsertNextCell(2, ends);
-      lineTypes.push_back(triangles == 0 ? CURVE_EDGE : SEAM_EDGE);
-    }
+    edges[e] = { pointOf[complex.Edges[e][0]], pointOf[complex.Edges[e][1]] };
   }
-  vtkNew<vtkCellArray> verts;
-  for (vtkIdType k = 0; k < nv; ++k)
+  std::vector<std::array<vtkIdType, 3>> triangles(complex.Triangles.size());
+  for (size_t t = 0; t < complex.Triangles.size(); ++t)
   {
-    if (degree[k] == 0)
-    {
-      verts->InsertNextCell(1, &k);
-    }
+    const auto& c = complex.Triangles[t];
+    triangles[t] = { pointOf[c[0]], pointOf[c[1]], pointOf[c[2]] };
   }
-  vtkNew<vtkCellArray> polys;
-  polys->AllocateExact(static_cast<vtkIdType>(complex.Triangles.size()), 3 * complex.Triangles.size());
-  for (const auto& t : complex.Triangles)
-  {
-    const vtkIdType ids[3] = { pointOf[t[0]], pointOf[t[1]], pointOf[t[2]] };
-    polys->InsertNextCell(3, ids);
-  }
-  output->SetVerts(verts);
-  output->SetLines(lines);
-  output->SetPolys(polys);
-
-  // Cell data in VTK's cell order: vertices, lines, polygons.
-  vtkNew<vtkIntArray> cellTypes;
-  cellTypes->SetName(vtkMedialArrayNames::MedialCellType);
-  cellTypes->Allocate(output->GetNumberOfCells());
-  for (vtkIdType k = 0; k < verts->GetNumberOfCells(); ++k)
-  {
-    cellTypes->InsertNextValue(ISOLATED_BALL);
-  }
-  for (int type : lineTypes)
-  {
-    cellTypes->InsertNextValue(type);
-  }
-  for (vtkIdType k = 0; k < polys->GetNumberOfCells(); ++k)
-  {
-    cellTypes->InsertNextValue(SHEET_TRIANGLE);
-  }
-  output->GetCellData()->AddArray(cellTypes);
-
+  const auto cells = vtkMedialSimplicialComplex::WriteCells(nv, edges, complex.EdgeTriangles, triangles, output);
   if (!outPD->GetArray(vtkMedialArrayNames::MedialPointType))
   {
     vtkNew<vtkIntArray> types;
@@ -572,7 +510,7 @@ void vtkMedialMeshFilter::WriteMesh(
     types->SetNumberOfTuples(nv);
     for (vtkIdType k = 0; k < nv; ++k)
     {
-      types->SetValue(k, MeshPointType(seam[k], rim[k], curve[k], degree[k]));
+      types->SetValue(k, cells.PointTypes[k]);
     }
     outPD->AddArray(types);
   }

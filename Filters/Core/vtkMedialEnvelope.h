@@ -3,6 +3,8 @@
  * @file vtkMedialEnvelope.h
  * @brief Internal: the balls interpolated along a medial mesh's edges and triangles
  * (the primitives of sphere-meshes: cones and slabs), and their distance-like function.
+ * Used by vtkMedialBallUnion (the envelope) and by the structure filters (the slabs'
+ * tangent planes and the slope of the radius).
  *
  * A primitive with vertex balls (c_j, r_j) is the union of the balls
  * B(c(l), r(l)) whose centre and radius are interpolated with barycentric weights l

@@ -1,0 +1,56 @@
+#!/usr/bin/env python3
+"""Pruning and simplification: the 2D graph of a finely polygonised trefoil pruned to its
+3 true branches, and the medial mesh of the demo jack simplified to K balls.
+
+Usage (from the build tree):
+  PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 Examples/Python/prune_simplify.py [K]
+Prints the graph's end points and junctions before and after pruning (the Significance
+array lets you threshold it yourself), then the simplified mesh's size and topology.
+"""
+import sys
+
+import numpy as np
+
+import medialaxis
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+
+def ends_and_junctions(graph):
+    kind = vtk_to_numpy(graph.GetPointData().GetArray("MedialPointType"))
+    return int((kind == 0).sum()), int((kind == 2).sum())
+
+
+trefoil = medialaxis.vtkMedialShapeSource()
+trefoil.SetShapeToTrefoil()  # a rounded 3-armed star, 16 * Resolution vertices
+trefoil.SetResolution(38)
+graph = medialaxis.vtkMedialJunctionFilter()
+graph.SetInputConnection(trefoil.GetOutputPort())
+prune = medialaxis.vtkMedialPruneFilter()  # default measure and threshold
+prune.SetInputConnection(graph.GetOutputPort())
+prune.Update()
+graph.Update()
+before, after = ends_and_junctions(graph.GetOutput()), ends_and_junctions(prune.GetOutput())
+significance = vtk_to_numpy(prune.GetOutput().GetCellData().GetArray("Significance"))
+print(f"trefoil graph: {before[0]} end points, {before[1]} junctions; pruned "
+      f"({medialaxis.vtkMedialPruneFilter.GetMeasureName(prune.GetMeasure())}, threshold "
+      f"{prune.GetEffectiveThreshold():g}): {after[0]} end points, {after[1]} junctions, "
+      f"{prune.GetNumberOfPrunedBranches()} branches removed, least kept Significance "
+      f"{significance.min():.3f}")
+
+k = int(sys.argv[1]) if len(sys.argv) > 1 else 50
+jack = medialaxis.vtkMedialShapeSource()  # the demo solid (JACK)
+balls = medialaxis.vtkMedialAxisSampler()
+balls.SetInputConnection(jack.GetOutputPort())
+balls.SetNumberOfSamples(3000)
+mesh = medialaxis.vtkMedialMeshFilter()
+mesh.SetInputConnection(jack.GetOutputPort())
+mesh.SetBallsConnection(balls.GetOutputPort())
+simplify = medialaxis.vtkMedialSimplifyFilter()
+simplify.SetInputConnection(mesh.GetOutputPort())
+simplify.SetNumberOfBalls(k)
+simplify.Update()
+out = simplify.GetOutput()
+radius = vtk_to_numpy(out.GetPointData().GetArray("Radius"))
+print(f"jack medial mesh: {mesh.GetOutput().GetNumberOfPoints()} balls -> {out.GetNumberOfPoints()} balls, "
+      f"{out.GetNumberOfPolys()} triangles, Euler characteristic {simplify.GetEulerCharacteristic()}, "
+      f"{simplify.GetNumberOfComponents()} component(s), radii {np.min(radius):.3f} to {np.max(radius):.3f}")

@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkMedialSimplifyFilter.h"
+#include "vtkMedialArrayNames.h"
+
+#include "vtkMedialPipeline.h"
+#include "vtkMedialQuadricSimplification.h"
+#include "vtkMedialSimplicialComplex.h"
+
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkMedialSimplifyFilter);
+
+vtkMedialSimplifyFilter::vtkMedialSimplifyFilter()
+{
+  this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkMedialArrayNames::Radius);
+}
+
+int vtkMedialSimplifyFilter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+int vtkMedialSimplifyFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // Collapses run across pieces: simplify the whole mesh.
+  vtkMedialRequestWholeInput(inputVector, 1);
+  return 1;
+}
+
+int vtkMedialSimplifyFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  this->NumberOfBlockedCollapses = this->EulerCharacteristic = this->NumberOfComponents = 0;
+  const vtkIdType n = input->GetNumberOfPoints();
+  if (n == 0)
+  {
+    return 1;
+  }
+  vtkDataArray* radius = this->GetInputArrayToProcess(0, inputVector);
+  if (!radius || radius->GetNumberOfComponents() != 1 || radius->GetNumberOfTuples() != n)
+  {
+    vtkErrorMacro(<< "Cannot simplify: the medial mesh needs a point data array of one radius per point (by "
+                     "default '"
+                  << vtkMedialArrayNames::Radius << "').");
+    return 0;
+  }
+  if (input->GetNumberOfLines() + input->GetNumberOfPolys() == 0 && n > this->NumberOfBalls)
+  {
+    vtkErrorMacro(<< "Cannot simplify: the input has balls but no edges or triangles; simplification works on a "
+                     "medial mesh (vtkMedialMeshFilter).");
+    return 0;
+  }
+  vtkMedialSimplicialComplex complex;
+  std::string error;
+  if (!complex.Read(input, radius, error))
+  {
+    vtkErrorMacro(<< "Cannot simplify: " << error << ".");
+    return 0;
+  }
+  vtkMedialQuadricSimplification simplification;
+  if (!simplification.Run(complex, this->NumberOfBalls, [this]() { return this->GetAbortExecute() != 0; }))
+  {
+    return 1;
+  }
+  const vtkIdType kept = static_cast<vtkIdType>(simplification.Radii.size());
+  if (kept > this->NumberOfBalls)
+  {
+    this->NumberOfBlockedCollapses = simplification.BlockedCollapses;
+    vtkWarningMacro(<< kept << " balls are left instead of " << this->NumberOfBalls
+                    << ": every remaining collapse would change the topology.");
+  }
+
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(kept);
+  vtkNew<vtkDoubleArray> radii;
+  radii->SetName(vtkMedialArrayNames::Radius);
+  radii->SetNumberOfTuples(kept);
+  for (vtkIdType v = 0; v < kept; ++v)
+  {
+    points->SetPoint(v, &simplification.Points[3 * v]);
+    radii->SetValue(v, simplification.Radii[v]);
+  }
+  output->SetPoints(points);
+  output->GetPointData()->AddArray(radii);
+  output->GetPointData()->SetActiveScalars(vtkMedialArrayNames::Radius);
+  const auto cells = vtkMedialSimplicialComplex::WriteCells(
+    kept, simplification.Edges, simplification.EdgeTriangles, simplification.Triangles, output);
+  vtkNew<vtkIntArray> types;
+  types->SetName(vtkMedialArrayNames::MedialPointType);
+  types->SetNumberOfTuples(kept);
+  for (vtkIdType v = 0; v < kept; ++v)
+  {
+    types->SetValue(v, cells.PointTypes[v]);
+  }
+  output->GetPointData()->AddArray(types);
+
+  // The topology of the result, counted from its own complex.
+  vtkMedialSimplicialComplex result;
+  result.Points = simplification.Points;
+  result.Radii = simplification.Radii;
+  result.Assemble(kept, simplification.Edges, simplification.Triangles);
+  const std::vector<char> allVertices(static_cast<size_t>(kept), 1);
+  const std::vector<char> allEdges(result.Edges.size(), 1);
+  const std::vector<char> allTriangles(result.Triangles.size(), 1);
+  this->EulerCharacteristic = vtkMedialSimplicialComplex::EulerCharacteristic(allVertices, allEdges, allTriangles);
+  this->NumberOfComponents = result.CountComponents(allVertices, allEdges);
+  // Collapses keep the topology: the input's figures (the medial mesh's and the solid's) hold.
+  output->GetFieldData()->PassData(input->GetFieldData());
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkMedialSimplifyFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfBalls: " << this->NumberOfBalls << "\n";
+  os << indent << "NumberOfBlockedCollapses: " << this->NumberOfBlockedCollapses << "\n";
+  os << indent << "EulerCharacteristic: " << this->EulerCharacteristic << "\n";
+  os << indent << "NumberOfComponents: " << this->NumberOfComponents << "\n";
+}
