@@ -215,37 +215,41 @@ double RunSampler(vtkPolyData* mesh, int method, int threads, vtkIdType samples,
   }
   return 1e6 * (seconds - preparation) / samples;
 }
-}
 
-int main(int argc, char* argv[])
+struct BenchOptions
 {
-  bool json = false;
-  bool structureOnly = false;
-  vtkIdType samples = 200000;
-  vtkIdType defaultSamples = 1000000;
-  std::string sharedDir = MEDIALAXIS_SHARED_MESH_DIR;
+  bool Json = false;
+  bool StructureOnly = false;
+  vtkIdType Samples = 200000;
+  vtkIdType DefaultSamples = 1000000;
+  std::string SharedDir = MEDIALAXIS_SHARED_MESH_DIR;
+};
+
+// False (after printing the usage) on an unknown or incomplete argument.
+bool ParseArgs(int argc, char* argv[], BenchOptions& options)
+{
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
     if (a == "--json")
     {
-      json = true;
+      options.Json = true;
     }
     else if (a == "--structure")
     {
-      structureOnly = true;
+      options.StructureOnly = true;
     }
     else if (a == "--samples" && i + 1 < argc)
     {
-      samples = std::atoll(argv[++i]);
+      options.Samples = std::atoll(argv[++i]);
     }
     else if (a == "--default-samples" && i + 1 < argc)
     {
-      defaultSamples = std::atoll(argv[++i]);
+      options.DefaultSamples = std::atoll(argv[++i]);
     }
     else if (a == "--shared" && i + 1 < argc)
     {
-      sharedDir = argv[++i];
+      options.SharedDir = argv[++i];
     }
     else
     {
@@ -253,55 +257,80 @@ int main(int argc, char* argv[])
         "usage: medial-bench [--json] [--samples N (per method run, default 200000)]\n"
         "                    [--default-samples N (default method, 2 threads; default 1000000)]\n"
         "                    [--shared DIR] [--structure (only the 3D classification rows)]\n");
-      return 1;
+      return false;
     }
   }
-  // The 3D classification rows (first: they are short).
-  std::string structureLabel;
-  vtkSmartPointer<vtkPolyData> structureMesh = LoadBenchMesh(sharedDir, 0, 16, structureLabel);
-  const std::vector<StructureRow> structure = { RunStructure(structureMesh, 45.0), RunStructure(structureMesh, 0.0) };
-  if (structureOnly)
-  {
-    std::ostringstream js;
-    PrintStructure(structure, structureLabel, json, js);
-    if (json)
-    {
-      std::printf("{%s}\n", js.str().substr(2).c_str());
-    }
-    return 0;
-  }
+  return true;
+}
 
-  std::string label;
-  const double tLoad = Now();
-  vtkSmartPointer<vtkPolyData> mesh = LoadBenchMesh(sharedDir, 2, 230, label);
-  const double loadSeconds = Now() - tLoad;
+// The engines the query rows measure. main owns them for the whole run, so that the
+// peak RSS counts them while the methods run.
+struct QueryEngines
+{
+  vtkMedialTriangleMesh Prepared;
+  vtkMedialSurfaceQuery Query;
+  vtkMedialTriangleBVH OwnTree;
+  vtkNew<vtkMedialAxisSampler> Probe; // medial centres for the point queries
+};
 
-  // Preparation and BVH build, timed apart from sampling.
-  vtkMedialTriangleMesh prepared;
+// Point-query times on one engine, microseconds per query.
+struct EngineRow
+{
+  double Closest, Yes, No;
+};
+
+// Everything a full run measures, for PrintJson and PrintTables.
+struct BenchFigures
+{
+  std::string Label;
+  vtkIdType Triangles = 0;
+  double LoadSeconds = 0, PrepareSeconds = 0, BvhSeconds = 0, TreeSeconds = 0;
+  vtkIdType TreeNodes = 0;
+  double RayMicro = 0, ClosestMicro = 0, LimitMicro = 0;
+  EngineRow Engines[2] = {};
+  std::vector<Row> Rows;
+  int DefaultMethod = 0;
+  double DefaultIterations = 0;
+  vtkIdType DefaultCapped = 0;
+  double DefaultSeconds = 0; // including the preparation
+  double DefaultMicro = 0;
+  vtkIdType SphereTriangles = 0;
+  double SphereMicro = 0;
+  double PeakRss = 0;
+};
+
+// Preparation and BVH build, timed apart from sampling. False (after printing the
+// error) when the mesh cannot be prepared.
+bool BuildEngines(vtkPolyData* mesh, QueryEngines& engines, BenchFigures& figures)
+{
   std::string error;
   const double tPrep = Now();
-  if (!prepared.Build(mesh, error))
+  if (!engines.Prepared.Build(mesh, error))
   {
     std::fprintf(stderr, "medial-bench: %s\n", error.c_str());
-    return 1;
+    return false;
   }
-  const double prepSeconds = Now() - tPrep;
-  vtkMedialSurfaceQuery query;
+  figures.PrepareSeconds = Now() - tPrep;
   const double tBvh = Now();
-  if (!query.Build(&prepared, error))
+  if (!engines.Query.Build(&engines.Prepared, error))
   {
     std::fprintf(stderr, "medial-bench: %s\n", error.c_str());
-    return 1;
+    return false;
   }
-  const double bvhSeconds = Now() - tBvh;
+  figures.BvhSeconds = Now() - tBvh;
   // The own tree alone (query.Build makes both it and Embree's scene).
-  vtkMedialTriangleBVH ownTree;
   const double tTree = Now();
-  ownTree.Build(prepared);
-  const double treeSeconds = Now() - tTree;
+  engines.OwnTree.Build(engines.Prepared);
+  figures.TreeSeconds = Now() - tTree;
+  figures.Triangles = engines.Prepared.GetNumberOfTriangles();
+  figures.TreeNodes = engines.OwnTree.GetNumberOfNodes();
+  return true;
+}
 
-  // Query throughput on 2 threads: rays from random surface points, then bounded
-  // closest-point queries from medial centres (radius as the bound).
+// Ray throughput on 2 threads, microseconds per ray: rays from random surface points
+// along the inward normal.
+double MeasureRays(const vtkMedialTriangleMesh& prepared, vtkMedialSurfaceQuery& query)
+{
   const int queries = 200000;
   std::vector<double> centres(3 * queries), radii(queries);
   const double tRay = Now();
@@ -327,10 +356,15 @@ int main(int argc, char* argv[])
       centres[3 * i + k] = p[k] + radii[i] * n[k];
     }
   }
-  const double rayMicro = 1e6 * (Now() - tRay) / queries;
+  return 1e6 * (Now() - tRay) / queries;
+}
 
-  // Closest-point queries from the medial points of a short default run.
-  vtkNew<vtkMedialAxisSampler> probe;
+// Point queries from the medial centres of a short default run, on each engine:
+// bounded closest point, and contains-ball just inside ("yes", must see every
+// candidate) and just outside ("no", may stop at the first blocker) the medial radius.
+void MeasurePointQueries(vtkPolyData* mesh, QueryEngines& engines, BenchFigures& figures)
+{
+  vtkMedialAxisSampler* probe = engines.Probe;
   probe->SetInputData(mesh);
   probe->SetNumberOfSamples(20000);
   probe->SetNumberOfThreads(2);
@@ -338,13 +372,8 @@ int main(int argc, char* argv[])
   vtkPolyData* medial = probe->GetOutput();
   const int probes = static_cast<int>(medial->GetNumberOfPoints());
   vtkDataArray* probeRadius = medial->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
-  // Point queries from the medial centres, on each engine: bounded closest point,
-  // and contains-ball just inside ("yes", must see every candidate) and just
-  // outside ("no", may stop at the first blocker) the medial radius.
-  struct EngineRow
-  {
-    double Closest, Yes, No;
-  } engines[2];
+  vtkMedialSurfaceQuery& query = engines.Query;
+  const double diagonal = engines.Prepared.Diagonal;
   for (int engine : { vtkMedialSurfaceQuery::EMBREE, vtkMedialSurfaceQuery::OWN_TREE })
   {
     query.SetPointQueryEngine(engine);
@@ -359,7 +388,7 @@ int main(int argc, char* argv[])
         vtkMedialSurfaceQuery::ClosestHit hit;
         if (kind == 0)
         {
-          query.ClosestPoint(c, r + 1e-6 * prepared.Diagonal, hit);
+          query.ClosestPoint(c, r + 1e-6 * diagonal, hit);
         }
         else
         {
@@ -368,30 +397,39 @@ int main(int argc, char* argv[])
       }
       return 1e6 * (Now() - t0) / probes;
     };
-    engines[engine] = { timed(0), timed(1), timed(2) };
+    figures.Engines[engine] = { timed(0), timed(1), timed(2) };
   }
   query.SetPointQueryEngine(vtkMedialSurfaceQuery::OWN_TREE);
-  const double closestMicro = engines[vtkMedialSurfaceQuery::OWN_TREE].Closest;
-  const double limitMicro = rayMicro + closestMicro;
+}
 
-  // Each method with 1 and 2 threads.
-  std::vector<Row> rows;
+// The query rows: rays, then point queries from medial centres; the "limit" is one
+// ray plus one bounded closest-point query (own tree) per sample.
+void MeasureQueries(vtkPolyData* mesh, QueryEngines& engines, BenchFigures& figures)
+{
+  figures.RayMicro = MeasureRays(engines.Prepared, engines.Query);
+  MeasurePointQueries(mesh, engines, figures);
+  figures.ClosestMicro = figures.Engines[vtkMedialSurfaceQuery::OWN_TREE].Closest;
+  figures.LimitMicro = figures.RayMicro + figures.ClosestMicro;
+}
+
+// Each method with 1 and 2 threads, the default method with the default sample
+// count, and the worst case; then the peak RSS.
+void MeasureMethods(vtkPolyData* mesh, const BenchOptions& options, BenchFigures& figures)
+{
   vtkNew<vtkMedialAxisSampler> defaults;
-  const int defaultMethod = defaults->GetMethod();
+  figures.DefaultMethod = defaults->GetMethod();
   for (int method = vtkMedialAxisSampler::BISECTION; method <= vtkMedialAxisSampler::ONE_PASS; ++method)
   {
     double it1, it2;
     vtkIdType capped1, capped2;
-    const double one = RunSampler(mesh, method, 1, samples, it1, capped1);
-    const double two = RunSampler(mesh, method, 2, samples, it2, capped2);
-    rows.push_back({ std::string(vtkMedialAxisSampler::GetMethodName(method)) + ", 1 thread", one, it1, 0 });
-    rows.push_back({ std::string(vtkMedialAxisSampler::GetMethodName(method)) + ", 2 threads", two, it2, one / two });
+    const double one = RunSampler(mesh, method, 1, options.Samples, it1, capped1);
+    const double two = RunSampler(mesh, method, 2, options.Samples, it2, capped2);
+    const std::string name = vtkMedialAxisSampler::GetMethodName(method);
+    figures.Rows.push_back({ name + ", 1 thread", one, it1, 0 });
+    figures.Rows.push_back({ name + ", 2 threads", two, it2, one / two });
   }
-  double itDefault;
-  vtkIdType cappedDefault;
-  double defaultSeconds; // including the preparation
-  const double defaultMicro =
-    RunSampler(mesh, defaultMethod, 2, defaultSamples, itDefault, cappedDefault, &defaultSeconds);
+  figures.DefaultMicro = RunSampler(mesh, figures.DefaultMethod, 2, options.DefaultSamples,
+    figures.DefaultIterations, figures.DefaultCapped, &figures.DefaultSeconds);
 
   // Worst case: a 327k-triangle sphere (every closest-point query sees many equidistant facets).
   vtkNew<vtkMedialShapeSource> sphere;
@@ -400,70 +438,125 @@ int main(int argc, char* argv[])
   sphere->Update();
   double itSphere;
   vtkIdType cappedSphere;
-  const double sphereMicro = RunSampler(sphere->GetOutput(), defaultMethod, 2, 5000, itSphere, cappedSphere);
-  const double rss = PeakRssMiB();
+  figures.SphereMicro = RunSampler(sphere->GetOutput(), figures.DefaultMethod, 2, 5000, itSphere, cappedSphere);
+  figures.SphereTriangles = sphere->GetOutput()->GetNumberOfCells();
+  figures.PeakRss = PeakRssMiB();
+}
 
-  if (json)
+void PrintJson(const BenchFigures& f, const BenchOptions& options, const std::vector<StructureRow>& structure,
+  const std::string& structureLabel)
+{
+  std::ostringstream js;
+  js << "{\"mesh\": \"" << f.Label << "\", \"triangles\": " << f.Triangles << ", \"load_seconds\": " << f.LoadSeconds
+     << ", \"prepare_seconds\": " << f.PrepareSeconds << ", \"bvh_seconds\": " << f.BvhSeconds
+     << ", \"own_tree_seconds\": " << f.TreeSeconds << ", \"own_tree_nodes\": " << f.TreeNodes
+     << ", \"ray_us\": " << f.RayMicro << ", \"closest_point_us\": " << f.ClosestMicro
+     << ", \"limit_us\": " << f.LimitMicro;
+  for (int e : { 0, 1 })
   {
-    std::ostringstream js;
-    js << "{\"mesh\": \"" << label << "\", \"triangles\": " << prepared.GetNumberOfTriangles()
-       << ", \"load_seconds\": " << loadSeconds << ", \"prepare_seconds\": " << prepSeconds
-       << ", \"bvh_seconds\": " << bvhSeconds << ", \"own_tree_seconds\": " << treeSeconds
-       << ", \"own_tree_nodes\": " << ownTree.GetNumberOfNodes() << ", \"ray_us\": " << rayMicro
-       << ", \"closest_point_us\": " << closestMicro << ", \"limit_us\": " << limitMicro;
-    for (int e : { 0, 1 })
-    {
-      js << ", \"" << (e ? "own_tree" : "embree") << "\": {\"closest_point_us\": " << engines[e].Closest
-         << ", \"contains_ball_yes_us\": " << engines[e].Yes << ", \"contains_ball_no_us\": " << engines[e].No << "}";
-    }
-    for (const Row& r : rows)
-    {
-      js << ", \"" << r.Name << "\": {\"us_per_sample\": " << r.MicrosecondsPerSample
-         << ", \"iterations\": " << r.Iterations << ", \"ratio_to_limit\": " << r.MicrosecondsPerSample / limitMicro << "}";
-    }
-    js << ", \"default_method\": \"" << vtkMedialAxisSampler::GetMethodName(defaultMethod)
-       << "\", \"default_samples\": " << defaultSamples << ", \"default_seconds\": " << defaultSeconds
-       << ", \"default_us_per_sample\": " << defaultMicro << ", \"sphere_us_per_sample\": " << sphereMicro
-       << ", \"sphere_to_horse\": " << sphereMicro / defaultMicro << ", \"peak_rss_mib\": " << rss;
-    PrintStructure(structure, structureLabel, json, js);
-    js << "}";
-    std::printf("%s\n", js.str().c_str());
-    return 0;
+    js << ", \"" << (e ? "own_tree" : "embree") << "\": {\"closest_point_us\": " << f.Engines[e].Closest
+       << ", \"contains_ball_yes_us\": " << f.Engines[e].Yes << ", \"contains_ball_no_us\": " << f.Engines[e].No
+       << "}";
   }
-  std::printf("mesh: %s, %lld triangles\n", label.c_str(), static_cast<long long>(prepared.GetNumberOfTriangles()));
+  for (const Row& r : f.Rows)
+  {
+    js << ", \"" << r.Name << "\": {\"us_per_sample\": " << r.MicrosecondsPerSample
+       << ", \"iterations\": " << r.Iterations << ", \"ratio_to_limit\": " << r.MicrosecondsPerSample / f.LimitMicro
+       << "}";
+  }
+  js << ", \"default_method\": \"" << vtkMedialAxisSampler::GetMethodName(f.DefaultMethod)
+     << "\", \"default_samples\": " << options.DefaultSamples << ", \"default_seconds\": " << f.DefaultSeconds
+     << ", \"default_us_per_sample\": " << f.DefaultMicro << ", \"sphere_us_per_sample\": " << f.SphereMicro
+     << ", \"sphere_to_horse\": " << f.SphereMicro / f.DefaultMicro << ", \"peak_rss_mib\": " << f.PeakRss;
+  PrintStructure(structure, structureLabel, true, js);
+  js << "}";
+  std::printf("%s\n", js.str().c_str());
+}
+
+void PrintTables(const BenchFigures& f, const BenchOptions& options, const std::vector<StructureRow>& structure,
+  const std::string& structureLabel)
+{
+  std::printf("mesh: %s, %lld triangles\n", f.Label.c_str(), static_cast<long long>(f.Triangles));
   std::printf("load %.2f s, prepare (merge, orient) %.2f s, BVH build (Embree + own tree) %.2f s, "
               "own tree alone %.2f s (%lld nodes)\n",
-    loadSeconds, prepSeconds, bvhSeconds, treeSeconds, static_cast<long long>(ownTree.GetNumberOfNodes()));
+    f.LoadSeconds, f.PrepareSeconds, f.BvhSeconds, f.TreeSeconds, static_cast<long long>(f.TreeNodes));
   std::printf("\n| point query from a medial centre (2 threads), us | Embree | own tree | speed-up |\n");
   std::printf("|---|---|---|---|\n");
   const char* kinds[3] = { "bounded closest point", "contains ball, yes (r - 1e-6 r)", "contains ball, no (1.01 r)" };
   for (int k = 0; k < 3; ++k)
   {
-    const double e = k == 0 ? engines[0].Closest : k == 1 ? engines[0].Yes : engines[0].No;
-    const double o = k == 0 ? engines[1].Closest : k == 1 ? engines[1].Yes : engines[1].No;
+    const EngineRow& embree = f.Engines[0];
+    const EngineRow& own = f.Engines[1];
+    const double e = k == 0 ? embree.Closest : k == 1 ? embree.Yes : embree.No;
+    const double o = k == 0 ? own.Closest : k == 1 ? own.Yes : own.No;
     std::printf("| %s | %.2f | %.2f | %.1fx |\n", kinds[k], e, o, e / o);
   }
   std::printf("\nMethod rows: wall time per sample without the preparation (a 1-sample run is subtracted).\n");
   std::printf("| query or method | us per sample | mean iterations | ratio to limit | 2-thread speed-up |\n");
   std::printf("|---|---|---|---|---|\n");
-  std::printf("| ray (2 threads) | %.2f | - | - | - |\n", rayMicro);
-  std::printf("| bounded closest point from a medial centre (2 threads, own tree) | %.2f | - | - | - |\n", closestMicro);
-  std::printf("| limit: ray + closest point | %.2f | - | 1.00 | - |\n", limitMicro);
-  for (const Row& r : rows)
+  std::printf("| ray (2 threads) | %.2f | - | - | - |\n", f.RayMicro);
+  std::printf("| bounded closest point from a medial centre (2 threads, own tree) | %.2f | - | - | - |\n",
+    f.ClosestMicro);
+  std::printf("| limit: ray + closest point | %.2f | - | 1.00 | - |\n", f.LimitMicro);
+  for (const Row& r : f.Rows)
   {
     std::printf("| %s (%lld samples) | %.2f | %.2f | %.2f | %s |\n", r.Name.c_str(),
-      static_cast<long long>(samples), r.MicrosecondsPerSample, r.Iterations,
-      r.MicrosecondsPerSample / limitMicro, r.Extra > 0 ? std::to_string(r.Extra).substr(0, 4).c_str() : "-");
+      static_cast<long long>(options.Samples), r.MicrosecondsPerSample, r.Iterations,
+      r.MicrosecondsPerSample / f.LimitMicro, r.Extra > 0 ? std::to_string(r.Extra).substr(0, 4).c_str() : "-");
   }
   std::printf("\ndefault method (%s), %lld samples, 2 threads: %.2f s with the preparation (sampling "
               "alone %.2f us per sample, %.2f iterations, %lld capped)\n",
-    vtkMedialAxisSampler::GetMethodName(defaultMethod), static_cast<long long>(defaultSamples),
-    defaultSeconds, defaultMicro, itDefault, static_cast<long long>(cappedDefault));
+    vtkMedialAxisSampler::GetMethodName(f.DefaultMethod), static_cast<long long>(options.DefaultSamples),
+    f.DefaultSeconds, f.DefaultMicro, f.DefaultIterations, static_cast<long long>(f.DefaultCapped));
   std::printf("worst case, sphere %lld triangles, default method, 2 threads: %.2f us per sample "
               "(%.1fx the horse)\n",
-    static_cast<long long>(sphere->GetOutput()->GetNumberOfCells()), sphereMicro, sphereMicro / defaultMicro);
-  std::printf("peak RSS: %.0f MiB\n", rss);
+    static_cast<long long>(f.SphereTriangles), f.SphereMicro, f.SphereMicro / f.DefaultMicro);
+  std::printf("peak RSS: %.0f MiB\n", f.PeakRss);
   std::ostringstream unused;
-  PrintStructure(structure, structureLabel, json, unused);
+  PrintStructure(structure, structureLabel, false, unused);
+}
+}
+
+int main(int argc, char* argv[])
+{
+  BenchOptions options;
+  if (!ParseArgs(argc, argv, options))
+  {
+    return 1;
+  }
+  // The 3D classification rows (first: they are short).
+  std::string structureLabel;
+  vtkSmartPointer<vtkPolyData> structureMesh = LoadBenchMesh(options.SharedDir, 0, 16, structureLabel);
+  const std::vector<StructureRow> structure = { RunStructure(structureMesh, 45.0), RunStructure(structureMesh, 0.0) };
+  if (options.StructureOnly)
+  {
+    std::ostringstream js;
+    PrintStructure(structure, structureLabel, options.Json, js);
+    if (options.Json)
+    {
+      std::printf("{%s}\n", js.str().substr(2).c_str());
+    }
+    return 0;
+  }
+
+  BenchFigures figures;
+  const double tLoad = Now();
+  vtkSmartPointer<vtkPolyData> mesh = LoadBenchMesh(options.SharedDir, 2, 230, figures.Label);
+  figures.LoadSeconds = Now() - tLoad;
+  QueryEngines engines;
+  if (!BuildEngines(mesh, engines, figures))
+  {
+    return 1;
+  }
+  MeasureQueries(mesh, engines, figures);
+  MeasureMethods(mesh, options, figures);
+  if (options.Json)
+  {
+    PrintJson(figures, options, structure, structureLabel);
+  }
+  else
+  {
+    PrintTables(figures, options, structure, structureLabel);
+  }
   return 0;
 }
