@@ -7,6 +7,7 @@
 #include "vtkMedialDisjointSets.h"
 #include "vtkMedialMeshComplex.h"
 #include "vtkMedialPieces.h"
+#include "vtkMedialPipeline.h"
 #include "vtkMedialPowerComplex.h"
 #include "vtkMedialSimplicialComplex.h"
 #include "vtkMedialProgress.h"
@@ -29,7 +30,6 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <omp.h>
 
@@ -167,16 +167,7 @@ int vtkMedialMeshFilter::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // The whole surface and every ball, whatever piece is requested downstream.
-  for (int port = 0; port < 2; ++port)
-  {
-    for (int i = 0; i < inputVector[port]->GetNumberOfInformationObjects(); ++i)
-    {
-      vtkInformation* inInfo = inputVector[port]->GetInformationObject(i);
-      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-    }
-  }
+  vtkMedialRequestWholeInput(inputVector, 2);
   return 1;
 }
 
