@@ -214,7 +214,7 @@ private:
   void ReconstructionError();
   void Protrusion(bool sampled);
   void ThicknessReport();
-  void MedialMeshReport(double seconds);
+  void MedialMeshReport(vtkMedialMeshFilter* filter, double seconds);
   vtkSmartPointer<vtkPolyData> Prune(vtkPolyData* axis);
   void Simplify();
   void Rebuild(vtkPolyData* medial, bool envelope);
@@ -460,7 +460,7 @@ void Program::MedialMesh()
   Run(filter, this->Out);
   const double seconds = SecondsSince(start);
   this->Mesh = Copy(filter->GetOutput());
-  this->MedialMeshReport(seconds);
+  this->MedialMeshReport(filter, seconds);
   if (this->Opt.Prune)
   {
     this->Mesh = this->Prune(this->Mesh);
@@ -506,7 +506,7 @@ void Program::Simplify()
 }
 
 // JSON members of the medial mesh: sizes, point types, topology and time.
-void Program::MedialMeshReport(double seconds)
+void Program::MedialMeshReport(vtkMedialMeshFilter* filter, double seconds)
 {
   vtkIdType perType[4] = { 0, 0, 0, 0 };
   vtkDataArray* types = this->Mesh->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType);
@@ -514,17 +514,11 @@ void Program::MedialMeshReport(double seconds)
   {
     perType[std::min(3, std::max(0, static_cast<int>(types->GetTuple1(i))))]++;
   }
-  auto field = [this](const char* name) -> long long {
-    vtkDataArray* a = this->Mesh->GetFieldData()->GetArray(name);
-    return a ? static_cast<long long>(a->GetTuple1(0)) : 0;
-  };
-  const long long vertices = this->Mesh->GetNumberOfPoints(), faces = this->Mesh->GetNumberOfPolys();
-  const long long euler = field(vtkMedialArrayNames::EulerCharacteristic);
-  this->Json << ", \"medial_vertices\": " << vertices << ", \"medial_edges\": " << vertices + faces - euler
-             << ", \"medial_faces\": " << faces << ", \"seams\": " << perType[2] << ", \"junctions\": " << perType[3]
-             << ", \"euler_characteristic\": " << euler
-             << ", \"components\": " << field(vtkMedialArrayNames::Components)
-             << ", \"medial_mesh_seconds\": " << seconds;
+  this->Json << ", \"medial_vertices\": " << this->Mesh->GetNumberOfPoints()
+             << ", \"medial_edges\": " << filter->GetNumberOfEdges()
+             << ", \"medial_faces\": " << this->Mesh->GetNumberOfPolys() << ", \"seams\": " << perType[2]
+             << ", \"junctions\": " << perType[3] << ", \"euler_characteristic\": " << filter->GetEulerCharacteristic()
+             << ", \"components\": " << filter->GetNumberOfComponents() << ", \"medial_mesh_seconds\": " << seconds;
 }
 
 // --thickness, --thickness-below: the wall thickness of a 3D surface, with the
