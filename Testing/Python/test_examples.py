@@ -110,38 +110,40 @@ def balls_back(name):
 
 
 formats = ["obj", "ply", "stl", "off", "vtp", "vtk"]
+box_files = write_all(shape("SetShapeToBox", 2.0), "box", formats)  # 6 x 4 x 2
+
+
+def check_ball_outputs(script, stem, extensions):
+    """`script` on box.obj writes OUT in each ball format, read back with its radii."""
+    for ext in extensions:
+        out = path(f"{stem}.{ext}")
+        run(script, path("box.obj"), out)
+        balls = balls_back(out)
+        check(balls.GetNumberOfPoints() > 4 and balls.GetPointData().GetArray("Radius") is not None,
+              f"{script} OUT.{ext}: {balls.GetNumberOfPoints()} points with Radius read back as .{ext}")
+
 
 # structure_3d.py: the four junction vertices of a box twice the default one's size
 # (6 x 4 x 2) from every format; OUT in each ball format.
 junction = r"4 junction vertices\njunction \(-2\.000000, -1\.000000, \+0\.000000\)  radius 1\.000000  governors 4"
-for name in write_all(shape("SetShapeToBox", 2.0), "box", formats):
+for name in box_files:
     out = path(f"box-exact-from-{name.rsplit('.', 1)[1]}.ma")
     result = run("structure_3d.py", name, out)
     check(re.search(junction, result.stdout) is not None, f"structure_3d.py {os.path.basename(name)}: the 4 junctions")
-for ext in ("vtp", "vtk", "ply", "ma", "csv"):
-    out = path(f"box-exact.{ext}")
-    run("structure_3d.py", path("box.obj"), out)
-    balls = balls_back(out)
-    check(balls.GetNumberOfPoints() > 4 and balls.GetPointData().GetArray("Radius") is not None,
-          f"structure_3d.py OUT.{ext}: {balls.GetNumberOfPoints()} points with Radius read back as .{ext}")
+check_ball_outputs("structure_3d.py", "box-exact", ("vtp", "vtk", "ply", "ma", "csv"))
 
 # medial_mesh.py: the medial mesh of the 6 x 4 x 2 box (largest ball radius 1; the
 # example's own default shape is the jack) from every format, one component with the
 # solid's Euler characteristic 1; OUT in each ball format.
 mesh_topology = r"Euler characteristic 1, 1 component\(s\); the solid's 1 and 1"
-for name in write_all(shape("SetShapeToBox", 2.0), "box", formats):
+for name in box_files:
     ext = name.rsplit(".", 1)[1]
     out = path(f"box-mesh-from-{ext}.ma")
     result = run("medial_mesh.py", name, out)
     check(re.search(mesh_topology, result.stdout) is not None, f"medial_mesh.py {os.path.basename(name)}: {result.stdout}")
     radius = balls_back(out).GetPointData().GetArray("Radius").GetRange()[1]
     check(0.99 <= radius <= 1.0 + 1e-9, f"medial_mesh.py {os.path.basename(name)}: largest radius {radius}, 1 expected")
-for ext in ("vtp", "ply", "csv"):
-    out = path(f"box-mesh.{ext}")
-    run("medial_mesh.py", path("box.obj"), out)
-    balls = balls_back(out)
-    check(balls.GetNumberOfPoints() > 4 and balls.GetPointData().GetArray("Radius") is not None,
-          f"medial_mesh.py OUT.{ext}: {balls.GetNumberOfPoints()} points with Radius read back as .{ext}")
+check_ball_outputs("medial_mesh.py", "box-mesh", ("vtp", "ply", "csv"))
 
 # junction_graph.py: a square frame (a hole) in every format that holds polygons, a
 # triangle in STL (triangles only).
