@@ -730,27 +730,42 @@ public:
 
 private:
   // Closest admissible point q of triangle (a, b, c) strictly inside the ball of
-  // radius r; `touches` tells whether any part of it is inside.
-  bool Blocks(const double* a, const double* b, const double* c, double r, double q[3], bool& touches) const
+  // radius r; `touches` tells whether any part of it is inside. With `gap`, also the
+  // distance from the centre to the point it decided on minus (r - slack): negative
+  // when it blocks, a lower bound of the admissible part's gap otherwise.
+  bool Blocks(const double* a, const double* b, const double* c, double r, double q[3], bool& touches,
+    double* gap = nullptr) const
   {
     const double limit = r - this->Slack;
     touches = false;
     if (!(limit > 0.0))
     {
+      if (gap)
+      {
+        *gap = HUGE_VAL;
+      }
       return false;
     }
     double x[3], u[3];
     G::AddScaled(this->P, r, this->N, x);
-    touches = G::ClosestPointOnTriangle(x, a, b, c, q) < limit * limit;
+    double d2 = G::ClosestPointOnTriangle(x, a, b, c, q);
+    touches = d2 < limit * limit;
     G::Sub(q, this->P, u);
-    if (!touches || !this->Capped || G::Dot(this->N, u) >= r * this->Lift)
+    bool blocks = touches;
+    if (touches && this->Capped && G::Dot(this->N, u) < r * this->Lift)
     {
-      return touches; // the closest point is admissible: it is the answer
+      // The closest point is in the cap: the closest admissible point instead, in the
+      // half-space (q - x).(p - x) <= r^2 cos(theta), written as w.q <= k.
+      const double w[3] = { -r * this->N[0], -r * this->N[1], -r * this->N[2] };
+      const double k = G::Dot(w, x) + r * r * this->CosMinAngle;
+      d2 = G::ClosestPointOnClippedTriangle(x, a, b, c, w, k, q);
+      blocks = d2 < limit * limit;
     }
-    // Admissible half-space (q - x).(p - x) <= r^2 cos(theta), written as w.q <= k.
-    const double w[3] = { -r * this->N[0], -r * this->N[1], -r * this->N[2] };
-    const double k = G::Dot(w, x) + r * r * this->CosMinAngle;
-    return G::ClosestPointOnClippedTriangle(x, a, b, c, w, k, q) < limit * limit;
+    if (gap)
+    {
+      *gap = std::sqrt(d2) - limit;
+    }
+    return blocks;
   }
 
   // The triangle reaches into the ball only below the cap's plane. A smaller ball
@@ -823,30 +838,65 @@ private:
       }
       this->Accept(next, q, slot);
     }
-    if (!this->Blocks(a, b, c, this->Radius, q, touches))
+    double gap;
+    if (!this->Blocks(a, b, c, this->Radius, q, touches, &gap))
     {
       return this->InCap(touches);
     }
     // Still blocking: the ball is converging (linearly) onto the point where the
     // triangle crosses the cap's cone. For one triangle the blocked radii form an
-    // interval that contains the current radius, so bisection below it is exact.
-    double lo = 0.0, hi = this->Radius, hiPoint[3] = { q[0], q[1], q[2] };
-    for (int i = 0; i < 80 && hi - lo > 4.0 * std::numeric_limits<double>::epsilon() * hi; ++i)
+    // interval that contains the current radius, so a bracket below it is exact.
+    this->Accept(this->LowerEndOfBlocking(a, b, c, gap, q), q, slot);
+    this->Blocks(a, b, c, this->Radius, q, touches);
+    return this->InCap(touches);
+  }
+
+  // The lower end of the radii the triangle blocks below the current (blocked) radius,
+  // to 4 ulps: a bracket [lo, hi] with lo free and hi blocked, narrowed by regula falsi
+  // on the signed gap of Blocks (Illinois: the end kept twice in a row has its gap
+  // halved), with a bisection step whenever an interpolation step did not halve the
+  // bracket. The decision at each radius is Blocks' own, so the result is where its
+  // answer changes; the gap only chooses where to look. On entry `point` and `gapHi`
+  // are Blocks' answer at the current radius; on return `point` is the blocking point
+  // at hi.
+  double LowerEndOfBlocking(
+    const double* a, const double* b, const double* c, double gapHi, double point[3]) const
+  {
+    double lo = 0.0, hi = this->Radius, gapLo = HUGE_VAL, q[3];
+    bool touches;
+    int kept = 0; // +1: the last step kept lo, -1: it kept hi
+    bool interpolated = false;
+    double width = hi - lo;
+    for (int i = 0; i < 100 && hi - lo > 4.0 * std::numeric_limits<double>::epsilon() * hi; ++i)
     {
-      const double mid = 0.5 * (lo + hi);
-      if (this->Blocks(a, b, c, mid, q, touches))
+      double x = 0.5 * (lo + hi);
+      const bool falsi = std::isfinite(gapLo) && gapLo > 0.0 && gapHi < 0.0 &&
+        !(interpolated && hi - lo > 0.5 * width);
+      if (falsi)
       {
-        hi = mid;
-        std::copy(q, q + 3, hiPoint);
+        const double t = lo + (hi - lo) * (gapLo / (gapLo - gapHi));
+        x = t > lo && t < hi ? t : x;
+      }
+      width = hi - lo;
+      interpolated = falsi;
+      double gap;
+      if (this->Blocks(a, b, c, x, q, touches, &gap))
+      {
+        hi = x;
+        gapHi = gap;
+        std::copy(q, q + 3, point);
+        gapLo *= kept == +1 ? 0.5 : 1.0;
+        kept = +1;
       }
       else
       {
-        lo = mid;
+        lo = x;
+        gapLo = gap;
+        gapHi *= kept == -1 ? 0.5 : 1.0;
+        kept = -1;
       }
     }
-    this->Accept(lo, hiPoint, slot);
-    this->Blocks(a, b, c, this->Radius, q, touches);
-    return this->InCap(touches);
+    return lo;
   }
 
   // The node cannot block the current ball (its box lies d2 from the centre, as
