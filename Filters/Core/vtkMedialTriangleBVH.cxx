@@ -375,6 +375,7 @@ int CheapestSplit(const SahBin bins[Bins], std::int32_t count)
 struct Scratch
 {
   std::vector<std::int32_t> Stack;
+  std::vector<std::int32_t> StackSteps; // the tangent search: radius updates when each entry was pushed
   std::vector<std::int32_t> Deferred;
   std::vector<std::int32_t> CapNodes; // dropped for the cone while reaching into the ball
   std::vector<std::int32_t> CapSlots; // the same, triangles
@@ -383,6 +384,7 @@ Scratch& ThreadScratch()
 {
   thread_local Scratch scratch;
   scratch.Stack.clear();
+  scratch.StackSteps.clear();
   scratch.Deferred.clear();
   scratch.CapNodes.clear();
   scratch.CapSlots.clear();
@@ -918,21 +920,30 @@ private:
     return side != FloatNodeTests::ABOVE;
   }
 
-  // Depth first, nearer child first, from `root` without the `skip` subtrees; a node
-  // is dropped as soon as it cannot block the current ball (tested again when
-  // popped: the ball keeps shrinking).
+  // Depth first, nearer child first, from `root` without the `skip` subtrees. A child
+  // is tested in full when its parent is opened and pushed with the number of radius
+  // updates so far; when popped after the ball has shrunk, its box and slab are
+  // tested again (its side of the cone does not change with the radius).
   void Traverse(std::int32_t root, const std::int32_t skip[3])
   {
     const std::vector<Node>& nodes = this->Tree.Nodes;
     std::vector<std::int32_t>& stack = this->Work.Stack;
+    std::vector<std::int32_t>& steps = this->Work.StackSteps;
+    if (this->Culled(root, this->Fast->CentreDistance2(nodes[root])))
+    {
+      return;
+    }
     stack.push_back(root);
+    steps.push_back(this->Result.Steps);
     while (!stack.empty())
     {
       const std::int32_t index = stack.back();
+      const bool shrunk = steps.back() != this->Result.Steps;
       stack.pop_back();
+      steps.pop_back();
       const Node& node = nodes[index];
       if (index == skip[0] || index == skip[1] || index == skip[2] ||
-        this->Culled(index, this->Fast->CentreDistance2(node)))
+        (shrunk && this->Fast->MissesBall(node, this->Fast->CentreDistance2(node))))
       {
         continue;
       }
@@ -947,18 +958,20 @@ private:
         }
         continue;
       }
-      // Push the farther child first; a child whose box misses the ball is not pushed.
+      // Push the farther child first.
       const float dl = this->Fast->CentreDistance2(nodes[node.Start]);
       const float dr = this->Fast->CentreDistance2(nodes[node.Start + 1]);
       const std::int32_t nearer = dl <= dr ? node.Start : node.Start + 1;
       const std::int32_t farther = node.Start + node.Start + 1 - nearer;
-      if (!this->Fast->MissesBall(nodes[farther], std::max(dl, dr)))
+      if (!this->Culled(farther, std::max(dl, dr)))
       {
         stack.push_back(farther);
+        steps.push_back(this->Result.Steps);
       }
-      if (!this->Fast->MissesBall(nodes[nearer], std::min(dl, dr)))
+      if (!this->Culled(nearer, std::min(dl, dr)))
       {
         stack.push_back(nearer);
+        steps.push_back(this->Result.Steps);
       }
     }
   }
@@ -1128,6 +1141,7 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
         if (!visit(d2, q, this->TriangleIds[slot]))
         {
           scratch.Stack.clear();
+  scratch.StackSteps.clear();
           return;
         }
       }
