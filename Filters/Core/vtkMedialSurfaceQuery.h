@@ -138,6 +138,10 @@ public:
   /// Rank of each triangle in the internal tree's leaf order (spatially coherent).
   const std::vector<std::int32_t>& GetLeafRanks() const { return this->Tree.GetLeafRanks(); }
 
+  /// Frees the tree; no query may run afterwards. For callers done with querying that
+  /// build a large output next (the tree is about 150 bytes per triangle).
+  void ReleaseTree() { this->Tree = vtkMedialTriangleBVH(); }
+
   /// Absolute slack: a point blocks a ball only when closer than radius - Slack. Tiny and unbiased.
   double GetSlack() const { return this->Slack; }
   const vtkMedialTriangleMesh* GetMesh() const { return this->Mesh; }
