@@ -8,8 +8,12 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <omp.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace
 {
@@ -60,17 +64,116 @@ bool MissesBall(const Node& node, const double centre[3], double radius)
   return false;
 }
 
-// Largest value of n.(q - p) over the box.
-template <class T>
-double HeightAbove(const T lo[3], const T hi[3], const double p[3], const double n[3])
+/**
+ * The tangent search's node tests in single precision, four lanes at once where SSE2
+ * is available (x, y, z and an unused lane). Nodes are stored in float relative to
+ * the tree's origin, so the rounding of every quantity here is a few float steps of
+ * the tree's extent E; each bound is widened by Margin = 1e-5 E, far above that, so
+ * a box is dropped only where the same test in exact arithmetic would drop it too.
+ * A box kept that exact arithmetic would drop costs time, never correctness: its
+ * triangles are tested exactly.
+ */
+class FloatNodeTests
 {
-  double h = 0.0;
-  for (int k = 0; k < 3; ++k)
+public:
+  FloatNodeTests(const Node& root, const double pRel[3], const double n[3], double coneSin)
   {
-    h += n[k] * ((n[k] > 0.0 ? static_cast<double>(hi[k]) : static_cast<double>(lo[k])) - p[k]);
+    float extent = 0.0f;
+    for (int k = 0; k < 3; ++k)
+    {
+      extent = std::max({ extent, std::fabs(root.Lo[k]), std::fabs(root.Hi[k]) });
+    }
+    this->Margin = 1e-5f * extent;
+    for (int k = 0; k < 3; ++k)
+    {
+      this->P[k] = static_cast<float>(pRel[k]);
+      this->N[k] = static_cast<float>(n[k]);
+    }
+    this->ConeSin2 = static_cast<float>(coneSin * coneSin * (1.0 - 1e-5));
   }
-  return h;
-}
+
+  /// The ball's centre (relative to the origin) and radius moved.
+  void SetBall(const double centreRel[3], double radius)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->C[k] = static_cast<float>(centreRel[k]);
+    }
+    this->Radius = static_cast<float>(radius) + this->Margin;
+    this->Reach2 = this->Radius * this->Radius;
+  }
+
+  /// Squared distance from the ball's centre to the node's box (rounded: for ordering
+  /// and for MissesBall).
+  float CentreDistance2(const Node& node) const { return Distance2(node.Lo, node.Hi, this->C, 0.0f); }
+
+  /// A triangle's box (lo, hi; four floats readable at each) misses the ball.
+  bool BoxMissesBall(const float* lo, const float* hi) const
+  {
+    return Distance2(lo, hi, this->C, 0.0f) >= this->Reach2;
+  }
+
+  /// The node's box (its squared distance `d2` from CentreDistance2) or its slab misses the ball.
+  bool MissesBall(const Node& node, float d2) const
+  {
+    if (d2 >= this->Reach2)
+    {
+      return true;
+    }
+    const float m = node.Axis[0] * this->C[0] + node.Axis[1] * this->C[1] + node.Axis[2] * this->C[2];
+    return m - this->Radius >= node.SlabHi || m + this->Radius <= node.SlabLo;
+  }
+
+  enum Sides
+  {
+    ABOVE = 0,     // may hold blocking points
+    BELOW = 1,     // wholly on or below the tangent plane at p
+    OUTSIDE_CONE = 2 // above it, but outside the cone where blockers can lie: the cap's surface
+  };
+  /// Where the box (lo, hi; four floats readable at each) lies.
+  Sides Side(const float* lo, const float* hi) const
+  {
+    // Largest n.(q - p) over the box, plus the margin: an upper bound.
+    float h = this->Margin;
+    for (int k = 0; k < 3; ++k)
+    {
+      h += this->N[k] * ((this->N[k] > 0.0f ? hi[k] : lo[k]) - this->P[k]);
+    }
+    if (!(h > 0.0f))
+    {
+      return BELOW;
+    }
+    // A lower bound of the box's squared distance to p.
+    const float d2 = Distance2(lo, hi, this->P, this->Margin) * (1.0f - 1e-5f);
+    return h * h < this->ConeSin2 * d2 ? OUTSIDE_CONE : ABOVE;
+  }
+
+private:
+  // Squared distance from x to the box (lo, hi), each axis' gap shrunk by `shrink` (>= 0).
+  static float Distance2(const float* lo, const float* hi, const float x[4], float shrink)
+  {
+#if defined(__SSE2__)
+    const __m128 mask = _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1));
+    const __m128 px = _mm_loadu_ps(x);
+    const __m128 gap = _mm_max_ps(_mm_sub_ps(_mm_loadu_ps(lo), px), _mm_sub_ps(px, _mm_loadu_ps(hi)));
+    const __m128 d = _mm_and_ps(_mm_max_ps(_mm_sub_ps(gap, _mm_set1_ps(shrink)), _mm_setzero_ps()), mask);
+    const __m128 sq = _mm_mul_ps(d, d);
+    const __m128 pair = _mm_add_ps(sq, _mm_movehl_ps(sq, sq)); // x + z, y + 0
+    return _mm_cvtss_f32(_mm_add_ss(pair, _mm_shuffle_ps(pair, pair, 1)));
+#else
+    float d2[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const float d = std::max(std::max(lo[k] - x[k], x[k] - hi[k]) - shrink, 0.0f);
+      d2[k] = d * d;
+    }
+    return (d2[0] + d2[2]) + d2[1];
+#endif
+  }
+
+  float P[4] = { 0, 0, 0, 0 }, N[4] = { 0, 0, 0, 0 }, C[4] = { 0, 0, 0, 0 };
+  float Margin = 0.0f, ConeSin2 = 0.0f, Radius = 0.0f, Reach2 = 0.0f;
+};
 
 // Single precision bounds that still hold: `pad` (far above the double rounding
 // of the subtraction that produced v, far below a float step at the mesh's size)
@@ -309,6 +412,7 @@ struct NodeBoxes
 struct Scratch
 {
   std::vector<std::int32_t> Stack;
+  std::vector<std::int32_t> StackSteps; // the tangent search: radius updates when each entry was pushed
   std::vector<std::int32_t> Deferred;
   std::vector<std::int32_t> CapNodes; // dropped for the cone while reaching into the ball
   std::vector<std::int32_t> CapSlots; // the same, triangles
@@ -317,6 +421,7 @@ Scratch& ThreadScratch()
 {
   thread_local Scratch scratch;
   scratch.Stack.clear();
+  scratch.StackSteps.clear();
   scratch.Deferred.clear();
   scratch.CapNodes.clear();
   scratch.CapSlots.clear();
@@ -432,6 +537,7 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, co
   this->TriangleIds.resize(nt);
   this->LeafRank.resize(nt);
   this->Planes.resize(4 * static_cast<size_t>(nt));
+  this->TriangleBoxes.assign(6 * static_cast<size_t>(nt) + 4, 0.0f); // + 4: read four floats at a time
 #pragma omp parallel for schedule(static)
   for (vtkIdType i = 0; i < nt; ++i)
   {
@@ -441,6 +547,14 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, co
     this->Planes[4 * i + 3] = G::Dot(normal, mesh.GetPoint(mesh.GetTriangle(t)[0]));
     this->TriangleIds[i] = t;
     this->LeafRank[t] = static_cast<std::int32_t>(i);
+    const vtkIdType* v = mesh.GetTriangle(t);
+    for (int k = 0; k < 3; ++k)
+    {
+      // The box BuildNodes had for it (freed by now), from the same vertices.
+      const double a = mesh.GetPoint(v[0])[k], b = mesh.GetPoint(v[1])[k], c = mesh.GetPoint(v[2])[k];
+      this->TriangleBoxes[6 * i + k] = Down(std::min({ a, b, c }) - this->Origin[k], this->RoundingPad);
+      this->TriangleBoxes[6 * i + 3 + k] = Up(std::max({ a, b, c }) - this->Origin[k], this->RoundingPad);
+    }
     for (int j = 0; j < 3; ++j)
     {
       std::copy_n(mesh.GetPoint(mesh.GetTriangle(t)[j]), 3, &this->Vertices[9 * i + 3 * j]);
@@ -673,6 +787,8 @@ public:
     // The same two points relative to the origin, for the node bounds.
     G::Sub(p, bvh.Origin, this->PRel);
     G::AddScaled(this->PRel, this->Radius, n, this->CentreRel);
+    this->Fast.emplace(bvh.Nodes[0], this->PRel, n, this->ConeSin);
+    this->Fast->SetBall(this->CentreRel, this->Radius);
   }
 
   // First the small subtrees around the far hit and around p: on smooth meshes
@@ -718,27 +834,42 @@ public:
 
 private:
   // Closest admissible point q of triangle (a, b, c) strictly inside the ball of
-  // radius r; `touches` tells whether any part of it is inside.
-  bool Blocks(const double* a, const double* b, const double* c, double r, double q[3], bool& touches) const
+  // radius r; `touches` tells whether any part of it is inside. With `gap`, also the
+  // distance from the centre to the point it decided on minus (r - slack): negative
+  // when it blocks, a lower bound of the admissible part's gap otherwise.
+  bool Blocks(const double* a, const double* b, const double* c, double r, double q[3], bool& touches,
+    double* gap = nullptr) const
   {
     const double limit = r - this->Slack;
     touches = false;
     if (!(limit > 0.0))
     {
+      if (gap)
+      {
+        *gap = HUGE_VAL;
+      }
       return false;
     }
     double x[3], u[3];
     G::AddScaled(this->P, r, this->N, x);
-    touches = G::ClosestPointOnTriangle(x, a, b, c, q) < limit * limit;
+    double d2 = G::ClosestPointOnTriangle(x, a, b, c, q);
+    touches = d2 < limit * limit;
     G::Sub(q, this->P, u);
-    if (!touches || !this->Capped || G::Dot(this->N, u) >= r * this->Lift)
+    bool blocks = touches;
+    if (touches && this->Capped && G::Dot(this->N, u) < r * this->Lift)
     {
-      return touches; // the closest point is admissible: it is the answer
+      // The closest point is in the cap: the closest admissible point instead, in the
+      // half-space (q - x).(p - x) <= r^2 cos(theta), written as w.q <= k.
+      const double w[3] = { -r * this->N[0], -r * this->N[1], -r * this->N[2] };
+      const double k = G::Dot(w, x) + r * r * this->CosMinAngle;
+      d2 = G::ClosestPointOnClippedTriangle(x, a, b, c, w, k, q);
+      blocks = d2 < limit * limit;
     }
-    // Admissible half-space (q - x).(p - x) <= r^2 cos(theta), written as w.q <= k.
-    const double w[3] = { -r * this->N[0], -r * this->N[1], -r * this->N[2] };
-    const double k = G::Dot(w, x) + r * r * this->CosMinAngle;
-    return G::ClosestPointOnClippedTriangle(x, a, b, c, w, k, q) < limit * limit;
+    if (gap)
+    {
+      *gap = std::sqrt(d2) - limit;
+    }
+    return blocks;
   }
 
   // The triangle reaches into the ball only below the cap's plane. A smaller ball
@@ -751,41 +882,33 @@ private:
     this->Radius = r;
     G::AddScaled(this->P, this->Radius, this->N, this->Centre);
     G::AddScaled(this->PRel, this->Radius, this->N, this->CentreRel);
+    this->Fast->SetBall(this->CentreRel, this->Radius);
     std::copy(q, q + 3, this->Result.Contact);
     this->Result.ContactTriangle = this->Tree.TriangleIds[slot];
     ++this->Result.Steps;
   }
 
-  // The triangle at `slot` can never block: the ball misses its plane, or it lies
-  // outside the cone where blockers can lie (its box shows it), at any radius. This
+  // The triangle at `slot` cannot block this ball or any smaller one: the ball misses
+  // its plane or its box, or it lies outside the cone where blockers can lie. This
   // drops the cap's triangles around p (kept aside for InscribeInCap).
-  bool CannotBlock(std::int32_t slot, const double* a, const double* b, const double* c) const
+  bool CannotBlock(std::int32_t slot) const
   {
     const double* plane = &this->Tree.Planes[4 * slot];
     if (std::fabs(G::Dot(plane, this->Centre) - plane[3]) >= this->Radius)
     {
       return true;
     }
-    double lo[3], hi[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      lo[k] = std::min({ a[k], b[k], c[k] });
-      hi[k] = std::max({ a[k], b[k], c[k] });
-    }
-    const double h = HeightAbove(lo, hi, this->P, this->N);
-    if (!(h > 0.0))
+    const float* lo = &this->Tree.TriangleBoxes[6 * slot];
+    if (this->Fast->BoxMissesBall(lo, lo + 3))
     {
       return true;
     }
-    if (h * h < this->ConeSin * this->ConeSin * BoxDistance2(lo, hi, this->P))
+    const FloatNodeTests::Sides side = this->Fast->Side(lo, lo + 3);
+    if (side == FloatNodeTests::OUTSIDE_CONE && this->Inscribe)
     {
-      if (this->Inscribe)
-      {
-        this->Work.CapSlots.push_back(slot); // it may cross the final ball in the cap
-      }
-      return true;
+      this->Work.CapSlots.push_back(slot); // it may cross the final ball in the cap
     }
-    return false;
+    return side != FloatNodeTests::ABOVE;
   }
 
   // Shrinks the ball on triangle `slot` until it no longer blocks. Returns true
@@ -796,7 +919,7 @@ private:
     const double* a = &this->Tree.Vertices[9 * slot];
     const double* b = a + 3;
     const double* c = a + 6;
-    if (this->CannotBlock(slot, a, b, c))
+    if (this->CannotBlock(slot))
     {
       return false;
     }
@@ -819,72 +942,110 @@ private:
       }
       this->Accept(next, q, slot);
     }
-    if (!this->Blocks(a, b, c, this->Radius, q, touches))
+    double gap;
+    if (!this->Blocks(a, b, c, this->Radius, q, touches, &gap))
     {
       return this->InCap(touches);
     }
     // Still blocking: the ball is converging (linearly) onto the point where the
     // triangle crosses the cap's cone. For one triangle the blocked radii form an
-    // interval that contains the current radius, so bisection below it is exact.
-    double lo = 0.0, hi = this->Radius, hiPoint[3] = { q[0], q[1], q[2] };
-    for (int i = 0; i < 80 && hi - lo > 4.0 * std::numeric_limits<double>::epsilon() * hi; ++i)
-    {
-      const double mid = 0.5 * (lo + hi);
-      if (this->Blocks(a, b, c, mid, q, touches))
-      {
-        hi = mid;
-        std::copy(q, q + 3, hiPoint);
-      }
-      else
-      {
-        lo = mid;
-      }
-    }
-    this->Accept(lo, hiPoint, slot);
+    // interval that contains the current radius, so a bracket below it is exact.
+    this->Accept(this->LowerEndOfBlocking(a, b, c, gap, q), q, slot);
     this->Blocks(a, b, c, this->Radius, q, touches);
     return this->InCap(touches);
   }
 
-  // The node cannot block the current ball. Nodes dropped for the cone only are kept
-  // aside for InscribeInCap.
-  bool Culled(std::int32_t index) const
+  // The lower end of the radii the triangle blocks below the current (blocked) radius,
+  // to 4 ulps: a bracket [lo, hi] with lo free and hi blocked, narrowed by regula falsi
+  // on the signed gap of Blocks (Illinois: the end kept twice in a row has its gap
+  // halved), with a bisection step whenever an interpolation step did not halve the
+  // bracket. The decision at each radius is Blocks' own, so the result is where its
+  // answer changes; the gap only chooses where to look. On entry `point` and `gapHi`
+  // are Blocks' answer at the current radius; on return `point` is the blocking point
+  // at hi.
+  double LowerEndOfBlocking(
+    const double* a, const double* b, const double* c, double gapHi, double point[3]) const
+  {
+    double lo = 0.0, hi = this->Radius, gapLo = HUGE_VAL, q[3];
+    bool touches;
+    int kept = 0; // +1: the last step kept lo, -1: it kept hi
+    bool interpolated = false;
+    double width = hi - lo;
+    for (int i = 0; i < 100 && hi - lo > 4.0 * std::numeric_limits<double>::epsilon() * hi; ++i)
+    {
+      double x = 0.5 * (lo + hi);
+      const bool falsi = std::isfinite(gapLo) && gapLo > 0.0 && gapHi < 0.0 &&
+        !(interpolated && hi - lo > 0.5 * width);
+      if (falsi)
+      {
+        const double t = lo + (hi - lo) * (gapLo / (gapLo - gapHi));
+        x = t > lo && t < hi ? t : x;
+      }
+      width = hi - lo;
+      interpolated = falsi;
+      double gap;
+      if (this->Blocks(a, b, c, x, q, touches, &gap))
+      {
+        hi = x;
+        gapHi = gap;
+        std::copy(q, q + 3, point);
+        gapLo *= kept == +1 ? 0.5 : 1.0;
+        kept = +1;
+      }
+      else
+      {
+        lo = x;
+        gapLo = gap;
+        gapHi *= kept == -1 ? 0.5 : 1.0;
+        kept = -1;
+      }
+    }
+    return lo;
+  }
+
+  // The node cannot block the current ball (its box lies d2 from the centre, as
+  // FloatNodeTests rounds it). Nodes dropped for the cone only are kept aside for
+  // InscribeInCap.
+  bool Culled(std::int32_t index, float d2) const
   {
     const Node& node = this->Tree.Nodes[index];
-    if (MissesBall(node, this->CentreRel, this->Radius))
+    if (this->Fast->MissesBall(node, d2))
     {
       return true;
     }
     // Only points with n.(q - p) > sin(theta / 2) |q - p| can ever block.
-    const double h = HeightAbove(node.Lo, node.Hi, this->PRel, this->N);
-    if (!(h > 0.0))
+    const FloatNodeTests::Sides side = this->Fast->Side(node.Lo, node.Hi);
+    if (side == FloatNodeTests::OUTSIDE_CONE && this->Inscribe)
     {
-      return true;
+      this->Work.CapNodes.push_back(index); // it may cross the final ball in the cap
     }
-    if (this->ConeSin > 0.0 && h * h < this->ConeSin * this->ConeSin * BoxDistance2(node, this->PRel))
-    {
-      if (this->Inscribe)
-      {
-        this->Work.CapNodes.push_back(index); // it may cross the final ball in the cap
-      }
-      return true;
-    }
-    return false;
+    return side != FloatNodeTests::ABOVE;
   }
 
-  // Depth first, nearer child first, from `root` without the `skip` subtrees; a node
-  // is dropped as soon as it cannot block the current ball (tested again when
-  // popped: the ball keeps shrinking).
+  // Depth first, nearer child first, from `root` without the `skip` subtrees. A child
+  // is tested in full when its parent is opened and pushed with the number of radius
+  // updates so far; when popped after the ball has shrunk, its box and slab are
+  // tested again (its side of the cone does not change with the radius).
   void Traverse(std::int32_t root, const std::int32_t skip[3])
   {
     const std::vector<Node>& nodes = this->Tree.Nodes;
     std::vector<std::int32_t>& stack = this->Work.Stack;
+    std::vector<std::int32_t>& steps = this->Work.StackSteps;
+    if (this->Culled(root, this->Fast->CentreDistance2(nodes[root])))
+    {
+      return;
+    }
     stack.push_back(root);
+    steps.push_back(this->Result.Steps);
     while (!stack.empty())
     {
       const std::int32_t index = stack.back();
+      const bool shrunk = steps.back() != this->Result.Steps;
       stack.pop_back();
+      steps.pop_back();
       const Node& node = nodes[index];
-      if (index == skip[0] || index == skip[1] || index == skip[2] || this->Culled(index))
+      if (index == skip[0] || index == skip[1] || index == skip[2] ||
+        (shrunk && this->Fast->MissesBall(node, this->Fast->CentreDistance2(node))))
       {
         continue;
       }
@@ -899,18 +1060,20 @@ private:
         }
         continue;
       }
-      // Push the farther child first; a child whose box misses the ball is not pushed.
-      const double r2 = this->Radius * this->Radius;
-      const double dl = BoxDistance2(nodes[node.Start], this->CentreRel);
-      const double dr = BoxDistance2(nodes[node.Start + 1], this->CentreRel);
+      // Push the farther child first.
+      const float dl = this->Fast->CentreDistance2(nodes[node.Start]);
+      const float dr = this->Fast->CentreDistance2(nodes[node.Start + 1]);
       const std::int32_t nearer = dl <= dr ? node.Start : node.Start + 1;
-      if (std::max(dl, dr) < r2)
+      const std::int32_t farther = node.Start + node.Start + 1 - nearer;
+      if (!this->Culled(farther, std::max(dl, dr)))
       {
-        stack.push_back(dl <= dr ? node.Start + 1 : node.Start);
+        stack.push_back(farther);
+        steps.push_back(this->Result.Steps);
       }
-      if (std::min(dl, dr) < r2)
+      if (!this->Culled(nearer, std::min(dl, dr)))
       {
         stack.push_back(nearer);
+        steps.push_back(this->Result.Steps);
       }
     }
   }
@@ -1003,6 +1166,7 @@ private:
   double Centre[3], PRel[3], CentreRel[3];
   TangentBall& Result;
   Scratch& Work;
+  std::optional<FloatNodeTests> Fast; // follows Centre and Radius
 };
 
 void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[3],
@@ -1079,6 +1243,7 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
         if (!visit(d2, q, this->TriangleIds[slot]))
         {
           scratch.Stack.clear();
+  scratch.StackSteps.clear();
           return;
         }
       }

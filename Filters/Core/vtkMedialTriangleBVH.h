@@ -174,6 +174,7 @@ private:
   double RoundingPad = 0.0;           // absolute padding of the float bounds
   std::vector<double> Vertices;       // 9 per triangle, leaf order
   std::vector<double> Planes;         // 4 per triangle, leaf order: unit normal, offset
+  std::vector<float> TriangleBoxes;   // 6 per triangle, leaf order: box like a node's
   std::vector<vtkIdType> TriangleIds; // mesh triangle of each leaf-order slot
   std::vector<std::int32_t> LeafRank; // inverse of TriangleIds
   std::vector<std::int32_t> LeafNode; // leaf node of each leaf-order slot
