@@ -1314,8 +1314,8 @@ public:
     std::copy_n(origin, 3, this->Origin);
   }
 
-  // The ray's t at triangle (a, b, c); false when it misses.
-  bool Hit(const double* a, const double* b, const double* c, double& t) const
+  // The ray's t at triangle (a, b, c), beyond tMin; false when it misses.
+  bool Hit(const double* a, const double* b, const double* c, double tMin, double& t) const
   {
     double A[3], B[3], C[3];
     this->Shear(a, A);
@@ -1331,13 +1331,52 @@ public:
     const double det = u + v + w;
     if (det == 0.0)
     {
-      return false; // the ray runs in the triangle's plane
+      return HitInPlane(A, B, C, tMin, t);
     }
     t = (u * A[2] + v * B[2] + w * C[2]) / det;
     return true;
   }
 
 private:
+  // The ray runs in the triangle's plane (a face seen edge-on, e.g. from a box's edge
+  // along the next face): it meets the triangle where the sheared triangle, a segment
+  // through the axis, crosses the axis; the first such t beyond tMin.
+  static bool HitInPlane(const double A[3], const double B[3], const double C[3], double tMin, double& t)
+  {
+    const double* p[3] = { A, B, C };
+    int far = 0;
+    for (int i = 1; i < 3; ++i)
+    {
+      if (std::fabs(p[i][0]) + std::fabs(p[i][1]) > std::fabs(p[far][0]) + std::fabs(p[far][1]))
+      {
+        far = i;
+      }
+    }
+    double s[3]; // positions along the segment's line; the axis is at 0
+    for (int i = 0; i < 3; ++i)
+    {
+      s[i] = p[i][0] * p[far][0] + p[i][1] * p[far][1];
+    }
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (int i = 0; i < 3; ++i)
+    {
+      const int j = (i + 1) % 3;
+      if ((s[i] <= 0.0 && s[j] >= 0.0) || (s[i] >= 0.0 && s[j] <= 0.0))
+      {
+        const double z0 = s[i] == s[j] ? p[i][2] : p[i][2] + (p[j][2] - p[i][2]) * (s[i] / (s[i] - s[j]));
+        const double z1 = s[i] == s[j] ? p[j][2] : z0;
+        lo = std::min({ lo, z0, z1 });
+        hi = std::max({ hi, z0, z1 });
+      }
+    }
+    if (!(hi > tMin))
+    {
+      return false;
+    }
+    t = std::max(lo, std::nextafter(tMin, HUGE_VAL));
+    return true;
+  }
+
   void Shear(const double* p, double out[3]) const
   {
     const double x = p[this->Kx] - this->Origin[this->Kx];
@@ -1429,7 +1468,7 @@ bool vtkMedialTriangleBVH::IntersectRay(const double origin[3], const double dir
     {
       const double* v = &this->Vertices[9 * static_cast<size_t>(slot)];
       double hit;
-      if (this->TriangleIds[slot] != ignoreTriangle && ray.Hit(v, v + 3, v + 6, hit) && hit > tMin &&
+      if (this->TriangleIds[slot] != ignoreTriangle && ray.Hit(v, v + 3, v + 6, tMin, hit) && hit > tMin &&
         hit < best)
       {
         best = hit;
