@@ -218,7 +218,7 @@ void vtkMedialAxisSampler::vtkInternals::ReportAllocationFailure(vtkIdType count
 }
 
 int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh& mesh,
-  const vtkMedialSurfaceQuery& query, const vtkMedialPieces& pieces, vtkPolyData* output, vtkMedialStages& stages)
+  vtkMedialSurfaceQuery& query, const vtkMedialPieces& pieces, vtkPolyData* output, vtkMedialStages& stages)
 {
   vtkMedialAxisSampler* self = this->Self;
   const vtkIdType total = self->NumberOfSamples;
@@ -287,6 +287,7 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh
   }
   results.resize(static_cast<size_t>(used));
   self->EvaluatedSamples = used;
+  query.ReleaseTree(); // the output arrays take its memory
 
   try
   {
