@@ -617,7 +617,9 @@ struct Runner
     auto rankOf = [&](vtkIdType j) { return near[j] >= 0 ? rank[near[j]] : INT32_MAX; };
     std::sort(order.begin(), order.end(),
       [&](vtkIdType a, vtkIdType b) { return rankOf(a) < rankOf(b) || (rankOf(a) == rankOf(b) && a < b); });
-#pragma omp parallel for num_threads(this->S.Threads) schedule(dynamic, 4)
+    // A small round (closest-neighbor's last ones, when few links are left) runs on
+    // the calling thread: waking the team would cost more than it saves.
+#pragma omp parallel for num_threads(this->S.Threads) schedule(dynamic, 4) if (n >= 32)
     for (vtkIdType k = 0; k < n; ++k)
     {
       const vtkIdType j = order[k];
