@@ -375,7 +375,9 @@ int CheapestSplit(const SahBin bins[Bins], std::int32_t count)
 struct Scratch
 {
   std::vector<std::int32_t> Stack;
+  std::vector<std::int32_t> StackSteps; // the tangent search: radius updates when each entry was pushed
   std::vector<std::int32_t> Deferred;
+  std::vector<std::int32_t> DeferredSteps; // radius updates when each was last looked at
   std::vector<std::int32_t> CapNodes; // dropped for the cone while reaching into the ball
   std::vector<std::int32_t> CapSlots; // the same, triangles
 };
@@ -383,7 +385,9 @@ Scratch& ThreadScratch()
 {
   thread_local Scratch scratch;
   scratch.Stack.clear();
+  scratch.StackSteps.clear();
   scratch.Deferred.clear();
+  scratch.DeferredSteps.clear();
   scratch.CapNodes.clear();
   scratch.CapSlots.clear();
   return scratch;
@@ -711,14 +715,20 @@ public:
       }
     }
     this->Traverse(0, seeds);
-    for (bool changed = !this->Work.Deferred.empty(); changed;)
+    // A triangle set aside needs another look only if the ball shrank since its last one.
+    std::vector<std::int32_t>& lookedAt = this->Work.DeferredSteps;
+    for (bool changed = true; changed;)
     {
       changed = false;
-      for (std::int32_t slot : this->Work.Deferred)
+      for (size_t i = 0; i < this->Work.Deferred.size(); ++i)
       {
-        const double before = this->Radius;
-        this->ShrinkOn(slot);
-        changed = changed || this->Radius < before;
+        if (lookedAt[i] != this->Result.Steps)
+        {
+          const double before = this->Radius;
+          this->ShrinkOn(this->Work.Deferred[i]);
+          lookedAt[i] = this->Result.Steps;
+          changed = changed || this->Radius < before;
+        }
       }
     }
     this->Result.Radius = this->Radius;
@@ -730,27 +740,42 @@ public:
 
 private:
   // Closest admissible point q of triangle (a, b, c) strictly inside the ball of
-  // radius r; `touches` tells whether any part of it is inside.
-  bool Blocks(const double* a, const double* b, const double* c, double r, double q[3], bool& touches) const
+  // radius r; `touches` tells whether any part of it is inside. With `gap`, also the
+  // distance from the centre to the point it decided on minus (r - slack): negative
+  // when it blocks, a lower bound of the admissible part's gap otherwise.
+  bool Blocks(const double* a, const double* b, const double* c, double r, double q[3], bool& touches,
+    double* gap = nullptr) const
   {
     const double limit = r - this->Slack;
     touches = false;
     if (!(limit > 0.0))
     {
+      if (gap)
+      {
+        *gap = HUGE_VAL;
+      }
       return false;
     }
     double x[3], u[3];
     G::AddScaled(this->P, r, this->N, x);
-    touches = G::ClosestPointOnTriangle(x, a, b, c, q) < limit * limit;
+    double d2 = G::ClosestPointOnTriangle(x, a, b, c, q);
+    touches = d2 < limit * limit;
     G::Sub(q, this->P, u);
-    if (!touches || !this->Capped || G::Dot(this->N, u) >= r * this->Lift)
+    bool blocks = touches;
+    if (touches && this->Capped && G::Dot(this->N, u) < r * this->Lift)
     {
-      return touches; // the closest point is admissible: it is the answer
+      // The closest point is in the cap: the closest admissible point instead, in the
+      // half-space (q - x).(p - x) <= r^2 cos(theta), written as w.q <= k.
+      const double w[3] = { -r * this->N[0], -r * this->N[1], -r * this->N[2] };
+      const double k = G::Dot(w, x) + r * r * this->CosMinAngle;
+      d2 = G::ClosestPointOnClippedTriangle(x, a, b, c, w, k, q);
+      blocks = d2 < limit * limit;
     }
-    // Admissible half-space (q - x).(p - x) <= r^2 cos(theta), written as w.q <= k.
-    const double w[3] = { -r * this->N[0], -r * this->N[1], -r * this->N[2] };
-    const double k = G::Dot(w, x) + r * r * this->CosMinAngle;
-    return G::ClosestPointOnClippedTriangle(x, a, b, c, w, k, q) < limit * limit;
+    if (gap)
+    {
+      *gap = std::sqrt(d2) - limit;
+    }
+    return blocks;
   }
 
   // The triangle reaches into the ball only below the cap's plane. A smaller ball
@@ -823,30 +848,65 @@ private:
       }
       this->Accept(next, q, slot);
     }
-    if (!this->Blocks(a, b, c, this->Radius, q, touches))
+    double gap;
+    if (!this->Blocks(a, b, c, this->Radius, q, touches, &gap))
     {
       return this->InCap(touches);
     }
     // Still blocking: the ball is converging (linearly) onto the point where the
     // triangle crosses the cap's cone. For one triangle the blocked radii form an
-    // interval that contains the current radius, so bisection below it is exact.
-    double lo = 0.0, hi = this->Radius, hiPoint[3] = { q[0], q[1], q[2] };
-    for (int i = 0; i < 80 && hi - lo > 4.0 * std::numeric_limits<double>::epsilon() * hi; ++i)
+    // interval that contains the current radius, so a bracket below it is exact.
+    this->Accept(this->LowerEndOfBlocking(a, b, c, gap, q), q, slot);
+    this->Blocks(a, b, c, this->Radius, q, touches);
+    return this->InCap(touches);
+  }
+
+  // The lower end of the radii the triangle blocks below the current (blocked) radius,
+  // to 4 ulps: a bracket [lo, hi] with lo free and hi blocked, narrowed by regula falsi
+  // on the signed gap of Blocks (Illinois: the end kept twice in a row has its gap
+  // halved), with a bisection step whenever an interpolation step did not halve the
+  // bracket. The decision at each radius is Blocks' own, so the result is where its
+  // answer changes; the gap only chooses where to look. On entry `point` and `gapHi`
+  // are Blocks' answer at the current radius; on return `point` is the blocking point
+  // at hi.
+  double LowerEndOfBlocking(
+    const double* a, const double* b, const double* c, double gapHi, double point[3]) const
+  {
+    double lo = 0.0, hi = this->Radius, gapLo = HUGE_VAL, q[3];
+    bool touches;
+    int kept = 0; // +1: the last step kept lo, -1: it kept hi
+    bool interpolated = false;
+    double width = hi - lo;
+    for (int i = 0; i < 100 && hi - lo > 4.0 * std::numeric_limits<double>::epsilon() * hi; ++i)
     {
-      const double mid = 0.5 * (lo + hi);
-      if (this->Blocks(a, b, c, mid, q, touches))
+      double x = 0.5 * (lo + hi);
+      const bool falsi = std::isfinite(gapLo) && gapLo > 0.0 && gapHi < 0.0 &&
+        !(interpolated && hi - lo > 0.5 * width);
+      if (falsi)
       {
-        hi = mid;
-        std::copy(q, q + 3, hiPoint);
+        const double t = lo + (hi - lo) * (gapLo / (gapLo - gapHi));
+        x = t > lo && t < hi ? t : x;
+      }
+      width = hi - lo;
+      interpolated = falsi;
+      double gap;
+      if (this->Blocks(a, b, c, x, q, touches, &gap))
+      {
+        hi = x;
+        gapHi = gap;
+        std::copy(q, q + 3, point);
+        gapLo *= kept == +1 ? 0.5 : 1.0;
+        kept = +1;
       }
       else
       {
-        lo = mid;
+        lo = x;
+        gapLo = gap;
+        gapHi *= kept == -1 ? 0.5 : 1.0;
+        kept = -1;
       }
     }
-    this->Accept(lo, hiPoint, slot);
-    this->Blocks(a, b, c, this->Radius, q, touches);
-    return this->InCap(touches);
+    return lo;
   }
 
   // The node cannot block the current ball (its box lies d2 from the centre, as
@@ -868,21 +928,30 @@ private:
     return side != FloatNodeTests::ABOVE;
   }
 
-  // Depth first, nearer child first, from `root` without the `skip` subtrees; a node
-  // is dropped as soon as it cannot block the current ball (tested again when
-  // popped: the ball keeps shrinking).
+  // Depth first, nearer child first, from `root` without the `skip` subtrees. A child
+  // is tested in full when its parent is opened and pushed with the number of radius
+  // updates so far; when popped after the ball has shrunk, its box and slab are
+  // tested again (its side of the cone does not change with the radius).
   void Traverse(std::int32_t root, const std::int32_t skip[3])
   {
     const std::vector<Node>& nodes = this->Tree.Nodes;
     std::vector<std::int32_t>& stack = this->Work.Stack;
+    std::vector<std::int32_t>& steps = this->Work.StackSteps;
+    if (this->Culled(root, this->Fast->CentreDistance2(nodes[root])))
+    {
+      return;
+    }
     stack.push_back(root);
+    steps.push_back(this->Result.Steps);
     while (!stack.empty())
     {
       const std::int32_t index = stack.back();
+      const bool shrunk = steps.back() != this->Result.Steps;
       stack.pop_back();
+      steps.pop_back();
       const Node& node = nodes[index];
       if (index == skip[0] || index == skip[1] || index == skip[2] ||
-        this->Culled(index, this->Fast->CentreDistance2(node)))
+        (shrunk && this->Fast->MissesBall(node, this->Fast->CentreDistance2(node))))
       {
         continue;
       }
@@ -893,22 +962,25 @@ private:
           if (this->Tree.TriangleIds[slot] != this->OwnTriangle && this->ShrinkOn(slot))
           {
             this->Work.Deferred.push_back(slot);
+            this->Work.DeferredSteps.push_back(this->Result.Steps);
           }
         }
         continue;
       }
-      // Push the farther child first; a child whose box misses the ball is not pushed.
+      // Push the farther child first.
       const float dl = this->Fast->CentreDistance2(nodes[node.Start]);
       const float dr = this->Fast->CentreDistance2(nodes[node.Start + 1]);
       const std::int32_t nearer = dl <= dr ? node.Start : node.Start + 1;
       const std::int32_t farther = node.Start + node.Start + 1 - nearer;
-      if (!this->Fast->MissesBall(nodes[farther], std::max(dl, dr)))
+      if (!this->Culled(farther, std::max(dl, dr)))
       {
         stack.push_back(farther);
+        steps.push_back(this->Result.Steps);
       }
-      if (!this->Fast->MissesBall(nodes[nearer], std::min(dl, dr)))
+      if (!this->Culled(nearer, std::min(dl, dr)))
       {
         stack.push_back(nearer);
+        steps.push_back(this->Result.Steps);
       }
     }
   }
@@ -1078,6 +1150,7 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
         if (!visit(d2, q, this->TriangleIds[slot]))
         {
           scratch.Stack.clear();
+  scratch.StackSteps.clear();
           return;
         }
       }
