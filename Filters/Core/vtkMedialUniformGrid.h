@@ -274,30 +274,20 @@ public:
   template <class F>
   void ForEachItemNear(const double c[3], double radius, F&& f) const
   {
-    int lo[3], hi[3];
-    this->CellBox(c, radius, lo, hi);
     const double r2 = radius * radius;
-    for (int z = lo[2]; z <= hi[2]; ++z)
-    {
-      const double dz = this->SlabDistance(c[2], z, 2);
-      for (int y = lo[1]; y <= hi[1]; ++y)
+    const int lo = this->Coordinate(c[0] - radius, 0), hi = this->Coordinate(c[0] + radius, 0);
+    this->ForEachRowNear(c, radius, [&](int y, int z, int x0, int x1, double d2) {
+      // One more cell each side (within the box): the test below alone decides,
+      // whatever the rounding of the run.
+      for (int x = std::max(lo, x0 - 1); x <= std::min(hi, x1 + 1); ++x)
       {
-        const double dy = this->SlabDistance(c[1], y, 1);
-        if (dz * dz + dy * dy > r2)
+        const double dx = this->SlabDistance(c[0], x, 0);
+        if (d2 + dx * dx <= r2)
         {
-          continue;
-        }
-        for (int x = lo[0]; x <= hi[0]; ++x)
-        {
-          const double dx = this->SlabDistance(c[0], x, 0);
-          if (dz * dz + dy * dy + dx * dx > r2)
-          {
-            continue;
-          }
           this->ForEachItemInCell(this->CellId(x, y, z), f);
         }
       }
-    }
+    });
   }
 
   /// f(y, z, x0, x1, d2) for each row of cells (fixed y and z) that comes within
