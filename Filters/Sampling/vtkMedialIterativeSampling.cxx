@@ -359,7 +359,15 @@ void vtkMedialCoverage::FindLowered(const double c[3], double r, std::vector<Low
       for (vtkIdType s = m.Grid.ItemOffset(row + i); s < end; ++s)
       {
         const double d[3] = { x[s] - c[0], y[s] - c[1], z[s] - c[2] };
-        const double g = std::sqrt(G::Dot(d, d)) - r;
+        const double d2 = G::Dot(d, d);
+        // Most points are not lowered: a square test with a margin first, the exact
+        // gap (and its decision) only for the few that may be.
+        const double within = r + gap[s];
+        if (!(within > 0.0) || d2 > within * within * (1.0 + 1e-9))
+        {
+          continue;
+        }
+        const double g = std::sqrt(d2) - r;
         if (g < gap[s])
         {
           lowered.push_back({ s, g });
