@@ -9,7 +9,9 @@
 // the "limit" (one ray plus one bounded closest-point query per sample), peak RSS,
 // and a 327k-triangle sphere as the worst case; then the 3D classification
 // (vtkMedialBallClassifier) of horse.ply's default balls, without and with the exact
-// seams and junctions, at theta = 45 and 0 (--structure runs only these rows).
+// seams and junctions, at theta = 45 and 0 (--structure runs only these rows); and
+// the sampling strategies' wall time per sample on horse.ply against Random's, in
+// the same run (--strategies runs only these rows).
 // Prints a table, or one JSON object with --json. Not a test: it checks nothing.
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialAxisSampler.h"
@@ -36,6 +38,7 @@
 #include <sys/resource.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -203,6 +206,87 @@ void PrintStructure(const std::vector<StructureRow>& rows, const std::string& la
   }
 }
 
+// One row per sampling strategy: wall time per evaluated sample without the
+// preparation (Random's 1-sample run is subtracted), the median of 3 rounds that
+// alternate the strategies, and the median of the per-round ratios to Random.
+struct StrategyRow
+{
+  std::string Name;
+  vtkIdType Evaluated;
+  double MicrosecondsPerSample;
+  double RatioToRandom;
+};
+
+double Median3(std::vector<double> v)
+{
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+std::vector<StrategyRow> RunStrategies(vtkPolyData* mesh, vtkIdType samples)
+{
+  const int strategies[3] = { vtkMedialAxisSampler::RANDOM, vtkMedialAxisSampler::CLOSEST_NEIGHBOR,
+    vtkMedialAxisSampler::FACE_DISTANCE };
+  auto timed = [&](int strategy, vtkIdType n, vtkIdType& evaluated) {
+    vtkNew<vtkMedialAxisSampler> sampler;
+    sampler->SetInputData(mesh);
+    sampler->SetSamplingStrategy(strategy);
+    sampler->SetNumberOfThreads(2);
+    sampler->SetNumberOfSamples(n);
+    const double t0 = Now();
+    sampler->Update();
+    const double seconds = Now() - t0;
+    evaluated = strategy == vtkMedialAxisSampler::RANDOM ? n : sampler->GetEvaluatedSamples();
+    return seconds;
+  };
+  vtkIdType one;
+  const double preparation = timed(vtkMedialAxisSampler::RANDOM, 1, one);
+  std::vector<double> micro[3], ratio[3];
+  vtkIdType evaluated[3] = { 0, 0, 0 };
+  for (int round = 0; round < 3; ++round)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const double seconds = timed(strategies[k], samples, evaluated[k]);
+      micro[k].push_back(1e6 * (seconds - preparation) / std::max<vtkIdType>(evaluated[k], 1));
+      ratio[k].push_back(micro[k].back() / micro[0].back());
+    }
+  }
+  std::vector<StrategyRow> rows;
+  for (int k = 0; k < 3; ++k)
+  {
+    rows.push_back({ vtkMedialAxisSampler::GetSamplingStrategyName(strategies[k]), evaluated[k], Median3(micro[k]),
+      Median3(ratio[k]) });
+  }
+  return rows;
+}
+
+void PrintStrategies(const std::vector<StrategyRow>& rows, const std::string& label, vtkIdType samples, bool json,
+  std::ostringstream& js)
+{
+  if (json)
+  {
+    js << ", \"strategies_mesh\": \"" << label << "\", \"strategies_samples\": " << samples;
+    for (const StrategyRow& r : rows)
+    {
+      js << ", \"strategy_" << r.Name << "\": {\"evaluated\": " << r.Evaluated
+         << ", \"us_per_sample\": " << r.MicrosecondsPerSample << ", \"ratio_to_random\": " << r.RatioToRandom
+         << "}";
+    }
+    return;
+  }
+  std::printf("\nSampling strategies on %s, %lld samples asked, 2 threads: wall time per evaluated sample without "
+              "the preparation, median of 3 alternating rounds; ratio to Random in the same round (median):\n",
+    label.c_str(), static_cast<long long>(samples));
+  std::printf("| strategy | samples evaluated | us per sample | ratio to random |\n");
+  std::printf("|---|---|---|---|\n");
+  for (const StrategyRow& r : rows)
+  {
+    std::printf("| %s | %lld | %.2f | %.2f |\n", r.Name.c_str(), static_cast<long long>(r.Evaluated),
+      r.MicrosecondsPerSample, r.RatioToRandom);
+  }
+}
+
 // Microseconds per sample (wall), without the preparation (merge, orientation,
 // BVH builds): the time of a 1-sample run with the same settings is subtracted.
 double RunSampler(vtkPolyData* mesh, int method, int threads, vtkIdType samples, double& iterations,
@@ -224,6 +308,8 @@ struct BenchOptions
   bool Json = false;
   bool StructureOnly = false;
   std::string PreparationFile; // --preparation: only the preparation rows, on this surface
+  bool StrategiesOnly = false;
+  vtkIdType StrategySamples = 50000;
   vtkIdType Samples = 200000;
   vtkIdType DefaultSamples = 1000000;
   std::string SharedDir = MEDIALAXIS_SHARED_MESH_DIR;
@@ -242,6 +328,14 @@ bool ParseArgs(int argc, char* argv[], BenchOptions& options)
     else if (a == "--structure")
     {
       options.StructureOnly = true;
+    }
+    else if (a == "--strategies")
+    {
+      options.StrategiesOnly = true;
+    }
+    else if (a == "--strategy-samples" && i + 1 < argc)
+    {
+      options.StrategySamples = std::atoll(argv[++i]);
     }
     else if (a == "--samples" && i + 1 < argc)
     {
@@ -265,7 +359,9 @@ bool ParseArgs(int argc, char* argv[], BenchOptions& options)
         "usage: medial-bench [--json] [--samples N (per method run, default 200000)]\n"
         "                    [--default-samples N (default method, 2 threads; default 1000000)]\n"
         "                    [--shared DIR] [--structure (only the 3D classification rows)]\n"
-        "                    [--preparation SURFACE (only the preparation rows, on that file)]\n");
+        "                    [--preparation SURFACE (only the preparation rows, on that file)]\n"
+        "                    [--strategies (only the sampling-strategy rows)]\n"
+        "                    [--strategy-samples N (per strategy run, default 50000)]\n");
       return false;
     }
   }
@@ -458,7 +554,7 @@ void MeasureMethods(vtkPolyData* mesh, const BenchOptions& options, BenchFigures
 }
 
 void PrintJson(const BenchFigures& f, const BenchOptions& options, const std::vector<StructureRow>& structure,
-  const std::string& structureLabel)
+  const std::string& structureLabel, const std::string& strategiesJson)
 {
   std::ostringstream js;
   js << "{\"mesh\": \"" << f.Label << "\", \"triangles\": " << f.Triangles << ", \"load_seconds\": " << f.LoadSeconds
@@ -479,7 +575,7 @@ void PrintJson(const BenchFigures& f, const BenchOptions& options, const std::ve
      << ", \"default_us_per_sample\": " << f.DefaultMicro << ", \"sphere_us_per_sample\": " << f.SphereMicro
      << ", \"sphere_to_horse\": " << f.SphereMicro / f.DefaultMicro << ", \"peak_rss_mib\": " << f.PeakRss;
   PrintStructure(structure, structureLabel, true, js);
-  js << "}";
+  js << strategiesJson << "}";
   std::printf("%s\n", js.str().c_str());
 }
 
@@ -599,6 +695,19 @@ int main(int argc, char* argv[])
   // The 3D classification rows (first: they are short).
   std::string structureLabel;
   vtkSmartPointer<vtkPolyData> structureMesh = LoadBenchMesh(options.SharedDir, 0, 16, structureLabel);
+  // The strategy rows (same mesh).
+  std::ostringstream strategiesJson;
+  const std::vector<StrategyRow> strategyRows =
+    options.StructureOnly ? std::vector<StrategyRow>() : RunStrategies(structureMesh, options.StrategySamples);
+  if (options.StrategiesOnly)
+  {
+    PrintStrategies(strategyRows, structureLabel, options.StrategySamples, options.Json, strategiesJson);
+    if (options.Json)
+    {
+      std::printf("{%s}\n", strategiesJson.str().substr(2).c_str());
+    }
+    return 0;
+  }
   const std::vector<StructureRow> structure = { RunStructure(structureMesh, 45.0), RunStructure(structureMesh, 0.0) };
   if (options.StructureOnly)
   {
@@ -624,11 +733,13 @@ int main(int argc, char* argv[])
   MeasureMethods(mesh, options, figures);
   if (options.Json)
   {
-    PrintJson(figures, options, structure, structureLabel);
+    PrintStrategies(strategyRows, structureLabel, options.StrategySamples, true, strategiesJson);
+    PrintJson(figures, options, structure, structureLabel, strategiesJson.str());
   }
   else
   {
     PrintTables(figures, options, structure, structureLabel);
+    PrintStrategies(strategyRows, structureLabel, options.StrategySamples, false, strategiesJson);
   }
   return 0;
 }

@@ -240,7 +240,7 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh
   std::unique_ptr<vtkMedialCoverage> coverage;
   if (self->CoverageTolerance > 0.0)
   {
-    coverage.reset(new vtkMedialCoverage(mesh));
+    coverage.reset(new vtkMedialCoverage(mesh, threads));
   }
   std::vector<vtkIdType> index, order;
   try
@@ -444,13 +444,7 @@ vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangl
     }
     else
     {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        if (results[i].Valid)
-        {
-          coverage->AddBall(results[i].Centre, results[i].Radius, nullptr);
-        }
-      }
+      coverage->AddBalls(results.data() + begin, end - begin, begin);
     }
     const double gap = coverage->MaxGap();
     self->MaxCoverageGap = gap / mesh.Diagonal;
