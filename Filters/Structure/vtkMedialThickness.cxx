@@ -232,6 +232,7 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
       {
         const vtkIdType t = around[i];
         vtkMedialSampleRecord along;
+        along.Valid = false; // degenerate faces are skipped
         if (mesh.Areas[t] > 0.0)
         {
           vtkMedialSolveBall(query, mesh, param, t, p, along, hint);
@@ -249,6 +250,7 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
       // nearly opposite) where no ball fits.
       best.Valid = true;
       best.Radius = 0.0;
+      best.ContactTriangle = -1; // no ball, so no hint for the next vertex
       std::copy(p, p + 3, best.Centre);
     }
     m.Ray = RayLength(query, mesh, p, n, -1);
