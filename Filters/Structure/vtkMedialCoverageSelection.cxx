@@ -17,8 +17,8 @@
 
 namespace
 {
-// Stages stop halving the dilation below the start value / 2^MaxHalvings.
-constexpr int MaxHalvings = 10;
+// Steps of the bisection for the smallest dilation K balls cover.
+constexpr int Bisections = 10;
 }
 
 void vtkMedialCoverageSelection::FindPairs(const std::vector<double>& centres, const std::vector<double>& radii,
@@ -83,7 +83,8 @@ vtkIdType vtkMedialCoverageSelection::Gain(
   vtkIdType gain = 0;
   for (vtkIdType k = this->Offsets[candidate]; k < this->Offsets[candidate + 1]; ++k)
   {
-    gain += !covered[this->Samples[k]] && this->Excess[k] <= dilation;
+    const vtkIdType s = this->Samples[k];
+    gain += !covered[s] && this->Excess[k] <= std::max<double>(dilation, this->Best[s]);
   }
   return gain;
 }
@@ -92,11 +93,61 @@ void vtkMedialCoverageSelection::Cover(vtkIdType candidate, double dilation, std
 {
   for (vtkIdType k = this->Offsets[candidate]; k < this->Offsets[candidate + 1]; ++k)
   {
-    if (this->Excess[k] <= dilation)
+    const vtkIdType s = this->Samples[k];
+    if (this->Excess[k] <= std::max<double>(dilation, this->Best[s]))
     {
-      covered[this->Samples[k]] = 1;
+      covered[s] = 1;
     }
   }
+}
+
+bool vtkMedialCoverageSelection::Stage(double dilation, vtkIdType count, std::vector<char>& covered)
+{
+  // The samples the balls chosen so far cover at this dilation.
+  const vtkIdType candidates = static_cast<vtkIdType>(this->Chosen.size());
+  vtkIdType chosen = 0;
+  std::fill(covered.begin(), covered.end(), 0);
+  for (vtkIdType j = 0; j < candidates; ++j)
+  {
+    if (this->Chosen[j])
+    {
+      this->Cover(j, dilation, covered);
+      ++chosen;
+    }
+  }
+  // Lazy greedy: (gain, -id) upper bounds, the largest first.
+  std::priority_queue<std::pair<vtkIdType, vtkIdType>> heap;
+  for (vtkIdType j = 0; j < candidates; ++j)
+  {
+    const vtkIdType gain = this->Chosen[j] ? 0 : this->Gain(j, dilation, covered);
+    if (gain > 0)
+    {
+      heap.push({ gain, -j });
+    }
+  }
+  while (!heap.empty())
+  {
+    const vtkIdType j = -heap.top().second;
+    heap.pop();
+    const vtkIdType gain = this->Gain(j, dilation, covered);
+    if (gain == 0)
+    {
+      continue;
+    }
+    if (!heap.empty() && gain < heap.top().first)
+    {
+      heap.push({ gain, -j });
+      continue;
+    }
+    if (chosen == count)
+    {
+      return false; // a sample is left uncovered
+    }
+    this->Chosen[j] = 1;
+    this->Cover(j, dilation, covered);
+    ++chosen;
+  }
+  return true;
 }
 
 void vtkMedialCoverageSelection::FarthestFirst(const std::vector<double>& centres, vtkIdType count)
@@ -145,65 +196,43 @@ bool vtkMedialCoverageSelection::Select(const std::vector<double>& centres, cons
   const vtkIdType candidates = static_cast<vtkIdType>(radii.size());
   const vtkIdType sampleCount = static_cast<vtkIdType>(samples.size() / 3);
   count = std::min(count, candidates);
-  this->Chosen.assign(static_cast<size_t>(candidates), 0);
   this->FindPairs(centres, radii, samples, dilation, std::max(1, threads));
-  std::vector<char> covered(static_cast<size_t>(sampleCount), 0);
+  this->Best.assign(static_cast<size_t>(sampleCount), HUGE_VALF);
+  for (size_t k = 0; k < this->Samples.size(); ++k)
   {
-    std::vector<char> coverable(static_cast<size_t>(sampleCount), 0);
-    for (vtkIdType s : this->Samples)
-    {
-      coverable[s] = 1;
-    }
-    this->UncoverableSamples = sampleCount - std::count(coverable.begin(), coverable.end(), 1);
+    this->Best[this->Samples[k]] = std::min(this->Best[this->Samples[k]], this->Excess[k]);
   }
+  this->UncoverableSamples = std::count(this->Best.begin(), this->Best.end(), HUGE_VALF);
+  std::vector<char> covered(static_cast<size_t>(sampleCount), 0);
 
-  vtkIdType chosen = 0;
-  double stage = dilation;
-  for (int halvings = 0; chosen < count && halvings <= MaxHalvings; ++halvings, stage *= 0.5)
+  // The smallest dilation that `count` balls cover, by bisection.
+  this->Chosen.assign(static_cast<size_t>(candidates), 0);
+  double reached = dilation;
+  if (this->Stage(dilation, count, covered))
   {
-    // Samples covered at this stage's dilation by the balls chosen so far.
-    std::fill(covered.begin(), covered.end(), 0);
-    for (vtkIdType j = 0; j < candidates; ++j)
+    double below = 0.0;
+    for (int step = 0; step < Bisections; ++step)
     {
-      if (this->Chosen[j])
-      {
-        this->Cover(j, stage, covered);
-      }
-    }
-    // Lazy greedy: (gain, -id) upper bounds, the largest first.
-    std::priority_queue<std::pair<vtkIdType, vtkIdType>> heap;
-    for (vtkIdType j = 0; j < candidates; ++j)
-    {
-      const vtkIdType gain = this->Chosen[j] ? 0 : this->Gain(j, stage, covered);
-      if (gain > 0)
-      {
-        heap.push({ gain, -j });
-      }
-    }
-    while (chosen < count && !heap.empty())
-    {
-      const vtkIdType j = -heap.top().second;
-      heap.pop();
-      const vtkIdType gain = this->Gain(j, stage, covered);
-      if (gain == 0)
-      {
-        continue;
-      }
-      if (!heap.empty() && gain < heap.top().first)
-      {
-        heap.push({ gain, -j });
-        continue;
-      }
-      this->Chosen[j] = 1;
-      this->Cover(j, stage, covered);
-      if ((++chosen & 255) == 0 && aborted && aborted())
+      if (aborted && aborted())
       {
         return false;
       }
+      const double middle = 0.5 * (below + reached);
+      this->Chosen.assign(static_cast<size_t>(candidates), 0);
+      (this->Stage(middle, count, covered) ? reached : below) = middle;
     }
-    this->FinalDilation = stage;
+    this->Chosen.assign(static_cast<size_t>(candidates), 0);
+    this->Stage(reached, count, covered);
   }
+  this->FinalDilation = reached;
   this->CoveredSamples = std::count(covered.begin(), covered.end(), 1);
+  // The balls left over refine the cover at half the dilation, and so on.
+  vtkIdType chosen = std::count(this->Chosen.begin(), this->Chosen.end(), 1);
+  for (double stage = 0.5 * reached; chosen < count && stage > reached / 1024.0; stage *= 0.5)
+  {
+    this->Stage(stage, count, covered);
+    chosen = std::count(this->Chosen.begin(), this->Chosen.end(), 1);
+  }
   if (chosen < count)
   {
     this->FarthestFirst(centres, count);

@@ -5,16 +5,22 @@
  * Coverage Axis, Dou et al. 2022, and Coverage Axis++, Wang et al. 2024). Used by
  * vtkMedialSimplifyFilter's COVERAGE method.
  *
- * Candidates are balls (c_j, r_j); samples are points s on the surface. Candidate j covers
- * sample s at dilation d when |s - c_j| - r_j <= d: s lies in the ball grown by d.
+ * Candidates are balls (c_j, r_j); samples are points s on the surface. Sample s lies
+ * at excess e_js = |s - c_j| - r_j from candidate j, and at best b_s = min_j e_js (the
+ * input balls' own error there). At dilation d, candidate j covers s when e_js <=
+ * max(d, b_s): s lies in the ball grown by d, or as near it as any candidate comes.
  *
- * Selection, in stages: at dilation d (the start value, relative to nothing: model units),
- * the candidate that covers the most samples not yet covered is chosen, again and again
- * (lazy greedy: a candidate's count only falls, so a stale count is an upper bound). When
- * no candidate covers a new sample, every sample that can be covered is, and the next
- * stage halves d (a sample is covered again only when a chosen ball is within the new d).
- * This stops at K balls. Below 1/1024 of the start dilation the rest are taken farthest
- * first (the candidate whose centre is farthest from the chosen ones').
+ * Stage(d): from the balls chosen so far, the candidate that covers the most samples
+ * not yet covered is chosen, again and again (lazy greedy: a candidate's count only
+ * falls, so a stale count is an upper bound; ties to the lower id), until every sample
+ * is covered.
+ *
+ * Selection of K balls: the smallest dilation d in [0, D] (D the start dilation) whose
+ * stage needs at most K balls, by bisection (10 steps), the dilation that bounds the
+ * distance from the surface samples to the chosen balls; when even D needs more, the
+ * first K balls of stage D. The balls left over go to stages d/2, d/4, ... (down to
+ * d/1024), and any still left are taken farthest first (the candidate whose centre is
+ * farthest from the chosen ones').
  *
  * The pairs (candidate, sample) within the start dilation are found once, in parallel,
  * through vtkStaticPointLocator; each candidate's list is sorted, and the greedy passes
@@ -39,8 +45,8 @@ public:
 
   /// Per candidate, 1 when chosen.
   std::vector<char> Chosen;
-  /// The dilation of the last stage, and the samples covered at it when the selection
-  /// stopped, and the samples no candidate covers at the start dilation.
+  /// The dilation the chosen balls cover (the bisection's), the samples covered at it,
+  /// and the samples no candidate comes within the start dilation of.
   double FinalDilation = 0.0;
   vtkIdType CoveredSamples = 0;
   vtkIdType UncoverableSamples = 0;
@@ -49,6 +55,9 @@ private:
   void FindPairs(const std::vector<double>& centres, const std::vector<double>& radii,
     const std::vector<double>& samples, double dilation, int threads);
   vtkIdType Gain(vtkIdType candidate, double dilation, const std::vector<char>& covered) const;
+  // Greedy cover at `dilation` from the balls chosen so far; false when `count` balls
+  // are chosen and a sample is left.
+  bool Stage(double dilation, vtkIdType count, std::vector<char>& covered);
   void Cover(vtkIdType candidate, double dilation, std::vector<char>& covered) const;
   void FarthestFirst(const std::vector<double>& centres, vtkIdType count);
 
@@ -57,6 +66,7 @@ private:
   std::vector<vtkIdType> Offsets;
   std::vector<vtkIdType> Samples;
   std::vector<float> Excess;
+  std::vector<float> Best; // per sample, the smallest excess over the candidates
 };
 
 #endif
