@@ -18,7 +18,7 @@
 namespace
 {
 // Steps of the bisection for the smallest dilation K balls cover.
-constexpr int Bisections = 10;
+constexpr int Bisections = 7;
 }
 
 void vtkMedialCoverageSelection::FindPairs(const std::vector<double>& centres, const std::vector<double>& radii,
@@ -56,7 +56,6 @@ void vtkMedialCoverageSelection::FindPairs(const std::vector<double>& centres, c
           (p[2] - c[2]) * (p[2] - c[2]));
         row.emplace_back(s, static_cast<float>(d - radii[j]));
       }
-      std::sort(row.begin(), row.end());
     }
   }
   this->Offsets.assign(static_cast<size_t>(candidates) + 1, 0);

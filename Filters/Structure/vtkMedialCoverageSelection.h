@@ -16,14 +16,14 @@
  * is covered.
  *
  * Selection of K balls: the smallest dilation d in [0, D] (D the start dilation) whose
- * stage needs at most K balls, by bisection (10 steps), the dilation that bounds the
+ * stage needs at most K balls, by bisection (7 steps), the dilation that bounds the
  * distance from the surface samples to the chosen balls; when even D needs more, the
  * first K balls of stage D. The balls left over go to stages d/2, d/4, ... (down to
  * d/1024), and any still left are taken farthest first (the candidate whose centre is
  * farthest from the chosen ones').
  *
  * The pairs (candidate, sample) within the start dilation are found once, in parallel,
- * through vtkStaticPointLocator; each candidate's list is sorted, and the greedy passes
+ * through vtkStaticPointLocator (whose answers do not depend on the thread), and the greedy passes
  * break ties by the lower candidate id, so the choice does not depend on the thread count.
  */
 #ifndef vtkMedialCoverageSelection_h

@@ -89,7 +89,7 @@ public:
 
   ///@{
   /// COVERAGE: the start dilation of the balls, relative to the surface's diagonal
-  /// (default 0.02), the number of surface samples (default 20000), their random stream
+  /// (default 0.02), the number of surface samples (default 10000), their random stream
   /// (default 1), and the threads that find the coverage (0 = all cores, the default).
   vtkSetClampMacro(Dilation, double, 1e-6, 1.0);
   vtkGetMacro(Dilation, double);
@@ -120,7 +120,7 @@ protected:
   vtkIdType NumberOfBalls = 100;
   int Method = QUADRIC;
   double Dilation = 0.02;
-  vtkIdType NumberOfSurfaceSamples = 20000;
+  vtkIdType NumberOfSurfaceSamples = 10000;
   int RandomSeed = 1;
   int NumberOfThreads = 0;
   vtkIdType NumberOfBlockedCollapses = 0;
