@@ -188,6 +188,73 @@ void vtkMedialCoverageSelection::FarthestFirst(const std::vector<double>& centre
   }
 }
 
+void vtkMedialCoverageSelection::FarthestSamples(const std::vector<double>& centres,
+  const std::vector<double>& radii, const std::vector<double>& samples, vtkIdType count, double dilation,
+  std::vector<char>& covered)
+{
+  const vtkIdType candidates = static_cast<vtkIdType>(radii.size());
+  const vtkIdType sampleCount = static_cast<vtkIdType>(samples.size() / 3);
+  auto excess = [&](vtkIdType j, vtkIdType s) {
+    const double* c = &centres[3 * j];
+    const double* p = &samples[3 * s];
+    return std::sqrt((p[0] - c[0]) * (p[0] - c[0]) + (p[1] - c[1]) * (p[1] - c[1]) + (p[2] - c[2]) * (p[2] - c[2])) -
+      radii[j];
+  };
+  this->Chosen.assign(static_cast<size_t>(candidates), 0);
+  std::fill(covered.begin(), covered.end(), 0);
+  std::vector<double> gap(static_cast<size_t>(sampleCount), HUGE_VAL);
+  for (vtkIdType chosen = 0; chosen < count; ++chosen)
+  {
+    // The sample farthest beyond what the candidates can do there (the first pick: any).
+    vtkIdType far = -1;
+    double shortfall = -HUGE_VAL;
+    for (vtkIdType s = 0; s < sampleCount && chosen > 0; ++s)
+    {
+      if (this->Best[s] < HUGE_VALF && gap[s] - this->Best[s] > shortfall)
+      {
+        shortfall = gap[s] - this->Best[s];
+        far = s;
+      }
+    }
+    // Of the candidates that cover it, the one that covers the most samples not yet
+    // covered; when none does, the nearest.
+    vtkIdType pick = -1, gain = -1;
+    double nearest = HUGE_VAL;
+    for (vtkIdType j = 0; j < candidates; ++j)
+    {
+      if (this->Chosen[j])
+      {
+        continue;
+      }
+      const double e = far < 0 ? 0.0 : excess(j, far);
+      if (e <= std::max<double>(dilation, far < 0 ? 0.0 : this->Best[far]))
+      {
+        const vtkIdType g = this->Gain(j, dilation, covered);
+        if (g > gain)
+        {
+          gain = g;
+          pick = j;
+        }
+      }
+      else if (gain < 0 && e < nearest)
+      {
+        nearest = e;
+        pick = j;
+      }
+    }
+    if (pick < 0)
+    {
+      break;
+    }
+    this->Chosen[pick] = 1;
+    this->Cover(pick, dilation, covered);
+    for (vtkIdType s = 0; s < sampleCount; ++s)
+    {
+      gap[s] = std::min(gap[s], excess(pick, s));
+    }
+  }
+}
+
 bool vtkMedialCoverageSelection::Select(const std::vector<double>& centres, const std::vector<double>& radii,
   const std::vector<double>& samples, vtkIdType count, double dilation, int threads,
   const std::function<bool()>& aborted)
@@ -222,6 +289,11 @@ bool vtkMedialCoverageSelection::Select(const std::vector<double>& centres, cons
     }
     this->Chosen.assign(static_cast<size_t>(candidates), 0);
     this->Stage(reached, count, covered);
+  }
+  else
+  {
+    // Too few balls to cover at the start dilation: the farthest sample first.
+    this->FarthestSamples(centres, radii, samples, count, dilation, covered);
   }
   this->FinalDilation = reached;
   this->CoveredSamples = std::count(covered.begin(), covered.end(), 1);

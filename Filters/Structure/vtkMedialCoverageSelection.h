@@ -17,8 +17,11 @@
  *
  * Selection of K balls: the smallest dilation d in [0, D] (D the start dilation) whose
  * stage needs at most K balls, by bisection (7 steps), the dilation that bounds the
- * distance from the surface samples to the chosen balls; when even D needs more, the
- * first K balls of stage D. The balls left over go to stages d/2, d/4, ... (down to
+ * distance from the surface samples to the chosen balls. When even D needs more than K,
+ * a k-centre choice instead (FarthestSamples): each ball goes to the sample farthest
+ * beyond its best, the candidate among those that cover it that covers the most samples
+ * not yet covered (the plain greedy cover left whole parts of fandisk and rocker-arm
+ * uncovered at K = 30: 10% of the diagonal). The balls left over go to stages d/2, d/4, ... (down to
  * d/1024), and any still left are taken farthest first (the candidate whose centre is
  * farthest from the chosen ones').
  *
@@ -60,6 +63,10 @@ private:
   bool Stage(double dilation, vtkIdType count, std::vector<char>& covered);
   void Cover(vtkIdType candidate, double dilation, std::vector<char>& covered) const;
   void FarthestFirst(const std::vector<double>& centres, vtkIdType count);
+  // K-centre: again and again, the sample whose distance to the chosen balls exceeds its
+  // best the most gets the candidate that covers it and the most samples not yet covered.
+  void FarthestSamples(const std::vector<double>& centres, const std::vector<double>& radii,
+    const std::vector<double>& samples, vtkIdType count, double dilation, std::vector<char>& covered);
 
   // Compressed rows: candidate j's samples are Samples[Offsets[j] .. Offsets[j + 1]), with
   // the excess |s - c_j| - r_j of each.
