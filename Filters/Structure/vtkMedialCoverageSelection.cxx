@@ -200,10 +200,23 @@ void vtkMedialCoverageSelection::FarthestSamples(const std::vector<double>& cent
     return std::sqrt((p[0] - c[0]) * (p[0] - c[0]) + (p[1] - c[1]) * (p[1] - c[1]) + (p[2] - c[2]) * (p[2] - c[2])) -
       radii[j];
   };
-  this->Chosen.assign(static_cast<size_t>(candidates), 0);
+  this->Chosen = this->Forced;
   std::fill(covered.begin(), covered.end(), 0);
   std::vector<double> gap(static_cast<size_t>(sampleCount), HUGE_VAL);
-  for (vtkIdType chosen = 0; chosen < count; ++chosen)
+  vtkIdType chosen = 0;
+  for (vtkIdType j = 0; j < candidates; ++j)
+  {
+    if (this->Chosen[j])
+    {
+      this->Cover(j, dilation, covered);
+      for (vtkIdType s = 0; s < sampleCount; ++s)
+      {
+        gap[s] = std::min(gap[s], excess(j, s));
+      }
+      ++chosen;
+    }
+  }
+  for (; chosen < count; ++chosen)
   {
     // The sample farthest beyond what the candidates can do there (the first pick: any).
     vtkIdType far = -1;
@@ -262,6 +275,7 @@ bool vtkMedialCoverageSelection::Select(const std::vector<double>& centres, cons
   const vtkIdType candidates = static_cast<vtkIdType>(radii.size());
   const vtkIdType sampleCount = static_cast<vtkIdType>(samples.size() / 3);
   count = std::min(count, candidates);
+  this->Forced.resize(static_cast<size_t>(candidates), 0);
   this->FindPairs(centres, radii, samples, dilation, std::max(1, threads));
   this->Best.assign(static_cast<size_t>(sampleCount), HUGE_VALF);
   for (size_t k = 0; k < this->Samples.size(); ++k)
@@ -272,7 +286,7 @@ bool vtkMedialCoverageSelection::Select(const std::vector<double>& centres, cons
   std::vector<char> covered(static_cast<size_t>(sampleCount), 0);
 
   // The smallest dilation that `count` balls cover, by bisection.
-  this->Chosen.assign(static_cast<size_t>(candidates), 0);
+  this->Chosen = this->Forced;
   double reached = dilation;
   if (this->Stage(dilation, count, covered))
   {
@@ -284,10 +298,10 @@ bool vtkMedialCoverageSelection::Select(const std::vector<double>& centres, cons
         return false;
       }
       const double middle = 0.5 * (below + reached);
-      this->Chosen.assign(static_cast<size_t>(candidates), 0);
+      this->Chosen = this->Forced;
       (this->Stage(middle, count, covered) ? reached : below) = middle;
     }
-    this->Chosen.assign(static_cast<size_t>(candidates), 0);
+    this->Chosen = this->Forced;
     this->Stage(reached, count, covered);
   }
   else

@@ -46,7 +46,9 @@ public:
     const std::vector<double>& samples, vtkIdType count, double dilation, int threads,
     const std::function<bool()>& aborted = {});
 
-  /// Per candidate, 1 when chosen.
+  /// Per candidate, 1 when it must be chosen (set before Select; empty: none).
+  std::vector<char> Forced;
+  /// Per candidate, 1 when chosen (the forced ones and the ones Select chose).
   std::vector<char> Chosen;
   /// The dilation the chosen balls cover (the bisection's), the samples covered at it,
   /// and the samples no candidate comes within the start dilation of.

@@ -486,10 +486,11 @@ void vtkMedialQuadricSimplification::Extract()
   }
 }
 
-bool vtkMedialQuadricSimplification::RunKeeping(
-  const vtkMedialSimplicialComplex& complex, const std::vector<char>& kept, const std::function<bool()>& aborted)
+bool vtkMedialQuadricSimplification::RunKeeping(const vtkMedialSimplicialComplex& complex,
+  const std::vector<char>& kept, bool release, const std::function<bool()>& aborted)
 {
   this->Kept = kept;
+  this->ReleaseKept = release;
   const vtkIdType target = static_cast<vtkIdType>(std::count(kept.begin(), kept.end(), 1));
   const bool done = this->Run(complex, target, aborted);
   this->Kept.clear();
@@ -556,7 +557,7 @@ bool vtkMedialQuadricSimplification::Run(
     if (heap.empty())
     {
       // RunKeeping, stuck with balls not kept that cannot go: kept balls may go too.
-      if (std::find(this->Kept.begin(), this->Kept.end(), 1) == this->Kept.end())
+      if (!this->ReleaseKept || std::find(this->Kept.begin(), this->Kept.end(), 1) == this->Kept.end())
       {
         break;
       }

@@ -35,8 +35,8 @@
  * only balls not kept go, each into a neighbour that stays where it is (a kept ball, or
  * the one of two balls not kept whose removal costs less), cheapest first under the same
  * quadric and the same topology rules, until only the kept balls are left. When a ball
- * not kept cannot go, kept balls may go too (still into a neighbour that stays where it
- * is), so that as many balls are left as were kept.
+ * not kept cannot go and `release` is set, kept balls may go too (still into a
+ * neighbour that stays where it is), so that as many balls are left as were kept.
  */
 #ifndef vtkMedialQuadricSimplification_h
 #define vtkMedialQuadricSimplification_h
@@ -56,8 +56,10 @@ public:
   /// when `aborted` returns true.
   bool Run(const vtkMedialSimplicialComplex& complex, vtkIdType target, const std::function<bool()>& aborted = {});
 
-  /// Collapses every ball whose `kept` flag is 0 into the kept ones (see the class comment).
-  bool RunKeeping(const vtkMedialSimplicialComplex& complex, const std::vector<char>& kept,
+  /// Collapses every ball whose `kept` flag is 0 into the kept ones (see the class
+  /// comment); with `release`, kept balls go too when the others are stuck (otherwise
+  /// they stay, and Source tells which balls not kept are left).
+  bool RunKeeping(const vtkMedialSimplicialComplex& complex, const std::vector<char>& kept, bool release,
     const std::function<bool()>& aborted = {});
 
   /// The result: balls (centres and radii), edges with their triangle counts, triangles.
@@ -121,6 +123,7 @@ private:
   std::vector<char> TriangleAlive;
   double Scale = 1.0; // the balls' extent, for the regularisation
   std::vector<char> Kept; // RunKeeping: the balls that stay (empty: Run)
+  bool ReleaseKept = false;
 };
 
 #endif

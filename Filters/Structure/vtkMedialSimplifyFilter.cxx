@@ -29,6 +29,12 @@
 
 vtkStandardNewMacro(vtkMedialSimplifyFilter);
 
+namespace
+{
+// COVERAGE: choices made again with the balls no collapse could remove.
+constexpr int CoverageAttempts = 6;
+}
+
 vtkMedialSimplifyFilter::vtkMedialSimplifyFilter()
 {
   this->SetNumberOfInputPorts(2);
@@ -64,6 +70,7 @@ int vtkMedialSimplifyFilter::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   this->NumberOfBlockedCollapses = this->EulerCharacteristic = this->NumberOfComponents = 0;
+  this->CoveredDilation = 0.0;
   const vtkIdType n = input->GetNumberOfPoints();
   if (n == 0)
   {
@@ -94,15 +101,31 @@ int vtkMedialSimplifyFilter::RequestData(
   vtkMedialQuadricSimplification simplification;
   if (this->Method == COVERAGE && n > this->NumberOfBalls)
   {
-    std::vector<char> kept;
-    if (!this->ChooseByCoverage(complex, vtkPolyData::GetData(inputVector[1], 0), kept))
+    // Balls that no collapse can remove are chosen in the next attempt, so that the
+    // chosen balls stay; the last attempt lets chosen balls go instead.
+    std::vector<char> forced(static_cast<size_t>(n), 0);
+    for (int attempt = 0; attempt < CoverageAttempts; ++attempt)
     {
-      return this->GetAbortExecute() ? 1 : 0;
-    }
-    this->UpdateProgress(0.5);
-    if (!simplification.RunKeeping(complex, kept, aborted))
-    {
-      return 1;
+      std::vector<char> kept;
+      if (!this->ChooseByCoverage(complex, vtkPolyData::GetData(inputVector[1], 0), forced, kept))
+      {
+        return this->GetAbortExecute() ? 1 : 0;
+      }
+      this->UpdateProgress(0.5);
+      if (!simplification.RunKeeping(complex, kept, attempt + 1 == CoverageAttempts, aborted))
+      {
+        return 1;
+      }
+      vtkIdType stuck = 0;
+      for (vtkIdType v : simplification.Source)
+      {
+        stuck += !kept[v] && !forced[v];
+        forced[v] = forced[v] || !kept[v];
+      }
+      if (stuck == 0)
+      {
+        break;
+      }
     }
   }
   else if (!simplification.Run(complex, this->NumberOfBalls, aborted))
@@ -158,8 +181,8 @@ int vtkMedialSimplifyFilter::RequestData(
   return 1;
 }
 
-bool vtkMedialSimplifyFilter::ChooseByCoverage(
-  const vtkMedialSimplicialComplex& complex, vtkPolyData* surface, std::vector<char>& kept)
+bool vtkMedialSimplifyFilter::ChooseByCoverage(const vtkMedialSimplicialComplex& complex, vtkPolyData* surface,
+  const std::vector<char>& forced, std::vector<char>& kept)
 {
   if (!surface)
   {
@@ -185,11 +208,13 @@ bool vtkMedialSimplifyFilter::ChooseByCoverage(
   }
   const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
   vtkMedialCoverageSelection selection;
+  selection.Forced = forced;
   if (!selection.Select(complex.Points, complex.Radii, samples, this->NumberOfBalls, this->Dilation * mesh.Diagonal,
         threads, aborted))
   {
     return false;
   }
+  this->CoveredDilation = selection.FinalDilation / mesh.Diagonal;
   kept = std::move(selection.Chosen);
   return true;
 }
@@ -206,4 +231,5 @@ void vtkMedialSimplifyFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfBlockedCollapses: " << this->NumberOfBlockedCollapses << "\n";
   os << indent << "EulerCharacteristic: " << this->EulerCharacteristic << "\n";
   os << indent << "NumberOfComponents: " << this->NumberOfComponents << "\n";
+  os << indent << "CoveredDilation: " << this->CoveredDilation << "\n";
 }

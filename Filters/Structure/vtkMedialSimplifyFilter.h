@@ -25,8 +25,9 @@
  * chosen balls keep their centres and radii; every other ball is collapsed into a
  * neighbour along the mesh's edges, cheapest first under the quadric error above and
  * under the same topology rules, so the chosen balls are joined by the mesh's own
- * edges and triangles (vtkMedialQuadricSimplification::RunKeeping); where a ball not
- * chosen cannot go, a chosen one goes instead.
+ * edges and triangles (vtkMedialQuadricSimplification::RunKeeping). A ball not chosen
+ * that no such collapse can remove is chosen in a new choice of the others (at most
+ * six choices); after the sixth, chosen balls may go instead.
  *
  * Input: a medial mesh (vtkPolyData with triangles and/or lines and a point-data radius,
  * input array 0, default Radius), e.g. vtkMedialMeshFilter's output or a .ma file.
@@ -109,6 +110,15 @@ public:
   vtkGetMacro(NumberOfComponents, vtkIdType);
   ///@}
 
+  ///@{
+  /// COVERAGE, after an execution: the dilation, relative to the surface's diagonal,
+  /// within which the chosen balls cover every surface sample (a sample no input ball
+  /// comes that near: as near as the nearest input ball), the one the bisection reached
+  /// (at most Dilation; when K balls cannot cover at Dilation, Dilation itself and the
+  /// cover is partial). 0 for QUADRIC.
+  vtkGetMacro(CoveredDilation, double);
+  ///@}
+
 protected:
   vtkMedialSimplifyFilter();
   ~vtkMedialSimplifyFilter() override = default;
@@ -126,10 +136,13 @@ protected:
   vtkIdType NumberOfBlockedCollapses = 0;
   vtkIdType EulerCharacteristic = 0;
   vtkIdType NumberOfComponents = 0;
+  double CoveredDilation = 0.0;
 
 private:
-  // COVERAGE: the kept flags of the complex's balls; false on a bad surface or an abort.
-  bool ChooseByCoverage(const vtkMedialSimplicialComplex& complex, vtkPolyData* surface, std::vector<char>& kept);
+  // COVERAGE: the kept flags of the complex's balls, the forced ones among them; false
+  // on a bad surface or an abort.
+  bool ChooseByCoverage(const vtkMedialSimplicialComplex& complex, vtkPolyData* surface,
+    const std::vector<char>& forced, std::vector<char>& kept);
 
   vtkMedialSimplifyFilter(const vtkMedialSimplifyFilter&) = delete;
   void operator=(const vtkMedialSimplifyFilter&) = delete;
