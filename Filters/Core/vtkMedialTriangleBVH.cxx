@@ -377,6 +377,7 @@ struct Scratch
   std::vector<std::int32_t> Stack;
   std::vector<std::int32_t> StackSteps; // the tangent search: radius updates when each entry was pushed
   std::vector<std::int32_t> Deferred;
+  std::vector<std::int32_t> DeferredSteps; // radius updates when each was last looked at
   std::vector<std::int32_t> CapNodes; // dropped for the cone while reaching into the ball
   std::vector<std::int32_t> CapSlots; // the same, triangles
 };
@@ -386,6 +387,7 @@ Scratch& ThreadScratch()
   scratch.Stack.clear();
   scratch.StackSteps.clear();
   scratch.Deferred.clear();
+  scratch.DeferredSteps.clear();
   scratch.CapNodes.clear();
   scratch.CapSlots.clear();
   return scratch;
@@ -713,14 +715,20 @@ public:
       }
     }
     this->Traverse(0, seeds);
-    for (bool changed = !this->Work.Deferred.empty(); changed;)
+    // A triangle set aside needs another look only if the ball shrank since its last one.
+    std::vector<std::int32_t>& lookedAt = this->Work.DeferredSteps;
+    for (bool changed = true; changed;)
     {
       changed = false;
-      for (std::int32_t slot : this->Work.Deferred)
+      for (size_t i = 0; i < this->Work.Deferred.size(); ++i)
       {
-        const double before = this->Radius;
-        this->ShrinkOn(slot);
-        changed = changed || this->Radius < before;
+        if (lookedAt[i] != this->Result.Steps)
+        {
+          const double before = this->Radius;
+          this->ShrinkOn(this->Work.Deferred[i]);
+          lookedAt[i] = this->Result.Steps;
+          changed = changed || this->Radius < before;
+        }
       }
     }
     this->Result.Radius = this->Radius;
@@ -954,6 +962,7 @@ private:
           if (this->Tree.TriangleIds[slot] != this->OwnTriangle && this->ShrinkOn(slot))
           {
             this->Work.Deferred.push_back(slot);
+            this->Work.DeferredSteps.push_back(this->Result.Steps);
           }
         }
         continue;
