@@ -193,17 +193,9 @@ void vtkMedialQuadricSimplification::InitialQuadrics(const vtkMedialSimplicialCo
     {
       // Degenerate, or the slab is the union of its cones (radii that change faster than
       // the centres, near a sharp edge): its sides' cones carry its area, so that the balls
-      // of such triangles are not left with no planes at all.
-      double e1[3], e2[3], n[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        e1[k] = c[1][k] - c[0][k];
-        e2[k] = c[2][k] - c[0][k];
-      }
-      n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-      n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-      n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-      const double area = 0.5 * std::sqrt(vtkMedialEnvelope::Dot3(n, n));
+      // of such triangles are not left with no planes at all. (N, the sides' cross
+      // product, is set before SlabTangentPlanes gives up.)
+      const double area = 0.5 * std::sqrt(vtkMedialEnvelope::Dot3(planes.N, planes.N));
       for (int k = 0; k < 3; ++k)
       {
         this->AddConePlanes(complex, t[k], t[(k + 1) % 3], area / 3.0, weight);

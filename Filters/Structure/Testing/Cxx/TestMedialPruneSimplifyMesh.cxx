@@ -133,15 +133,7 @@ int TestMedialPruneSimplifyMesh(int, char*[])
   for (const Case& c : cases)
   {
     vtkSmartPointer<vtkPolyData> solid = medialtest::MakeSolid(c.Shape, c.Genus);
-    // 3000 balls keep the test quick; the mesh is the same kind of complex.
-    vtkNew<vtkMedialAxisSampler> sampler;
-    sampler->SetInputData(solid);
-    sampler->SetNumberOfSamples(3000);
-    vtkNew<vtkMedialMeshFilter> filter;
-    filter->SetInputData(solid);
-    filter->SetBallsConnection(sampler->GetOutputPort());
-    filter->Update();
-    vtkPolyData* mesh = filter->GetOutput();
+    vtkSmartPointer<vtkPolyData> mesh = medialtest::MedialMeshOf(solid);
     const MeshTopology before = CountTopology(mesh);
     MEDIAL_CHECK(before.Euler() == 1 - c.Genus && before.Components == 1, "%s: the medial mesh is not as expected",
       c.Name);

@@ -182,14 +182,7 @@ int TestMedialSimplifyCoverage(int, char*[])
   for (const Case& c : cases)
   {
     vtkSmartPointer<vtkPolyData> solid = medialtest::MakeSolid(c.Shape, c.Genus);
-    vtkNew<vtkMedialAxisSampler> sampler;
-    sampler->SetInputData(solid);
-    sampler->SetNumberOfSamples(3000);
-    vtkNew<vtkMedialMeshFilter> filter;
-    filter->SetInputData(solid);
-    filter->SetBallsConnection(sampler->GetOutputPort());
-    filter->Update();
-    vtkPolyData* mesh = filter->GetOutput();
+    vtkSmartPointer<vtkPolyData> mesh = medialtest::MedialMeshOf(solid);
     if (CheckCoverage(c.Name, mesh, solid, 1000) != EXIT_SUCCESS ||
       CheckCoverage(c.Name, mesh, solid, 60) != EXIT_SUCCESS || CheckThreads(c.Name, mesh, solid) != EXIT_SUCCESS ||
       CheckNoSurface(mesh) != EXIT_SUCCESS)
