@@ -4,8 +4,8 @@
 # beside the targets file (medialaxis-targets.cmake) and the module properties that
 # vtk_module_build(INSTALL_EXPORT MedialAxis) writes there. The config finds what the
 # installed libraries link: the VTK modules named in the modules' DEPENDS and
-# PRIVATE_DEPENDS (read from the vtk.module files, so the list cannot drift), Embree 3
-# and OpenMP (linked by the static MedialAxis::Core).
+# PRIVATE_DEPENDS (read from the vtk.module files, so the list cannot drift), and
+# OpenMP (linked by the static MedialAxis::Core).
 include(CMakePackageConfigHelpers)
 
 function (medialaxis_install_package destination)

@@ -1,6 +1,8 @@
 #!/usr/bin/python3
 """Writes horse.ply Loop-subdivided twice (about 1.55 M triangles, as medial-bench builds
-it) to a .vtp, for the limit runs of scripts/limits.sh.   big-horse.py HORSE.ply OUT.vtp"""
+it) to a .vtp, for the limit runs of scripts/limits.sh.   big-horse.py HORSE.ply OUT.vtp [--raw]
+Default: binary, zlib-compressed (35 MB). --raw: appended raw binary, uncompressed (68 MB), which
+vtkXMLPolyDataReader reads about 2.3 times faster (measured on the 2-core machine, issue 18)."""
 import sys
 from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkFiltersCore import vtkTriangleFilter
@@ -17,7 +19,12 @@ loop.SetNumberOfSubdivisions(2)
 writer = vtkXMLPolyDataWriter()
 writer.SetInputConnection(loop.GetOutputPort())
 writer.SetFileName(sys.argv[2])
-writer.SetDataModeToBinary()
+if "--raw" in sys.argv[3:]:
+    writer.SetDataModeToAppended()
+    writer.EncodeAppendedDataOff()
+    writer.SetCompressorTypeToNone()
+else:
+    writer.SetDataModeToBinary()
 if not writer.Write():
     sys.exit("big-horse.py: cannot write " + sys.argv[2])
 print("%s: %d triangles" % (sys.argv[2], loop.GetOutput().GetNumberOfCells()))

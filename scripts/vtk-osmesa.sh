@@ -30,7 +30,7 @@ if ! grep -rqs "deb-src" /etc/apt/sources.list /etc/apt/sources.list.d/; then
     $SUDO tee /etc/apt/sources.list.d/bookworm-src.sources >/dev/null
 fi
 $APT update -qq
-$APT install -y -qq dpkg-dev cmake ninja-build g++ libosmesa6-dev libembree-dev libboost-dev \
+$APT install -y -qq dpkg-dev cmake ninja-build g++ libosmesa6-dev libboost-dev \
   libfreetype-dev libpng-dev libjpeg-dev libtiff-dev zlib1g-dev libexpat1-dev liblz4-dev \
   liblzma-dev libdouble-conversion-dev libutfcpp-dev libeigen3-dev libjsoncpp-dev >/dev/null
 mkdir -p "$WORK/src"

@@ -1,18 +1,21 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// medial-bench: throughput of the medial sampler and of its BVH queries (Embree and the own tree).
+// medial-bench: throughput of the medial sampler and of its BVH queries.
 //
 // Input: horse.ply from ../shared/data/meshes, Loop-subdivided twice (>= 1.5 M
 // triangles); without the shared data, a generated demo shape of the same size.
 // Measures, in one run: BVH build time, ray throughput, closest-point and
-// contains-ball throughput on Embree and on the own tree side by side,
+// contains-ball throughput on the tree (vtkMedialTriangleBVH),
 // each method with 1 and 2 threads (with mean iterations), each method's ratio to
 // the "limit" (one ray plus one bounded closest-point query per sample), peak RSS,
 // and a 327k-triangle sphere as the worst case; then the 3D classification
 // (vtkMedialBallClassifier) of horse.ply's default balls, without and with the exact
-// seams and junctions, at theta = 45 and 0 (--structure runs only these rows).
+// seams and junctions, at theta = 45 and 0 (--structure runs only these rows); and
+// the sampling strategies' wall time per sample on horse.ply against Random's, in
+// the same run (--strategies runs only these rows).
 // Prints a table, or one JSON object with --json. Not a test: it checks nothing.
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialFileReader.h"
 #include "vtkMedialBallClassifier.h"
 #include "vtkMedialRandom.h"
 #include "vtkMedialShapeSource.h"
@@ -35,11 +38,14 @@
 #include <sys/resource.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
+#include <algorithm>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -200,6 +206,87 @@ void PrintStructure(const std::vector<StructureRow>& rows, const std::string& la
   }
 }
 
+// One row per sampling strategy: wall time per evaluated sample without the
+// preparation (Random's 1-sample run is subtracted), the median of 3 rounds that
+// alternate the strategies, and the median of the per-round ratios to Random.
+struct StrategyRow
+{
+  std::string Name;
+  vtkIdType Evaluated;
+  double MicrosecondsPerSample;
+  double RatioToRandom;
+};
+
+double Median3(std::vector<double> v)
+{
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+std::vector<StrategyRow> RunStrategies(vtkPolyData* mesh, vtkIdType samples)
+{
+  const int strategies[3] = { vtkMedialAxisSampler::RANDOM, vtkMedialAxisSampler::CLOSEST_NEIGHBOR,
+    vtkMedialAxisSampler::FACE_DISTANCE };
+  auto timed = [&](int strategy, vtkIdType n, vtkIdType& evaluated) {
+    vtkNew<vtkMedialAxisSampler> sampler;
+    sampler->SetInputData(mesh);
+    sampler->SetSamplingStrategy(strategy);
+    sampler->SetNumberOfThreads(2);
+    sampler->SetNumberOfSamples(n);
+    const double t0 = Now();
+    sampler->Update();
+    const double seconds = Now() - t0;
+    evaluated = strategy == vtkMedialAxisSampler::RANDOM ? n : sampler->GetEvaluatedSamples();
+    return seconds;
+  };
+  vtkIdType one;
+  const double preparation = timed(vtkMedialAxisSampler::RANDOM, 1, one);
+  std::vector<double> micro[3], ratio[3];
+  vtkIdType evaluated[3] = { 0, 0, 0 };
+  for (int round = 0; round < 3; ++round)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const double seconds = timed(strategies[k], samples, evaluated[k]);
+      micro[k].push_back(1e6 * (seconds - preparation) / std::max<vtkIdType>(evaluated[k], 1));
+      ratio[k].push_back(micro[k].back() / micro[0].back());
+    }
+  }
+  std::vector<StrategyRow> rows;
+  for (int k = 0; k < 3; ++k)
+  {
+    rows.push_back({ vtkMedialAxisSampler::GetSamplingStrategyName(strategies[k]), evaluated[k], Median3(micro[k]),
+      Median3(ratio[k]) });
+  }
+  return rows;
+}
+
+void PrintStrategies(const std::vector<StrategyRow>& rows, const std::string& label, vtkIdType samples, bool json,
+  std::ostringstream& js)
+{
+  if (json)
+  {
+    js << ", \"strategies_mesh\": \"" << label << "\", \"strategies_samples\": " << samples;
+    for (const StrategyRow& r : rows)
+    {
+      js << ", \"strategy_" << r.Name << "\": {\"evaluated\": " << r.Evaluated
+         << ", \"us_per_sample\": " << r.MicrosecondsPerSample << ", \"ratio_to_random\": " << r.RatioToRandom
+         << "}";
+    }
+    return;
+  }
+  std::printf("\nSampling strategies on %s, %lld samples asked, 2 threads: wall time per evaluated sample without "
+              "the preparation, median of 3 alternating rounds; ratio to Random in the same round (median):\n",
+    label.c_str(), static_cast<long long>(samples));
+  std::printf("| strategy | samples evaluated | us per sample | ratio to random |\n");
+  std::printf("|---|---|---|---|\n");
+  for (const StrategyRow& r : rows)
+  {
+    std::printf("| %s | %lld | %.2f | %.2f |\n", r.Name.c_str(), static_cast<long long>(r.Evaluated),
+      r.MicrosecondsPerSample, r.RatioToRandom);
+  }
+}
+
 // Microseconds per sample (wall), without the preparation (merge, orientation,
 // BVH builds): the time of a 1-sample run with the same settings is subtracted.
 double RunSampler(vtkPolyData* mesh, int method, int threads, vtkIdType samples, double& iterations,
@@ -220,6 +307,9 @@ struct BenchOptions
 {
   bool Json = false;
   bool StructureOnly = false;
+  std::string PreparationFile; // --preparation: only the preparation rows, on this surface
+  bool StrategiesOnly = false;
+  vtkIdType StrategySamples = 50000;
   vtkIdType Samples = 200000;
   vtkIdType DefaultSamples = 1000000;
   std::string SharedDir = MEDIALAXIS_SHARED_MESH_DIR;
@@ -239,6 +329,14 @@ bool ParseArgs(int argc, char* argv[], BenchOptions& options)
     {
       options.StructureOnly = true;
     }
+    else if (a == "--strategies")
+    {
+      options.StrategiesOnly = true;
+    }
+    else if (a == "--strategy-samples" && i + 1 < argc)
+    {
+      options.StrategySamples = std::atoll(argv[++i]);
+    }
     else if (a == "--samples" && i + 1 < argc)
     {
       options.Samples = std::atoll(argv[++i]);
@@ -246,6 +344,10 @@ bool ParseArgs(int argc, char* argv[], BenchOptions& options)
     else if (a == "--default-samples" && i + 1 < argc)
     {
       options.DefaultSamples = std::atoll(argv[++i]);
+    }
+    else if (a == "--preparation" && i + 1 < argc)
+    {
+      options.PreparationFile = argv[++i];
     }
     else if (a == "--shared" && i + 1 < argc)
     {
@@ -256,7 +358,10 @@ bool ParseArgs(int argc, char* argv[], BenchOptions& options)
       std::fprintf(stderr,
         "usage: medial-bench [--json] [--samples N (per method run, default 200000)]\n"
         "                    [--default-samples N (default method, 2 threads; default 1000000)]\n"
-        "                    [--shared DIR] [--structure (only the 3D classification rows)]\n");
+        "                    [--shared DIR] [--structure (only the 3D classification rows)]\n"
+        "                    [--preparation SURFACE (only the preparation rows, on that file)]\n"
+        "                    [--strategies (only the sampling-strategy rows)]\n"
+        "                    [--strategy-samples N (per strategy run, default 50000)]\n");
       return false;
     }
   }
@@ -287,7 +392,7 @@ struct BenchFigures
   double LoadSeconds = 0, PrepareSeconds = 0, BvhSeconds = 0, TreeSeconds = 0;
   vtkIdType TreeNodes = 0;
   double RayMicro = 0, ClosestMicro = 0, LimitMicro = 0;
-  EngineRow Engines[2] = {};
+  EngineRow Points = {};
   std::vector<Row> Rows;
   int DefaultMethod = 0;
   double DefaultIterations = 0;
@@ -318,7 +423,7 @@ bool BuildEngines(vtkPolyData* mesh, QueryEngines& engines, BenchFigures& figure
     return false;
   }
   figures.BvhSeconds = Now() - tBvh;
-  // The own tree alone (query.Build makes both it and Embree's scene).
+  // The tree alone (query.Build makes it and little else).
   const double tTree = Now();
   engines.OwnTree.Build(engines.Prepared);
   figures.TreeSeconds = Now() - tTree;
@@ -328,11 +433,13 @@ bool BuildEngines(vtkPolyData* mesh, QueryEngines& engines, BenchFigures& figure
 }
 
 // Ray throughput on 2 threads, microseconds per ray: rays from random surface points
-// along the inward normal.
-double MeasureRays(const vtkMedialTriangleMesh& prepared, vtkMedialSurfaceQuery& query)
+// along the inward normal; intersect(p, n, t, hit) casts one. The hits go to `hits`
+// (triangle, or -1) when given.
+template <class Intersect>
+double MeasureRays(const vtkMedialTriangleMesh& prepared, Intersect intersect, std::vector<vtkIdType>* hits = nullptr)
 {
   const int queries = 200000;
-  std::vector<double> centres(3 * queries), radii(queries);
+  std::vector<vtkIdType> hitTriangles(queries);
   const double tRay = Now();
 #pragma omp parallel for num_threads(2) schedule(dynamic, 256)
   for (int i = 0; i < queries; ++i)
@@ -349,14 +456,20 @@ double MeasureRays(const vtkMedialTriangleMesh& prepared, vtkMedialSurfaceQuery&
       n[k] = -prepared.GetNormal(t)[k];
     }
     vtkMedialSurfaceQuery::RayHit hit;
-    const bool ok = query.Intersect(p, n, 1e-9 * prepared.Diagonal, HUGE_VAL, t, hit);
-    radii[i] = ok ? 0.5 * hit.Distance : 0.0;
-    for (int k = 0; k < 3; ++k)
-    {
-      centres[3 * i + k] = p[k] + radii[i] * n[k];
-    }
+    hitTriangles[i] = intersect(p, n, t, hit) ? hit.Triangle : -1;
   }
-  return 1e6 * (Now() - tRay) / queries;
+  const double micro = 1e6 * (Now() - tRay) / queries;
+  if (hits)
+  {
+    *hits = std::move(hitTriangles);
+  }
+  return micro;
+}
+double MeasureRays(const vtkMedialTriangleMesh& prepared, vtkMedialSurfaceQuery& query)
+{
+  return MeasureRays(prepared, [&](const double* p, const double* n, vtkIdType t, vtkMedialSurfaceQuery::RayHit& hit) {
+    return query.Intersect(p, n, 1e-9 * prepared.Diagonal, HUGE_VAL, t, hit);
+  });
 }
 
 // Point queries from the medial centres of a short default run, on each engine:
@@ -374,9 +487,7 @@ void MeasurePointQueries(vtkPolyData* mesh, QueryEngines& engines, BenchFigures&
   vtkDataArray* probeRadius = medial->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
   vtkMedialSurfaceQuery& query = engines.Query;
   const double diagonal = engines.Prepared.Diagonal;
-  for (int engine : { vtkMedialSurfaceQuery::EMBREE, vtkMedialSurfaceQuery::OWN_TREE })
   {
-    query.SetPointQueryEngine(engine);
     auto timed = [&](int kind) {
       const double t0 = Now();
 #pragma omp parallel for num_threads(2) schedule(dynamic, 64)
@@ -397,9 +508,8 @@ void MeasurePointQueries(vtkPolyData* mesh, QueryEngines& engines, BenchFigures&
       }
       return 1e6 * (Now() - t0) / probes;
     };
-    figures.Engines[engine] = { timed(0), timed(1), timed(2) };
+    figures.Points = { timed(0), timed(1), timed(2) };
   }
-  query.SetPointQueryEngine(vtkMedialSurfaceQuery::OWN_TREE);
 }
 
 // The query rows: rays, then point queries from medial centres; the "limit" is one
@@ -408,7 +518,7 @@ void MeasureQueries(vtkPolyData* mesh, QueryEngines& engines, BenchFigures& figu
 {
   figures.RayMicro = MeasureRays(engines.Prepared, engines.Query);
   MeasurePointQueries(mesh, engines, figures);
-  figures.ClosestMicro = figures.Engines[vtkMedialSurfaceQuery::OWN_TREE].Closest;
+  figures.ClosestMicro = figures.Points.Closest;
   figures.LimitMicro = figures.RayMicro + figures.ClosestMicro;
 }
 
@@ -444,7 +554,7 @@ void MeasureMethods(vtkPolyData* mesh, const BenchOptions& options, BenchFigures
 }
 
 void PrintJson(const BenchFigures& f, const BenchOptions& options, const std::vector<StructureRow>& structure,
-  const std::string& structureLabel)
+  const std::string& structureLabel, const std::string& strategiesJson)
 {
   std::ostringstream js;
   js << "{\"mesh\": \"" << f.Label << "\", \"triangles\": " << f.Triangles << ", \"load_seconds\": " << f.LoadSeconds
@@ -452,12 +562,8 @@ void PrintJson(const BenchFigures& f, const BenchOptions& options, const std::ve
      << ", \"own_tree_seconds\": " << f.TreeSeconds << ", \"own_tree_nodes\": " << f.TreeNodes
      << ", \"ray_us\": " << f.RayMicro << ", \"closest_point_us\": " << f.ClosestMicro
      << ", \"limit_us\": " << f.LimitMicro;
-  for (int e : { 0, 1 })
-  {
-    js << ", \"" << (e ? "own_tree" : "embree") << "\": {\"closest_point_us\": " << f.Engines[e].Closest
-       << ", \"contains_ball_yes_us\": " << f.Engines[e].Yes << ", \"contains_ball_no_us\": " << f.Engines[e].No
-       << "}";
-  }
+  js << ", \"own_tree\": {\"closest_point_us\": " << f.Points.Closest
+     << ", \"contains_ball_yes_us\": " << f.Points.Yes << ", \"contains_ball_no_us\": " << f.Points.No << "}";
   for (const Row& r : f.Rows)
   {
     js << ", \"" << r.Name << "\": {\"us_per_sample\": " << r.MicrosecondsPerSample
@@ -469,7 +575,7 @@ void PrintJson(const BenchFigures& f, const BenchOptions& options, const std::ve
      << ", \"default_us_per_sample\": " << f.DefaultMicro << ", \"sphere_us_per_sample\": " << f.SphereMicro
      << ", \"sphere_to_horse\": " << f.SphereMicro / f.DefaultMicro << ", \"peak_rss_mib\": " << f.PeakRss;
   PrintStructure(structure, structureLabel, true, js);
-  js << "}";
+  js << strategiesJson << "}";
   std::printf("%s\n", js.str().c_str());
 }
 
@@ -477,20 +583,13 @@ void PrintTables(const BenchFigures& f, const BenchOptions& options, const std::
   const std::string& structureLabel)
 {
   std::printf("mesh: %s, %lld triangles\n", f.Label.c_str(), static_cast<long long>(f.Triangles));
-  std::printf("load %.2f s, prepare (merge, orient) %.2f s, BVH build (Embree + own tree) %.2f s, "
-              "own tree alone %.2f s (%lld nodes)\n",
+  std::printf("load %.2f s, prepare (merge, orient) %.2f s, surface queries (the tree) %.2f s, "
+              "tree alone %.2f s (%lld nodes)\n",
     f.LoadSeconds, f.PrepareSeconds, f.BvhSeconds, f.TreeSeconds, static_cast<long long>(f.TreeNodes));
-  std::printf("\n| point query from a medial centre (2 threads), us | Embree | own tree | speed-up |\n");
-  std::printf("|---|---|---|---|\n");
-  const char* kinds[3] = { "bounded closest point", "contains ball, yes (r - 1e-6 r)", "contains ball, no (1.01 r)" };
-  for (int k = 0; k < 3; ++k)
-  {
-    const EngineRow& embree = f.Engines[0];
-    const EngineRow& own = f.Engines[1];
-    const double e = k == 0 ? embree.Closest : k == 1 ? embree.Yes : embree.No;
-    const double o = k == 0 ? own.Closest : k == 1 ? own.Yes : own.No;
-    std::printf("| %s | %.2f | %.2f | %.1fx |\n", kinds[k], e, o, e / o);
-  }
+  std::printf("\n| point query from a medial centre (2 threads, own tree) | us |\n|---|---|\n");
+  std::printf("| bounded closest point | %.2f |\n| contains ball, yes (r - 1e-6 r) | %.2f |\n"
+              "| contains ball, no (1.01 r) | %.2f |\n",
+    f.Points.Closest, f.Points.Yes, f.Points.No);
   std::printf("\nMethod rows: wall time per sample without the preparation (a 1-sample run is subtracted).\n");
   std::printf("| query or method | us per sample | mean iterations | ratio to limit | 2-thread speed-up |\n");
   std::printf("|---|---|---|---|---|\n");
@@ -517,6 +616,71 @@ void PrintTables(const BenchFigures& f, const BenchOptions& options, const std::
 }
 }
 
+// The stages before sampling on `file`, each the median of three runs: reading, the
+// mesh preparation (merge, adjacency, orientation, normals, CDF) and the surface
+// queries' build (the tree); then the ray throughput and the peak RSS of the run.
+int RunPreparation(const std::string& file)
+{
+  constexpr int Runs = 3;
+  std::vector<double> read, prepare, queries;
+  double peak[3] = { 0, 0, 0 }; // peak RSS after each stage of the first run
+  std::unique_ptr<vtkMedialTriangleMesh> kept;
+  std::unique_ptr<vtkMedialSurfaceQuery> keptQuery;
+  vtkIdType triangles = 0;
+  for (int run = 0; run < Runs; ++run)
+  {
+    keptQuery.reset(); // one mesh at a time: the peak RSS is one run's
+    kept.reset();
+    std::string error;
+    double t0 = Now();
+    vtkNew<vtkMedialFileReader> reader;
+    reader->SetFileName(file.c_str());
+    reader->Update();
+    vtkPolyData* surface = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+    if (!surface || surface->GetNumberOfCells() == 0)
+    {
+      std::fprintf(stderr, "medial-bench: cannot read %s\n", file.c_str());
+      return 1;
+    }
+    read.push_back(Now() - t0);
+    peak[0] = run == 0 ? PeakRssMiB() : peak[0];
+    auto mesh = std::make_unique<vtkMedialTriangleMesh>();
+    auto query = std::make_unique<vtkMedialSurfaceQuery>();
+    t0 = Now();
+    if (!mesh->Build(surface, error))
+    {
+      std::fprintf(stderr, "medial-bench: %s\n", error.c_str());
+      return 1;
+    }
+    prepare.push_back(Now() - t0);
+    peak[1] = run == 0 ? PeakRssMiB() : peak[1];
+    t0 = Now();
+    if (!query->Build(mesh.get(), error))
+    {
+      std::fprintf(stderr, "medial-bench: %s\n", error.c_str());
+      return 1;
+    }
+    queries.push_back(Now() - t0);
+    peak[2] = run == 0 ? PeakRssMiB() : peak[2];
+    triangles = mesh->GetNumberOfTriangles();
+    kept = std::move(mesh);
+    keptQuery = std::move(query);
+  }
+  auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+  };
+  std::printf("preparation of %s, %lld triangles, %d threads, median of %d runs:\n", file.c_str(),
+    static_cast<long long>(triangles), omp_get_max_threads(), Runs);
+  std::printf("| stage | seconds | peak RSS after it, first run (MiB) |\n|---|---|---|\n");
+  std::printf("| read | %.3f | %.0f |\n| mesh preparation | %.3f | %.0f |\n| surface queries (the tree) | %.3f | %.0f |\n",
+    median(read), peak[0], median(prepare), peak[1], median(queries), peak[2]);
+  std::printf("| preparation (mesh + tree) | %.3f | |\n", median(prepare) + median(queries));
+  std::printf("ray (2 threads, 200000 rays): %.3f us\n", MeasureRays(*kept, *keptQuery));
+  std::printf("peak RSS: %.0f MiB\n", PeakRssMiB());
+  return 0;
+}
+
 int main(int argc, char* argv[])
 {
   BenchOptions options;
@@ -524,9 +688,26 @@ int main(int argc, char* argv[])
   {
     return 1;
   }
+  if (!options.PreparationFile.empty())
+  {
+    return RunPreparation(options.PreparationFile);
+  }
   // The 3D classification rows (first: they are short).
   std::string structureLabel;
   vtkSmartPointer<vtkPolyData> structureMesh = LoadBenchMesh(options.SharedDir, 0, 16, structureLabel);
+  // The strategy rows (same mesh).
+  std::ostringstream strategiesJson;
+  const std::vector<StrategyRow> strategyRows =
+    options.StructureOnly ? std::vector<StrategyRow>() : RunStrategies(structureMesh, options.StrategySamples);
+  if (options.StrategiesOnly)
+  {
+    PrintStrategies(strategyRows, structureLabel, options.StrategySamples, options.Json, strategiesJson);
+    if (options.Json)
+    {
+      std::printf("{%s}\n", strategiesJson.str().substr(2).c_str());
+    }
+    return 0;
+  }
   const std::vector<StructureRow> structure = { RunStructure(structureMesh, 45.0), RunStructure(structureMesh, 0.0) };
   if (options.StructureOnly)
   {
@@ -552,11 +733,13 @@ int main(int argc, char* argv[])
   MeasureMethods(mesh, options, figures);
   if (options.Json)
   {
-    PrintJson(figures, options, structure, structureLabel);
+    PrintStrategies(strategyRows, structureLabel, options.StrategySamples, true, strategiesJson);
+    PrintJson(figures, options, structure, structureLabel, strategiesJson.str());
   }
   else
   {
     PrintTables(figures, options, structure, structureLabel);
+    PrintStrategies(strategyRows, structureLabel, options.StrategySamples, false, strategiesJson);
   }
   return 0;
 }

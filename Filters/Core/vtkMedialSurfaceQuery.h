@@ -1,26 +1,20 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class vtkMedialSurfaceQuery
- * @brief Internal: the only class that talks to Embree. Ray, bounded closest-point
- * and contains-ball queries on a vtkMedialTriangleMesh.
+ * @brief Internal: ray, bounded closest-point and contains-ball queries on a
+ * vtkMedialTriangleMesh, all answered by the internal vtkMedialTriangleBVH.
  *
- * Build() copies the mesh into an Embree 3 BVH in single precision, translated to
- * the bounding-box centre so float rounding is relative to the shape's size. The
- * BVH only proposes candidate triangles: every decisive comparison is redone in
- * double on the mesh's own vertices, and Embree's query radii are padded so that
- * float boxes never hide a candidate.
+ * Build() builds the tree over the mesh's double coordinates. Rays use its watertight
+ * double-precision test (vtkMedialTriangleBVH::IntersectRay); hit distances are
+ * taken against the hit triangle's plane. Point queries and MaximalTangentBall use
+ * the same tree, whose culling sphere moves with a shrinking ball. The crossing
+ * tests of segments and triangles (SegmentCrossesSurface, TriangleCrossesSurface)
+ * take their candidates from it (VisitWithin) and decide in double precision.
+ * (Rays used to go through an Embree scene: the own tree measured within 2x of
+ * Embree's rays, and saves Embree's build time and memory.)
  *
  * Queries are const and keep their state on the stack, so any number of threads
  * may call them at once (e.g. from an OpenMP loop) after Build().
- *
- * Ray queries (and IsInside, CountCrossings) always use Embree. The crossing tests
- * of segments and triangles (SegmentCrossesSurface, TriangleCrossesSurface) take
- * their candidates from the internal tree (VisitWithin) and decide in double
- * precision.
- * Point queries (closest point, contains ball)
- * use Embree or, with SetPointQueryEngine(OWN_TREE), the internal
- * vtkMedialTriangleBVH; MaximalTangentBall always uses the latter, because its
- * culling sphere moves with the shrinking ball and Embree's cannot.
  *
  * A ContactFilter describes which surface points may block a ball tangent to the
  * surface at a sample point P on triangle OwnTriangle:
@@ -68,18 +62,12 @@ public:
   };
 
   using TangentBall = vtkMedialTriangleBVH::TangentBall;
-  enum PointQueryEngines
-  {
-    EMBREE = 0,
-    OWN_TREE = 1
-  };
 
-  vtkMedialSurfaceQuery();
-  ~vtkMedialSurfaceQuery();
+  vtkMedialSurfaceQuery() = default;
   vtkMedialSurfaceQuery(const vtkMedialSurfaceQuery&) = delete;
   vtkMedialSurfaceQuery& operator=(const vtkMedialSurfaceQuery&) = delete;
 
-  /// Builds the BVHs. The mesh must outlive this object. Returns false with a reason
+  /// Builds the tree. The mesh must outlive this object. Returns false with a reason
   /// ("aborted" when `aborted`, polled between stages, returns true).
   bool Build(const vtkMedialTriangleMesh* mesh, std::string& error,
     const std::function<bool()>& aborted = {});
@@ -90,8 +78,9 @@ public:
 
   /// First hit of the ray from inside the solid, tMin < t: the face met must face along
   /// the ray (its outward normal). False when the ray escapes (open surface) or first
-  /// meets a face from outside (self-intersection). A ray that slips through a vertex
-  /// in Embree's float test is tried again, nudged sideways by the float padding.
+  /// meets a face from outside (self-intersection). A ray that meets a face from
+  /// outside first (through a vertex or an edge) is tried again, nudged sideways by a
+  /// tiny padding.
   bool IntersectFromInside(const double origin[3], const double direction[3], double tMin,
     vtkIdType ignoreTriangle, RayHit& hit) const;
 
@@ -125,7 +114,7 @@ public:
 
   /**
    * Number of surface crossings of the ray origin + t * direction (unit), t in
-   * (0, tMax): Embree hits counted one after the other (a hit on an edge shared by
+   * (0, tMax): hits counted one after the other (a hit on an edge shared by
    * two triangles counts once).
    */
   int CountCrossings(const double origin[3], const double direction[3], double tMax) const;
@@ -146,17 +135,16 @@ public:
   /// (vtkMedialGeometry::TrianglesCross; touching does not count).
   bool TriangleCrossesSurface(const double a[3], const double b[3], const double c[3]) const;
 
-  /// Which BVH answers ClosestPoint and ContainsBall (default OWN_TREE, measured faster; EMBREE is the reference).
-  void SetPointQueryEngine(int engine) { this->PointQueryEngine = engine; }
-  int GetPointQueryEngine() const { return this->PointQueryEngine; }
   /// Rank of each triangle in the internal tree's leaf order (spatially coherent).
   const std::vector<std::int32_t>& GetLeafRanks() const { return this->Tree.GetLeafRanks(); }
+
+  /// Frees the tree; no query may run afterwards. For callers done with querying that
+  /// build a large output next (the tree is about 150 bytes per triangle).
+  void ReleaseTree() { this->Tree = vtkMedialTriangleBVH(); }
 
   /// Absolute slack: a point blocks a ball only when closer than radius - Slack. Tiny and unbiased.
   double GetSlack() const { return this->Slack; }
   const vtkMedialTriangleMesh* GetMesh() const { return this->Mesh; }
-
-  struct Internals;
 
 private:
   // Segment (n = 2) or triangle (n = 3) against the triangles near it.
@@ -164,9 +152,8 @@ private:
   bool IntersectFrom(const double rayOrigin[3], const double origin[3], const double direction[3],
     double tMin, double tMax, vtkIdType ignoreTriangle, RayHit& hit) const;
 
-  Internals* Impl;
   vtkMedialTriangleBVH Tree;
-  int PointQueryEngine = OWN_TREE;
+  double RayPad = 0.0; // a ray restarts this far past a hit at its origin; the sideways nudge
   const vtkMedialTriangleMesh* Mesh = nullptr;
   double Slack = 0.0;
 };

@@ -28,6 +28,8 @@ constexpr int StepsBeforeBisection = 4;
 constexpr std::int32_t SlabMaximumTriangles = 1 << 14;
 // Seed subtrees: this many levels above the leaf, about 2^levels leaves.
 constexpr int SeedLevels = 4;
+// Build passes over more triangles than this (the top levels) run on every thread.
+constexpr std::int32_t ParallelRange = 1 << 16;
 
 template <class T>
 double BoxDistance2(const T lo[3], const T hi[3], const double x[3])
@@ -371,6 +373,41 @@ int CheapestSplit(const SahBin bins[Bins], std::int32_t count)
   return bestSplit;
 }
 
+// Folds the items [begin, end) into `total` (which starts as T{}): fold(part, i) per
+// item, merge(total, part) for each thread's part. Large ranges (the top levels,
+// built before the subtrees run in parallel) take every thread; the folds used here
+// (counts, min, max) give the same result in any order.
+template <class T, class Fold, class Merge>
+void FoldRange(std::int32_t begin, std::int32_t end, T& total, Fold fold, Merge merge)
+{
+  if (end - begin <= ParallelRange)
+  {
+    for (std::int32_t i = begin; i < end; ++i)
+    {
+      fold(total, i);
+    }
+    return;
+  }
+#pragma omp parallel
+  {
+    T part{};
+#pragma omp for schedule(static) nowait
+    for (std::int32_t i = begin; i < end; ++i)
+    {
+      fold(part, i);
+    }
+#pragma omp critical
+    merge(total, part);
+  }
+}
+
+// The box of some triangles and the box of their centroids.
+struct NodeBoxes
+{
+  double Lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, Hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+  double CLo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, CHi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+};
+
 // Scratch space reused by every query on a thread: no allocation per sample.
 struct Scratch
 {
@@ -408,8 +445,23 @@ bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh, const std::f
     extent = std::max({ extent, std::fabs(mesh.Bounds[2 * k]), std::fabs(mesh.Bounds[2 * k + 1]) });
   }
   this->RoundingPad = 1e-14 * extent;
-  std::vector<double> centroids(3 * nt), boxes(6 * nt);
   std::vector<std::int32_t> order(nt);
+  if (!this->BuildNodes(mesh, order, aborted))
+  {
+    this->Nodes.clear();
+    return false;
+  }
+  this->CopyInLeafOrder(mesh, order);
+  return true;
+}
+
+bool vtkMedialTriangleBVH::BuildNodes(
+  const vtkMedialTriangleMesh& mesh, std::vector<std::int32_t>& order, const std::function<bool()>& aborted)
+{
+  // Per triangle: its box and its centroid (freed before the leaf-order copies are made).
+  const vtkIdType nt = mesh.GetNumberOfTriangles();
+  std::vector<double> centroids(3 * nt), boxes(6 * nt);
+#pragma omp parallel for schedule(static)
   for (vtkIdType t = 0; t < nt; ++t)
   {
     const vtkIdType* v = mesh.GetTriangle(t);
@@ -425,7 +477,6 @@ bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh, const std::f
   // Top levels first, then the subtrees below them in parallel, appended in order.
   const std::int32_t grain = std::max<std::int32_t>(4096, static_cast<std::int32_t>(nt / 64));
   std::vector<Subtree> subtrees;
-  this->Nodes.reserve(static_cast<size_t>(nt));
   this->Nodes.emplace_back();
   this->BuildNode(this->Nodes, 0, 0, static_cast<std::int32_t>(nt), order, centroids, boxes, mesh,
     &subtrees, grain);
@@ -446,9 +497,14 @@ bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh, const std::f
   }
   if (stop)
   {
-    this->Nodes.clear();
     return false;
   }
+  size_t total = this->Nodes.size();
+  for (const auto& part : parts)
+  {
+    total += part.size() - 1;
+  }
+  this->Nodes.reserve(total);
   for (size_t i = 0; i < subtrees.size(); ++i)
   {
     // Local node 0 takes the reserved slot; the others are appended.
@@ -470,13 +526,21 @@ bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh, const std::f
         this->Nodes.push_back(node);
       }
     }
+    std::vector<Node>().swap(parts[i]);
   }
+  return true;
+}
 
+// The triangles' vertices and planes in leaf order, the ranks, and each node's parent.
+void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, const std::vector<std::int32_t>& order)
+{
+  const vtkIdType nt = mesh.GetNumberOfTriangles();
   this->Vertices.resize(9 * static_cast<size_t>(nt));
   this->TriangleIds.resize(nt);
   this->LeafRank.resize(nt);
   this->Planes.resize(4 * static_cast<size_t>(nt));
   this->TriangleBoxes.assign(6 * static_cast<size_t>(nt) + 4, 0.0f); // + 4: read four floats at a time
+#pragma omp parallel for schedule(static)
   for (vtkIdType i = 0; i < nt; ++i)
   {
     const vtkIdType t = order[i];
@@ -485,17 +549,19 @@ bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh, const std::f
     this->Planes[4 * i + 3] = G::Dot(normal, mesh.GetPoint(mesh.GetTriangle(t)[0]));
     this->TriangleIds[i] = t;
     this->LeafRank[t] = static_cast<std::int32_t>(i);
+    const vtkIdType* v = mesh.GetTriangle(t);
     for (int k = 0; k < 3; ++k)
     {
-      this->TriangleBoxes[6 * i + k] = Down(boxes[6 * t + k] - this->Origin[k], this->RoundingPad);
-      this->TriangleBoxes[6 * i + 3 + k] = Up(boxes[6 * t + 3 + k] - this->Origin[k], this->RoundingPad);
+      // The box BuildNodes had for it (freed by now), from the same vertices.
+      const double a = mesh.GetPoint(v[0])[k], b = mesh.GetPoint(v[1])[k], c = mesh.GetPoint(v[2])[k];
+      this->TriangleBoxes[6 * i + k] = Down(std::min({ a, b, c }) - this->Origin[k], this->RoundingPad);
+      this->TriangleBoxes[6 * i + 3 + k] = Up(std::max({ a, b, c }) - this->Origin[k], this->RoundingPad);
     }
     for (int j = 0; j < 3; ++j)
     {
       std::copy_n(mesh.GetPoint(mesh.GetTriangle(t)[j]), 3, &this->Vertices[9 * i + 3 * j]);
     }
   }
-  this->Nodes.shrink_to_fit();
   this->Parent.assign(this->Nodes.size(), -1);
   this->LeafNode.resize(nt);
   for (size_t i = 0; i < this->Nodes.size(); ++i)
@@ -510,7 +576,6 @@ bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh, const std::f
       this->Parent[node.Start] = this->Parent[node.Start + 1] = static_cast<std::int32_t>(i);
     }
   }
-  return true;
 }
 
 void vtkMedialTriangleBVH::BuildNode(std::vector<Node>& nodes, std::int32_t nodeIndex,
@@ -550,29 +615,50 @@ vtkMedialTriangleBVH::Node vtkMedialTriangleBVH::BoundNode(std::int32_t begin, s
 {
   // Bounds: the box of the triangles and of their centroids, and the area vector sum.
   Node node{};
-  double lo[3], hi[3], area[3] = { 0, 0, 0 }, totalArea = 0.0;
-  for (int k = 0; k < 3; ++k)
+  double area[3] = { 0, 0, 0 }, totalArea = 0.0;
+  // Large nodes are never culled by a slab (their boxes decide), so they skip it.
+  const bool slab = end - begin <= SlabMaximumTriangles;
+  if (slab)
   {
-    lo[k] = cLo[k] = HUGE_VAL;
-    hi[k] = cHi[k] = -HUGE_VAL;
-  }
-  for (std::int32_t i = begin; i < end; ++i)
-  {
-    const std::int32_t t = order[i];
-    totalArea += mesh.Areas[t];
-    for (int k = 0; k < 3; ++k)
+    for (std::int32_t i = begin; i < end; ++i)
     {
-      lo[k] = std::min(lo[k], boxes[6 * t + k]);
-      hi[k] = std::max(hi[k], boxes[6 * t + 3 + k]);
-      cLo[k] = std::min(cLo[k], centroids[3 * t + k]);
-      cHi[k] = std::max(cHi[k], centroids[3 * t + k]);
-      area[k] += mesh.Areas[t] * mesh.GetNormal(t)[k];
+      const std::int32_t t = order[i];
+      totalArea += mesh.Areas[t];
+      for (int k = 0; k < 3; ++k)
+      {
+        area[k] += mesh.Areas[t] * mesh.GetNormal(t)[k];
+      }
     }
   }
+  NodeBoxes box;
+  FoldRange(
+    begin, end, box,
+    [&](NodeBoxes& part, std::int32_t i) {
+      const std::int32_t t = order[i];
+      for (int k = 0; k < 3; ++k)
+      {
+        part.Lo[k] = std::min(part.Lo[k], boxes[6 * t + k]);
+        part.Hi[k] = std::max(part.Hi[k], boxes[6 * t + 3 + k]);
+        part.CLo[k] = std::min(part.CLo[k], centroids[3 * t + k]);
+        part.CHi[k] = std::max(part.CHi[k], centroids[3 * t + k]);
+      }
+    },
+    [](NodeBoxes& whole, const NodeBoxes& part) {
+      for (int k = 0; k < 3; ++k)
+      {
+        whole.Lo[k] = std::min(whole.Lo[k], part.Lo[k]);
+        whole.Hi[k] = std::max(whole.Hi[k], part.Hi[k]);
+        whole.CLo[k] = std::min(whole.CLo[k], part.CLo[k]);
+        whole.CHi[k] = std::max(whole.CHi[k], part.CHi[k]);
+      }
+    });
+  const double* lo = box.Lo;
+  const double* hi = box.Hi;
+  std::copy_n(box.CLo, 3, cLo);
+  std::copy_n(box.CHi, 3, cHi);
   // The slab along the mean normal; skipped when the normals (nearly) cancel out.
   const double areaNorm = std::sqrt(G::Dot(area, area));
-  // Large nodes are never culled by a slab (their boxes decide), so they skip it.
-  if (end - begin <= SlabMaximumTriangles && areaNorm > 0.25 * totalArea && areaNorm > 0.0)
+  if (slab && areaNorm > 0.25 * totalArea && areaNorm > 0.0)
   {
     // The slab is measured along the axis as stored (float), so it bounds exactly that.
     double axis[3];
@@ -622,22 +708,38 @@ std::int32_t vtkMedialTriangleBVH::SplitNode(std::int32_t begin, std::int32_t en
   const double extent = cHi[axis] - cLo[axis];
   if (extent > 0.0)
   {
-    SahBin bins[Bins];
     const double scale = Bins / extent;
     auto binOf = [&](std::int32_t t) {
       return std::min(Bins - 1, static_cast<int>((centroids[3 * t + axis] - cLo[axis]) * scale));
     };
-    for (std::int32_t i = begin; i < end; ++i)
+    struct Binned
     {
-      const std::int32_t t = order[i];
-      SahBin& b = bins[binOf(t)];
-      ++b.Count;
-      for (int k = 0; k < 3; ++k)
-      {
-        b.Lo[k] = std::min(b.Lo[k], boxes[6 * t + k]);
-        b.Hi[k] = std::max(b.Hi[k], boxes[6 * t + 3 + k]);
-      }
-    }
+      SahBin Bin[Bins];
+    } binned;
+    FoldRange(
+      begin, end, binned,
+      [&](Binned& part, std::int32_t i) {
+        const std::int32_t t = order[i];
+        SahBin& b = part.Bin[binOf(t)];
+        ++b.Count;
+        for (int k = 0; k < 3; ++k)
+        {
+          b.Lo[k] = std::min(b.Lo[k], boxes[6 * t + k]);
+          b.Hi[k] = std::max(b.Hi[k], boxes[6 * t + 3 + k]);
+        }
+      },
+      [](Binned& whole, const Binned& part) {
+        for (int j = 0; j < Bins; ++j)
+        {
+          whole.Bin[j].Count += part.Bin[j].Count;
+          for (int k = 0; k < 3; ++k)
+          {
+            whole.Bin[j].Lo[k] = std::min(whole.Bin[j].Lo[k], part.Bin[j].Lo[k]);
+            whole.Bin[j].Hi[k] = std::max(whole.Bin[j].Hi[k], part.Bin[j].Hi[k]);
+          }
+        }
+      });
+    const SahBin* bins = binned.Bin;
     const int bestSplit = CheapestSplit(bins, count);
     if (bestSplit >= 0)
     {
@@ -1194,6 +1296,197 @@ bool vtkMedialTriangleBVH::ContainsBall(const double x[3], double radius, vtkIdT
       return empty; // stop at the first point inside
     });
   return empty;
+}
+
+namespace
+{
+// The watertight ray-triangle test of Woop, Benthin and Wald (JCGT 2013) in double:
+// vertices are sheared into a frame where the ray runs along +z, and the signed
+// areas U, V, W of the triangle's edges seen from the ray decide. A shared edge gets
+// exactly opposite values in its two triangles, so no ray slips between them.
+class WatertightRay
+{
+public:
+  WatertightRay(const double origin[3], const double direction[3])
+  {
+    const double ax = std::fabs(direction[0]), ay = std::fabs(direction[1]), az = std::fabs(direction[2]);
+    this->Kz = ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2);
+    this->Kx = (this->Kz + 1) % 3;
+    this->Ky = (this->Kx + 1) % 3;
+    if (direction[this->Kz] < 0.0)
+    {
+      std::swap(this->Kx, this->Ky); // keeps the winding
+    }
+    this->Sx = direction[this->Kx] / direction[this->Kz];
+    this->Sy = direction[this->Ky] / direction[this->Kz];
+    this->Sz = 1.0 / direction[this->Kz];
+    std::copy_n(origin, 3, this->Origin);
+  }
+
+  // The ray's t at triangle (a, b, c), beyond tMin; false when it misses.
+  bool Hit(const double* a, const double* b, const double* c, double tMin, double& t) const
+  {
+    double A[3], B[3], C[3];
+    this->Shear(a, A);
+    this->Shear(b, B);
+    this->Shear(c, C);
+    const double u = C[0] * B[1] - C[1] * B[0];
+    const double v = A[0] * C[1] - A[1] * C[0];
+    const double w = B[0] * A[1] - B[1] * A[0];
+    if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0))
+    {
+      return false;
+    }
+    const double det = u + v + w;
+    if (det == 0.0)
+    {
+      return HitInPlane(A, B, C, tMin, t);
+    }
+    t = (u * A[2] + v * B[2] + w * C[2]) / det;
+    return true;
+  }
+
+private:
+  // The ray runs in the triangle's plane (a face seen edge-on, e.g. from a box's edge
+  // along the next face): it meets the triangle where the sheared triangle, a segment
+  // through the axis, crosses the axis; the first such t beyond tMin.
+  static bool HitInPlane(const double A[3], const double B[3], const double C[3], double tMin, double& t)
+  {
+    const double* p[3] = { A, B, C };
+    int far = 0;
+    for (int i = 1; i < 3; ++i)
+    {
+      if (std::fabs(p[i][0]) + std::fabs(p[i][1]) > std::fabs(p[far][0]) + std::fabs(p[far][1]))
+      {
+        far = i;
+      }
+    }
+    double s[3]; // positions along the segment's line; the axis is at 0
+    for (int i = 0; i < 3; ++i)
+    {
+      s[i] = p[i][0] * p[far][0] + p[i][1] * p[far][1];
+    }
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (int i = 0; i < 3; ++i)
+    {
+      const int j = (i + 1) % 3;
+      if ((s[i] <= 0.0 && s[j] >= 0.0) || (s[i] >= 0.0 && s[j] <= 0.0))
+      {
+        const double z0 = s[i] == s[j] ? p[i][2] : p[i][2] + (p[j][2] - p[i][2]) * (s[i] / (s[i] - s[j]));
+        const double z1 = s[i] == s[j] ? p[j][2] : z0;
+        lo = std::min({ lo, z0, z1 });
+        hi = std::max({ hi, z0, z1 });
+      }
+    }
+    if (!(hi > tMin))
+    {
+      return false;
+    }
+    t = std::max(lo, std::nextafter(tMin, HUGE_VAL));
+    return true;
+  }
+
+  void Shear(const double* p, double out[3]) const
+  {
+    const double x = p[this->Kx] - this->Origin[this->Kx];
+    const double y = p[this->Ky] - this->Origin[this->Ky];
+    const double z = p[this->Kz] - this->Origin[this->Kz];
+    out[0] = x - this->Sx * z;
+    out[1] = y - this->Sy * z;
+    out[2] = this->Sz * z;
+  }
+
+  int Kx, Ky, Kz;
+  double Sx, Sy, Sz;
+  double Origin[3];
+};
+
+// Where the ray (origin o relative to the tree's origin, inverse direction inv) enters
+// the node's box, when it does within [tMin, tMax]. A zero direction component gives
+// NaN at the box's face: comparisons with NaN fail, so the test stays conservative.
+bool RayEntersBox(const Node& node, const double o[3], const double inv[3], double tMin, double tMax, double& tEnter)
+{
+  double t0 = tMin, t1 = tMax;
+  for (int k = 0; k < 3; ++k)
+  {
+    double a = (node.Lo[k] - o[k]) * inv[k];
+    double b = (node.Hi[k] - o[k]) * inv[k];
+    if (a > b)
+    {
+      std::swap(a, b);
+    }
+    t0 = a > t0 ? a : t0;
+    t1 = b < t1 ? b : t1;
+  }
+  tEnter = t0;
+  // The box is padded outward; the slack covers the rounding of the products.
+  return t0 <= t1 + 1e-12 * std::fabs(t1);
+}
+}
+
+bool vtkMedialTriangleBVH::IntersectRay(const double origin[3], const double direction[3], double tMin,
+  double tMax, vtkIdType ignoreTriangle, double& t, vtkIdType& triangle) const
+{
+  if (this->Nodes.empty())
+  {
+    return false;
+  }
+  const WatertightRay ray(origin, direction);
+  double o[3], inv[3];
+  G::Sub(origin, this->Origin, o);
+  for (int k = 0; k < 3; ++k)
+  {
+    inv[k] = 1.0 / direction[k];
+  }
+  double best = tMax;
+  triangle = -1;
+  thread_local std::vector<std::int32_t> stack; // own stack: not the per-sample scratch
+  stack.assign(1, 0);
+  double enter;
+  if (!RayEntersBox(this->Nodes[0], o, inv, tMin, best, enter))
+  {
+    return false;
+  }
+  while (!stack.empty())
+  {
+    const Node& node = this->Nodes[stack.back()];
+    stack.pop_back();
+    if (!RayEntersBox(node, o, inv, tMin, best, enter))
+    {
+      continue; // best shrank since the node was pushed
+    }
+    if (node.Count == 0)
+    {
+      double enterLeft, enterRight;
+      const bool left = RayEntersBox(this->Nodes[node.Start], o, inv, tMin, best, enterLeft);
+      const bool right = RayEntersBox(this->Nodes[node.Start + 1], o, inv, tMin, best, enterRight);
+      if (left && right)
+      {
+        // Nearer child on top; ties to the left one.
+        const bool rightFirst = enterRight < enterLeft;
+        stack.push_back(rightFirst ? node.Start : node.Start + 1);
+        stack.push_back(rightFirst ? node.Start + 1 : node.Start);
+      }
+      else if (left || right)
+      {
+        stack.push_back(left ? node.Start : node.Start + 1);
+      }
+      continue;
+    }
+    for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
+    {
+      const double* v = &this->Vertices[9 * static_cast<size_t>(slot)];
+      double hit;
+      if (this->TriangleIds[slot] != ignoreTriangle && ray.Hit(v, v + 3, v + 6, tMin, hit) && hit > tMin &&
+        hit < best)
+      {
+        best = hit;
+        triangle = this->TriangleIds[slot];
+      }
+    }
+  }
+  t = best;
+  return triangle >= 0;
 }
 
 void vtkMedialTriangleBVH::VisitBox(

@@ -2,10 +2,11 @@
 /**
  * @class vtkMedialTriangleBVH
  * @brief Internal: a bounding volume hierarchy over a vtkMedialTriangleMesh for
- * the medial-ball queries that Embree's point query cannot cull well.
+ * rays and for the medial-ball queries that a fixed-sphere point query cannot cull well.
  *
- * Used only by vtkMedialSurfaceQuery. Embree's point query tests a fixed sphere
- * against axis-aligned boxes. The medial queries need more:
+ * Used only by vtkMedialSurfaceQuery (and by the mesh's nesting test). A generic
+ * point query tests a fixed sphere against axis-aligned boxes. The medial queries
+ * need more:
  *  - the ball tangent at P shrinks *and moves* (its centre is P + r n), so the
  *    culling sphere must follow the current radius;
  *  - contacts within the separation angle theta of P never count, so whole
@@ -98,6 +99,16 @@ public:
   void VisitBox(const double lo[3], const double hi[3], const std::function<bool(vtkIdType)>& visit) const;
 
   /**
+   * First triangle other than ignoreTriangle met by the ray origin + t direction,
+   * tMin < t < tMax: its t (in units of direction) and mesh id. Watertight in double
+   * precision (Woop, Benthin and Wald 2013): a ray through an edge or a vertex meets
+   * at least one triangle around it. Ties go to the first triangle in traversal
+   * order (deterministic for a given mesh). False when the ray meets nothing.
+   */
+  bool IntersectRay(const double origin[3], const double direction[3], double tMin, double tMax,
+    vtkIdType ignoreTriangle, double& t, vtkIdType& triangle) const;
+
+  /**
    * Every triangle whose closest point to x is at most `distance` away: visit(d2, q,
    * triangle) gets the squared distance, that closest point and the mesh triangle
    * id, in traversal order (deterministic for a given mesh). With cosMinAngle < 1
@@ -128,6 +139,11 @@ private:
   {
     std::int32_t Node, Begin, End;
   };
+  // The nodes (Build's first pass): `order` becomes the leaf order. False when aborted.
+  bool BuildNodes(const vtkMedialTriangleMesh& mesh, std::vector<std::int32_t>& order,
+    const std::function<bool()>& aborted);
+  // Build's second pass: Vertices, Planes, TriangleIds, LeafRank, LeafNode, Parent.
+  void CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, const std::vector<std::int32_t>& order);
   // Builds the subtree of triangles order[begin, end) into nodes[node]. With
   // `later`, ranges of at most `grain` triangles are only recorded there, to be
   // built in parallel.

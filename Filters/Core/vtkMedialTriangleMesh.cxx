@@ -6,13 +6,14 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
 #include "vtkIdFilter.h"
 #include "vtkIdTypeArray.h"
 #include "vtkLine.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkStaticCleanPolyData.h"
 #include "vtkTriangle.h"
 #include "vtkTriangleFilter.h"
 
@@ -20,6 +21,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <sstream>
 
 namespace
@@ -52,24 +54,202 @@ std::string FormatPoint(const double x[3])
   os << "(" << x[0] << ", " << x[1] << ", " << x[2] << ")";
   return os.str();
 }
+
+// Items 0..n-1 grouped by key(i) in [0, keys) with a counting sort, stable: emit(i,
+// position) places item i, the items of each key in increasing order. Returns where
+// each key's items start (keys + 1 entries).
+template <class Key, class Emit>
+std::vector<vtkIdType> GroupByKey(vtkIdType n, vtkIdType keys, Key key, Emit emit)
+{
+  std::vector<vtkIdType> offsets(static_cast<size_t>(keys) + 1, 0);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    ++offsets[key(i) + 1];
+  }
+  for (vtkIdType k = 0; k < keys; ++k)
+  {
+    offsets[k + 1] += offsets[k];
+  }
+  std::vector<vtkIdType> next(offsets.begin(), offsets.end() - 1);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    emit(i, next[key(i)]++);
+  }
+  return offsets;
+}
+
+// The points as doubles, 3 per point, without a virtual call per point for the usual
+// float and double arrays.
+void ReadPoints(vtkPoints* points, std::vector<double>& out)
+{
+  const vtkIdType n = points->GetNumberOfPoints();
+  out.resize(3 * static_cast<size_t>(n));
+  vtkDataArray* data = points->GetData();
+  auto* floats = vtkFloatArray::FastDownCast(data);
+  auto* doubles = vtkDoubleArray::FastDownCast(data);
+  if (floats || doubles)
+  {
+    const float* f = floats ? floats->GetPointer(0) : nullptr;
+    const double* d = doubles ? doubles->GetPointer(0) : nullptr;
+#pragma omp parallel for schedule(static)
+    for (vtkIdType i = 0; i < 3 * n; ++i)
+    {
+      out[i] = f ? static_cast<double>(f[i]) : d[i];
+    }
+    return;
+  }
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    points->GetPoint(i, &out[3 * i]);
+  }
+}
+
+// Every cell of `cells` as a triangle, 3 ids each; false (nothing read) when a cell
+// has another size.
+template <class Ids>
+bool ReadTriangleCells(const Ids* offsets, const Ids* connectivity, vtkIdType cells, std::vector<vtkIdType>& out)
+{
+  for (vtkIdType c = 0; c <= cells; ++c)
+  {
+    if (offsets[c] != 3 * c)
+    {
+      return false;
+    }
+  }
+  out.assign(connectivity, connectivity + 3 * cells);
+  return true;
+}
+bool ReadTriangleCells(vtkCellArray* cells, std::vector<vtkIdType>& out)
+{
+  const vtkIdType n = cells->GetNumberOfCells();
+  if (cells->GetNumberOfConnectivityIds() != 3 * n)
+  {
+    return false;
+  }
+  if (cells->IsStorage64Bit())
+  {
+    return ReadTriangleCells(cells->GetOffsetsArray64()->GetPointer(0),
+      cells->GetConnectivityArray64()->GetPointer(0), n, out);
+  }
+  return ReadTriangleCells(cells->GetOffsetsArray32()->GetPointer(0),
+    cells->GetConnectivityArray32()->GetPointer(0), n, out);
+}
+
+// Merges exactly coincident points (equal doubles; -0 equals 0) into the lowest id
+// among them, as vtkStaticCleanPolyData does with tolerance 0: the kept points keep
+// their order (unused ones too) and the triangles are renumbered. Linear: points
+// are grouped by a hash of their coordinates, then compared within each group.
+void MergeCoincidentPoints(std::vector<double>& points, std::vector<vtkIdType>& triangles)
+{
+  const vtkIdType np = static_cast<vtkIdType>(points.size() / 3);
+  vtkIdType buckets = 1;
+  while (buckets < np)
+  {
+    buckets <<= 1;
+  }
+  std::vector<vtkIdType> hash(np);
+#pragma omp parallel for schedule(static)
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double x = points[3 * i + k] + 0.0; // -0 becomes +0
+      std::uint64_t bits;
+      std::memcpy(&bits, &x, sizeof(bits));
+      h = (h ^ bits) * 0xFF51AFD7ED558CCDull;
+      h ^= h >> 33;
+    }
+    hash[i] = static_cast<vtkIdType>(h & static_cast<std::uint64_t>(buckets - 1));
+  }
+  std::vector<vtkIdType> byHash(np);
+  const std::vector<vtkIdType> offsets = GroupByKey(
+    np, buckets, [&](vtkIdType i) { return hash[i]; }, [&](vtkIdType i, vtkIdType at) { byHash[at] = i; });
+  std::vector<vtkIdType>& merged = hash; // reused: the point each one merges into
+  vtkIdType mergedCount = 0;
+#pragma omp parallel for schedule(dynamic, 4096) reduction(+ : mergedCount)
+  for (vtkIdType b = 0; b < buckets; ++b)
+  {
+    for (vtkIdType i = offsets[b]; i < offsets[b + 1]; ++i)
+    {
+      const vtkIdType p = byHash[i];
+      merged[p] = p;
+      for (vtkIdType j = offsets[b]; j < i; ++j)
+      {
+        const vtkIdType q = byHash[j];
+        if (merged[q] == q && points[3 * p] == points[3 * q] && points[3 * p + 1] == points[3 * q + 1] &&
+          points[3 * p + 2] == points[3 * q + 2])
+        {
+          merged[p] = q;
+          ++mergedCount;
+          break;
+        }
+      }
+    }
+  }
+  if (mergedCount == 0)
+  {
+    return;
+  }
+  std::vector<vtkIdType>& newId = byHash; // reused
+  vtkIdType kept = 0;
+  for (vtkIdType p = 0; p < np; ++p)
+  {
+    if (merged[p] == p)
+    {
+      std::copy_n(&points[3 * p], 3, &points[3 * kept]);
+      newId[p] = kept++;
+    }
+  }
+  points.resize(3 * kept);
+#pragma omp parallel for schedule(static)
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(triangles.size()); ++i)
+  {
+    triangles[i] = newId[merged[triangles[i]]];
+  }
+}
 }
 
 struct vtkMedialTriangleMesh::Adjacency
 {
+  // The uses of edges (Lo, Hi), Lo < Hi, grouped by Lo: Uses[First[Lo], First[Lo + 1]),
+  // sorted by Hi, then by triangle. The uses of one edge are adjacent.
   struct EdgeUse
   {
-    vtkIdType Lo, Hi; // sorted vertex ids
-    vtkIdType Triangle;
-    bool Forward; // the triangle walks Lo -> Hi
+    vtkIdType Hi;
+    vtkIdType TriangleAndDirection; // 2 * triangle, + 1 when the triangle walks Lo -> Hi
     bool operator<(const EdgeUse& o) const
     {
-      return Lo != o.Lo ? Lo < o.Lo : (Hi != o.Hi ? Hi < o.Hi : Triangle < o.Triangle);
+      return Hi != o.Hi ? Hi < o.Hi : TriangleAndDirection < o.TriangleAndDirection;
     }
+    vtkIdType Triangle() const { return TriangleAndDirection >> 1; }
+    bool Forward() const { return (TriangleAndDirection & 1) != 0; }
   };
-  std::vector<EdgeUse> Uses;            // sorted: the uses of one edge are adjacent
+  std::vector<vtkIdType> First;
+  std::vector<EdgeUse> Uses;
   std::vector<vtkIdType> Neighbour;     // 3 per triangle, across manifold edges
   std::vector<char> SameDirection;      // 3 per triangle: the neighbour walks the edge the same way
   std::vector<unsigned char> Degree;    // neighbours of each triangle
+
+  // Calls visit(begin, end) for the uses [begin, end) of each edge, in (Lo, Hi) order.
+  template <class Visit>
+  void ForEachEdge(Visit visit) const
+  {
+    for (size_t lo = 0; lo + 1 < this->First.size(); ++lo)
+    {
+      const size_t last = static_cast<size_t>(this->First[lo + 1]);
+      for (size_t i = static_cast<size_t>(this->First[lo]); i < last;)
+      {
+        size_t j = i + 1;
+        while (j < last && this->Uses[j].Hi == this->Uses[i].Hi)
+        {
+          ++j;
+        }
+        visit(i, j);
+        i = j;
+      }
+    }
+  }
 };
 
 bool vtkMedialTriangleMesh::Build(
@@ -148,17 +328,18 @@ bool vtkMedialTriangleMesh::Build(
   return this->BuildAreaCdf(error);
 }
 
-bool vtkMedialTriangleMesh::ValidateInput(vtkPolyData* input, std::string& error) const
+bool vtkMedialTriangleMesh::ValidateInput(vtkPolyData* input, std::string& error)
 {
   if (!input || input->GetNumberOfPoints() == 0 || input->GetNumberOfCells() == 0)
   {
     error = "input has no points or no cells";
     return false;
   }
-  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  ReadPoints(input->GetPoints(), this->Points);
+  const vtkIdType np = this->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < np; ++i)
   {
-    double x[3];
-    input->GetPoint(i, x);
+    const double* x = this->GetPoint(i);
     if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
     {
       std::ostringstream os;
@@ -176,84 +357,118 @@ bool vtkMedialTriangleMesh::ValidateInput(vtkPolyData* input, std::string& error
 }
 
 // Triangulates, merges coincident points, and keeps the non-collapsed triangles
-// with their input cell ids.
+// with their input cell ids. A surface made of triangles only (the usual case) is
+// read straight from its cell array; others go through vtkTriangleFilter.
 void vtkMedialTriangleMesh::ImportTriangles(vtkPolyData* input)
 {
-  // Shallow copy: the pipeline's input must not be modified.
-  vtkNew<vtkPolyData> shallow;
-  shallow->CopyStructure(input);
-  vtkNew<vtkIdFilter> ids;
-  ids->SetInputData(shallow);
-  ids->PointIdsOff();
-  ids->CellIdsOn();
-  ids->FieldDataOff();
-  ids->SetCellIdsArrayName(SourceIdsName);
-  vtkNew<vtkTriangleFilter> triangulate;
-  triangulate->SetInputConnection(ids->GetOutputPort());
-  triangulate->PassVertsOff();
-  triangulate->PassLinesOff();
-  vtkNew<vtkStaticCleanPolyData> merge;
-  merge->SetInputConnection(triangulate->GetOutputPort());
-  merge->ToleranceIsAbsoluteOn();
-  merge->SetAbsoluteTolerance(0.0);
-  merge->ConvertPolysToLinesOff();
-  merge->ConvertLinesToPointsOff();
-  merge->ConvertStripsToPolysOff();
-  merge->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
-  merge->Update();
-  vtkPolyData* tri = merge->GetOutput();
-
-  const vtkIdType np = tri->GetNumberOfPoints();
-  this->Points.resize(3 * np);
-  for (vtkIdType i = 0; i < np; ++i)
+  std::vector<vtkIdType> triangles, sourceIds;
+  const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  const bool direct = input->GetNumberOfStrips() == 0 && ReadTriangleCells(input->GetPolys(), triangles);
+  if (!direct)
   {
-    tri->GetPoint(i, &this->Points[3 * i]);
+    // Shallow copy: the pipeline's input must not be modified.
+    vtkNew<vtkPolyData> shallow;
+    shallow->CopyStructure(input);
+    vtkNew<vtkIdFilter> ids;
+    ids->SetInputData(shallow);
+    ids->PointIdsOff();
+    ids->CellIdsOn();
+    ids->FieldDataOff();
+    ids->SetCellIdsArrayName(SourceIdsName);
+    vtkNew<vtkTriangleFilter> triangulate;
+    triangulate->SetInputConnection(ids->GetOutputPort());
+    triangulate->PassVertsOff();
+    triangulate->PassLinesOff();
+    triangulate->Update();
+    vtkPolyData* tri = triangulate->GetOutput();
+    ReadTriangleCells(tri->GetPolys(), triangles);
+    auto* cellIds = vtkIdTypeArray::SafeDownCast(tri->GetCellData()->GetArray(SourceIdsName));
+    sourceIds.assign(cellIds->GetPointer(0), cellIds->GetPointer(0) + triangles.size() / 3);
   }
-  tri->GetBounds(this->Bounds);
+  MergeCoincidentPoints(this->Points, triangles);
+  for (int k = 0; k < 3; ++k)
+  {
+    this->Bounds[2 * k] = HUGE_VAL;
+    this->Bounds[2 * k + 1] = -HUGE_VAL;
+  }
+  for (vtkIdType i = 0; i < this->GetNumberOfPoints(); ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Bounds[2 * k] = std::min(this->Bounds[2 * k], this->Points[3 * i + k]);
+      this->Bounds[2 * k + 1] = std::max(this->Bounds[2 * k + 1], this->Points[3 * i + k]);
+    }
+  }
   this->Diagonal = std::sqrt((this->Bounds[1] - this->Bounds[0]) * (this->Bounds[1] - this->Bounds[0]) +
     (this->Bounds[3] - this->Bounds[2]) * (this->Bounds[3] - this->Bounds[2]) +
     (this->Bounds[5] - this->Bounds[4]) * (this->Bounds[5] - this->Bounds[4]));
 
-  auto* sourceIds = vtkIdTypeArray::SafeDownCast(tri->GetCellData()->GetArray(SourceIdsName));
-  vtkCellArray* polys = tri->GetPolys();
-  const vtkIdType firstPoly = tri->GetNumberOfVerts() + tri->GetNumberOfLines();
-  vtkIdType cellId = 0;
-  vtkIdType npts;
-  const vtkIdType* pts;
-  for (polys->InitTraversal(); polys->GetNextCell(npts, pts); ++cellId)
+  // Drop the triangles collapsed by the merge, in place.
+  const vtkIdType cells = static_cast<vtkIdType>(triangles.size() / 3);
+  this->SourceCellIds.resize(cells);
+  vtkIdType kept = 0;
+  for (vtkIdType c = 0; c < cells; ++c)
   {
-    if (npts != 3 || pts[0] == pts[1] || pts[1] == pts[2] || pts[0] == pts[2])
+    const vtkIdType* pts = &triangles[3 * c];
+    if (pts[0] == pts[1] || pts[1] == pts[2] || pts[0] == pts[2])
     {
-      ++this->DegenerateTriangles; // collapsed by the point merge
+      ++this->DegenerateTriangles;
       continue;
     }
-    this->Triangles.insert(this->Triangles.end(), pts, pts + 3);
-    this->SourceCellIds.push_back(sourceIds ? sourceIds->GetValue(firstPoly + cellId) : cellId);
+    std::copy_n(pts, 3, &triangles[3 * kept]);
+    this->SourceCellIds[kept++] = direct ? firstPoly + c : sourceIds[c];
   }
+  triangles.resize(3 * kept);
+  this->SourceCellIds.resize(kept);
+  this->Triangles = std::move(triangles);
 }
 
 // A triangle with the same three vertices as an earlier one (either orientation) would
 // make each of its edges non-manifold and block every ray leaving it: keep the first.
 void vtkMedialTriangleMesh::DropDuplicateTriangles()
 {
-  const size_t nt = this->SourceCellIds.size();
-  std::vector<std::array<vtkIdType, 4>> keys(nt); // sorted vertices, then the triangle
-  for (size_t t = 0; t < nt; ++t)
-  {
-    const vtkIdType* v = &this->Triangles[3 * t];
-    keys[t] = { v[0], v[1], v[2], static_cast<vtkIdType>(t) };
-    std::sort(keys[t].begin(), keys[t].begin() + 3);
-  }
-  std::sort(keys.begin(), keys.end());
+  // Triangles grouped by their lowest vertex; within a group, sorted by the other two
+  // and then by id, so that the first of equal triangles is kept.
+  const vtkIdType nt = static_cast<vtkIdType>(this->SourceCellIds.size());
+  auto sorted = [this](vtkIdType t) {
+    std::array<vtkIdType, 3> v = { this->Triangles[3 * t], this->Triangles[3 * t + 1], this->Triangles[3 * t + 2] };
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  std::vector<vtkIdType> byLowest(nt);
+  const std::vector<vtkIdType> offsets = GroupByKey(
+    nt, this->GetNumberOfPoints(), [&](vtkIdType t) { return sorted(t)[0]; },
+    [&](vtkIdType t, vtkIdType at) { byLowest[at] = t; });
   std::vector<char> duplicate(nt, 0);
-  for (size_t i = 1; i < nt; ++i)
+  vtkIdType duplicates = 0;
+#pragma omp parallel reduction(+ : duplicates)
   {
-    if (std::equal(keys[i].begin(), keys[i].begin() + 3, keys[i - 1].begin()))
+    std::vector<std::array<vtkIdType, 3>> keys; // the other two vertices, then the triangle
+#pragma omp for schedule(dynamic, 4096)
+    for (vtkIdType p = 0; p < this->GetNumberOfPoints(); ++p)
     {
-      duplicate[keys[i][3]] = 1;
-      ++this->DuplicateTriangles;
+      if (offsets[p + 1] - offsets[p] < 2)
+      {
+        continue;
+      }
+      keys.clear();
+      for (vtkIdType i = offsets[p]; i < offsets[p + 1]; ++i)
+      {
+        const std::array<vtkIdType, 3> v = sorted(byLowest[i]);
+        keys.push_back({ v[1], v[2], byLowest[i] });
+      }
+      std::sort(keys.begin(), keys.end());
+      for (size_t i = 1; i < keys.size(); ++i)
+      {
+        if (keys[i][0] == keys[i - 1][0] && keys[i][1] == keys[i - 1][1])
+        {
+          duplicate[keys[i][2]] = 1;
+          ++duplicates;
+        }
+      }
     }
   }
+  this->DuplicateTriangles = duplicates;
   if (this->DuplicateTriangles == 0)
   {
     return;
@@ -284,22 +499,37 @@ bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::func
       used[id] = 1;
     }
   }
+  // Each triangle's three edge uses, grouped by their lower vertex in linear time,
+  // then each group sorted by (Hi, triangle): the order of a full sort by (Lo, Hi, triangle).
   auto& uses = adjacency.Uses;
-  uses.reserve(3 * nt);
-  for (vtkIdType t = 0; t < nt; ++t)
-  {
-    const vtkIdType* v = &this->Triangles[3 * t];
-    for (int e = 0; e < 3; ++e)
-    {
-      const vtkIdType a = v[e], b = v[(e + 1) % 3];
-      uses.push_back({ std::min(a, b), std::max(a, b), t, a < b });
-    }
-  }
+  uses.resize(3 * nt);
+  auto ends = [this](vtkIdType use, vtkIdType& a, vtkIdType& b) {
+    const vtkIdType* v = &this->Triangles[3 * (use / 3)];
+    a = v[use % 3];
+    b = v[(use + 1) % 3];
+  };
+  adjacency.First = GroupByKey(
+    3 * nt, this->GetNumberOfPoints(),
+    [&](vtkIdType use) {
+      vtkIdType a, b;
+      ends(use, a, b);
+      return std::min(a, b);
+    },
+    [&](vtkIdType use, vtkIdType at) {
+      vtkIdType a, b;
+      ends(use, a, b);
+      uses[at] = { std::max(a, b), 2 * (use / 3) + (a < b ? 1 : 0) };
+    });
   if (aborted && aborted())
   {
     return false;
   }
-  std::sort(uses.begin(), uses.end());
+  const vtkIdType np = this->GetNumberOfPoints();
+#pragma omp parallel for schedule(dynamic, 4096)
+  for (vtkIdType lo = 0; lo < np; ++lo)
+  {
+    std::sort(uses.begin() + adjacency.First[lo], uses.begin() + adjacency.First[lo + 1]);
+  }
   if (aborted && aborted())
   {
     return false;
@@ -307,13 +537,7 @@ bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::func
   adjacency.Neighbour.assign(3 * nt, -1);
   adjacency.SameDirection.assign(3 * nt, 0);
   adjacency.Degree.assign(nt, 0);
-  for (size_t i = 0; i < uses.size();)
-  {
-    size_t j = i + 1;
-    while (j < uses.size() && uses[j].Lo == uses[i].Lo && uses[j].Hi == uses[i].Hi)
-    {
-      ++j;
-    }
+  adjacency.ForEachEdge([&](size_t i, size_t j) {
     ++this->Edges;
     if (j - i == 1)
     {
@@ -321,24 +545,23 @@ bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::func
     }
     else if (j - i == 2)
     {
-      const auto& a = uses[i];
-      const auto& b = uses[i + 1];
-      const bool same = a.Forward == b.Forward;
+      const vtkIdType a = uses[i].Triangle();
+      const vtkIdType b = uses[i + 1].Triangle();
+      const bool same = uses[i].Forward() == uses[i + 1].Forward();
       auto& degree = adjacency.Degree;
-      if (degree[a.Triangle] < 3 && degree[b.Triangle] < 3)
+      if (degree[a] < 3 && degree[b] < 3)
       {
-        adjacency.Neighbour[3 * a.Triangle + degree[a.Triangle]] = b.Triangle;
-        adjacency.SameDirection[3 * a.Triangle + degree[a.Triangle]++] = same;
-        adjacency.Neighbour[3 * b.Triangle + degree[b.Triangle]] = a.Triangle;
-        adjacency.SameDirection[3 * b.Triangle + degree[b.Triangle]++] = same;
+        adjacency.Neighbour[3 * a + degree[a]] = b;
+        adjacency.SameDirection[3 * a + degree[a]++] = same;
+        adjacency.Neighbour[3 * b + degree[b]] = a;
+        adjacency.SameDirection[3 * b + degree[b]++] = same;
       }
     }
     else
     {
       ++this->NonManifoldEdges;
     }
-    i = j;
-  }
+  });
   return true;
 }
 
@@ -407,15 +630,12 @@ void vtkMedialTriangleMesh::MarkClosedShells(const Adjacency& adjacency)
   {
     shell.Closed = true;
   }
-  const auto& uses = adjacency.Uses;
   std::vector<int> shellsOnEdge;
-  for (size_t i = 0; i < uses.size();)
-  {
+  adjacency.ForEachEdge([&](size_t i, size_t j) {
     shellsOnEdge.clear();
-    size_t j = i;
-    for (; j < uses.size() && uses[j].Lo == uses[i].Lo && uses[j].Hi == uses[i].Hi; ++j)
+    for (; i < j; ++i)
     {
-      shellsOnEdge.push_back(this->ShellOfTriangle[uses[j].Triangle]);
+      shellsOnEdge.push_back(this->ShellOfTriangle[adjacency.Uses[i].Triangle()]);
     }
     std::sort(shellsOnEdge.begin(), shellsOnEdge.end());
     for (size_t a = 0; a < shellsOnEdge.size();)
@@ -431,8 +651,7 @@ void vtkMedialTriangleMesh::MarkClosedShells(const Adjacency& adjacency)
       }
       a = b;
     }
-    i = j;
-  }
+  });
 }
 
 // Signed volume and bounds per shell (the volume about the box centre, for accuracy);
@@ -496,6 +715,8 @@ void vtkMedialTriangleMesh::ComputeNormalsAndAreas()
   this->Normals.resize(3 * nt);
   this->Areas.resize(nt);
   const double tinyArea = 1e-14 * this->Diagonal * this->Diagonal;
+  vtkIdType degenerate = 0;
+#pragma omp parallel for schedule(static) reduction(+ : degenerate)
   for (vtkIdType t = 0; t < nt; ++t)
   {
     const vtkIdType* v = &this->Triangles[3 * t];
@@ -507,7 +728,7 @@ void vtkMedialTriangleMesh::ComputeNormalsAndAreas()
     double area = 0.5 * len;
     if (area <= tinyArea)
     {
-      ++this->DegenerateTriangles;
+      ++degenerate;
       area = 0.0;
     }
     for (int i = 0; i < 3; ++i)
@@ -516,6 +737,7 @@ void vtkMedialTriangleMesh::ComputeNormalsAndAreas()
     }
     this->Areas[t] = area;
   }
+  this->DegenerateTriangles += degenerate;
 }
 
 namespace

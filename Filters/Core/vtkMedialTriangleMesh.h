@@ -5,10 +5,10 @@
  *
  * Build() takes any vtkPolyData surface and runs these passes:
  *  1. ValidateInput: rejects empty input, NaN/Inf coordinates, input without surface cells;
- *  2. ImportTriangles: triangulates polygons and strips (vtkTriangleFilter), remembering
- *     the input cell id, and merges exactly coincident points (vtkStaticCleanPolyData,
- *     tolerance 0), so that soups from STL/OBJ become connected; drops collapsed and
- *     duplicate triangles;
+ *  2. ImportTriangles: reads the triangles (polygons and strips go through
+ *     vtkTriangleFilter), remembering the input cell id, and merges exactly coincident
+ *     points (as vtkStaticCleanPolyData with tolerance 0, in linear time), so that soups
+ *     from STL/OBJ become connected; drops collapsed and duplicate triangles;
  *  3. BuildAdjacency: the triangles sharing each edge; counts boundary and non-manifold edges;
  *  4. OrientShells, MarkClosedShells, OrientByVolume: each shell (edge-connected
  *     component) is wound consistently by a breadth-first walk over manifold edges,
@@ -122,7 +122,7 @@ private:
   // Manifold neighbours of each triangle and the sorted edge uses (see BuildAdjacency).
   struct Adjacency;
 
-  bool ValidateInput(vtkPolyData* input, std::string& error) const;
+  bool ValidateInput(vtkPolyData* input, std::string& error); // and reads the points
   void ImportTriangles(vtkPolyData* input);
   void DropDuplicateTriangles();
   bool BuildAdjacency(Adjacency& adjacency, const std::function<bool()>& aborted);

@@ -274,31 +274,69 @@ public:
   template <class F>
   void ForEachItemNear(const double c[3], double radius, F&& f) const
   {
+    const double r2 = radius * radius;
+    const int lo = this->Coordinate(c[0] - radius, 0), hi = this->Coordinate(c[0] + radius, 0);
+    this->ForEachRowNear(c, radius, [&](int y, int z, int x0, int x1, double d2) {
+      // One more cell each side (within the box): the test below alone decides,
+      // whatever the rounding of the run.
+      for (int x = std::max(lo, x0 - 1); x <= std::min(hi, x1 + 1); ++x)
+      {
+        const double dx = this->SlabDistance(c[0], x, 0);
+        if (d2 + dx * dx <= r2)
+        {
+          this->ForEachItemInCell(this->CellId(x, y, z), f);
+        }
+      }
+    });
+  }
+
+  /// f(y, z, x0, x1, d2) for each row of cells (fixed y and z) that comes within
+  /// `radius` of c, d2 being the row's squared distance to c and [x0, x1] the run of
+  /// its cells that may hold a point within `radius` (every point whose x lies in
+  /// [c - radius, c + radius]); z, then y. The static items of a run are
+  /// contiguous: from ItemOffset(CellId(x0, y, z)) to ItemOffset(CellId(x1, y, z) + 1).
+  template <class F>
+  void ForEachRowNear(const double c[3], double radius, F&& f) const
+  {
     int lo[3], hi[3];
     this->CellBox(c, radius, lo, hi);
     const double r2 = radius * radius;
     for (int z = lo[2]; z <= hi[2]; ++z)
     {
-      const double dz = this->AxisGap(c[2], z, 2);
+      const double dz = this->SlabDistance(c[2], z, 2);
       for (int y = lo[1]; y <= hi[1]; ++y)
       {
-        const double dy = this->AxisGap(c[1], y, 1);
-        if (dz * dz + dy * dy > r2)
+        const double dy = this->SlabDistance(c[1], y, 1);
+        const double d2 = dz * dz + dy * dy;
+        if (d2 > r2)
         {
           continue;
         }
-        for (int x = lo[0]; x <= hi[0]; ++x)
-        {
-          const double dx = this->AxisGap(c[0], x, 0);
-          if (dz * dz + dy * dy + dx * dx > r2)
-          {
-            continue;
-          }
-          this->ForEachItemInCell(this->CellId(x, y, z), f);
-        }
+        const double dx = std::sqrt(r2 - d2);
+        f(y, z, this->Coordinate(c[0] - dx, 0), this->Coordinate(c[0] + dx, 0), d2);
       }
     }
   }
+
+  /// Distance along `axis` from x to cell slab i (0 inside; the boundary slabs reach to infinity).
+  double SlabDistance(double x, int i, int axis) const
+  {
+    const double a = this->CellLow(axis, i);
+    const double b = a + this->CellSize[axis];
+    if (x < a && i > 0)
+    {
+      return a - x;
+    }
+    if (x > b && i < this->Dims[axis] - 1)
+    {
+      return x - b;
+    }
+    return 0.0;
+  }
+
+  /// Position of the cell's first static item in the item order (cell = the number of
+  /// cells gives the item count): the items are stored cell after cell.
+  vtkIdType ItemOffset(vtkIdType cell) const { return this->Start[cell]; }
 
   /// f(ijk, cell) for the cells at Chebyshev distance `ring` from cell `centre`,
   /// clipped to the grid. Order: layer by layer in z; a layer on the shell's faces
@@ -416,22 +454,6 @@ private:
     this->Hidden.clear();
     this->Head.clear();
     this->Next.clear();
-  }
-
-  // Distance along `axis` from x to cell slab i (0 inside; the boundary slabs are open).
-  double AxisGap(double x, int i, int axis) const
-  {
-    const double a = this->CellLow(axis, i);
-    const double b = a + this->CellSize[axis];
-    if (x < a && i > 0)
-    {
-      return a - x;
-    }
-    if (x > b && i < this->Dims[axis] - 1)
-    {
-      return x - b;
-    }
-    return 0.0;
   }
 
   double Origin[3] = { 0, 0, 0 };

@@ -218,7 +218,7 @@ void vtkMedialAxisSampler::vtkInternals::ReportAllocationFailure(vtkIdType count
 }
 
 int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh& mesh,
-  const vtkMedialSurfaceQuery& query, const vtkMedialPieces& pieces, vtkPolyData* output, vtkMedialStages& stages)
+  vtkMedialSurfaceQuery& query, const vtkMedialPieces& pieces, vtkPolyData* output, vtkMedialStages& stages)
 {
   vtkMedialAxisSampler* self = this->Self;
   const vtkIdType total = self->NumberOfSamples;
@@ -240,7 +240,7 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh
   std::unique_ptr<vtkMedialCoverage> coverage;
   if (self->CoverageTolerance > 0.0)
   {
-    coverage.reset(new vtkMedialCoverage(mesh));
+    coverage.reset(new vtkMedialCoverage(mesh, threads));
   }
   std::vector<vtkIdType> index, order;
   try
@@ -287,6 +287,7 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh
   }
   results.resize(static_cast<size_t>(used));
   self->EvaluatedSamples = used;
+  query.ReleaseTree(); // the output arrays take its memory
 
   try
   {
@@ -443,13 +444,7 @@ vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangl
     }
     else
     {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        if (results[i].Valid)
-        {
-          coverage->AddBall(results[i].Centre, results[i].Radius, nullptr);
-        }
-      }
+      coverage->AddBalls(results.data() + begin, end - begin, begin);
     }
     const double gap = coverage->MaxGap();
     self->MaxCoverageGap = gap / mesh.Diagonal;

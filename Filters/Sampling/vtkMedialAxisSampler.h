@@ -50,7 +50,7 @@
  *     135 degrees or sharper, e.g. a box's 90 degree edges) are kept.
  *
  * All ray, closest-point and contains-ball queries go through vtkMedialSurfaceQuery
- * (rays through Embree, point queries through its own BVH); decisions are made
+ * (rays and point queries through its own BVH); decisions are made
  * in double precision. Samples are solved in the BVH's leaf order, for cache
  * locality; each result keeps its own index, so the order changes nothing.
  *
@@ -72,7 +72,7 @@
  * vtkMedialPolygon for what is accepted), samples are drawn on the edges with
  * probability proportional to length, the ray follows the inward edge normal in
  * the plane, and the largest empty disk is found by the same two methods and the
- * same separation-angle cap, on an exact 2D edge grid instead of Embree. Output
+ * same separation-angle cap, on an exact 2D edge grid instead of the BVH. Output
  * arrays are the same; SourceCellId is the input polygon or polyline cell.
  * IsPlanarInput() tells which mode an input gets. Methods in 2D: ONE_PASS and
  * SHRINKING_BALL are one and the same method there, the exact shrinking ball on the

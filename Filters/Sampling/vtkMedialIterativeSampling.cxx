@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <numeric>
 #include <queue>
 #include <unordered_set>
 
@@ -62,19 +63,25 @@ private:
   std::unordered_set<std::array<std::uint64_t, 3>, PointKeyHash> Keys;
 };
 
-// Solves the balls of one round in parallel, each into its own slot.
-void SolveRound(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& mesh,
-  const vtkMedialIterativeSettings& s, const std::vector<vtkIdType>& triangles,
-  const std::vector<double>& points, std::vector<vtkMedialSampleRecord>& out)
+// One round's samples, slot by slot: surface point and triangle, ball, and the
+// coverage points the ball lowers (Runner::SolveRound fills them in parallel).
+struct Round
 {
-  const vtkIdType n = static_cast<vtkIdType>(triangles.size());
-  out.resize(triangles.size());
-#pragma omp parallel for num_threads(s.Threads) schedule(dynamic, 1)
-  for (vtkIdType i = 0; i < n; ++i)
+  std::vector<vtkIdType> Triangles;
+  std::vector<double> Points;
+  std::vector<char> Used; // false: the slot got no sample
+  std::vector<vtkMedialSampleRecord> Balls;
+  std::vector<std::vector<vtkMedialCoverage::Lowering>> Lowered;
+
+  void Resize(size_t n)
   {
-    vtkMedialSolveBall(query, mesh, s.Ball, triangles[i], &points[3 * i], out[i]);
+    this->Triangles.resize(n);
+    this->Points.resize(3 * n);
+    this->Used.resize(n);
+    this->Balls.resize(n);
+    this->Lowered.resize(std::max(this->Lowered.size(), n)); // keeps the lists' storage
   }
-}
+};
 
 // Poisson-disk seeds by dart throwing (see the header); returns their surface points.
 void ThrowDarts(const vtkMedialTriangleMesh& mesh, const vtkMedialIterativeSettings& s,
@@ -89,22 +96,38 @@ void ThrowDarts(const vtkMedialTriangleMesh& mesh, const vtkMedialIterativeSetti
   const double rho = std::sqrt(0.6 * mesh.TotalArea / static_cast<double>(wanted));
   // Accepted seeds by cell; a dart is tested against those in the cells within rho.
   vtkMedialUniformGrid accepted;
-  accepted.InitializeCubic(mesh.Bounds, vtkMedialUniformGrid::CubicCellSize(mesh.Bounds, rho));
+  accepted.InitializeCubic(mesh.Bounds, vtkMedialUniformGrid::CubicCellSize(mesh.Bounds, 2.0 * rho));
   const vtkIdType maximumDarts = 30 * wanted;
-  for (vtkIdType dart = 0; dart < maximumDarts && static_cast<vtkIdType>(triangles.size()) < wanted; ++dart)
-  {
-    vtkIdType t;
-    double p[3];
-    vtkMedialDrawSurfacePoint(mesh, s.Seed ^ DartStream, dart, t, p);
+  // Darts are drawn in parallel blocks, each from its own index of the stream, and
+  // tested against the seeds accepted before the block; the survivors are tested
+  // again in index order, so the seeds are those of one dart after another.
+  constexpr vtkIdType Block = 8192;
+  std::vector<vtkIdType> dartTriangles(Block);
+  std::vector<double> darts(3 * Block);
+  std::vector<char> survives(Block);
+  auto taken = [&](const double p[3]) {
     int lo[3], hi[3];
     accepted.CellBox(p, rho, lo, hi);
-    const bool taken =
-      accepted.AnyItemInBox(lo, hi, [&](vtkIdType other) { return Distance(p, &points[3 * other]) < rho; });
-    if (!taken)
+    return accepted.AnyItemInBox(lo, hi, [&](vtkIdType other) { return Distance(p, &points[3 * other]) < rho; });
+  };
+  for (vtkIdType first = 0; first < maximumDarts && static_cast<vtkIdType>(triangles.size()) < wanted; first += Block)
+  {
+    const vtkIdType n = std::min(Block, maximumDarts - first);
+#pragma omp parallel for num_threads(s.Threads) schedule(static)
+    for (vtkIdType j = 0; j < n; ++j)
     {
-      accepted.Insert(static_cast<vtkIdType>(triangles.size()), accepted.CellOf(p));
-      triangles.push_back(t);
-      points.insert(points.end(), p, p + 3);
+      vtkMedialDrawSurfacePoint(mesh, s.Seed ^ DartStream, first + j, dartTriangles[j], &darts[3 * j]);
+      survives[j] = !taken(&darts[3 * j]);
+    }
+    for (vtkIdType j = 0; j < n && static_cast<vtkIdType>(triangles.size()) < wanted; ++j)
+    {
+      const double* p = &darts[3 * j];
+      if (survives[j] && !taken(p))
+      {
+        accepted.Insert(static_cast<vtkIdType>(triangles.size()), accepted.CellOf(p));
+        triangles.push_back(dartTriangles[j]);
+        points.insert(points.end(), p, p + 3);
+      }
     }
   }
 }
@@ -114,16 +137,21 @@ void ThrowDarts(const vtkMedialTriangleMesh& mesh, const vtkMedialIterativeSetti
 struct vtkMedialCoverage::Internals
 {
   const vtkMedialTriangleMesh* Mesh = nullptr;
+  int Threads = 1;
   vtkIdType NumberOfVertices = 0;
-  std::vector<double> Points;      // vertices, then one centroid per face
-  std::vector<char> Used;          // vertices referenced by a face; centroids always
-  std::vector<double> Gap;         // per point
+  vtkMedialUniformGrid Grid; // over the used points; its item order is the slot order
+  std::vector<vtkIdType> SlotOf;  // point (vertices, then one centroid per face) -> slot, -1 if unused
+  std::vector<vtkIdType> PointOf; // slot -> point
+  std::vector<double> X, Y, Z, Gap; // per slot
+  std::vector<vtkIdType> Owner;     // per slot: the ball (record index) that set its gap, or -1
+  std::vector<vtkIdType> CellOfSlot;
+  std::vector<double> CellMax; // per cell: the largest gap of its points (-infinity if none)
   std::vector<vtkIdType> FaceStart; // vertex -> faces (CSR)
   std::vector<vtkIdType> FaceList;
   std::vector<unsigned> Stamp; // per face, dedupes `touched`
   unsigned CurrentStamp = 0;
-  vtkMedialUniformGrid Grid;
   double Bound = HUGE_VAL; // upper bound of every gap
+  double Pad = 0.0;        // added to the search reach: cell binning and slab bounds may differ by an ulp
 
   template <class F>
   void ForEachFaceOf(vtkIdType point, F&& f) const
@@ -138,62 +166,126 @@ struct vtkMedialCoverage::Internals
       f(this->FaceList[s]);
     }
   }
+
+  double GapOf(vtkIdType point) const { return this->Gap[this->SlotOf[point]]; }
+
+  void BuildFaceLists();
+  void UpdateAllCellMax()
+  {
+    const vtkIdType cells = this->Grid.GetNumberOfCells();
+#pragma omp parallel for num_threads(this->Threads) schedule(static, 4096)
+    for (vtkIdType c = 0; c < cells; ++c)
+    {
+      this->UpdateCellMax(c);
+    }
+  }
+  void UpdateCellMax(vtkIdType cell)
+  {
+    double worst = -HUGE_VAL;
+    for (vtkIdType s = this->Grid.ItemOffset(cell); s < this->Grid.ItemOffset(cell + 1); ++s)
+    {
+      worst = std::max(worst, this->Gap[s]);
+    }
+    this->CellMax[cell] = worst;
+  }
+  void BuildSlots(const std::vector<double>& points, const std::vector<char>& used);
 };
 
-vtkMedialCoverage::vtkMedialCoverage(const vtkMedialTriangleMesh& mesh)
+// Vertex -> faces, in increasing face id.
+void vtkMedialCoverage::Internals::BuildFaceLists()
+{
+  const vtkMedialTriangleMesh& mesh = *this->Mesh;
+  const vtkIdType nv = this->NumberOfVertices;
+  const vtkIdType nf = mesh.GetNumberOfTriangles();
+  this->FaceStart.assign(static_cast<size_t>(nv + 1), 0);
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      ++this->FaceStart[mesh.GetTriangle(f)[k] + 1];
+    }
+  }
+  for (vtkIdType v = 0; v < nv; ++v)
+  {
+    this->FaceStart[v + 1] += this->FaceStart[v];
+  }
+  this->FaceList.resize(static_cast<size_t>(this->FaceStart[nv]));
+  std::vector<vtkIdType> fill(this->FaceStart.begin(), this->FaceStart.end() - 1);
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->FaceList[fill[mesh.GetTriangle(f)[k]]++] = f;
+    }
+  }
+}
+
+// The grid over the used points, and the points' coordinates in its item order.
+void vtkMedialCoverage::Internals::BuildSlots(const std::vector<double>& points, const std::vector<char>& used)
+{
+  const vtkMedialTriangleMesh& mesh = *this->Mesh;
+  const vtkIdType count = static_cast<vtkIdType>(used.size());
+  const vtkIdType nused = static_cast<vtkIdType>(std::count(used.begin(), used.end(), 1));
+  // About 32 points per occupied cell, at most 2^22 cells: a ball's search then
+  // visits few rows of cells, and the points of a row are one contiguous run.
+  const double size =
+    std::max(std::sqrt(32.0 * std::max(mesh.TotalArea, 1e-300) / std::max<vtkIdType>(nused, 1)), 1e-9 * mesh.Diagonal);
+  this->Grid.InitializeCubic(mesh.Bounds, vtkMedialUniformGrid::CubicCellSize(mesh.Bounds, size));
+  this->Grid.BuildPoints(points, used);
+  const vtkIdType slots = this->Grid.ItemOffset(this->Grid.GetNumberOfCells());
+  const vtkIdType* order = this->Grid.CellBegin(0);
+  this->PointOf.assign(order, order + slots);
+  this->SlotOf.assign(static_cast<size_t>(count), -1);
+  this->X.resize(static_cast<size_t>(slots));
+  this->Y.resize(static_cast<size_t>(slots));
+  this->Z.resize(static_cast<size_t>(slots));
+  for (vtkIdType s = 0; s < slots; ++s)
+  {
+    const vtkIdType p = this->PointOf[s];
+    this->SlotOf[p] = s;
+    this->X[s] = points[3 * p];
+    this->Y[s] = points[3 * p + 1];
+    this->Z[s] = points[3 * p + 2];
+  }
+  this->Gap.assign(static_cast<size_t>(slots), HUGE_VAL);
+  this->Owner.assign(static_cast<size_t>(slots), -1);
+  const vtkIdType cells = this->Grid.GetNumberOfCells();
+  this->CellMax.assign(static_cast<size_t>(cells), HUGE_VAL);
+  this->CellOfSlot.resize(static_cast<size_t>(slots));
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    std::fill(this->CellOfSlot.begin() + this->Grid.ItemOffset(c), this->CellOfSlot.begin() + this->Grid.ItemOffset(c + 1), c);
+  }
+  this->Pad = 1e-9 * mesh.Diagonal;
+}
+
+vtkMedialCoverage::vtkMedialCoverage(const vtkMedialTriangleMesh& mesh, int threads)
   : Impl(new Internals)
 {
   Internals& m = *this->Impl;
   m.Mesh = &mesh;
+  m.Threads = std::max(1, threads);
   const vtkIdType nv = static_cast<vtkIdType>(mesh.Points.size() / 3);
   const vtkIdType nf = mesh.GetNumberOfTriangles();
   m.NumberOfVertices = nv;
-  m.Points.resize(3 * static_cast<size_t>(nv + nf));
-  std::copy(mesh.Points.begin(), mesh.Points.end(), m.Points.begin());
-  m.Used.assign(static_cast<size_t>(nv + nf), 0);
-  m.FaceStart.assign(static_cast<size_t>(nv + 1), 0);
+  // Vertices referenced by a face, and every centroid; unreferenced vertices never count.
+  std::vector<double> points(3 * static_cast<size_t>(nv + nf));
+  std::copy(mesh.Points.begin(), mesh.Points.end(), points.begin());
+  std::vector<char> used(static_cast<size_t>(nv + nf), 0);
   for (vtkIdType f = 0; f < nf; ++f)
   {
     const vtkIdType* t = mesh.GetTriangle(f);
-    double* c = &m.Points[3 * static_cast<size_t>(nv + f)];
+    double* c = &points[3 * static_cast<size_t>(nv + f)];
     for (int k = 0; k < 3; ++k)
     {
       c[k] = (mesh.GetPoint(t[0])[k] + mesh.GetPoint(t[1])[k] + mesh.GetPoint(t[2])[k]) / 3.0;
-      m.Used[t[k]] = 1;
-      ++m.FaceStart[t[k] + 1];
+      used[t[k]] = 1;
     }
-    m.Used[nv + f] = 1;
+    used[nv + f] = 1;
   }
-  for (vtkIdType v = 0; v < nv; ++v)
-  {
-    m.FaceStart[v + 1] += m.FaceStart[v];
-  }
-  m.FaceList.resize(static_cast<size_t>(m.FaceStart[nv]));
-  std::vector<vtkIdType> fill(m.FaceStart.begin(), m.FaceStart.end() - 1);
-  for (vtkIdType f = 0; f < nf; ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      m.FaceList[fill[mesh.GetTriangle(f)[k]]++] = f;
-    }
-  }
-  // Unreferenced vertices never count: their gap stays at -infinity.
-  m.Gap.assign(m.Used.size(), HUGE_VAL);
-  vtkIdType used = 0;
-  for (size_t i = 0; i < m.Used.size(); ++i)
-  {
-    used += m.Used[i] ? 1 : 0;
-    if (!m.Used[i])
-    {
-      m.Gap[i] = -HUGE_VAL;
-    }
-  }
+  m.BuildFaceLists();
+  m.BuildSlots(points, used);
   m.Stamp.assign(static_cast<size_t>(nf), 0);
-  // About 8 points per occupied cell, at most 2^22 cells.
-  const double size = std::max(
-    std::sqrt(8.0 * std::max(mesh.TotalArea, 1e-300) / std::max<vtkIdType>(used, 1)), 1e-9 * mesh.Diagonal);
-  m.Grid.InitializeCubic(mesh.Bounds, vtkMedialUniformGrid::CubicCellSize(mesh.Bounds, size));
-  m.Grid.BuildPoints(m.Points, m.Used);
 }
 
 vtkMedialCoverage::~vtkMedialCoverage() = default;
@@ -217,14 +309,11 @@ void vtkMedialCoverage::Initialize(const std::vector<vtkMedialSampleRecord>& rec
     const double spacing = std::max(std::sqrt(m.Mesh->TotalArea / n), 1e-9 * m.Mesh->Diagonal);
     seedGrid.InitializeCubic(m.Mesh->Bounds, vtkMedialUniformGrid::CubicCellSize(m.Mesh->Bounds, spacing));
     seedGrid.BuildPoints(seeds, std::vector<char>());
-    const vtkIdType count = static_cast<vtkIdType>(m.Points.size() / 3);
-    for (vtkIdType i = 0; i < count; ++i)
+    const vtkIdType slots = static_cast<vtkIdType>(m.Gap.size());
+#pragma omp parallel for num_threads(m.Threads) schedule(static, 1024)
+    for (vtkIdType s = 0; s < slots; ++s)
     {
-      if (!m.Used[i])
-      {
-        continue;
-      }
-      const double* x = &m.Points[3 * i];
+      const double x[3] = { m.X[s], m.Y[s], m.Z[s] };
       double best = HUGE_VAL;
       int centre[3];
       seedGrid.CellCoordinates(x, centre);
@@ -232,74 +321,178 @@ void vtkMedialCoverage::Initialize(const std::vector<vtkMedialSampleRecord>& rec
       {
         const int lo[3] = { centre[0] - ring, centre[1] - ring, centre[2] - ring };
         const int hi[3] = { centre[0] + ring, centre[1] + ring, centre[2] + ring };
-        seedGrid.ForEachItemInBox(lo, hi, [&](vtkIdType s) { best = std::min(best, Distance(x, &seeds[3 * s])); });
+        seedGrid.ForEachItemInBox(lo, hi, [&](vtkIdType i) { best = std::min(best, Distance(x, &seeds[3 * i])); });
       }
-      m.Gap[i] = std::min(m.Gap[i], best);
+      m.Gap[s] = std::min(m.Gap[s], best);
     }
   }
+  m.UpdateAllCellMax();
   this->MaxGap();
-  for (const vtkMedialSampleRecord& r : records)
-  {
-    if (r.Valid)
-    {
-      this->AddBall(r.Centre, r.Radius, nullptr);
-    }
-  }
+  this->AddBalls(records.data(), static_cast<vtkIdType>(records.size()), 0);
 }
 
-void vtkMedialCoverage::AddBall(const double c[3], double r, std::vector<vtkIdType>* touched)
+void vtkMedialCoverage::FindLowered(const double c[3], double r, std::vector<Lowering>& lowered) const
 {
-  Internals& m = *this->Impl;
-  ++m.CurrentStamp;
-  const double reach = r + std::min(m.Bound, 2.0 * m.Mesh->Diagonal);
-  m.Grid.ForEachItemNear(c, reach, [&](vtkIdType i) {
-    const double g = Distance(&m.Points[3 * i], c) - r;
-    if (g < m.Gap[i])
+  const Internals& m = *this->Impl;
+  lowered.clear();
+  const double reach = r + std::min(m.Bound, 2.0 * m.Mesh->Diagonal) + m.Pad;
+  const double* x = m.X.data();
+  const double* y = m.Y.data();
+  const double* z = m.Z.data();
+  const double* gap = m.Gap.data();
+
+  const double* cellMax = m.CellMax.data();
+  m.Grid.ForEachRowNear(c, reach, [&](int cy, int cz, int x0, int x1, double d2) {
+
+    const vtkIdType row = m.Grid.CellId(0, cy, cz);
+    for (int i = x0; i <= x1; ++i)
     {
-      m.Gap[i] = g;
-      if (touched)
+      // A point is lowered only within r + its gap of c: skip the cells too far for their largest gap.
+      const double top = r + cellMax[row + i] + m.Pad;
+      const double dx = m.Grid.SlabDistance(c[0], i, 0);
+      if (!(top > 0.0) || dx * dx + d2 > top * top)
       {
-        m.ForEachFaceOf(i, [&](vtkIdType f) {
-          if (m.Stamp[f] != m.CurrentStamp)
-          {
-            m.Stamp[f] = m.CurrentStamp;
-            touched->push_back(f);
-          }
-        });
+        continue;
+      }
+      const vtkIdType end = m.Grid.ItemOffset(row + i + 1);
+
+      for (vtkIdType s = m.Grid.ItemOffset(row + i); s < end; ++s)
+      {
+        const double d[3] = { x[s] - c[0], y[s] - c[1], z[s] - c[2] };
+        const double d2 = G::Dot(d, d);
+        // Most points are not lowered: a square test with a margin first, the exact
+        // gap (and its decision) only for the few that may be.
+        const double within = r + gap[s];
+        if (!(within > 0.0) || d2 > within * within * (1.0 + 1e-9))
+        {
+          continue;
+        }
+        const double g = std::sqrt(d2) - r;
+        if (g < gap[s])
+        {
+          lowered.push_back({ s, g });
+        }
       }
     }
   });
+}
+
+void vtkMedialCoverage::Apply(const std::vector<Lowering>& lowered, vtkIdType ball, std::vector<vtkIdType>* touched)
+{
+  Internals& m = *this->Impl;
+  ++m.CurrentStamp;
+  vtkIdType changedCell = -1; // lowerings come in slot order, so mostly cell by cell
+  for (const Lowering& l : lowered)
+  {
+    if (!(l.Gap < m.Gap[l.Slot]))
+    {
+      continue;
+    }
+    m.Gap[l.Slot] = l.Gap;
+    m.Owner[l.Slot] = ball;
+    if (m.CellOfSlot[l.Slot] != changedCell)
+    {
+      if (changedCell >= 0)
+      {
+        m.UpdateCellMax(changedCell);
+      }
+      changedCell = m.CellOfSlot[l.Slot];
+    }
+    if (touched)
+    {
+      m.ForEachFaceOf(m.PointOf[l.Slot], [&](vtkIdType f) {
+        if (m.Stamp[f] != m.CurrentStamp)
+        {
+          m.Stamp[f] = m.CurrentStamp;
+          touched->push_back(f);
+        }
+      });
+    }
+  }
+  if (changedCell >= 0)
+  {
+    m.UpdateCellMax(changedCell);
+  }
+}
+
+void vtkMedialCoverage::AddBalls(const vtkMedialSampleRecord* records, vtkIdType count, vtkIdType firstBall)
+{
+  Internals& m = *this->Impl;
+  // Batches bound the memory of the lowerings waiting to be applied.
+  constexpr vtkIdType Batch = 1024;
+  std::vector<std::vector<Lowering>> lowered(static_cast<size_t>(std::min(Batch, count)));
+  const vtkIdType slots = static_cast<vtkIdType>(m.Gap.size());
+  for (vtkIdType begin = 0; begin < count; begin += Batch)
+  {
+    const vtkIdType n = std::min(Batch, count - begin);
+#pragma omp parallel num_threads(m.Threads)
+    {
+#pragma omp for schedule(dynamic, 4)
+      for (vtkIdType j = 0; j < n; ++j)
+      {
+        const vtkMedialSampleRecord& r = records[begin + j];
+        lowered[j].clear();
+        if (r.Valid)
+        {
+          this->FindLowered(r.Centre, r.Radius, lowered[j]);
+        }
+      }
+      // Each thread applies the lowerings of its own range of slots, in ball order.
+      const int threads = omp_get_num_threads();
+      const int thread = omp_get_thread_num();
+      const vtkIdType lo = slots * thread / threads, hi = slots * (thread + 1) / threads;
+      for (vtkIdType j = 0; j < n; ++j)
+      {
+        for (const Lowering& l : lowered[j])
+        {
+          if (l.Slot >= lo && l.Slot < hi && l.Gap < m.Gap[l.Slot])
+          {
+            m.Gap[l.Slot] = l.Gap;
+            m.Owner[l.Slot] = firstBall + begin + j;
+          }
+        }
+      }
+    }
+  }
+  m.UpdateAllCellMax();
 }
 
 double vtkMedialCoverage::FaceGap(vtkIdType face) const
 {
   const Internals& m = *this->Impl;
   const vtkIdType* t = m.Mesh->GetTriangle(face);
-  return std::max(std::max(m.Gap[t[0]], m.Gap[t[1]]), std::max(m.Gap[t[2]], m.Gap[m.NumberOfVertices + face]));
+  return std::max(std::max(m.GapOf(t[0]), m.GapOf(t[1])), std::max(m.GapOf(t[2]), m.GapOf(m.NumberOfVertices + face)));
 }
 
-void vtkMedialCoverage::WorstPoint(vtkIdType face, double x[3]) const
+vtkIdType vtkMedialCoverage::WorstPoint(vtkIdType face, double x[3]) const
 {
   const Internals& m = *this->Impl;
   const vtkIdType* t = m.Mesh->GetTriangle(face);
-  vtkIdType best = m.NumberOfVertices + face;
+  vtkIdType best = m.SlotOf[m.NumberOfVertices + face];
   for (int k = 0; k < 3; ++k)
   {
-    if (m.Gap[t[k]] > m.Gap[best])
+    const vtkIdType s = m.SlotOf[t[k]];
+    if (m.Gap[s] > m.Gap[best])
     {
-      best = t[k];
+      best = s;
     }
   }
-  std::copy(&m.Points[3 * best], &m.Points[3 * best] + 3, x);
+  x[0] = m.X[best];
+  x[1] = m.Y[best];
+  x[2] = m.Z[best];
+  return m.Owner[best];
 }
 
 double vtkMedialCoverage::MaxGap()
 {
   Internals& m = *this->Impl;
   double worst = -HUGE_VAL;
-  for (double g : m.Gap)
+  const vtkIdType slots = static_cast<vtkIdType>(m.Gap.size());
+  const double* gap = m.Gap.data();
+#pragma omp parallel for num_threads(m.Threads) reduction(max : worst) schedule(static)
+  for (vtkIdType s = 0; s < slots; ++s)
   {
-    worst = std::max(worst, g);
+    worst = std::max(worst, gap[s]);
   }
   m.Bound = std::max(worst, 0.0);
   return worst;
@@ -349,6 +542,10 @@ struct Runner
   vtkMedialIterativeResult& R;
   vtkMedialCoverage Coverage;
   SurfacePointSet Taken;
+  Round Current;
+  vtkIdType Rounds = 0;
+  std::vector<vtkIdType> SolveOrder, Near;
+  std::vector<int> Attempts; // FACE_DISTANCE: per face, own samples that failed to lower it
 
   Runner(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
     const vtkMedialIterativeSettings& s, const std::function<bool(double)>& progress,
@@ -358,17 +555,26 @@ struct Runner
     , S(s)
     , Progress(progress)
     , R(r)
-    , Coverage(mesh)
+    , Coverage(mesh, s.Threads)
   {
   }
 
   vtkIdType Count() const { return static_cast<vtkIdType>(this->R.Records.size()); }
+  vtkIdType RoundSize() const
+  {
+    return this->S.RoundSize > 0 ? this->S.RoundSize : std::max<vtkIdType>(64, this->S.Budget / 64);
+  }
 
-  // Checks coverage, reports progress; true when the run must stop.
+  // Checks coverage, reports progress; true when the run must stop. Without a
+  // coverage stop the maximum (which also tightens the coverage's search bound) is
+  // refreshed every 8th round only: it changes no choice then.
   bool EndOfRound()
   {
-    this->R.MaxGap = this->Coverage.MaxGap();
-    this->R.CoverageReached = this->R.MaxGap <= this->S.CoverageTolerance;
+    if (this->S.CoverageTolerance > 0.0 || this->Rounds++ % 8 == 0)
+    {
+      this->R.MaxGap = this->Coverage.MaxGap();
+      this->R.CoverageReached = this->R.MaxGap <= this->S.CoverageTolerance;
+    }
     if (this->Progress(static_cast<double>(this->Count()) / static_cast<double>(this->S.Budget)))
     {
       this->R.Aborted = true;
@@ -385,13 +591,61 @@ struct Runner
     std::vector<vtkIdType> triangles;
     std::vector<double> points;
     ThrowDarts(this->Mesh, this->S, wanted, triangles, points);
-    SolveRound(this->Query, this->Mesh, this->S, triangles, points, this->R.Records);
+    Round& seeds = this->Current;
+    this->SolveRound(static_cast<vtkIdType>(triangles.size()), false, triangles, [&](vtkIdType j, vtkIdType& t, double p[3], vtkIdType&) {
+      t = triangles[j];
+      std::copy(&points[3 * j], &points[3 * j] + 3, p);
+      return true;
+    });
+    this->R.Records.assign(seeds.Balls.begin(), seeds.Balls.end());
     for (size_t i = 0; i < triangles.size(); ++i)
     {
       this->Taken.Insert(&points[3 * i]);
     }
     this->R.Seeds = this->Count();
     this->Coverage.Initialize(this->R.Records);
+  }
+
+  // Fills this->Current's n slots in parallel, in the order of near[j] (a triangle
+  // near slot j, or -1) in the tree's leaves: prepare(j, triangle, point, hint) sets
+  // slot j's sample and a neighbouring ball's contact triangle as the solver's hint
+  // (false: no sample), then its ball is solved and, when `lowered`, the coverage
+  // points the ball lowers are found (against the gaps before the round).
+  template <class Prepare>
+  void SolveRound(vtkIdType n, bool lowered, const std::vector<vtkIdType>& near, Prepare&& prepare)
+  {
+    Round& round = this->Current;
+    round.Resize(static_cast<size_t>(n));
+    // Solved in the leaf order of a triangle near each slot, for the caches (the
+    // slots are independent: the order changes nothing else).
+    std::vector<vtkIdType>& order = this->SolveOrder;
+    order.resize(static_cast<size_t>(n));
+    std::iota(order.begin(), order.end(), 0);
+    const std::vector<std::int32_t>& rank = this->Query.GetLeafRanks();
+    auto rankOf = [&](vtkIdType j) { return near[j] >= 0 ? rank[near[j]] : INT32_MAX; };
+    std::sort(order.begin(), order.end(),
+      [&](vtkIdType a, vtkIdType b) { return rankOf(a) < rankOf(b) || (rankOf(a) == rankOf(b) && a < b); });
+    // A small round (closest-neighbor's last ones, when few links are left) runs on
+    // the calling thread: waking the team would cost more than it saves.
+#pragma omp parallel for num_threads(this->S.Threads) schedule(dynamic, 4) if (n >= 32)
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const vtkIdType j = order[k];
+      double* p = &round.Points[3 * j];
+      vtkIdType hint = -1;
+      round.Used[j] = prepare(j, round.Triangles[j], p, hint);
+      round.Lowered[j].clear();
+      if (!round.Used[j])
+      {
+        continue;
+      }
+      vtkMedialSampleRecord& ball = round.Balls[j];
+      vtkMedialSolveBall(this->Query, this->Mesh, this->S.Ball, round.Triangles[j], p, ball, hint);
+      if (lowered && ball.Valid)
+      {
+        this->Coverage.FindLowered(ball.Centre, ball.Radius, round.Lowered[j]);
+      }
+    }
   }
 
   void FaceDistance();
@@ -401,6 +655,7 @@ struct Runner
   bool ChainSeeds(std::vector<Segment>& segments);
   void SplitLinks(std::vector<Segment>& segments);
   bool LinkMidpoint(const Segment& link, double shortest, vtkIdType& triangle, double point[3]) const;
+  vtkIdType DrawFacePoint(vtkIdType face, vtkIdType draw, double point[3]) const;
   void CollectLinks(const std::vector<Segment>& segments, vtkIdType initialLinks);
 };
 
@@ -415,12 +670,34 @@ struct FaceEntry
   }
 };
 
+// A random point on the face, drawn toward its least covered point w from the
+// face-sample stream at index `draw`; each failed attempt halves the neighbourhood
+// of w that is sampled. Returns the ball that covers w best (-1 if none).
+vtkIdType Runner::DrawFacePoint(vtkIdType face, vtkIdType draw, double p[3]) const
+{
+  vtkMedialSampleRandom random(this->S.Seed ^ FaceStream, static_cast<std::uint64_t>(draw));
+  const vtkIdType* t = this->Mesh.GetTriangle(face);
+  const double s = std::sqrt(random.Uniform()), u = random.Uniform(),
+               pull = std::ldexp(random.Uniform(), -this->Attempts[face]);
+  const double wa = 1.0 - s, wb = s * (1.0 - u), wc = s * u;
+  double w[3];
+  const vtkIdType owner = this->Coverage.WorstPoint(face, w);
+  for (int k = 0; k < 3; ++k)
+  {
+    const double q =
+      wa * this->Mesh.GetPoint(t[0])[k] + wb * this->Mesh.GetPoint(t[1])[k] + wc * this->Mesh.GetPoint(t[2])[k];
+    p[k] = w[k] + pull * (q - w[k]);
+  }
+  return owner;
+}
+
 void Runner::FaceDistance()
 {
   const vtkIdType nf = this->Mesh.GetNumberOfTriangles();
   const double tol = this->S.CoverageTolerance;
   std::vector<unsigned> version(static_cast<size_t>(nf), 0);
-  std::vector<int> attempts(static_cast<size_t>(nf), 0);
+  std::vector<int>& attempts = this->Attempts;
+  attempts.assign(static_cast<size_t>(nf), 0);
   std::vector<double> key(static_cast<size_t>(nf));
   std::vector<unsigned> round(static_cast<size_t>(nf), 0); // round in which the face was pushed last
   std::priority_queue<FaceEntry> heap;
@@ -441,9 +718,9 @@ void Runner::FaceDistance()
   };
   vtkIdType drawn = 0; // index of the face-sample stream
   unsigned roundIndex = 0;
-  std::vector<vtkIdType> faces, triangles, touched;
-  std::vector<double> points;
-  std::vector<vtkMedialSampleRecord> solved;
+  std::vector<vtkIdType> faces, touched, failed;
+  std::vector<FaceEntry> deferred;
+  std::vector<unsigned> picked(this->Mesh.Points.size() / 3, 0); // per vertex: last round a face of it was picked
   if (this->EndOfRound())
   {
     return;
@@ -452,10 +729,12 @@ void Runner::FaceDistance()
   {
     ++roundIndex;
     faces.clear();
-    triangles.clear();
-    points.clear();
-    const vtkIdType room = std::min<vtkIdType>(this->S.RoundSize, this->S.Budget - this->Count());
-    while (static_cast<vtkIdType>(faces.size()) < room && !heap.empty())
+    const vtkIdType room = std::min<vtkIdType>(this->RoundSize(), this->S.Budget - this->Count());
+    // The worst faces, but no two with a common vertex: one ball covers around its
+    // face, so a neighbour waits for the next round (up to 4 room waiting entries).
+    deferred.clear();
+    while (static_cast<vtkIdType>(faces.size()) < room && !heap.empty() &&
+      static_cast<vtkIdType>(deferred.size()) < 4 * room)
     {
       const FaceEntry e = heap.top();
       heap.pop();
@@ -463,58 +742,65 @@ void Runner::FaceDistance()
       {
         continue; // stale (the face's gap changed since), or given up
       }
+      const vtkIdType* t = this->Mesh.GetTriangle(e.Face);
+      if (picked[t[0]] == roundIndex || picked[t[1]] == roundIndex || picked[t[2]] == roundIndex)
+      {
+        deferred.push_back(e);
+        continue;
+      }
+      picked[t[0]] = picked[t[1]] = picked[t[2]] = roundIndex;
       ++version[e.Face]; // consumed: no other live entry remains
       faces.push_back(e.Face);
-      // A random point on the face, drawn toward its least covered point w.
-      vtkMedialSampleRandom random(this->S.Seed ^ FaceStream, static_cast<std::uint64_t>(drawn++));
-      const vtkIdType* t = this->Mesh.GetTriangle(e.Face);
-      // Each failed attempt halves the neighbourhood of w that is sampled.
-      const double s = std::sqrt(random.Uniform()), u = random.Uniform(),
-                   pull = std::ldexp(random.Uniform(), -attempts[e.Face]);
-      const double wa = 1.0 - s, wb = s * (1.0 - u), wc = s * u;
-      double w[3], p[3];
-      this->Coverage.WorstPoint(e.Face, w);
-      for (int k = 0; k < 3; ++k)
-      {
-        const double q = wa * this->Mesh.GetPoint(t[0])[k] + wb * this->Mesh.GetPoint(t[1])[k] +
-          wc * this->Mesh.GetPoint(t[2])[k];
-        p[k] = w[k] + pull * (q - w[k]);
-      }
-      triangles.push_back(e.Face);
-      points.insert(points.end(), p, p + 3);
     }
-    SolveRound(this->Query, this->Mesh, this->S, triangles, points, solved);
+    for (const FaceEntry& e : deferred)
+    {
+      heap.push(e);
+    }
+    const vtkIdType firstDraw = drawn;
+    drawn += static_cast<vtkIdType>(faces.size());
+    this->SolveRound(static_cast<vtkIdType>(faces.size()), true, faces, [&](vtkIdType j, vtkIdType& t, double p[3], vtkIdType& hint) {
+      t = faces[j];
+      const vtkIdType owner = this->DrawFacePoint(t, firstDraw + j, p);
+      hint = owner >= 0 ? this->R.Records[owner].ContactTriangle : -1;
+      return true;
+    });
+    // In sample order: the balls' lowerings; a face whose own sample leaves its gap
+    // as it was counts a failed attempt.
+    touched.clear();
+    failed.clear();
     for (size_t j = 0; j < faces.size(); ++j)
     {
       const vtkIdType f = faces[j];
-      const double before = key[f];
-      if (this->Taken.Insert(&points[3 * j]))
+      const double before = this->Coverage.FaceGap(f);
+      if (this->Taken.Insert(&this->Current.Points[3 * j]))
       {
-        this->R.Records.push_back(solved[j]);
-        if (solved[j].Valid)
-        {
-          touched.clear();
-          this->Coverage.AddBall(solved[j].Centre, solved[j].Radius, &touched);
-          for (vtkIdType g : touched)
-          {
-            const double now = this->Coverage.FaceGap(g);
-            if (now != key[g])
-            {
-              key[g] = now;
-              round[g] = roundIndex;
-              push(g);
-            }
-          }
-        }
+        this->Coverage.Apply(this->Current.Lowered[j], this->Count(), &touched);
+        this->R.Records.push_back(this->Current.Balls[j]);
       }
-      if (key[f] == before)
+      if (this->Coverage.FaceGap(f) == before)
       {
-        ++attempts[f]; // its own sample did not lower it: try again, up to the cap
-        if (round[f] != roundIndex)
-        {
-          round[f] = roundIndex;
-          push(f);
-        }
+        ++attempts[f]; // try again, up to the cap
+        failed.push_back(f);
+      }
+    }
+    // Each face whose gap changed gets one live entry with its new gap; so does each
+    // consumed face whose own sample failed.
+    for (vtkIdType g : touched)
+    {
+      const double now = this->Coverage.FaceGap(g);
+      if (now != key[g])
+      {
+        key[g] = now;
+        round[g] = roundIndex;
+        push(g);
+      }
+    }
+    for (vtkIdType f : failed)
+    {
+      if (round[f] != roundIndex)
+      {
+        round[f] = roundIndex;
+        push(f);
       }
     }
     if (this->EndOfRound())
@@ -701,43 +987,42 @@ void Runner::SplitLinks(std::vector<Segment>& segments)
     pushIfApart(i);
   }
 
-  std::vector<vtkIdType> popped, triangles;
-  std::vector<double> points;
-  std::vector<vtkMedialSampleRecord> solved;
+  std::vector<vtkIdType> popped;
+  const Round& round = this->Current;
   bool stop = this->EndOfRound();
   while (!stop && this->Count() < this->S.Budget && !heap.empty())
   {
     popped.clear();
-    triangles.clear();
-    points.clear();
-    const vtkIdType room = std::min<vtkIdType>(this->S.RoundSize, this->S.Budget - this->Count());
+    const vtkIdType room = std::min<vtkIdType>(this->RoundSize(), this->S.Budget - this->Count());
     while (static_cast<vtkIdType>(popped.size()) < room && !heap.empty())
     {
-      const vtkIdType i = heap.top().Index;
+      popped.push_back(heap.top().Index);
       heap.pop();
-      vtkIdType triangle;
-      double point[3];
-      if (this->LinkMidpoint(segments[i], shortest, triangle, point))
-      {
-        popped.push_back(i);
-        triangles.push_back(triangle);
-        points.insert(points.end(), point, point + 3);
-      }
     }
-    SolveRound(this->Query, this->Mesh, this->S, triangles, points, solved);
+    // A link whose midpoint has no surface point stays as it is (its slot stays empty).
+    this->Near.clear();
+    for (vtkIdType i : popped)
+    {
+      this->Near.push_back(rec[segments[i].A].ContactTriangle);
+    }
+    this->SolveRound(static_cast<vtkIdType>(popped.size()), true, this->Near,
+      [&](vtkIdType j, vtkIdType& t, double p[3], vtkIdType& hint) {
+        hint = rec[segments[popped[j]].A].ContactTriangle;
+        return this->LinkMidpoint(segments[popped[j]], shortest, t, p);
+      });
     for (size_t j = 0; j < popped.size(); ++j)
     {
-      if (!this->Taken.Insert(&points[3 * j]))
+      if (!round.Used[j] || !this->Taken.Insert(&round.Points[3 * j]))
       {
         continue; // projects onto an existing sample: the link stays as it is
       }
       const vtkIdType m = this->Count();
-      rec.push_back(solved[j]);
-      if (!solved[j].Valid)
+      rec.push_back(round.Balls[j]);
+      if (!round.Balls[j].Valid)
       {
         continue;
       }
-      this->Coverage.AddBall(solved[j].Centre, solved[j].Radius, nullptr);
+      this->Coverage.Apply(round.Lowered[j], m, nullptr);
       const vtkIdType i = popped[j];
       const Segment parent = segments[i];
       const vtkIdType left = static_cast<vtkIdType>(segments.size());

@@ -8,9 +8,13 @@
  * distance to the union of the balls so far (negative inside a ball). A face is
  * covered when g <= CoverageTolerance at its three vertices and its centroid; the
  * face's gap is the largest of those four. vtkMedialCoverage keeps g at every vertex
- * and centroid in a uniform grid, and lowers it ball by ball: a new ball (c, r) can
- * only lower points with |x - c| < r + G, G being an upper bound of every gap, so
- * only the grid cells within that distance are visited. It starts from the first
+ * and centroid, stored cell after cell of a uniform grid, and lowers it ball by
+ * ball: a new ball (c, r) can only lower points with |x - c| < r + G, G being an
+ * upper bound of every gap, so only the rows of cells within that distance are
+ * visited, and of those only the cells that come within r + (their largest gap).
+ * Finding the points a ball lowers is read-only and runs for a round's balls in
+ * parallel; applying them is a minimum, so the gaps do not depend on the order the
+ * balls are added in; they are applied in sample order. It starts from the first
  * balls (the seeds): g(x) <= |x - p| for the surface point p of any ball, so the
  * distance to the nearest seed's surface point is a valid start value and G.
  *
@@ -18,8 +22,10 @@
  * candidates are area-weighted random surface points from the stream
  * (seed ^ constant, k), accepted when no accepted seed lies within
  * rho = sqrt(0.6 A / S) (A the surface area, S = SeedFraction * budget, at most
- * one per triangle), found
- * through a spatial hash of cell size rho. It stops at S seeds or 30 S candidates.
+ * one per triangle), found through a uniform grid of cell size 2 rho. Blocks of
+ * candidates are drawn and tested against the seeds before the block in parallel;
+ * the survivors are tested again in index order, so the seeds are those of a
+ * one-by-one throw. It stops at S seeds or 30 S candidates.
  * The seeds touch every region of the surface, so regions without initial
  * samples (the drawback of both strategies in the report) cannot occur.
  *
@@ -27,11 +33,14 @@
  * new ball lowers a face's gap, the face's version is bumped and a new entry is
  * pushed; popped entries whose version is not current are stale and dropped (lazy
  * deletion), so a face has at most one live entry and is never sampled twice for
- * one entry. Each round pops up to RoundSize live faces, draws on each a random
- * point from the stream (seed ^ constant, sample index), biased toward the face's
- * worst point w (P = w + t (u - w), u uniform on the face, t uniform in
- * [0, 2^-a), a the number of earlier samples of this face that failed to lower it),
- * solves the balls in parallel and inserts them in index order. A face whose own
+ * one entry. Each round pops up to RoundSize live faces, the worst first, but no
+ * two with a common vertex (a ball covers around its face: a neighbour's entry is
+ * put back for a later round; at most 4 RoundSize entries wait per round). It
+ * draws on each a random point from the stream (seed ^ constant, sample index),
+ * biased toward the face's worst point w (P = w + t (u - w), u uniform on the face,
+ * t uniform in [0, 2^-a), a the number of earlier samples of this face that failed
+ * to lower it), solves the balls in parallel (hinted with the contact triangle of
+ * the ball nearest to w) and inserts them in index order. A face whose own
  * samples fail to lower its gap MaximumFaceAttempts times (e.g. next to a hole, or
  * a vertex no admissible ball can reach) is given up.
  *
@@ -44,11 +53,16 @@
  * Step 2 pushes every link in a max-heap keyed by its length |c_p - c_q|. Step 3
  * pops up to RoundSize links per round; for each, the midpoint of the two surface
  * points is projected to the closest surface point (vtkMedialSurfaceQuery) and its
- * ball is solved (in parallel); in index order the link P-Q becomes P-M and M-Q,
+ * ball is solved (both in parallel; hinted with P's contact triangle); in index
+ * order the link P-Q becomes P-M and M-Q,
  * and each half whose balls still do not overlap is pushed again. A link whose
  * midpoint projects onto an existing sample, or whose ball fails, stays as it is.
  * The output keeps every final link as a line cell, grouped by the step-1 link
  * they refine, in path order from P to Q.
+ *
+ * Rounds: RoundSize samples (by default Budget / 64, at least 64), so that a run
+ * has few parallel sections; within a round the balls are solved in the leaf
+ * order of the tree (cache locality; the order changes no result).
  *
  * Stopping: the budget (NumberOfSamples, seeds included), an empty heap, or
  * coverage (checked after every round when CoverageTolerance > 0). When
@@ -57,8 +71,12 @@
  * samples are not linked); with CoverageTolerance 0 it just stops there.
  *
  * Determinism: every choice (seeds, popped entries, sample indices, insertion order)
- * is made on one thread in a fixed order; only the ball solves of a round run in
- * parallel, each into its own slot. The result does not depend on the thread count.
+ * is made on one thread in a fixed order. What runs in parallel writes only its own
+ * slot: a round's ball solves (with CLOSEST_NEIGHBOR's midpoint projections), the
+ * points each new ball lowers (vtkMedialCoverage::FindLowered, against the gaps
+ * before the round), the seeds' darts, and the coverage's start values and maximum.
+ * The lowerings are then applied in sample order (the seeds' ones by ranges of
+ * points, each range in sample order). The result does not depend on the thread count.
  * No two samples share a surface point: exact duplicates are refused.
  */
 #ifndef vtkMedialIterativeSampling_h
@@ -76,23 +94,44 @@ class vtkMedialSurfaceQuery;
 class vtkMedialTriangleMesh;
 
 /// Gap of the surface (vertices and face centroids) to a growing union of balls.
+/// The points are stored cell after cell of the grid, so that the points of a row of
+/// cells near a ball are one contiguous run. A ball is added in two steps: FindLowered
+/// (const, so any number of balls of a round run in parallel against the same gaps)
+/// and Apply (in sample order). The gaps are minima, so they do not depend on the
+/// order the balls come in.
 class vtkMedialCoverage
 {
 public:
-  explicit vtkMedialCoverage(const vtkMedialTriangleMesh& mesh);
+  /// A point (by storage slot) that a ball lowers, and its gap to that ball.
+  struct Lowering
+  {
+    vtkIdType Slot;
+    double Gap;
+  };
+
+  /// `threads` run Initialize, AddBalls and MaxGap.
+  explicit vtkMedialCoverage(const vtkMedialTriangleMesh& mesh, int threads = 1);
   ~vtkMedialCoverage();
   vtkMedialCoverage(const vtkMedialCoverage&) = delete;
   vtkMedialCoverage& operator=(const vtkMedialCoverage&) = delete;
 
   /// Starts from the valid records (their surface points bound the gaps), then adds their balls.
   void Initialize(const std::vector<vtkMedialSampleRecord>& records);
-  /// Lowers the gaps with ball (c, r); appends the faces whose gap changed to `touched`
-  /// (each face once per call) unless `touched` is null.
-  void AddBall(const double c[3], double r, std::vector<vtkIdType>* touched);
+  /// The valid records' balls (numbered firstBall, firstBall + 1, ...), found in
+  /// parallel and applied in order.
+  void AddBalls(const vtkMedialSampleRecord* records, vtkIdType count, vtkIdType firstBall);
+  /// The points ball (c, r) would lower below their current gaps (replaces `lowered`).
+  /// Thread-safe while no Apply runs.
+  void FindLowered(const double c[3], double r, std::vector<Lowering>& lowered) const;
+  /// Applies FindLowered's result for ball number `ball` (points already lowered
+  /// further are left); appends the faces whose gap changed to `touched` (each face
+  /// once per call) unless null.
+  void Apply(const std::vector<Lowering>& lowered, vtkIdType ball, std::vector<vtkIdType>* touched);
   /// Largest gap of the face's vertices and centroid.
   double FaceGap(vtkIdType face) const;
-  /// The face's point (vertex or centroid) of largest gap.
-  void WorstPoint(vtkIdType face, double x[3]) const;
+  /// The face's point (vertex or centroid) of largest gap; returns the ball that set
+  /// its gap (the nearest one to it), or -1.
+  vtkIdType WorstPoint(vtkIdType face, double x[3]) const;
   /// Largest gap over all faces (recomputed; also refreshes the internal bound).
   double MaxGap();
   /// The face of largest gap (lowest id among ties).
@@ -116,7 +155,7 @@ struct vtkMedialIterativeSettings
   double CoverageTolerance = 0.0; // absolute; 0: run to the budget
   vtkTypeUInt64 Seed = 1;
   int Threads = 1;
-  int RoundSize = 64;           // samples solved per round (fixed: not the thread count)
+  int RoundSize = 0; // samples solved per round; 0: Budget / 64, at least 64 (not the thread count)
   int MaximumFaceAttempts = 8;  // FACE_DISTANCE: failed samples of a face before giving it up
   vtkMedialBallParameters Ball;
 };
