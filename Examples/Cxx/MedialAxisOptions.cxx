@@ -5,6 +5,7 @@
 #include "vtkMedialFileReader.h"
 #include "vtkMedialFileWriter.h"
 #include "vtkMedialScene.h"
+#include "vtkMedialSimplifyFilter.h"
 
 #include "vtkVersion.h"
 
@@ -81,6 +82,8 @@ const char* Usage =
   "  --simplify K      with --medial-mesh: the medial mesh simplified to exactly K balls\n"
   "                    (Q-MAT's quadric error, edge collapses, topology kept); --reconstruct\n"
   "                    then rebuilds its envelope; --stats adds kept_balls, simplify_seconds\n"
+  "  --simplify-method M  quadric (default: Q-MAT's edge collapses) or coverage (the K\n"
+  "                    balls that cover the surface best, Coverage Axis, joined by collapses)\n"
   "  --thickness OUT   3D input: the surface with its wall thickness (point and cell data\n"
   "                    Thickness, MedialRadius, MedialCentre, RayThickness): .vtp .vtk;\n"
   "                    --render then draws the surface coloured by thickness; --stats adds\n"
@@ -197,6 +200,18 @@ int ParseStrategy(const std::string& name)
   Fail("unknown --strategy '" + name + "' (random, closest-neighbor, face-distance)");
 }
 
+int ParseSimplifyMethod(const std::string& name)
+{
+  for (int m = vtkMedialSimplifyFilter::QUADRIC; m <= vtkMedialSimplifyFilter::COVERAGE; ++m)
+  {
+    if (name == vtkMedialSimplifyFilter::GetMethodName(m))
+    {
+      return m;
+    }
+  }
+  Fail("unknown --simplify-method '" + name + "' (quadric, coverage)");
+}
+
 int ParseView(const std::string& name)
 {
   const int view = vtkMedialScene::GetViewDirectionFromName(name.c_str());
@@ -246,6 +261,8 @@ const std::vector<Flag>& Flags()
         o.PruneThreshold = v;
       } },
     { "simplify", nullptr, F::COUNT, 1, 1e9, [](Options& o, auto&, double v) { o.Simplify = static_cast<long long>(v); } },
+    { "simplify-method", nullptr, F::TEXT, 0, 0,
+      [](Options& o, auto& t, double) { o.SimplifyMethod = ParseSimplifyMethod(t); } },
     { "thickness", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Thickness = t; } },
     { "thickness-below", nullptr, F::NUMBER, 0, 1e300,
       [](Options& o, auto&, double v) {
@@ -449,6 +466,10 @@ void CheckOutputs(const Options& o)
   if (o.Simplify > 0 && o.MedialMesh.empty())
   {
     Fail("--simplify K simplifies the medial mesh of a closed surface: give --medial-mesh OUT.ma|.vtp");
+  }
+  if (o.SimplifyMethod >= 0 && o.Simplify <= 0)
+  {
+    Fail("--simplify-method chooses how --simplify K simplifies: give --simplify K");
   }
   if (!o.Thickness.empty())
   {

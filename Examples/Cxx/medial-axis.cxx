@@ -498,6 +498,9 @@ void Program::Simplify()
   vtkNew<vtkMedialSimplifyFilter> simplify;
   simplify->SetInputData(this->Mesh);
   simplify->SetNumberOfBalls(this->Opt.Simplify);
+  simplify->SetMethod(std::max(0, this->Opt.SimplifyMethod));
+  simplify->SetSurfaceData(this->Surface);
+  simplify->SetNumberOfThreads(this->Opt.Threads);
   const Clock::time_point start = Clock::now();
   Run(simplify, this->Out);
   this->Json << ", \"kept_balls\": " << simplify->GetOutput()->GetNumberOfPoints()

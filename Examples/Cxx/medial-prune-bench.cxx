@@ -14,7 +14,7 @@
 //     CLEAN surface (vtkMedialReconstructionError: vertex Hausdorff, the larger of both
 //     directions, and the mean), and its ratio to the clean unpruned reconstruction's.
 //  3. K balls: horse, fandisk and rocker-arm meshed, then simplified to K = 500, 100, 30
-//     vertices (and, K = all, the unsimplified mesh); the envelope's two-sided vertex
+//     vertices by each method (quadric, coverage) (and, K = all, the unsimplified mesh); the envelope's two-sided vertex
 //     Hausdorff to the original (% of the diagonal), and the seconds of sampling + meshing + simplifying (the pipeline from
 //     mesh to K balls) and of simplifying alone.
 //
@@ -309,8 +309,8 @@ void SimplifyTable(int threads, int resolution)
   std::printf("\nsimplification to K balls: envelope (at %d^3) against the original, vertex Hausdorff "
               "(larger direction) and mean, %% of the diagonal; seconds on %d threads\n",
     resolution, threads);
-  std::printf("%-16s %6s %5s %6s %6s %9s %9s %10s %11s\n", "mesh", "V_in", "K", "V_out", "F_out", "hd%",
-    "mean%", "simplify_s", "pipeline_s");
+  std::printf("%-16s %-9s %6s %5s %6s %6s %9s %9s %10s %11s\n", "mesh", "method", "V_in", "K", "V_out", "F_out",
+    "hd%", "mean%", "simplify_s", "pipeline_s");
   for (const char* name : { "horse.ply", "fandisk.obj", "rocker-arm.obj" })
   {
     const std::string path = SharedMesh(name);
@@ -323,24 +323,31 @@ void SimplifyTable(int threads, int resolution)
     double meshSeconds = 0.0;
     vtkSmartPointer<vtkPolyData> mesh = MedialMesh(surface, threads, &meshSeconds);
     const Reconstruction whole = Rebuild(mesh, surface, resolution, threads);
-    std::printf("%-16s %6lld %5s %6lld %6lld %9.3f %9.4f %10s %11.2f\n", name,
+    std::printf("%-16s %-9s %6lld %5s %6lld %6lld %9.3f %9.4f %10s %11.2f\n", name, "-",
       static_cast<long long>(mesh->GetNumberOfPoints()), "all", static_cast<long long>(mesh->GetNumberOfPoints()),
       static_cast<long long>(mesh->GetNumberOfPolys()), 100 * whole.Hausdorff, 100 * whole.Mean, "-", meshSeconds);
     for (vtkIdType k : { 500, 100, 30 })
     {
-      vtkNew<vtkMedialSimplifyFilter> simplify;
-      simplify->SetInputData(mesh);
-      simplify->SetNumberOfBalls(k);
-      const auto start = std::chrono::steady_clock::now();
-      simplify->Update();
-      const double simplifySeconds = Seconds(start);
-      vtkPolyData* out = simplify->GetOutput();
-      const Reconstruction r = Rebuild(out, surface, resolution, threads);
-      std::printf("%-16s %6lld %5lld %6lld %6lld %9.3f %9.4f %10.2f %11.2f\n", name,
-        static_cast<long long>(mesh->GetNumberOfPoints()), static_cast<long long>(k),
-        static_cast<long long>(out->GetNumberOfPoints()), static_cast<long long>(out->GetNumberOfPolys()),
-        100 * r.Hausdorff, 100 * r.Mean, simplifySeconds, meshSeconds + simplifySeconds);
-      std::fflush(stdout);
+      for (int method = vtkMedialSimplifyFilter::QUADRIC; method <= vtkMedialSimplifyFilter::COVERAGE; ++method)
+      {
+        vtkNew<vtkMedialSimplifyFilter> simplify;
+        simplify->SetInputData(mesh);
+        simplify->SetSurfaceData(surface);
+        simplify->SetNumberOfBalls(k);
+        simplify->SetMethod(method);
+        simplify->SetNumberOfThreads(threads);
+        const auto start = std::chrono::steady_clock::now();
+        simplify->Update();
+        const double simplifySeconds = Seconds(start);
+        vtkPolyData* out = simplify->GetOutput();
+        const Reconstruction r = Rebuild(out, surface, resolution, threads);
+        std::printf("%-16s %-9s %6lld %5lld %6lld %6lld %9.3f %9.4f %10.2f %11.2f\n", name,
+          vtkMedialSimplifyFilter::GetMethodName(method), static_cast<long long>(mesh->GetNumberOfPoints()),
+          static_cast<long long>(k), static_cast<long long>(out->GetNumberOfPoints()),
+          static_cast<long long>(out->GetNumberOfPolys()), 100 * r.Hausdorff, 100 * r.Mean, simplifySeconds,
+          meshSeconds + simplifySeconds);
+        std::fflush(stdout);
+      }
     }
   }
 }

@@ -131,6 +131,53 @@ bool vtkMedialQuadricSimplification::Quadric::Minimise(double m[4]) const
   return std::isfinite(m[0] + m[1] + m[2] + m[3]);
 }
 
+void vtkMedialQuadricSimplification::AddConePlanes(
+  const vtkMedialSimplicialComplex& complex, vtkIdType a, vtkIdType b, double area, std::vector<double>& weight)
+{
+  const double length = Distance(complex.Point(a), complex.Point(b));
+  const double k = length > 0.0 ? (complex.Radii[b] - complex.Radii[a]) / length : 2.0;
+  if (!(std::abs(k) < 1.0) || !(area > 0.0))
+  {
+    return; // one ball holds the other: no cone
+  }
+  double u[3], p[3], q[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    u[i] = (complex.Point(b)[i] - complex.Point(a)[i]) / length;
+  }
+  // p, q: a frame perpendicular to the axis.
+  const int axis = std::abs(u[0]) < 0.6 ? 0 : (std::abs(u[1]) < 0.6 ? 1 : 2);
+  double helper[3] = { 0.0, 0.0, 0.0 };
+  helper[axis] = 1.0;
+  p[0] = u[1] * helper[2] - u[2] * helper[1];
+  p[1] = u[2] * helper[0] - u[0] * helper[2];
+  p[2] = u[0] * helper[1] - u[1] * helper[0];
+  const double pn = std::sqrt(vtkMedialEnvelope::Dot3(p, p));
+  for (double& x : p)
+  {
+    x /= pn;
+  }
+  q[0] = u[1] * p[2] - u[2] * p[1];
+  q[1] = u[2] * p[0] - u[0] * p[2];
+  q[2] = u[0] * p[1] - u[1] * p[0];
+  const double s = std::sqrt(1.0 - k * k);
+  for (int j = 0; j < ConePlanes; ++j)
+  {
+    const double angle = 2.0 * Pi * j / ConePlanes;
+    double n[3];
+    for (int i = 0; i < 3; ++i)
+    {
+      n[i] = -k * u[i] + s * (std::cos(angle) * p[i] + std::sin(angle) * q[i]);
+    }
+    const double d = vtkMedialEnvelope::Dot3(n, complex.Point(a)) + complex.Radii[a];
+    for (vtkIdType v : { a, b })
+    {
+      this->Quadrics[v].AddPlane(n, d, area / ConePlanes);
+      weight[v] += area / ConePlanes;
+    }
+  }
+}
+
 void vtkMedialQuadricSimplification::InitialQuadrics(const vtkMedialSimplicialComplex& complex)
 {
   const vtkIdType nv = complex.GetNumberOfVertices();
@@ -144,7 +191,16 @@ void vtkMedialQuadricSimplification::InitialQuadrics(const vtkMedialSimplicialCo
     vtkMedialEnvelope::TangentPlanes planes;
     if (!vtkMedialEnvelope::SlabTangentPlanes(c, r, planes))
     {
-      continue; // degenerate, or the slab is the union of its cones: the cones' planes count
+      // Degenerate, or the slab is the union of its cones (radii that change faster than
+      // the centres, near a sharp edge): its sides' cones carry its area, so that the balls
+      // of such triangles are not left with no planes at all. (N, the sides' cross
+      // product, is set before SlabTangentPlanes gives up.)
+      const double area = 0.5 * std::sqrt(vtkMedialEnvelope::Dot3(planes.N, planes.N));
+      for (int k = 0; k < 3; ++k)
+      {
+        this->AddConePlanes(complex, t[k], t[(k + 1) % 3], area / 3.0, weight);
+      }
+      continue;
     }
     const double area = 0.5 * std::sqrt(vtkMedialEnvelope::Dot3(planes.N, planes.N));
     for (double side : { 1.0, -1.0 })
@@ -162,63 +218,31 @@ void vtkMedialQuadricSimplification::InitialQuadrics(const vtkMedialSimplicialCo
       }
     }
   }
-  // Planes all around the cone of every edge of no triangle.
+  // Planes all around the cone of every edge of no triangle, weighted by its lateral area.
   for (size_t e = 0; e < complex.Edges.size(); ++e)
   {
-    if (!complex.EdgeTriangles[e].empty())
+    if (complex.EdgeTriangles[e].empty())
     {
-      continue;
-    }
-    const vtkIdType a = complex.Edges[e][0], b = complex.Edges[e][1];
-    const double length = Distance(complex.Point(a), complex.Point(b));
-    const double k = length > 0.0 ? (complex.Radii[b] - complex.Radii[a]) / length : 2.0;
-    if (!(std::abs(k) < 1.0))
-    {
-      continue; // one ball holds the other: no cone
-    }
-    double u[3], p[3], q[3];
-    for (int i = 0; i < 3; ++i)
-    {
-      u[i] = (complex.Point(b)[i] - complex.Point(a)[i]) / length;
-    }
-    // p, q: a frame perpendicular to the axis.
-    const int axis = std::abs(u[0]) < 0.6 ? 0 : (std::abs(u[1]) < 0.6 ? 1 : 2);
-    double helper[3] = { 0.0, 0.0, 0.0 };
-    helper[axis] = 1.0;
-    p[0] = u[1] * helper[2] - u[2] * helper[1];
-    p[1] = u[2] * helper[0] - u[0] * helper[2];
-    p[2] = u[0] * helper[1] - u[1] * helper[0];
-    const double pn = std::sqrt(vtkMedialEnvelope::Dot3(p, p));
-    for (double& x : p)
-    {
-      x /= pn;
-    }
-    q[0] = u[1] * p[2] - u[2] * p[1];
-    q[1] = u[2] * p[0] - u[0] * p[2];
-    q[2] = u[0] * p[1] - u[1] * p[0];
-    const double s = std::sqrt(1.0 - k * k);
-    const double area = Pi * (complex.Radii[a] + complex.Radii[b]) * length / ConePlanes;
-    for (int j = 0; j < ConePlanes; ++j)
-    {
-      const double angle = 2.0 * Pi * j / ConePlanes;
-      double n[3];
-      for (int i = 0; i < 3; ++i)
-      {
-        n[i] = -k * u[i] + s * (std::cos(angle) * p[i] + std::sin(angle) * q[i]);
-      }
-      const double d = vtkMedialEnvelope::Dot3(n, complex.Point(a)) + complex.Radii[a];
-      for (vtkIdType v : { a, b })
-      {
-        this->Quadrics[v].AddPlane(n, d, area);
-        weight[v] += area;
-      }
+      const vtkIdType a = complex.Edges[e][0], b = complex.Edges[e][1];
+      const double length = Distance(complex.Point(a), complex.Point(b));
+      this->AddConePlanes(complex, a, b, Pi * (complex.Radii[a] + complex.Radii[b]) * length, weight);
     }
   }
   // A weak pull towards each ball's own position (1e-3 of its planes' weight) keeps
-  // every solve well posed: a cone or a flat sheet leaves directions free.
+  // every solve well posed: a cone or a flat sheet leaves directions free. A ball with
+  // no planes (a few on rocker-arm) gets 1e-3 of the mean weight: a pull of the
+  // diagonal's square would pin it, as if its error were larger than any other.
+  double total = 0.0;
+  vtkIdType weighted = 0;
+  for (double w : weight)
+  {
+    total += w;
+    weighted += w > 0.0;
+  }
+  const double fallback = weighted > 0 ? total / weighted : this->Scale * this->Scale;
   for (vtkIdType v = 0; v < nv; ++v)
   {
-    const double w = 1e-3 * (weight[v] > 0.0 ? weight[v] : this->Scale * this->Scale);
+    const double w = 1e-3 * (weight[v] > 0.0 ? weight[v] : fallback);
     Quadric& q = this->Quadrics[v];
     for (int i = 0; i < 4; ++i)
     {
@@ -235,6 +259,11 @@ double vtkMedialQuadricSimplification::CollapseCost(vtkIdType a, vtkIdType b, do
   q.Add(this->Quadrics[b]);
   const double* ma = this->Balls[a].data();
   const double* mb = this->Balls[b].data();
+  if (!this->Kept.empty())
+  {
+    std::copy(ma, ma + 4, m); // b goes into a, which stays where it is
+    return q.Evaluate(m);
+  }
   const double reach = Distance(ma, mb) + std::max(ma[3], mb[3]);
   if (q.Minimise(m) && m[3] >= 0.0)
   {
@@ -265,6 +294,29 @@ double vtkMedialQuadricSimplification::CollapseCost(vtkIdType a, vtkIdType b, do
     }
   }
   return best;
+}
+
+bool vtkMedialQuadricSimplification::Orient(vtkIdType& a, vtkIdType& b) const
+{
+  if (a > b)
+  {
+    std::swap(a, b);
+  }
+  if (this->Kept.empty())
+  {
+    return true;
+  }
+  if (this->Kept[a] && this->Kept[b])
+  {
+    return false;
+  }
+  // Of two balls that may both go, the one whose removal costs less goes.
+  double unused[4];
+  if (this->Kept[b] || (!this->Kept[a] && this->CollapseCost(b, a, unused) < this->CollapseCost(a, b, unused)))
+  {
+    std::swap(a, b);
+  }
+  return true;
 }
 
 int vtkMedialQuadricSimplification::LinkCondition(vtkIdType a, vtkIdType b) const
@@ -426,6 +478,17 @@ void vtkMedialQuadricSimplification::Extract()
   }
 }
 
+bool vtkMedialQuadricSimplification::RunKeeping(const vtkMedialSimplicialComplex& complex,
+  const std::vector<char>& kept, bool release, const std::function<bool()>& aborted)
+{
+  this->Kept = kept;
+  this->ReleaseKept = release;
+  const vtkIdType target = static_cast<vtkIdType>(std::count(kept.begin(), kept.end(), 1));
+  const bool done = this->Run(complex, target, aborted);
+  this->Kept.clear();
+  return done;
+}
+
 bool vtkMedialQuadricSimplification::Run(
   const vtkMedialSimplicialComplex& complex, vtkIdType target, const std::function<bool()>& aborted)
 {
@@ -465,36 +528,40 @@ bool vtkMedialQuadricSimplification::Run(
 
   std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> heap;
   auto push = [&](vtkIdType a, vtkIdType b) {
-    double m[4];
-    const vtkIdType lo2 = std::min(a, b), hi2 = std::max(a, b);
-    heap.push({ this->CollapseCost(lo2, hi2, m), lo2, hi2, this->Versions[lo2] + this->Versions[hi2] });
+    if (this->Orient(a, b))
+    {
+      double m[4];
+      heap.push({ this->CollapseCost(a, b, m), a, b, this->Versions[a] + this->Versions[b] });
+    }
   };
   for (const auto& e : complex.Edges)
   {
     push(e[0], e[1]);
   }
-  // Collapses refused by the link condition, by ball: tried again when a neighbour changes.
+  // Collapses that would change the Euler characteristic, by ball: tried again when a
+  // neighbour changes.
   std::map<vtkIdType, std::vector<std::array<vtkIdType, 2>>> blocked;
   std::set<std::array<vtkIdType, 2>> waiting; // the pairs in `blocked`, each once
   vtkIdType alive = nv;
   vtkIdType made = 0;
-  bool relaxed = false;
   while (alive > target)
   {
     if (heap.empty())
     {
-      if (relaxed || waiting.empty())
+      // RunKeeping, stuck with balls not kept that cannot go: kept balls may go too.
+      if (!this->ReleaseKept || std::find(this->Kept.begin(), this->Kept.end(), 1) == this->Kept.end())
       {
         break;
       }
-      // Stuck under the link condition: the waiting collapses that keep the Euler
-      // characteristic may go now (a cycle and a cavity of the complex can vanish together).
-      relaxed = true;
-      for (const auto& p : waiting)
+      std::fill(this->Kept.begin(), this->Kept.end(), 0);
+      for (vtkIdType v = 0; v < nv; ++v)
       {
-        if (this->Alive[p[0]] && this->Alive[p[1]])
+        for (vtkIdType x : this->Neighbours[v])
         {
-          push(p[0], p[1]);
+          if (this->Alive[v] && v < x)
+          {
+            push(v, x);
+          }
         }
       }
       waiting.clear();
@@ -508,8 +575,7 @@ bool vtkMedialQuadricSimplification::Run(
     {
       continue;
     }
-    const int verdict = this->LinkCondition(next.A, next.B);
-    if (verdict == CHANGES_EULER || (verdict == KEEPS_EULER && !relaxed))
+    if (this->LinkCondition(next.A, next.B) == CHANGES_EULER)
     {
       // Once per pair: a pair waiting under both balls must not come back twice.
       if (waiting.insert({ next.A, next.B }).second)

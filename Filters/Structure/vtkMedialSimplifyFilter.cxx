@@ -2,9 +2,12 @@
 #include "vtkMedialSimplifyFilter.h"
 #include "vtkMedialArrayNames.h"
 
+#include "vtkMedialCoverageSelection.h"
 #include "vtkMedialPipeline.h"
 #include "vtkMedialQuadricSimplification.h"
+#include "vtkMedialRandom.h"
 #include "vtkMedialSimplicialComplex.h"
+#include "vtkMedialTriangleMesh.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -18,27 +21,46 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
+#include <omp.h>
+
 vtkStandardNewMacro(vtkMedialSimplifyFilter);
+
+namespace
+{
+// COVERAGE: choices made again with the balls no collapse could remove.
+constexpr int CoverageAttempts = 6;
+}
 
 vtkMedialSimplifyFilter::vtkMedialSimplifyFilter()
 {
+  this->SetNumberOfInputPorts(2);
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkMedialArrayNames::Radius);
 }
 
-int vtkMedialSimplifyFilter::FillInputPortInformation(int, vtkInformation* info)
+const char* vtkMedialSimplifyFilter::GetMethodName(int method)
+{
+  return method == COVERAGE ? "coverage" : (method == QUADRIC ? "quadric" : "unknown");
+}
+
+int vtkMedialSimplifyFilter::FillInputPortInformation(int port, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
   return 1;
 }
 
 int vtkMedialSimplifyFilter::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  // Collapses run across pieces: simplify the whole mesh.
-  vtkMedialRequestWholeInput(inputVector, 1);
+  // Collapses run across pieces: simplify the whole mesh (and cover the whole surface).
+  vtkMedialRequestWholeInput(inputVector, 2);
   return 1;
 }
 
@@ -48,6 +70,7 @@ int vtkMedialSimplifyFilter::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   this->NumberOfBlockedCollapses = this->EulerCharacteristic = this->NumberOfComponents = 0;
+  this->CoveredDilation = 0.0;
   const vtkIdType n = input->GetNumberOfPoints();
   if (n == 0)
   {
@@ -74,8 +97,38 @@ int vtkMedialSimplifyFilter::RequestData(
     vtkErrorMacro(<< "Cannot simplify: " << error << ".");
     return 0;
   }
+  const auto aborted = [this]() { return this->GetAbortExecute() != 0; };
   vtkMedialQuadricSimplification simplification;
-  if (!simplification.Run(complex, this->NumberOfBalls, [this]() { return this->GetAbortExecute() != 0; }))
+  if (this->Method == COVERAGE && n > this->NumberOfBalls)
+  {
+    // Balls that no collapse can remove are chosen in the next attempt, so that the
+    // chosen balls stay; the last attempt lets chosen balls go instead.
+    std::vector<char> forced(static_cast<size_t>(n), 0);
+    for (int attempt = 0; attempt < CoverageAttempts; ++attempt)
+    {
+      std::vector<char> kept;
+      if (!this->ChooseByCoverage(complex, vtkPolyData::GetData(inputVector[1], 0), forced, kept))
+      {
+        return this->GetAbortExecute() ? 1 : 0;
+      }
+      this->UpdateProgress(0.5);
+      if (!simplification.RunKeeping(complex, kept, attempt + 1 == CoverageAttempts, aborted))
+      {
+        return 1;
+      }
+      vtkIdType stuck = 0;
+      for (vtkIdType v : simplification.Source)
+      {
+        stuck += !kept[v] && !forced[v];
+        forced[v] = forced[v] || !kept[v];
+      }
+      if (stuck == 0)
+      {
+        break;
+      }
+    }
+  }
+  else if (!simplification.Run(complex, this->NumberOfBalls, aborted))
   {
     return 1;
   }
@@ -128,11 +181,55 @@ int vtkMedialSimplifyFilter::RequestData(
   return 1;
 }
 
+bool vtkMedialSimplifyFilter::ChooseByCoverage(const vtkMedialSimplicialComplex& complex, vtkPolyData* surface,
+  const std::vector<char>& forced, std::vector<char>& kept)
+{
+  if (!surface)
+  {
+    vtkErrorMacro(<< "Cannot simplify by coverage: connect the surface to input 1 (SetSurfaceConnection).");
+    return false;
+  }
+  vtkMedialTriangleMesh mesh;
+  std::string error;
+  const auto aborted = [this]() { return this->GetAbortExecute() != 0; };
+  if (!mesh.Build(surface, error, aborted))
+  {
+    if (!this->GetAbortExecute())
+    {
+      vtkErrorMacro(<< "Cannot simplify by coverage: the surface on input 1: " << error << ".");
+    }
+    return false;
+  }
+  std::vector<double> samples(static_cast<size_t>(3 * this->NumberOfSurfaceSamples));
+  for (vtkIdType i = 0; i < this->NumberOfSurfaceSamples; ++i)
+  {
+    vtkIdType triangle;
+    vtkMedialDrawSurfacePoint(mesh, static_cast<std::uint64_t>(this->RandomSeed), i, triangle, &samples[3 * i]);
+  }
+  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  vtkMedialCoverageSelection selection;
+  selection.Forced = forced;
+  if (!selection.Select(complex.Points, complex.Radii, samples, this->NumberOfBalls, this->Dilation * mesh.Diagonal,
+        threads, aborted))
+  {
+    return false;
+  }
+  this->CoveredDilation = selection.FinalDilation / mesh.Diagonal;
+  kept = std::move(selection.Chosen);
+  return true;
+}
+
 void vtkMedialSimplifyFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfBalls: " << this->NumberOfBalls << "\n";
+  os << indent << "Method: " << GetMethodName(this->Method) << "\n";
+  os << indent << "Dilation: " << this->Dilation << "\n";
+  os << indent << "NumberOfSurfaceSamples: " << this->NumberOfSurfaceSamples << "\n";
+  os << indent << "RandomSeed: " << this->RandomSeed << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "NumberOfBlockedCollapses: " << this->NumberOfBlockedCollapses << "\n";
   os << indent << "EulerCharacteristic: " << this->EulerCharacteristic << "\n";
   os << indent << "NumberOfComponents: " << this->NumberOfComponents << "\n";
+  os << indent << "CoveredDilation: " << this->CoveredDilation << "\n";
 }

@@ -121,6 +121,9 @@ simple_euler = simplified.GetFieldData().GetArray("EulerCharacteristic")
 check(simplified.GetNumberOfPoints() == 40 and simple_euler is not None and simple_euler.GetValue(0) == 0,
       "simplify: %d balls, Euler characteristic %s" % (simplified.GetNumberOfPoints(),
                                                       simple_euler.GetValue(0) if simple_euler else None))
+covered = servermanager.Fetch(MedialSimplify(Input=medial_mesh, Surface=torus, Method="Coverage",  # noqa: F821
+                                             NumberOfBalls=40))
+check(covered.GetNumberOfPoints() == 40, "simplify by coverage: %d balls" % covered.GetNumberOfPoints())
 pruned = servermanager.Fetch(MedialPrune(Input=medial_mesh, Measure="Separation angle"))  # noqa: F821
 check(pruned.GetCellData().GetArray("Significance") is not None and 0 < pruned.GetNumberOfPolys(),
       "prune: %d of %d triangles kept, Significance per cell" % (pruned.GetNumberOfPolys(), meshed.GetNumberOfPolys()))

@@ -11,6 +11,8 @@
 #include "vtkGenericCell.h"
 #include "vtkStaticCellLocator.h"
 #include "vtkMedialDisjointSets.h"
+#include "vtkMedialAxisSampler.h"
+#include "vtkMedialMeshFilter.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkMedialFileReader.h"
 #include "vtkPolyData.h"
@@ -34,6 +36,20 @@ inline vtkSmartPointer<vtkPolyData> MakeSolid(int shape, int genus = 1, int reso
   source->SetResolution(resolution);
   source->Update();
   return source->GetOutput();
+}
+
+/// The medial mesh of a solid from `samples` of the sampler's balls (3000 keep a test
+/// quick; the mesh is the same kind of complex).
+inline vtkSmartPointer<vtkPolyData> MedialMeshOf(vtkPolyData* solid, vtkIdType samples = 3000)
+{
+  vtkNew<vtkMedialAxisSampler> sampler;
+  sampler->SetInputData(solid);
+  sampler->SetNumberOfSamples(samples);
+  vtkNew<vtkMedialMeshFilter> filter;
+  filter->SetInputData(solid);
+  filter->SetBallsConnection(sampler->GetOutputPort());
+  filter->Update();
+  return filter->GetOutput();
 }
 
 /// A shared mesh by name, or null when ../shared is absent.

@@ -4,8 +4,9 @@
 //  - vtkMedialPruneFilter, every measure at its default threshold and at a high one,
 //    keeps the Euler characteristic and the components; thresholding the Significance
 //    of the unpruned output (threshold 0) keeps as many triangles as the filter;
-//  - vtkMedialSimplifyFilter leaves exactly K vertices (K = 200, 60, 25) with the same
-//    Euler characteristic and components, every radius positive, no blocked collapse.
+//  - vtkMedialSimplifyFilter, both methods (QUADRIC, and COVERAGE with the solid as its
+//    surface), leaves exactly K vertices (K = 200, 60, 25) with the same Euler
+//    characteristic and components, every radius positive, no blocked collapse.
 #include "MedialMeshTestUtilities.h"
 
 #include "vtkCellData.h"
@@ -74,7 +75,8 @@ int CheckPruning(const char* name, vtkPolyData* mesh, const MeshTopology& before
   return EXIT_SUCCESS;
 }
 
-int CheckSimplification(const char* name, vtkPolyData* mesh, const MeshTopology& before)
+int CheckSimplification(
+  const char* name, vtkPolyData* mesh, vtkPolyData* surface, int method, const MeshTopology& before)
 {
   for (vtkIdType k : { 200, 60, 25 })
   {
@@ -82,12 +84,15 @@ int CheckSimplification(const char* name, vtkPolyData* mesh, const MeshTopology&
     medialtest::EventLog log;
     log.Watch(simplify);
     simplify->SetInputData(mesh);
+    simplify->SetSurfaceData(surface);
+    simplify->SetMethod(method);
     simplify->SetNumberOfBalls(k);
     simplify->Update();
     vtkPolyData* out = simplify->GetOutput();
     const MeshTopology after = CountTopology(out);
-    std::printf("%-10s simplify K %3lld: V %lld E %lld F %lld chi %lld components %lld\n", name,
-      static_cast<long long>(k), static_cast<long long>(after.Vertices), static_cast<long long>(after.Edges),
+    std::printf("%-10s simplify %-8s K %3lld: V %lld E %lld F %lld chi %lld components %lld\n", name,
+      vtkMedialSimplifyFilter::GetMethodName(method), static_cast<long long>(k),
+      static_cast<long long>(after.Vertices), static_cast<long long>(after.Edges),
       static_cast<long long>(after.Faces), static_cast<long long>(after.Euler()),
       static_cast<long long>(after.Components));
     MEDIAL_CHECK(log.Errors == 0 && log.Warnings == 0, "%s K %lld: %s", name, static_cast<long long>(k),
@@ -128,20 +133,13 @@ int TestMedialPruneSimplifyMesh(int, char*[])
   for (const Case& c : cases)
   {
     vtkSmartPointer<vtkPolyData> solid = medialtest::MakeSolid(c.Shape, c.Genus);
-    // 3000 balls keep the test quick; the mesh is the same kind of complex.
-    vtkNew<vtkMedialAxisSampler> sampler;
-    sampler->SetInputData(solid);
-    sampler->SetNumberOfSamples(3000);
-    vtkNew<vtkMedialMeshFilter> filter;
-    filter->SetInputData(solid);
-    filter->SetBallsConnection(sampler->GetOutputPort());
-    filter->Update();
-    vtkPolyData* mesh = filter->GetOutput();
+    vtkSmartPointer<vtkPolyData> mesh = medialtest::MedialMeshOf(solid);
     const MeshTopology before = CountTopology(mesh);
     MEDIAL_CHECK(before.Euler() == 1 - c.Genus && before.Components == 1, "%s: the medial mesh is not as expected",
       c.Name);
     if (CheckPruning(c.Name, mesh, before) != EXIT_SUCCESS ||
-      CheckSimplification(c.Name, mesh, before) != EXIT_SUCCESS)
+      CheckSimplification(c.Name, mesh, solid, vtkMedialSimplifyFilter::QUADRIC, before) != EXIT_SUCCESS ||
+      CheckSimplification(c.Name, mesh, solid, vtkMedialSimplifyFilter::COVERAGE, before) != EXIT_SUCCESS)
     {
       status = EXIT_FAILURE;
     }
