@@ -23,8 +23,9 @@ using Node = vtkMedialTriangleBVH::Node;
 constexpr int LeafSize = 4;
 constexpr int Bins = 16;
 // Closed-form candidates settle a ball on a face, an edge or a vertex at once;
-// a ball still shrinking after this many steps is settling on the cap's cone.
-constexpr int StepsBeforeBisection = 4;
+// a ball still shrinking after this many steps is settling on the cap's cone, and the
+// lower end of that triangle's blocked radii is bracketed (LowerEndOfBlocking).
+constexpr int StepsBeforeBracketing = 4;
 constexpr std::int32_t SlabMaximumTriangles = 1 << 14;
 // Seed subtrees: this many levels above the leaf, about 2^levels leaves.
 constexpr int SeedLevels = 4;
@@ -933,7 +934,7 @@ private:
     }
     double q[3];
     bool touches;
-    for (int step = 0; step < StepsBeforeBisection; ++step)
+    for (int step = 0; step < StepsBeforeBracketing; ++step)
     {
       if (!this->Blocks(a, b, c, this->Radius, q, touches))
       {
