@@ -19,6 +19,7 @@ namespace
 {
 namespace G = vtkMedialGeometry;
 using Node = vtkMedialTriangleBVH::Node;
+using WideNode = vtkMedialTriangleBVH::WideNode;
 
 constexpr int LeafSize = 4;
 constexpr int Bins = 16;
@@ -27,8 +28,10 @@ constexpr int Bins = 16;
 // lower end of that triangle's blocked radii is bracketed (LowerEndOfBlocking).
 constexpr int StepsBeforeBracketing = 4;
 constexpr std::int32_t SlabMaximumTriangles = 1 << 14;
-// Seed subtrees: this many levels above the leaf, about 2^levels leaves.
-constexpr int SeedLevels = 4;
+// Seed subtrees: this many wide levels above the leaf, about 4^levels leaves.
+constexpr int SeedLevels = 2;
+// A leaf lane holds ~(start * LeafCodeScale + count): starts below 2^28 fit.
+constexpr std::int32_t LeafCodeScale = 8;
 // Build passes over more triangles than this (the top levels) run on every thread.
 constexpr std::int32_t ParallelRange = 1 << 16;
 
@@ -149,6 +152,84 @@ public:
     return h * h < this->ConeSin2 * d2 ? OUTSIDE_CONE : ABOVE;
   }
 
+  /// The tests above on the four lanes of a wide node at once, as bit masks (bit i:
+  /// lane i): Miss (MissesBall), and for the others Keep (ABOVE) or Cap (OUTSIDE_CONE);
+  /// D2 is each lane's CentreDistance2, for ordering.
+  struct Lanes
+  {
+    int Miss, Keep, Cap;
+    alignas(16) float D2[4];
+  };
+  void TestLanes(const WideNode& w, Lanes& out) const
+  {
+#if defined(__SSE2__)
+    const __m128 zero = _mm_setzero_ps();
+    const __m128 margin = _mm_set1_ps(this->Margin);
+    __m128 sq[3], sp[3];
+    __m128 h = margin, m = zero;
+    for (int k = 0; k < 3; ++k)
+    {
+      const __m128 lo = _mm_load_ps(w.Lo[k]);
+      const __m128 hi = _mm_load_ps(w.Hi[k]);
+      const __m128 c = _mm_set1_ps(this->C[k]);
+      const __m128 p = _mm_set1_ps(this->P[k]);
+      const __m128 gc = _mm_max_ps(_mm_max_ps(_mm_sub_ps(lo, c), _mm_sub_ps(c, hi)), zero);
+      sq[k] = _mm_mul_ps(gc, gc);
+      const __m128 gp =
+        _mm_max_ps(_mm_sub_ps(_mm_max_ps(_mm_sub_ps(lo, p), _mm_sub_ps(p, hi)), margin), zero);
+      sp[k] = _mm_mul_ps(gp, gp);
+      const __m128 far = this->N[k] > 0.0f ? hi : lo;
+      h = _mm_add_ps(h, _mm_mul_ps(_mm_set1_ps(this->N[k]), _mm_sub_ps(far, p)));
+      const __m128 mk = _mm_mul_ps(_mm_load_ps(w.Axis[k]), c);
+      m = k == 0 ? mk : _mm_add_ps(m, mk);
+    }
+    // Summed as Distance2 does: (x + z) + y.
+    const __m128 d2 = _mm_add_ps(_mm_add_ps(sq[0], sq[2]), sq[1]);
+    const __m128 dp2 = _mm_mul_ps(_mm_add_ps(_mm_add_ps(sp[0], sp[2]), sp[1]), _mm_set1_ps(1.0f - 1e-5f));
+    _mm_store_ps(out.D2, d2);
+    const __m128 radius = _mm_set1_ps(this->Radius);
+    const __m128 miss = _mm_or_ps(_mm_cmpge_ps(d2, _mm_set1_ps(this->Reach2)),
+      _mm_or_ps(_mm_cmpge_ps(_mm_sub_ps(m, radius), _mm_load_ps(w.SlabHi)),
+        _mm_cmple_ps(_mm_add_ps(m, radius), _mm_load_ps(w.SlabLo))));
+    const int above = _mm_movemask_ps(_mm_cmpgt_ps(h, zero));
+    const int outside =
+      _mm_movemask_ps(_mm_cmplt_ps(_mm_mul_ps(h, h), _mm_mul_ps(_mm_set1_ps(this->ConeSin2), dp2)));
+    out.Miss = _mm_movemask_ps(miss);
+    out.Keep = ~out.Miss & above & ~outside & 0xF;
+    out.Cap = ~out.Miss & above & outside & 0xF;
+#else
+    out.Miss = out.Keep = out.Cap = 0;
+    for (int i = 0; i < 4; ++i)
+    {
+      const Node node = LaneNode(w, i);
+      out.D2[i] = this->CentreDistance2(node);
+      if (this->MissesBall(node, out.D2[i]))
+      {
+        out.Miss |= 1 << i;
+        continue;
+      }
+      const Sides side = this->Side(node.Lo, node.Hi);
+      out.Keep |= side == ABOVE ? 1 << i : 0;
+      out.Cap |= side == OUTSIDE_CONE ? 1 << i : 0;
+    }
+#endif
+  }
+
+  /// Lane i of a wide node as a binary node (bounds only).
+  static Node LaneNode(const WideNode& w, int i)
+  {
+    Node node{};
+    for (int k = 0; k < 3; ++k)
+    {
+      node.Lo[k] = w.Lo[k][i];
+      node.Hi[k] = w.Hi[k][i];
+      node.Axis[k] = w.Axis[k][i];
+    }
+    node.SlabLo = w.SlabLo[i];
+    node.SlabHi = w.SlabHi[i];
+    return node;
+  }
+
 private:
   // Squared distance from x to the box (lo, hi), each axis' gap shrunk by `shrink` (>= 0).
   static float Distance2(const float* lo, const float* hi, const float x[4], float shrink)
@@ -172,7 +253,7 @@ private:
 #endif
   }
 
-  float P[4] = { 0, 0, 0, 0 }, N[4] = { 0, 0, 0, 0 }, C[4] = { 0, 0, 0, 0 };
+  alignas(16) float P[4] = { 0, 0, 0, 0 }, N[4] = { 0, 0, 0, 0 }, C[4] = { 0, 0, 0, 0 };
   float Margin = 0.0f, ConeSin2 = 0.0f, Radius = 0.0f, Reach2 = 0.0f;
 };
 
@@ -453,7 +534,7 @@ bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh, const std::f
     return false;
   }
   this->CopyInLeafOrder(mesh, order);
-  return true;
+  return this->BuildWideNodes();
 }
 
 bool vtkMedialTriangleBVH::BuildNodes(
@@ -577,6 +658,108 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, co
       this->Parent[node.Start] = this->Parent[node.Start + 1] = static_cast<std::int32_t>(i);
     }
   }
+}
+
+bool vtkMedialTriangleBVH::BuildWideNodes()
+{
+  this->WideNodes.clear();
+  this->WideParent.clear();
+  this->LaneOfNode.assign(this->Nodes.size(), -1);
+  if (this->Nodes.empty() || this->TriangleIds.size() >= (size_t(1) << 28))
+  {
+    return false;
+  }
+  auto halfArea = [&](std::int32_t binary) {
+    const Node& node = this->Nodes[binary];
+    const double lo[3] = { node.Lo[0], node.Lo[1], node.Lo[2] };
+    const double hi[3] = { node.Hi[0], node.Hi[1], node.Hi[2] };
+    return HalfArea(lo, hi);
+  };
+  // Depth first, lane 0's subtree next: a subtree's wide nodes are stored together.
+  struct Pending
+  {
+    std::int32_t Binary, Ref; // an inner binary node, and the lane that will hold its wide node
+  };
+  std::vector<Pending> stack{ { 0, -1 } };
+  while (!stack.empty())
+  {
+    const Pending pending = stack.back();
+    stack.pop_back();
+    // The wide node's lanes: the binary root alone for wide node 0, else the node's
+    // children with the largest inner one opened until there are four.
+    std::int32_t lanes[4] = { 0, 0, 0, 0 };
+    int count = 1;
+    if (pending.Ref >= 0)
+    {
+      const Node& node = this->Nodes[pending.Binary];
+      lanes[0] = node.Start;
+      lanes[1] = node.Start + 1;
+      count = 2;
+      while (count < 4)
+      {
+        int open = -1;
+        double largest = -1.0;
+        for (int i = 0; i < count; ++i)
+        {
+          if (this->Nodes[lanes[i]].Count == 0 && halfArea(lanes[i]) > largest)
+          {
+            largest = halfArea(lanes[i]);
+            open = i;
+          }
+        }
+        if (open < 0)
+        {
+          break;
+        }
+        const std::int32_t left = this->Nodes[lanes[open]].Start;
+        std::copy_backward(lanes + open + 1, lanes + count, lanes + count + 1);
+        lanes[open] = left;
+        lanes[open + 1] = left + 1;
+        ++count;
+      }
+    }
+    const std::int32_t index = static_cast<std::int32_t>(this->WideNodes.size());
+    if (pending.Ref >= 0)
+    {
+      this->WideNodes[pending.Ref / 4].Child[pending.Ref % 4] = index;
+    }
+    this->WideParent.push_back(pending.Ref);
+    WideNode wide;
+    for (int i = 0; i < 4; ++i)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        wide.Lo[k][i] = HUGE_VALF; // empty: an inverted box
+        wide.Hi[k][i] = -HUGE_VALF;
+        wide.Axis[k][i] = 0.0f;
+      }
+      wide.SlabLo[i] = wide.SlabHi[i] = 0.0f;
+      wide.Child[i] = 0;
+    }
+    for (int i = 0; i < count; ++i)
+    {
+      const Node& node = this->Nodes[lanes[i]];
+      for (int k = 0; k < 3; ++k)
+      {
+        wide.Lo[k][i] = node.Lo[k];
+        wide.Hi[k][i] = node.Hi[k];
+        wide.Axis[k][i] = node.Axis[k];
+      }
+      wide.SlabLo[i] = node.SlabLo;
+      wide.SlabHi[i] = node.SlabHi;
+      wide.Child[i] = node.Count > 0 ? ~(node.Start * LeafCodeScale + node.Count) : 0;
+      this->LaneOfNode[lanes[i]] = 4 * index + i;
+    }
+    this->WideNodes.push_back(wide);
+    for (int i = count - 1; i >= 0; --i)
+    {
+      if (this->Nodes[lanes[i]].Count == 0)
+      {
+        stack.push_back({ lanes[i], 4 * index + i });
+      }
+    }
+  }
+  return true;
 }
 
 void vtkMedialTriangleBVH::BuildNode(std::vector<Node>& nodes, std::int32_t nodeIndex,
@@ -808,13 +991,13 @@ public:
     {
       if (seedTriangles[i] >= 0)
       {
-        std::int32_t node = this->Tree.LeafNode[this->Tree.LeafRank[seedTriangles[i]]];
-        for (int level = 0; level < SeedLevels && this->Tree.Parent[node] >= 0; ++level)
+        std::int32_t ref = this->Tree.LaneOfNode[this->Tree.LeafNode[this->Tree.LeafRank[seedTriangles[i]]]];
+        for (int level = 0; level < SeedLevels && ref >= 4; ++level)
         {
-          node = this->Tree.Parent[node];
+          ref = this->Tree.WideParent[ref / 4];
         }
-        seeds[i] = node;
-        this->Traverse(node, none);
+        seeds[i] = ref;
+        this->Traverse(ref, none);
       }
     }
     this->Traverse(0, seeds);
@@ -1012,35 +1195,38 @@ private:
     return lo;
   }
 
-  // The node cannot block the current ball (its box lies d2 from the centre, as
-  // FloatNodeTests rounds it). Nodes dropped for the cone only are kept aside for
-  // InscribeInCap.
-  bool Culled(std::int32_t index, float d2) const
+  // The lanes among `within` (bit i: lane i) of wide node `index` that may hold
+  // blockers of the current ball, their distances in `d2`. Lanes dropped for the cone
+  // only are kept aside for InscribeInCap.
+  int OpenLanes(std::int32_t index, float d2[4], int within = 0xF) const
   {
-    const Node& node = this->Tree.Nodes[index];
-    if (this->Fast->MissesBall(node, d2))
+    FloatNodeTests::Lanes lanes;
+    this->Fast->TestLanes(this->Tree.WideNodes[index], lanes);
+    if ((lanes.Cap & within) && this->Inscribe)
     {
-      return true;
+      for (int i = 0; i < 4; ++i)
+      {
+        if (lanes.Cap & within & (1 << i))
+        {
+          this->Work.CapNodes.push_back(4 * index + i); // it may cross the final ball in the cap
+        }
+      }
     }
-    // Only points with n.(q - p) > sin(theta / 2) |q - p| can ever block.
-    const FloatNodeTests::Sides side = this->Fast->Side(node.Lo, node.Hi);
-    if (side == FloatNodeTests::OUTSIDE_CONE && this->Inscribe)
-    {
-      this->Work.CapNodes.push_back(index); // it may cross the final ball in the cap
-    }
-    return side != FloatNodeTests::ABOVE;
+    std::copy_n(lanes.D2, 4, d2);
+    return lanes.Keep & within;
   }
 
-  // Depth first, nearer child first, from `root` without the `skip` subtrees. A child
-  // is tested in full when its parent is opened and pushed with the number of radius
-  // updates so far; when popped after the ball has shrunk, its box and slab are
-  // tested again (its side of the cone does not change with the radius).
+  // Depth first, nearer lane first, from lane `root` without the `skip` lanes. A wide
+  // node's lanes are tested in full when it is opened and pushed with the number of
+  // radius updates so far; when popped after the ball has shrunk, the lane's box and
+  // slab are tested again (its side of the cone does not change with the radius).
   void Traverse(std::int32_t root, const std::int32_t skip[3])
   {
-    const std::vector<Node>& nodes = this->Tree.Nodes;
+    const std::vector<WideNode>& wides = this->Tree.WideNodes;
     std::vector<std::int32_t>& stack = this->Work.Stack;
     std::vector<std::int32_t>& steps = this->Work.StackSteps;
-    if (this->Culled(root, this->Fast->CentreDistance2(nodes[root])))
+    float d2[4];
+    if (!this->OpenLanes(root / 4, d2, 1 << (root % 4)))
     {
       return;
     }
@@ -1048,19 +1234,31 @@ private:
     steps.push_back(this->Result.Steps);
     while (!stack.empty())
     {
-      const std::int32_t index = stack.back();
+      const std::int32_t ref = stack.back();
       const bool shrunk = steps.back() != this->Result.Steps;
       stack.pop_back();
       steps.pop_back();
-      const Node& node = nodes[index];
-      if (index == skip[0] || index == skip[1] || index == skip[2] ||
-        (shrunk && this->Fast->MissesBall(node, this->Fast->CentreDistance2(node))))
+      if (ref == skip[0] || ref == skip[1] || ref == skip[2])
       {
         continue;
       }
-      if (node.Count > 0)
+      const WideNode& holder = wides[ref / 4];
+      const int lane = ref % 4;
+      if (shrunk)
       {
-        for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
+        FloatNodeTests::Lanes lanes;
+        this->Fast->TestLanes(holder, lanes);
+        if (lanes.Miss & (1 << lane))
+        {
+          continue;
+        }
+      }
+      const std::int32_t child = holder.Child[lane];
+      if (child < 0)
+      {
+        const std::int32_t start = ~child / LeafCodeScale;
+        const std::int32_t end = start + ~child % LeafCodeScale;
+        for (std::int32_t slot = start; slot < end; ++slot)
         {
           if (this->Tree.TriangleIds[slot] != this->OwnTriangle && this->ShrinkOn(slot))
           {
@@ -1070,19 +1268,24 @@ private:
         }
         continue;
       }
-      // Push the farther child first.
-      const float dl = this->Fast->CentreDistance2(nodes[node.Start]);
-      const float dr = this->Fast->CentreDistance2(nodes[node.Start + 1]);
-      const std::int32_t nearer = dl <= dr ? node.Start : node.Start + 1;
-      const std::int32_t farther = node.Start + node.Start + 1 - nearer;
-      if (!this->Culled(farther, std::max(dl, dr)))
+      const int keep = this->OpenLanes(child, d2);
+      // Nearest lane on top (ties: the lower lane): push the others first.
+      int order[4], count = 0;
+      for (int i = 0; i < 4; ++i)
       {
-        stack.push_back(farther);
-        steps.push_back(this->Result.Steps);
+        if (keep & (1 << i))
+        {
+          int j = count++;
+          for (; j > 0 && d2[order[j - 1]] > d2[i]; --j)
+          {
+            order[j] = order[j - 1];
+          }
+          order[j] = i;
+        }
       }
-      if (!this->Culled(nearer, std::min(dl, dr)))
+      for (int j = count - 1; j >= 0; --j)
       {
-        stack.push_back(nearer);
+        stack.push_back(4 * child + order[j]);
         steps.push_back(this->Result.Steps);
       }
     }
@@ -1136,22 +1339,31 @@ private:
       stack.push_back(root);
       while (!stack.empty())
       {
-        const Node& node = this->Tree.Nodes[stack.back()];
+        const WideNode& holder = this->Tree.WideNodes[stack.back() / 4];
+        const int lane = stack.back() % 4;
         stack.pop_back();
-        if (MissesBall(node, this->CentreRel, std::sqrt(best2)))
+        if (MissesBall(FloatNodeTests::LaneNode(holder, lane), this->CentreRel, std::sqrt(best2)))
         {
           continue;
         }
-        if (node.Count > 0)
+        const std::int32_t child = holder.Child[lane];
+        if (child < 0)
         {
-          for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
+          const std::int32_t start = ~child / LeafCodeScale;
+          for (std::int32_t slot = start; slot < start + ~child % LeafCodeScale; ++slot)
           {
             test(slot);
           }
           continue;
         }
-        stack.push_back(node.Start + 1);
-        stack.push_back(node.Start);
+        const WideNode& wide = this->Tree.WideNodes[child];
+        for (int i = 3; i >= 0; --i)
+        {
+          if (wide.Lo[0][i] <= wide.Hi[0][i]) // not empty
+          {
+            stack.push_back(4 * child + i);
+          }
+        }
       }
     }
     if (bestSlot >= 0)

@@ -132,6 +132,19 @@ public:
     std::int32_t Count; // leaf: number of triangles; inner: 0
   };
 
+  // Four nodes of the binary tree side by side (structure of arrays), for the tangent
+  // search to test at once: a binary node and its descendants two levels down or so,
+  // collapsed by opening the largest inner one first. Lane bounds are the binary nodes'
+  // own floats. An empty lane has an inverted box and misses every ball.
+  struct alignas(64) WideNode
+  {
+    float Lo[3][4], Hi[3][4];
+    float Axis[3][4];
+    float SlabLo[4], SlabHi[4];
+    // >= 0: the wide node below; < 0: a leaf, ~(start * 8 + count) in leaf order.
+    std::int32_t Child[4];
+  };
+
 private:
   class TangentSearch; // the passes of MaximalTangentBall
 
@@ -144,6 +157,9 @@ private:
     const std::function<bool()>& aborted);
   // Build's second pass: Vertices, Planes, TriangleIds, LeafRank, LeafNode, Parent.
   void CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, const std::vector<std::int32_t>& order);
+  // Build's last pass: WideNodes, WideParent and LaneOfNode from the binary tree.
+  // False when the mesh is too large for the leaf encoding.
+  bool BuildWideNodes();
   // Builds the subtree of triangles order[begin, end) into nodes[node]. With
   // `later`, ranges of at most `grain` triangles are only recorded there, to be
   // built in parallel.
@@ -170,6 +186,11 @@ private:
     double cosMinAngle, bool capOnly, double& reach2, Visit visit) const;
 
   std::vector<Node> Nodes;
+  // The tangent search's tree. A lane is named by its reference, wide node * 4 + lane;
+  // wide node 0 holds the binary root in lane 0 and nothing else.
+  std::vector<WideNode> WideNodes;
+  std::vector<std::int32_t> WideParent; // reference of the lane that holds each wide node
+  std::vector<std::int32_t> LaneOfNode; // reference of each binary node kept as a lane, else -1
   double Origin[3] = { 0, 0, 0 };     // the bounding-box centre: node bounds are relative to it
   double RoundingPad = 0.0;           // absolute padding of the float bounds
   std::vector<double> Vertices;       // 9 per triangle, leaf order
