@@ -35,6 +35,13 @@ inline void Cross(const double a[3], const double b[3], double r[3])
   r[1] = a[2] * b[0] - a[0] * b[2];
   r[2] = a[0] * b[1] - a[1] * b[0];
 }
+/// r = a, three coordinates (inlined where std::copy becomes a memmove call).
+inline void Copy(const double a[3], double r[3])
+{
+  r[0] = a[0];
+  r[1] = a[1];
+  r[2] = a[2];
+}
 inline double Distance2(const double a[3], const double b[3])
 {
   const double d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
@@ -82,7 +89,7 @@ inline double ClosestPointOnTriangle(
   const double d1 = Dot(ab, ap), d2 = Dot(ac, ap);
   if (d1 <= 0.0 && d2 <= 0.0)
   {
-    std::copy(a, a + 3, out);
+    Copy(a, out);
     return Distance2(p, out);
   }
   double bp[3];
@@ -90,7 +97,7 @@ inline double ClosestPointOnTriangle(
   const double d3 = Dot(ab, bp), d4 = Dot(ac, bp);
   if (d3 >= 0.0 && d4 <= d3)
   {
-    std::copy(b, b + 3, out);
+    Copy(b, out);
     return Distance2(p, out);
   }
   const double vc = d1 * d4 - d3 * d2;
@@ -104,7 +111,7 @@ inline double ClosestPointOnTriangle(
   const double d5 = Dot(ab, cp), d6 = Dot(ac, cp);
   if (d6 >= 0.0 && d5 <= d6)
   {
-    std::copy(c, c + 3, out);
+    Copy(c, out);
     return Distance2(p, out);
   }
   const double vb = d5 * d2 - d1 * d6;
@@ -125,7 +132,7 @@ inline double ClosestPointOnTriangle(
   if (!(sum > 0.0)) // degenerate triangle: fall back to its edges
   {
     double best = Distance2(p, a), q[3];
-    std::copy(a, a + 3, out);
+    Copy(a, out);
     const double* v[3] = { a, b, c };
     for (int e = 0; e < 3; ++e)
     {
@@ -141,7 +148,7 @@ inline double ClosestPointOnTriangle(
       if (d < best)
       {
         best = d;
-        std::copy(q, q + 3, out);
+        Copy(q, out);
       }
     }
     return best;
@@ -179,7 +186,7 @@ inline double ClosestPointOnClippedTriangle(const double p[3], const double a[3]
     const int j = (i + 1) % 3;
     if (s[i] <= 0.0)
     {
-      std::copy(v[i], v[i] + 3, poly[n++]);
+      Copy(v[i], poly[n++]);
     }
     if ((s[i] <= 0.0) != (s[j] <= 0.0))
     {
@@ -199,7 +206,7 @@ inline double ClosestPointOnClippedTriangle(const double p[3], const double a[3]
     if (d < best)
     {
       best = d;
-      std::copy(q, q + 3, out);
+      Copy(q, out);
     }
   }
   return best;

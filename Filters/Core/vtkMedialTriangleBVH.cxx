@@ -28,8 +28,6 @@ constexpr int Bins = 16;
 // lower end of that triangle's blocked radii is bracketed (LowerEndOfBlocking).
 constexpr int StepsBeforeBracketing = 4;
 constexpr std::int32_t SlabMaximumTriangles = 1 << 14;
-// Seed subtrees: this many wide levels above the leaf, about 4^levels leaves.
-constexpr int SeedLevels = 2;
 // A leaf lane holds ~(start * LeafCodeScale + count): starts below 2^28 fit.
 constexpr std::int32_t LeafCodeScale = 8;
 // Build passes over more triangles than this (the top levels) run on every thread.
@@ -296,7 +294,7 @@ void TangentCandidates(const double p[3], const double n[3], const double* a, co
       if (f < best)
       {
         best = f;
-        std::copy(x, x + 3, bestPoint);
+        G::Copy(x, bestPoint);
       }
     }
   };
@@ -491,10 +489,16 @@ struct NodeBoxes
 };
 
 // Scratch space reused by every query on a thread: no allocation per sample.
+// A lane waiting in the tangent search, with the number of radius updates when it was pushed.
+struct PendingLane
+{
+  std::int32_t Ref, Steps;
+};
+
 struct Scratch
 {
+  std::vector<PendingLane> Lanes; // the tangent search's stack (sized, not cleared: its top is local)
   std::vector<std::int32_t> Stack;
-  std::vector<std::int32_t> StackSteps; // the tangent search: radius updates when each entry was pushed
   std::vector<std::int32_t> Deferred;
   std::vector<std::int32_t> DeferredSteps; // radius updates when each was last looked at
   std::vector<std::int32_t> CapNodes; // dropped for the cone while reaching into the ball
@@ -504,7 +508,6 @@ Scratch& ThreadScratch()
 {
   thread_local Scratch scratch;
   scratch.Stack.clear();
-  scratch.StackSteps.clear();
   scratch.Deferred.clear();
   scratch.DeferredSteps.clear();
   scratch.CapNodes.clear();
@@ -663,7 +666,6 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, co
 bool vtkMedialTriangleBVH::BuildWideNodes()
 {
   this->WideNodes.clear();
-  this->WideParent.clear();
   this->LaneOfNode.assign(this->Nodes.size(), -1);
   if (this->Nodes.empty() || this->TriangleIds.size() >= (size_t(1) << 28))
   {
@@ -723,7 +725,6 @@ bool vtkMedialTriangleBVH::BuildWideNodes()
     {
       this->WideNodes[pending.Ref / 4].Child[pending.Ref % 4] = index;
     }
-    this->WideParent.push_back(pending.Ref);
     WideNode wide;
     for (int i = 0; i < 4; ++i)
     {
@@ -977,30 +978,21 @@ public:
     this->Fast->SetBall(this->CentreRel, this->Radius);
   }
 
-  // First the small subtrees around the far hit and around p: on smooth meshes
-  // the final contacts are usually there, and a ball that is small early culls
-  // most of the rest of the tree. Then the whole tree, without those subtrees.
-  // Then the triangles that only reached into the cap, until the radius settles.
-  // Last, with an allowed protrusion, the cap's surface set aside on the way.
+  // First the leaf of the hinted triangle (a neighbour's contact): on smooth meshes
+  // the final contact is often near, and a ball that is small early culls most of
+  // the rest of the tree. (Larger seed subtrees, or seeds at the far hit and at p,
+  // cost more than they save.) Then the whole tree without that leaf. Then the
+  // triangles that only reached into the cap, until the radius settles. Last, with
+  // an allowed protrusion, the cap's surface set aside on the way.
   void Run()
   {
-    std::int32_t seeds[3] = { -1, -1, -1 };
-    const vtkIdType seedTriangles[3] = { this->Result.HintTriangle, this->Result.ContactTriangle, this->OwnTriangle };
-    const std::int32_t none[3] = { -1, -1, -1 };
-    for (int i = 0; i < 3; ++i)
+    std::int32_t seed = -1;
+    if (this->Result.HintTriangle >= 0)
     {
-      if (seedTriangles[i] >= 0)
-      {
-        std::int32_t ref = this->Tree.LaneOfNode[this->Tree.LeafNode[this->Tree.LeafRank[seedTriangles[i]]]];
-        for (int level = 0; level < SeedLevels && ref >= 4; ++level)
-        {
-          ref = this->Tree.WideParent[ref / 4];
-        }
-        seeds[i] = ref;
-        this->Traverse(ref, none);
-      }
+      seed = this->Tree.LaneOfNode[this->Tree.LeafNode[this->Tree.LeafRank[this->Result.HintTriangle]]];
+      this->Traverse(seed, -1);
     }
-    this->Traverse(0, seeds);
+    this->Traverse(0, seed);
     // A triangle set aside needs another look only if the ball shrank since its last one.
     std::vector<std::int32_t>& lookedAt = this->Work.DeferredSteps;
     for (bool changed = true; changed;)
@@ -1075,7 +1067,7 @@ private:
     G::AddScaled(this->P, this->Radius, this->N, this->Centre);
     G::AddScaled(this->PRel, this->Radius, this->N, this->CentreRel);
     this->Fast->SetBall(this->CentreRel, this->Radius);
-    std::copy(q, q + 3, this->Result.Contact);
+    G::Copy(q, this->Result.Contact);
     this->Result.ContactTriangle = this->Tree.TriangleIds[slot];
     ++this->Result.Steps;
   }
@@ -1180,7 +1172,7 @@ private:
       {
         hi = x;
         gapHi = gap;
-        std::copy(q, q + 3, point);
+        G::Copy(q, point);
         gapLo *= kept == +1 ? 0.5 : 1.0;
         kept = +1;
       }
@@ -1216,29 +1208,30 @@ private:
     return lanes.Keep & within;
   }
 
-  // Depth first, nearer lane first, from lane `root` without the `skip` lanes. A wide
+  // Depth first, nearer lane first, from lane `root` without lane `skip`. A wide
   // node's lanes are tested in full when it is opened and pushed with the number of
   // radius updates so far; when popped after the ball has shrunk, the lane's box and
   // slab are tested again (its side of the cone does not change with the radius).
-  void Traverse(std::int32_t root, const std::int32_t skip[3])
+  void Traverse(std::int32_t root, std::int32_t skip)
   {
     const std::vector<WideNode>& wides = this->Tree.WideNodes;
-    std::vector<std::int32_t>& stack = this->Work.Stack;
-    std::vector<std::int32_t>& steps = this->Work.StackSteps;
+    std::vector<PendingLane>& stack = this->Work.Lanes;
     float d2[4];
     if (!this->OpenLanes(root / 4, d2, 1 << (root % 4)))
     {
       return;
     }
-    stack.push_back(root);
-    steps.push_back(this->Result.Steps);
-    while (!stack.empty())
+    size_t top = 0;
+    if (stack.size() < 64)
     {
-      const std::int32_t ref = stack.back();
-      const bool shrunk = steps.back() != this->Result.Steps;
-      stack.pop_back();
-      steps.pop_back();
-      if (ref == skip[0] || ref == skip[1] || ref == skip[2])
+      stack.resize(64);
+    }
+    stack[top++] = { root, this->Result.Steps };
+    while (top > 0)
+    {
+      const std::int32_t ref = stack[--top].Ref;
+      const bool shrunk = stack[top].Steps != this->Result.Steps;
+      if (ref == skip)
       {
         continue;
       }
@@ -1283,10 +1276,13 @@ private:
           order[j] = i;
         }
       }
+      if (top + 4 > stack.size())
+      {
+        stack.resize(2 * stack.size());
+      }
       for (int j = count - 1; j >= 0; --j)
       {
-        stack.push_back(4 * child + order[j]);
-        steps.push_back(this->Result.Steps);
+        stack[top++] = { 4 * child + order[j], this->Result.Steps };
       }
     }
   }
@@ -1322,7 +1318,7 @@ private:
       if (d2 < best2)
       {
         best2 = d2;
-        std::copy(q, q + 3, best);
+        G::Copy(q, best);
         bestSlot = slot;
       }
     };
@@ -1465,7 +1461,6 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
         if (!visit(d2, q, this->TriangleIds[slot]))
         {
           scratch.Stack.clear();
-  scratch.StackSteps.clear();
           return;
         }
       }
@@ -1489,7 +1484,7 @@ bool vtkMedialTriangleBVH::ClosestPoint(const double x[3], double upperBound,
       if (d2 < best2)
       {
         best2 = d2; // also shrinks the traversal's reach
-        std::copy(q, q + 3, point);
+        G::Copy(q, point);
         triangle = t;
       }
       return true;

@@ -157,7 +157,7 @@ private:
     const std::function<bool()>& aborted);
   // Build's second pass: Vertices, Planes, TriangleIds, LeafRank, LeafNode, Parent.
   void CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, const std::vector<std::int32_t>& order);
-  // Build's last pass: WideNodes, WideParent and LaneOfNode from the binary tree.
+  // Build's last pass: WideNodes and LaneOfNode from the binary tree.
   // False when the mesh is too large for the leaf encoding.
   bool BuildWideNodes();
   // Builds the subtree of triangles order[begin, end) into nodes[node]. With
@@ -189,7 +189,6 @@ private:
   // The tangent search's tree. A lane is named by its reference, wide node * 4 + lane;
   // wide node 0 holds the binary root in lane 0 and nothing else.
   std::vector<WideNode> WideNodes;
-  std::vector<std::int32_t> WideParent; // reference of the lane that holds each wide node
   std::vector<std::int32_t> LaneOfNode; // reference of each binary node kept as a lane, else -1
   double Origin[3] = { 0, 0, 0 };     // the bounding-box centre: node bounds are relative to it
   double RoundingPad = 0.0;           // absolute padding of the float bounds
