@@ -8,7 +8,10 @@
 //  - a noisy sphere (radius 1, Gaussian noise of 0.1% of the diagonal per coordinate):
 //    the sampler's balls reach 0.5 or more from the centre (the noise's branches), the
 //    default scale keeps only balls within 0.1 of it; the clean sphere's within 0.01;
+//  - topology: the medial mesh of the balls kept at the default scale has the solid's
+//    Euler characteristic and one component (rings of genus 1 to 3, the jack);
 //  - bad input: no radius array, a negative or NaN radius: an error, no output.
+#include "MedialMeshTestUtilities.h"
 #include "MedialTestSupport.h"
 
 #include "vtkCellArray.h"
@@ -16,6 +19,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkMath.h"
 #include "vtkMedialAxisSampler.h"
+#include "vtkMedialMeshFilter.h"
 #include "vtkMedialScaleAxisFilter.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkNew.h"
@@ -205,6 +209,39 @@ int NoisySphere()
   return 0;
 }
 
+int Topology()
+{
+  struct Solid
+  {
+    int Shape, Genus, Euler;
+  };
+  for (const Solid& solid : { Solid{ vtkMedialShapeSource::RINGS, 1, 0 }, Solid{ vtkMedialShapeSource::RINGS, 2, -1 },
+         Solid{ vtkMedialShapeSource::RINGS, 3, -2 }, Solid{ vtkMedialShapeSource::JACK, 1, 1 } })
+  {
+    vtkSmartPointer<vtkPolyData> surface = medialtest::MakeSolid(solid.Shape, solid.Genus);
+    vtkNew<vtkMedialAxisSampler> sampler;
+    sampler->SetInputData(surface);
+    sampler->SetNumberOfSamples(3000);
+    vtkNew<vtkMedialScaleAxisFilter> scaleAxis;
+    scaleAxis->SetInputConnection(sampler->GetOutputPort());
+    vtkNew<vtkMedialMeshFilter> mesh;
+    mesh->SetInputData(surface);
+    mesh->SetBallsConnection(scaleAxis->GetOutputPort());
+    mesh->Update();
+    const medialtest::MeshTopology t = medialtest::CountTopology(mesh->GetOutput());
+    const long long euler = static_cast<long long>(t.Vertices - t.Edges + t.Faces);
+    std::printf("shape %d genus %d: %lld of 3000 balls kept, medial mesh V %lld E %lld F %lld, Euler "
+                "characteristic %lld, %lld component(s)\n",
+      solid.Shape, solid.Genus, static_cast<long long>(scaleAxis->GetOutput()->GetNumberOfPoints()),
+      static_cast<long long>(t.Vertices), static_cast<long long>(t.Edges), static_cast<long long>(t.Faces), euler,
+      static_cast<long long>(t.Components));
+    MEDIAL_CHECK(euler == solid.Euler && t.Components == 1,
+      "shape %d genus %d: Euler characteristic %lld, %lld components; the solid has %d and 1", solid.Shape,
+      solid.Genus, euler, static_cast<long long>(t.Components), solid.Euler);
+  }
+  return 0;
+}
+
 int BadInput()
 {
   struct Case
@@ -244,6 +281,7 @@ int TestMedialScaleAxis(int, char*[])
   int failed = ClosedForms();
   failed |= AgainstBruteForce();
   failed |= NoisySphere();
+  failed |= Topology();
   failed |= BadInput();
   return failed ? EXIT_FAILURE : EXIT_SUCCESS;
 }
