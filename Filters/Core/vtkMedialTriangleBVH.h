@@ -22,6 +22,9 @@
  * and a slab [SlabLo, SlabHi] of m.x over its vertices, m the normalised sum of
  * its triangles' area vectors. Triangle vertices are copied in leaf order so a
  * leaf is read contiguously. The tree depends only on the mesh: deterministic.
+ * A last pass collapses the binary tree into a 4-wide one (WideNode: four child
+ * boxes and slabs side by side) that MaximalTangentBall walks, testing four
+ * children at once with SSE2; the other queries walk the binary tree.
  *
  * Every decision is made in double precision on the mesh's own coordinates.
  * Node bounds are stored in single precision relative to the bounding-box
