@@ -682,81 +682,100 @@ bool vtkMedialTriangleBVH::BuildWideNodes()
   {
     std::int32_t Binary, Ref; // an inner binary node, and the lane that will hold its wide node
   };
-  std::vector<Pending> stack{ { 0, -1 } };
-  while (!stack.empty())
+  // Two passes: the first only counts the wide nodes, so that the second allocates
+  // them once (grown by doubling, they would take up to twice the memory).
+  size_t total = 0;
+  for (int pass = 0; pass < 2; ++pass)
   {
-    const Pending pending = stack.back();
-    stack.pop_back();
-    // The wide node's lanes: the binary root alone for wide node 0, else the node's
-    // children with the largest inner one opened until there are four.
-    std::int32_t lanes[4] = { 0, 0, 0, 0 };
-    int count = 1;
-    if (pending.Ref >= 0)
+    this->WideNodes.reserve(total);
+    std::vector<Pending> stack{ { 0, -1 } };
+    while (!stack.empty())
     {
-      const Node& node = this->Nodes[pending.Binary];
-      lanes[0] = node.Start;
-      lanes[1] = node.Start + 1;
-      count = 2;
-      while (count < 4)
+      const Pending pending = stack.back();
+      stack.pop_back();
+      // The wide node's lanes: the binary root alone for wide node 0, else the node's
+      // children with the largest inner one opened until there are four.
+      std::int32_t lanes[4] = { 0, 0, 0, 0 };
+      int count = 1;
+      if (pending.Ref >= 0)
       {
-        int open = -1;
-        double largest = -1.0;
+        const Node& node = this->Nodes[pending.Binary];
+        lanes[0] = node.Start;
+        lanes[1] = node.Start + 1;
+        count = 2;
+        while (count < 4)
+        {
+          int open = -1;
+          double largest = -1.0;
+          for (int i = 0; i < count; ++i)
+          {
+            if (this->Nodes[lanes[i]].Count == 0 && halfArea(lanes[i]) > largest)
+            {
+              largest = halfArea(lanes[i]);
+              open = i;
+            }
+          }
+          if (open < 0)
+          {
+            break;
+          }
+          const std::int32_t left = this->Nodes[lanes[open]].Start;
+          std::copy_backward(lanes + open + 1, lanes + count, lanes + count + 1);
+          lanes[open] = left;
+          lanes[open + 1] = left + 1;
+          ++count;
+        }
+      }
+      if (pass == 0)
+      {
+        ++total;
         for (int i = 0; i < count; ++i)
         {
-          if (this->Nodes[lanes[i]].Count == 0 && halfArea(lanes[i]) > largest)
+          if (this->Nodes[lanes[i]].Count == 0)
           {
-            largest = halfArea(lanes[i]);
-            open = i;
+            stack.push_back({ lanes[i], 0 });
           }
         }
-        if (open < 0)
+        continue;
+      }
+      const std::int32_t index = static_cast<std::int32_t>(this->WideNodes.size());
+      if (pending.Ref >= 0)
+      {
+        this->WideNodes[pending.Ref / 4].Child[pending.Ref % 4] = index;
+      }
+      WideNode wide;
+      for (int i = 0; i < 4; ++i)
+      {
+        for (int k = 0; k < 3; ++k)
         {
-          break;
+          wide.Lo[k][i] = HUGE_VALF; // empty: an inverted box
+          wide.Hi[k][i] = -HUGE_VALF;
+          wide.Axis[k][i] = 0.0f;
         }
-        const std::int32_t left = this->Nodes[lanes[open]].Start;
-        std::copy_backward(lanes + open + 1, lanes + count, lanes + count + 1);
-        lanes[open] = left;
-        lanes[open + 1] = left + 1;
-        ++count;
+        wide.SlabLo[i] = wide.SlabHi[i] = 0.0f;
+        wide.Child[i] = 0;
       }
-    }
-    const std::int32_t index = static_cast<std::int32_t>(this->WideNodes.size());
-    if (pending.Ref >= 0)
-    {
-      this->WideNodes[pending.Ref / 4].Child[pending.Ref % 4] = index;
-    }
-    WideNode wide;
-    for (int i = 0; i < 4; ++i)
-    {
-      for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < count; ++i)
       {
-        wide.Lo[k][i] = HUGE_VALF; // empty: an inverted box
-        wide.Hi[k][i] = -HUGE_VALF;
-        wide.Axis[k][i] = 0.0f;
+        const Node& node = this->Nodes[lanes[i]];
+        for (int k = 0; k < 3; ++k)
+        {
+          wide.Lo[k][i] = node.Lo[k];
+          wide.Hi[k][i] = node.Hi[k];
+          wide.Axis[k][i] = node.Axis[k];
+        }
+        wide.SlabLo[i] = node.SlabLo;
+        wide.SlabHi[i] = node.SlabHi;
+        wide.Child[i] = node.Count > 0 ? ~(node.Start * LeafCodeScale + node.Count) : 0;
+        this->LaneOfNode[lanes[i]] = 4 * index + i;
       }
-      wide.SlabLo[i] = wide.SlabHi[i] = 0.0f;
-      wide.Child[i] = 0;
-    }
-    for (int i = 0; i < count; ++i)
-    {
-      const Node& node = this->Nodes[lanes[i]];
-      for (int k = 0; k < 3; ++k)
+      this->WideNodes.push_back(wide);
+      for (int i = count - 1; i >= 0; --i)
       {
-        wide.Lo[k][i] = node.Lo[k];
-        wide.Hi[k][i] = node.Hi[k];
-        wide.Axis[k][i] = node.Axis[k];
-      }
-      wide.SlabLo[i] = node.SlabLo;
-      wide.SlabHi[i] = node.SlabHi;
-      wide.Child[i] = node.Count > 0 ? ~(node.Start * LeafCodeScale + node.Count) : 0;
-      this->LaneOfNode[lanes[i]] = 4 * index + i;
-    }
-    this->WideNodes.push_back(wide);
-    for (int i = count - 1; i >= 0; --i)
-    {
-      if (this->Nodes[lanes[i]].Count == 0)
-      {
-        stack.push_back({ lanes[i], 4 * index + i });
+        if (this->Nodes[lanes[i]].Count == 0)
+        {
+          stack.push_back({ lanes[i], 4 * index + i });
+        }
       }
     }
   }
