@@ -308,13 +308,8 @@ int vtkMedialMeshFilter::RequestData(
   {
     stages.Begin("Refining the envelope", 0.9, 0.95);
     vtkMedialEnvelopeRefinement refinement;
-    vtkMedialEnvelopeRefinement::Mesh refined;
-    refined.Centres = &set.Centres;
-    refined.Radii = &set.Radii;
-    refined.Vertices = &complex.Vertices;
-    refined.Edges = &complex.Edges;
-    refined.EdgeTriangles = &complex.EdgeTriangles;
-    refined.Triangles = &complex.Triangles;
+    const vtkMedialEnvelopeRefinement::Mesh refined = { &set.Centres, &set.Radii, &complex.Vertices,
+      &complex.Edges, &complex.EdgeTriangles, &complex.Triangles };
     this->RefinementBalls =
       refinement.Refine(refined, query, this->EnvelopeTolerance * mesh.Diagonal, threads, aborted);
     this->EnvelopeProtrusion = refinement.WorstProtrusion / mesh.Diagonal;
