@@ -568,10 +568,10 @@ bool vtkMedialTriangleBVH::BuildNodes(
   // Top levels first, then the subtrees below them in parallel, appended in order.
   const std::int32_t grain = std::max<std::int32_t>(4096, static_cast<std::int32_t>(nt / 64));
   std::vector<Subtree> subtrees;
-  std::vector<Node> top(1);
+  vtkMedialSmallPageBuffer<Node> top(1);
   const std::int32_t all = static_cast<std::int32_t>(nt);
   this->BuildNode(state, top, 0, 0, all, MeasureBounds(state, 0, all), &subtrees, grain);
-  std::vector<std::vector<Node>> parts(subtrees.size());
+  std::vector<vtkMedialSmallPageBuffer<Node>> parts(subtrees.size());
   std::atomic<bool> stop{ false };
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::int64_t i = 0; i < static_cast<std::int64_t>(subtrees.size()); ++i)
@@ -582,8 +582,8 @@ bool vtkMedialTriangleBVH::BuildNodes(
       stop = true;
       continue;
     }
-    // A subtree of n triangles has fewer than 2 n nodes: reserved (address space only,
-    // small pages touched as nodes are added), so that the part never moves.
+    // A subtree of n triangles has fewer than 2 n nodes: reserved (address space only;
+    // small pages, touched as nodes are added), so that the part never moves.
     parts[i].reserve(2 * static_cast<size_t>(subtrees[i].End - subtrees[i].Begin));
     parts[i].resize(1);
     this->BuildNode(state, parts[i], 0, subtrees[i].Begin, subtrees[i].End, subtrees[i].Bounds, nullptr, 0);
@@ -620,7 +620,7 @@ bool vtkMedialTriangleBVH::BuildNodes(
       }
       this->Nodes[global(static_cast<std::int32_t>(j))] = node;
     }
-    std::vector<Node>().swap(parts[i]);
+    vtkMedialSmallPageBuffer<Node>().swap(parts[i]);
   }
 #pragma omp parallel for schedule(static)
   for (vtkIdType i = 0; i < nt; ++i)
@@ -647,7 +647,7 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, co
     const double* normal = mesh.GetNormal(t);
     std::copy_n(normal, 3, &this->Planes[4 * i]);
     this->Planes[4 * i + 3] = G::Dot(normal, mesh.GetPoint(mesh.GetTriangle(t)[0]));
-    this->TriangleIds[i] = t;
+    this->TriangleIds[i] = static_cast<std::int32_t>(t);
     this->LeafRank[t] = static_cast<std::int32_t>(i);
     const vtkIdType* v = mesh.GetTriangle(t);
     for (int k = 0; k < 3; ++k)
@@ -681,7 +681,7 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, co
   }
 }
 
-void vtkMedialTriangleBVH::BuildNode(BuildState& state, std::vector<Node>& nodes, std::int32_t nodeIndex,
+void vtkMedialTriangleBVH::BuildNode(BuildState& state, vtkMedialSmallPageBuffer<Node>& nodes, std::int32_t nodeIndex,
   std::int32_t begin, std::int32_t end, const BuildBounds& bounds, std::vector<Subtree>* later,
   std::int32_t grain) const
 {

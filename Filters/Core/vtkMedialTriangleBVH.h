@@ -157,7 +157,7 @@ private:
   // Builds the subtree of triangles order[begin, end), whose bounds are `bounds`,
   // into nodes[node]. With `later`, ranges of at most `grain` triangles are only
   // recorded there, to be built in parallel.
-  void BuildNode(BuildState& state, std::vector<Node>& nodes, std::int32_t node, std::int32_t begin,
+  void BuildNode(BuildState& state, vtkMedialSmallPageBuffer<Node>& nodes, std::int32_t node, std::int32_t begin,
     std::int32_t end, const BuildBounds& bounds, std::vector<Subtree>* later, std::int32_t grain) const;
   // The node over order[begin, end) with the given bounds: its float box and its slab.
   Node BoundNode(const BuildState& state, std::int32_t begin, std::int32_t end, const BuildBounds& bounds) const;
@@ -182,7 +182,7 @@ private:
   vtkMedialBuffer<double> Vertices;        // 9 per triangle, leaf order
   vtkMedialBuffer<double> Planes;          // 4 per triangle, leaf order: unit normal, offset
   vtkMedialBuffer<float> TriangleBoxes;    // 6 per triangle, leaf order: box like a node's
-  vtkMedialBuffer<vtkIdType> TriangleIds;  // mesh triangle of each leaf-order slot
+  vtkMedialBuffer<std::int32_t> TriangleIds; // mesh triangle of each leaf-order slot
   std::vector<std::int32_t> LeafRank;      // inverse of TriangleIds
   vtkMedialBuffer<std::int32_t> LeafNode;  // leaf node of each leaf-order slot
   vtkMedialBuffer<std::int32_t> Parent;    // parent of each node, -1 for the root
