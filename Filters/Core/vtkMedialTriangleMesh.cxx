@@ -59,9 +59,9 @@ std::string FormatPoint(const double x[3])
 // position) places item i, the items of each key in increasing order. Returns where
 // each key's items start (keys + 1 entries).
 template <class Key, class Emit>
-std::vector<vtkIdType> GroupByKey(vtkIdType n, vtkIdType keys, Key key, Emit emit)
+vtkMedialBuffer<vtkIdType> GroupByKey(vtkIdType n, vtkIdType keys, Key key, Emit emit)
 {
-  std::vector<vtkIdType> offsets(static_cast<size_t>(keys) + 1, 0);
+  vtkMedialBuffer<vtkIdType> offsets(static_cast<size_t>(keys) + 1, 0);
   for (vtkIdType i = 0; i < n; ++i)
   {
     ++offsets[key(i) + 1];
@@ -70,7 +70,7 @@ std::vector<vtkIdType> GroupByKey(vtkIdType n, vtkIdType keys, Key key, Emit emi
   {
     offsets[k + 1] += offsets[k];
   }
-  std::vector<vtkIdType> next(offsets.begin(), offsets.end() - 1);
+  vtkMedialBuffer<vtkIdType> next(offsets.begin(), offsets.end() - 1);
   for (vtkIdType i = 0; i < n; ++i)
   {
     emit(i, next[key(i)]++);
@@ -80,7 +80,7 @@ std::vector<vtkIdType> GroupByKey(vtkIdType n, vtkIdType keys, Key key, Emit emi
 
 // The points as doubles, 3 per point, without a virtual call per point for the usual
 // float and double arrays.
-void ReadPoints(vtkPoints* points, std::vector<double>& out)
+void ReadPoints(vtkPoints* points, vtkMedialBuffer<double>& out)
 {
   const vtkIdType n = points->GetNumberOfPoints();
   out.resize(3 * static_cast<size_t>(n));
@@ -107,7 +107,7 @@ void ReadPoints(vtkPoints* points, std::vector<double>& out)
 // Every cell of `cells` as a triangle, 3 ids each; false (nothing read) when a cell
 // has another size.
 template <class Ids>
-bool ReadTriangleCells(const Ids* offsets, const Ids* connectivity, vtkIdType cells, std::vector<vtkIdType>& out)
+bool ReadTriangleCells(const Ids* offsets, const Ids* connectivity, vtkIdType cells, vtkMedialBuffer<vtkIdType>& out)
 {
   for (vtkIdType c = 0; c <= cells; ++c)
   {
@@ -119,7 +119,7 @@ bool ReadTriangleCells(const Ids* offsets, const Ids* connectivity, vtkIdType ce
   out.assign(connectivity, connectivity + 3 * cells);
   return true;
 }
-bool ReadTriangleCells(vtkCellArray* cells, std::vector<vtkIdType>& out)
+bool ReadTriangleCells(vtkCellArray* cells, vtkMedialBuffer<vtkIdType>& out)
 {
   const vtkIdType n = cells->GetNumberOfCells();
   if (cells->GetNumberOfConnectivityIds() != 3 * n)
@@ -139,7 +139,7 @@ bool ReadTriangleCells(vtkCellArray* cells, std::vector<vtkIdType>& out)
 // among them, as vtkStaticCleanPolyData does with tolerance 0: the kept points keep
 // their order (unused ones too) and the triangles are renumbered. Linear: points
 // are grouped by a hash of their coordinates, then compared within each group.
-void MergeCoincidentPoints(std::vector<double>& points, std::vector<vtkIdType>& triangles)
+void MergeCoincidentPoints(vtkMedialBuffer<double>& points, vtkMedialBuffer<vtkIdType>& triangles)
 {
   const vtkIdType np = static_cast<vtkIdType>(points.size() / 3);
   vtkIdType buckets = 1;
@@ -147,7 +147,7 @@ void MergeCoincidentPoints(std::vector<double>& points, std::vector<vtkIdType>& 
   {
     buckets <<= 1;
   }
-  std::vector<vtkIdType> hash(np);
+  vtkMedialBuffer<vtkIdType> hash(np);
 #pragma omp parallel for schedule(static)
   for (vtkIdType i = 0; i < np; ++i)
   {
@@ -162,10 +162,10 @@ void MergeCoincidentPoints(std::vector<double>& points, std::vector<vtkIdType>& 
     }
     hash[i] = static_cast<vtkIdType>(h & static_cast<std::uint64_t>(buckets - 1));
   }
-  std::vector<vtkIdType> byHash(np);
-  const std::vector<vtkIdType> offsets = GroupByKey(
+  vtkMedialBuffer<vtkIdType> byHash(np);
+  const vtkMedialBuffer<vtkIdType> offsets = GroupByKey(
     np, buckets, [&](vtkIdType i) { return hash[i]; }, [&](vtkIdType i, vtkIdType at) { byHash[at] = i; });
-  std::vector<vtkIdType>& merged = hash; // reused: the point each one merges into
+  vtkMedialBuffer<vtkIdType>& merged = hash; // reused: the point each one merges into
   vtkIdType mergedCount = 0;
 #pragma omp parallel for schedule(dynamic, 4096) reduction(+ : mergedCount)
   for (vtkIdType b = 0; b < buckets; ++b)
@@ -191,7 +191,7 @@ void MergeCoincidentPoints(std::vector<double>& points, std::vector<vtkIdType>& 
   {
     return;
   }
-  std::vector<vtkIdType>& newId = byHash; // reused
+  vtkMedialBuffer<vtkIdType>& newId = byHash; // reused
   vtkIdType kept = 0;
   for (vtkIdType p = 0; p < np; ++p)
   {
@@ -225,11 +225,12 @@ struct vtkMedialTriangleMesh::Adjacency
     vtkIdType Triangle() const { return TriangleAndDirection >> 1; }
     bool Forward() const { return (TriangleAndDirection & 1) != 0; }
   };
-  std::vector<vtkIdType> First;
-  std::vector<EdgeUse> Uses;
-  std::vector<vtkIdType> Neighbour;     // 3 per triangle, across manifold edges
-  std::vector<char> SameDirection;      // 3 per triangle: the neighbour walks the edge the same way
-  std::vector<unsigned char> Degree;    // neighbours of each triangle
+  vtkMedialBuffer<vtkIdType> First;
+  vtkMedialBuffer<EdgeUse> Uses;
+  // Entries k < Degree of each triangle are set, the others never read.
+  vtkMedialBuffer<vtkIdType> Neighbour; // 3 per triangle, across manifold edges
+  vtkMedialBuffer<char> SameDirection;  // 3 per triangle: the neighbour walks the edge the same way
+  vtkMedialBuffer<unsigned char> Degree; // neighbours of each triangle
 
   // Calls visit(begin, end) for the uses [begin, end) of each edge, in (Lo, Hi) order.
   template <class Visit>
@@ -361,7 +362,7 @@ bool vtkMedialTriangleMesh::ValidateInput(vtkPolyData* input, std::string& error
 // read straight from its cell array; others go through vtkTriangleFilter.
 void vtkMedialTriangleMesh::ImportTriangles(vtkPolyData* input)
 {
-  std::vector<vtkIdType> triangles, sourceIds;
+  vtkMedialBuffer<vtkIdType> triangles, sourceIds;
   const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
   const bool direct = input->GetNumberOfStrips() == 0 && ReadTriangleCells(input->GetPolys(), triangles);
   if (!direct)
@@ -435,8 +436,8 @@ void vtkMedialTriangleMesh::DropDuplicateTriangles()
     std::sort(v.begin(), v.end());
     return v;
   };
-  std::vector<vtkIdType> byLowest(nt);
-  const std::vector<vtkIdType> offsets = GroupByKey(
+  vtkMedialBuffer<vtkIdType> byLowest(nt);
+  const vtkMedialBuffer<vtkIdType> offsets = GroupByKey(
     nt, this->GetNumberOfPoints(), [&](vtkIdType t) { return sorted(t)[0]; },
     [&](vtkIdType t, vtkIdType at) { byLowest[at] = t; });
   std::vector<char> duplicate(nt, 0);
@@ -534,8 +535,8 @@ bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::func
   {
     return false;
   }
-  adjacency.Neighbour.assign(3 * nt, -1);
-  adjacency.SameDirection.assign(3 * nt, 0);
+  adjacency.Neighbour.resize(3 * nt);
+  adjacency.SameDirection.resize(3 * nt);
   adjacency.Degree.assign(nt, 0);
   adjacency.ForEachEdge([&](size_t i, size_t j) {
     ++this->Edges;
