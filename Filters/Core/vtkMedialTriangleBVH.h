@@ -118,6 +118,10 @@ public:
   void VisitWithin(const double x[3], double distance, const double samplePoint[3], double cosMinAngle,
     const std::function<void(double, const double*, vtkIdType)>& visit) const;
 
+  /// Mesh triangle t's unit outward normal and offset (n.x = offset on its plane): the
+  /// tree's copy of the mesh's normal, the same bits.
+  const double* GetPlane(vtkIdType t) const { return &this->Planes[4 * static_cast<size_t>(this->LeafRank[t])]; }
+
   /// Position of each mesh triangle in leaf order: nearby triangles get nearby ranks.
   const std::vector<std::int32_t>& GetLeafRanks() const { return this->LeafRank; }
   vtkIdType GetNumberOfNodes() const { return static_cast<vtkIdType>(this->Nodes.size()); }

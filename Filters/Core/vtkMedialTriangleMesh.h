@@ -56,6 +56,10 @@ public:
   const double* GetPoint(vtkIdType i) const { return &this->Points[3 * i]; }
   const vtkIdType* GetTriangle(vtkIdType t) const { return &this->Triangles[3 * t]; }
   const double* GetNormal(vtkIdType t) const { return &this->Normals[3 * t]; }
+  /// Frees the normals (24 bytes a triangle) for a caller that reads them from a built
+  /// vtkMedialSurfaceQuery instead (its tree keeps the same values); GetNormal and the
+  /// Normals array must not be used afterwards.
+  void ReleaseNormals() { vtkMedialBuffer<double>().swap(this->Normals); }
 
   /// V - E + F of the triangulated surface (2 - 2 genus for a closed, connected one).
   vtkIdType GetEulerCharacteristic() const
