@@ -24,6 +24,8 @@
 #include <cstring>
 #include <sstream>
 
+#include <omp.h>
+
 namespace
 {
 namespace G = vtkMedialGeometry;
@@ -57,23 +59,45 @@ std::string FormatPoint(const double x[3])
 
 // Items 0..n-1 grouped by key(i) in [0, keys) with a counting sort, stable: emit(i,
 // position) places item i, the items of each key in increasing order. Returns where
-// each key's items start (keys + 1 entries).
+// each key's items start (keys + 1 entries). Large inputs are cut into a few
+// consecutive chunks counted and placed in parallel; chunk c's items of a key go after
+// those of the chunks before it, so the result is the serial one.
 template <class Key, class Emit>
 vtkMedialBuffer<vtkIdType> GroupByKey(vtkIdType n, vtkIdType keys, Key key, Emit emit)
 {
-  vtkMedialBuffer<vtkIdType> offsets(static_cast<size_t>(keys) + 1, 0);
-  for (vtkIdType i = 0; i < n; ++i)
+  // At most 4 chunks: each keeps a count per key.
+  const int chunks = n >= (1 << 16) ? std::max(1, std::min(4, omp_get_max_threads())) : 1;
+  auto chunkBegin = [&](int c) { return static_cast<vtkIdType>(n * static_cast<double>(c) / chunks); };
+  std::vector<vtkMedialBuffer<vtkIdType>> next(chunks); // per chunk: where its next item of each key goes
+#pragma omp parallel for num_threads(chunks) schedule(static, 1)
+  for (int c = 0; c < chunks; ++c)
   {
-    ++offsets[key(i) + 1];
+    next[c].assign(static_cast<size_t>(keys), 0);
+    for (vtkIdType i = chunkBegin(c); i < chunkBegin(c + 1); ++i)
+    {
+      ++next[c][key(i)];
+    }
   }
+  vtkMedialBuffer<vtkIdType> offsets(static_cast<size_t>(keys) + 1);
+  vtkIdType total = 0;
   for (vtkIdType k = 0; k < keys; ++k)
   {
-    offsets[k + 1] += offsets[k];
+    offsets[k] = total;
+    for (int c = 0; c < chunks; ++c)
+    {
+      const vtkIdType count = next[c][k];
+      next[c][k] = total;
+      total += count;
+    }
   }
-  vtkMedialBuffer<vtkIdType> next(offsets.begin(), offsets.end() - 1);
-  for (vtkIdType i = 0; i < n; ++i)
+  offsets[keys] = total;
+#pragma omp parallel for num_threads(chunks) schedule(static, 1)
+  for (int c = 0; c < chunks; ++c)
   {
-    emit(i, next[key(i)]++);
+    for (vtkIdType i = chunkBegin(c); i < chunkBegin(c + 1); ++i)
+    {
+      emit(i, next[c][key(i)]++);
+    }
   }
   return offsets;
 }
