@@ -238,10 +238,11 @@ struct vtkMedialTriangleMesh::Adjacency
 {
   // The uses of edges (Lo, Hi), Lo < Hi, grouped by Lo: Uses[First[Lo], First[Lo + 1]),
   // sorted by Hi, then by triangle. The uses of one edge are adjacent.
+  // 32-bit fields (Build rejects larger meshes): half the memory to fill and sort.
   struct EdgeUse
   {
-    vtkIdType Hi;
-    vtkIdType TriangleAndDirection; // 2 * triangle, + 1 when the triangle walks Lo -> Hi
+    std::int32_t Hi;
+    std::int32_t TriangleAndDirection; // 2 * triangle, + 1 when the triangle walks Lo -> Hi
     bool operator<(const EdgeUse& o) const
     {
       return Hi != o.Hi ? Hi < o.Hi : TriangleAndDirection < o.TriangleAndDirection;
@@ -252,7 +253,7 @@ struct vtkMedialTriangleMesh::Adjacency
   vtkMedialBuffer<vtkIdType> First;
   vtkMedialBuffer<EdgeUse> Uses;
   // Entries k < Degree of each triangle are set, the others never read.
-  vtkMedialBuffer<vtkIdType> Neighbour; // 3 per triangle, across manifold edges
+  vtkMedialBuffer<std::int32_t> Neighbour; // 3 per triangle, across manifold edges
   vtkMedialBuffer<char> SameDirection;  // 3 per triangle: the neighbour walks the edge the same way
   vtkMedialBuffer<unsigned char> Degree; // neighbours of each triangle
 
@@ -302,6 +303,13 @@ bool vtkMedialTriangleMesh::Build(
   if (this->SourceCellIds.empty())
   {
     error = "input has no non-degenerate triangles";
+    return false;
+  }
+  // The adjacency and the tree number triangles and points in 32 bits.
+  if (this->GetNumberOfPoints() >= (vtkIdType(1) << 31) ||
+    static_cast<vtkIdType>(this->SourceCellIds.size()) >= (vtkIdType(1) << 30))
+  {
+    error = "input has too many triangles (at most 2^30) or points (2^31)";
     return false;
   }
   {
@@ -543,7 +551,8 @@ bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::func
     [&](vtkIdType use, vtkIdType at) {
       vtkIdType a, b;
       ends(use, a, b);
-      uses[at] = { std::max(a, b), 2 * (use / 3) + (a < b ? 1 : 0) };
+      uses[at] = { static_cast<std::int32_t>(std::max(a, b)),
+        static_cast<std::int32_t>(2 * (use / 3) + (a < b ? 1 : 0)) };
     });
   if (aborted && aborted())
   {
@@ -576,9 +585,9 @@ bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::func
       auto& degree = adjacency.Degree;
       if (degree[a] < 3 && degree[b] < 3)
       {
-        adjacency.Neighbour[3 * a + degree[a]] = b;
+        adjacency.Neighbour[3 * a + degree[a]] = static_cast<std::int32_t>(b);
         adjacency.SameDirection[3 * a + degree[a]++] = same;
-        adjacency.Neighbour[3 * b + degree[b]] = a;
+        adjacency.Neighbour[3 * b + degree[b]] = static_cast<std::int32_t>(a);
         adjacency.SameDirection[3 * b + degree[b]++] = same;
       }
     }
