@@ -24,6 +24,7 @@
 #include "vtkMedialJunctionFilter.h"
 #include "vtkMedialMeshFilter.h"
 #include "vtkMedialPruneFilter.h"
+#include "vtkMedialScaleAxisFilter.h"
 #include "vtkMedialSimplifyFilter.h"
 #include "vtkMedialReconstructionError.h"
 #include "vtkMedialScene.h"
@@ -216,6 +217,8 @@ private:
   void ThicknessReport();
   void MedialMeshReport(vtkMedialMeshFilter* filter, double seconds);
   vtkSmartPointer<vtkPolyData> Prune(vtkPolyData* axis);
+  void PruneBalls();
+  double ScaleAxisThreshold() const;
   void Simplify();
   void Rebuild(vtkPolyData* medial, bool envelope);
 
@@ -313,6 +316,7 @@ void Program::SampleOrReadBalls()
   {
     this->ReadBalls();
   }
+  this->PruneBalls();
   if (this->Opt.Stats && this->Surface && !this->Planar)
   {
     this->Protrusion(sampled);
@@ -473,12 +477,53 @@ void Program::MedialMesh()
   }
 }
 
-// --prune: the graph or medial mesh pruned with the default measure (or --prune-threshold).
+// The scale-axis significance 3D pruning keeps: --prune-threshold, or the default
+// scale's 1 - 1/s.
+double Program::ScaleAxisThreshold() const
+{
+  vtkNew<vtkMedialScaleAxisFilter> defaults;
+  return this->Opt.PruneThreshold >= 0.0 ? this->Opt.PruneThreshold : 1.0 - 1.0 / defaults->GetScaleFactor();
+}
+
+// 3D --prune: the scale axis transform of the balls (vtkMedialScaleAxisFilter), before
+// they are written, measured or meshed: balls covered at scale s = 1 / (1 - threshold)
+// go. The noise's branches and the balls tangent to tilted facets are covered at a
+// small scale (see the README's noisy-horse table).
+void Program::PruneBalls()
+{
+  if (!this->Opt.Prune || this->Planar)
+  {
+    return;
+  }
+  vtkNew<vtkMedialScaleAxisFilter> scaleAxis;
+  scaleAxis->SetInputData(this->Balls);
+  scaleAxis->SetScaleFactor(1.0 / std::max(1.0 - this->ScaleAxisThreshold(), 1e-9)); // clamped by the filter
+  scaleAxis->SetNumberOfThreads(this->Opt.Threads);
+  Run(scaleAxis, this->Out);
+  this->Balls = Copy(scaleAxis->GetOutput());
+  this->Json << ", \"pruned_balls\": " << scaleAxis->GetNumberOfRemovedBalls()
+             << ", \"prune_scale\": " << scaleAxis->GetScaleFactor();
+  if (this->Opt.MedialMesh.empty())
+  {
+    this->Json << ", \"kept_balls\": " << this->Balls->GetNumberOfPoints();
+  }
+}
+
+// --prune: the 2D graph pruned with the default measure (tubularity) or --prune-threshold;
+// the medial mesh (of balls PruneBalls kept) with the scale axis measure at the same threshold.
 vtkSmartPointer<vtkPolyData> Program::Prune(vtkPolyData* axis)
 {
   vtkNew<vtkMedialPruneFilter> prune;
   prune->SetInputData(axis);
-  prune->SetThreshold(this->Opt.PruneThreshold);
+  if (this->Planar)
+  {
+    prune->SetThreshold(this->Opt.PruneThreshold);
+  }
+  else
+  {
+    prune->SetMeasureToScaleAxis();
+    prune->SetThreshold(this->ScaleAxisThreshold());
+  }
   Run(prune, this->Out);
   this->Json << ", \"pruned_branches\": " << prune->GetNumberOfPrunedBranches();
   if (this->Opt.Simplify <= 0)

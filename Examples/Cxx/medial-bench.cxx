@@ -5,8 +5,9 @@
 // triangles); without the shared data, a generated demo shape of the same size.
 // Measures, in one run: BVH build time, ray throughput, closest-point and
 // contains-ball throughput on the tree (vtkMedialTriangleBVH),
-// each method with 1 and 2 threads (with mean iterations), each method's ratio to
-// the "limit" (one ray plus one bounded closest-point query per sample), peak RSS,
+// each method with 1 and 2 threads (with mean iterations), each method's ratios to
+// the "limit" (one ray plus one bounded closest-point query per sample) and to the
+// bisection method with the same thread count, peak RSS,
 // and a 327k-triangle sphere as the worst case; then the 3D classification
 // (vtkMedialBallClassifier) of horse.ply's default balls, without and with the exact
 // seams and junctions, at theta = 45 and 0 (--structure runs only these rows); and
@@ -94,6 +95,7 @@ struct Row
   double MicrosecondsPerSample;
   double Iterations;
   double Extra; // speed-up or ratio, depending on the row
+  double ToBisection = 0; // against the bisection row with the same thread count, same run
 };
 
 // horse.ply from the shared meshes, Loop-subdivided `subdivisions` times; without the
@@ -422,6 +424,7 @@ struct BenchFigures
   double DefaultIterations = 0;
   vtkIdType DefaultCapped = 0;
   double DefaultSeconds = 0; // including the preparation
+  double DefaultToBisection = 0, DefaultToLimit = 0; // 2-thread method rows, same run
   double DefaultMicro = 0;
   vtkIdType SphereTriangles = 0;
   double SphereMicro = 0;
@@ -552,15 +555,26 @@ void MeasureMethods(vtkPolyData* mesh, const BenchOptions& options, BenchFigures
 {
   vtkNew<vtkMedialAxisSampler> defaults;
   figures.DefaultMethod = defaults->GetMethod();
+  double bisection[2] = { 0, 0 }; // BISECTION comes first: 1 and 2 threads
   for (int method = vtkMedialAxisSampler::BISECTION; method <= vtkMedialAxisSampler::ONE_PASS; ++method)
   {
     double it1, it2;
     vtkIdType capped1, capped2;
     const double one = RunSampler(mesh, method, 1, options.Samples, it1, capped1);
     const double two = RunSampler(mesh, method, 2, options.Samples, it2, capped2);
+    if (method == vtkMedialAxisSampler::BISECTION)
+    {
+      bisection[0] = one;
+      bisection[1] = two;
+    }
     const std::string name = vtkMedialAxisSampler::GetMethodName(method);
-    figures.Rows.push_back({ name + ", 1 thread", one, it1, 0 });
-    figures.Rows.push_back({ name + ", 2 threads", two, it2, one / two });
+    figures.Rows.push_back({ name + ", 1 thread", one, it1, 0, one / bisection[0] });
+    figures.Rows.push_back({ name + ", 2 threads", two, it2, one / two, two / bisection[1] });
+    if (method == figures.DefaultMethod)
+    {
+      figures.DefaultToBisection = two / bisection[1];
+      figures.DefaultToLimit = two / figures.LimitMicro;
+    }
   }
   figures.DefaultMicro = RunSampler(mesh, figures.DefaultMethod, 2, options.DefaultSamples,
     figures.DefaultIterations, figures.DefaultCapped, &figures.DefaultSeconds);
@@ -592,10 +606,11 @@ void PrintJson(const BenchFigures& f, const BenchOptions& options, const std::ve
   {
     js << ", \"" << r.Name << "\": {\"us_per_sample\": " << r.MicrosecondsPerSample
        << ", \"iterations\": " << r.Iterations << ", \"ratio_to_limit\": " << r.MicrosecondsPerSample / f.LimitMicro
-       << "}";
+       << ", \"ratio_to_bisection\": " << r.ToBisection << "}";
   }
   js << ", \"default_method\": \"" << vtkMedialAxisSampler::GetMethodName(f.DefaultMethod)
-     << "\", \"default_samples\": " << options.DefaultSamples << ", \"default_seconds\": " << f.DefaultSeconds
+     << "\", \"default_to_bisection\": " << f.DefaultToBisection << ", \"default_to_limit\": " << f.DefaultToLimit
+     << ", \"default_samples\": " << options.DefaultSamples << ", \"default_seconds\": " << f.DefaultSeconds
      << ", \"default_us_per_sample\": " << f.DefaultMicro << ", \"sphere_us_per_sample\": " << f.SphereMicro
      << ", \"sphere_to_horse\": " << f.SphereMicro / f.DefaultMicro << ", \"peak_rss_mib\": " << f.PeakRss;
   PrintStructure(structure, structureLabel, true, js);
@@ -615,18 +630,23 @@ void PrintTables(const BenchFigures& f, const BenchOptions& options, const std::
               "| contains ball, no (1.01 r) | %.2f |\n",
     f.Points.Closest, f.Points.Yes, f.Points.No);
   std::printf("\nMethod rows: wall time per sample without the preparation (a 1-sample run is subtracted).\n");
-  std::printf("| query or method | us per sample | mean iterations | ratio to limit | 2-thread speed-up |\n");
-  std::printf("|---|---|---|---|---|\n");
-  std::printf("| ray (2 threads) | %.2f | - | - | - |\n", f.RayMicro);
-  std::printf("| bounded closest point from a medial centre (2 threads, own tree) | %.2f | - | - | - |\n",
+  std::printf("| query or method | us per sample | mean iterations | ratio to limit | ratio to bisection | "
+              "2-thread speed-up |\n");
+  std::printf("|---|---|---|---|---|---|\n");
+  std::printf("| ray (2 threads) | %.2f | - | - | - | - |\n", f.RayMicro);
+  std::printf("| bounded closest point from a medial centre (2 threads, own tree) | %.2f | - | - | - | - |\n",
     f.ClosestMicro);
-  std::printf("| limit: ray + closest point | %.2f | - | 1.00 | - |\n", f.LimitMicro);
+  std::printf("| limit: ray + closest point | %.2f | - | 1.00 | - | - |\n", f.LimitMicro);
   for (const Row& r : f.Rows)
   {
-    std::printf("| %s (%lld samples) | %.2f | %.2f | %.2f | %s |\n", r.Name.c_str(),
+    std::printf("| %s (%lld samples) | %.2f | %.2f | %.2f | %.2f | %s |\n", r.Name.c_str(),
       static_cast<long long>(options.Samples), r.MicrosecondsPerSample, r.Iterations,
-      r.MicrosecondsPerSample / f.LimitMicro, r.Extra > 0 ? std::to_string(r.Extra).substr(0, 4).c_str() : "-");
+      r.MicrosecondsPerSample / f.LimitMicro, r.ToBisection,
+      r.Extra > 0 ? std::to_string(r.Extra).substr(0, 4).c_str() : "-");
   }
+  std::printf("\ndefault method against the others, 2 threads, same run: %.2fx the bisection method, "
+              "%.2fx the ray + closest point limit\n",
+    f.DefaultToBisection, f.DefaultToLimit);
   std::printf("\ndefault method (%s), %lld samples, 2 threads: %.2f s with the preparation (sampling "
               "alone %.2f us per sample, %.2f iterations, %lld capped)\n",
     vtkMedialAxisSampler::GetMethodName(f.DefaultMethod), static_cast<long long>(options.DefaultSamples),

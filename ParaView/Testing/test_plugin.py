@@ -25,7 +25,7 @@ def check(condition, message):
 LoadPlugin(plugin, remote=False, ns=globals())
 check(all(name in globals() for name in (
     "MedialAxisSampler", "MedialJunctionFilter", "MedialBallUnion", "MedialShapeSource",
-    "MedialReconstructionError", "MedialBallProtrusion", "MedialBallClassifier", "MedialThickness", "MedialMesh", "MedialPrune", "MedialSimplify",
+    "MedialReconstructionError", "MedialBallProtrusion", "MedialBallClassifier", "MedialThickness", "MedialMesh", "MedialPrune", "MedialScaleAxis", "MedialSimplify",
     "MedialMeshReader", "MedialOFFReader", "MedialBallPLYReader", "MedialBallCSVReader")),
       "the plugin defines every proxy")
 
@@ -127,6 +127,17 @@ check(covered.GetNumberOfPoints() == 40, "simplify by coverage: %d balls" % cove
 pruned = servermanager.Fetch(MedialPrune(Input=medial_mesh, Measure="Separation angle"))  # noqa: F821
 check(pruned.GetCellData().GetArray("Significance") is not None and 0 < pruned.GetNumberOfPolys(),
       "prune: %d of %d triangles kept, Significance per cell" % (pruned.GetNumberOfPolys(), meshed.GetNumberOfPolys()))
+
+# The scale axis of the torus's balls: fewer balls, each with its Significance, and the
+# medial mesh of the kept balls still has the torus's Euler characteristic 0.
+scaled_balls = MedialScaleAxis(Input=torus_balls, ScaleFactor=1.5)  # noqa: F821
+scaled = servermanager.Fetch(scaled_balls)
+scaled_mesh = servermanager.Fetch(MedialMesh(Input=torus, Balls=scaled_balls))  # noqa: F821
+scaled_euler = scaled_mesh.GetFieldData().GetArray("EulerCharacteristic")
+check(0 < scaled.GetNumberOfPoints() < 3000 and scaled.GetPointData().GetArray("Significance") is not None
+      and scaled_euler is not None and scaled_euler.GetValue(0) == 0,
+      "scale axis: %d of 3000 balls kept, mesh Euler characteristic %s"
+      % (scaled.GetNumberOfPoints(), scaled_euler.GetValue(0) if scaled_euler else None))
 
 # Enumerations take their labels; the values reach the filter.
 sampler.Method = "Bisection"
