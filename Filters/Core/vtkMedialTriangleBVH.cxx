@@ -328,27 +328,21 @@ BuildBounds EmptyBounds()
   return b;
 }
 
-template <class Item>
-void AddItem(BuildBounds& bounds, const Item& item)
+// Widens `bounds` to hold the box [lo, hi] and the centroids' box [cLo, cHi].
+void Widen(BuildBounds& bounds, const double lo[3], const double hi[3], const double cLo[3], const double cHi[3])
 {
   for (int k = 0; k < 3; ++k)
   {
-    bounds.Lo[k] = std::min(bounds.Lo[k], item.Lo[k]);
-    bounds.Hi[k] = std::max(bounds.Hi[k], item.Hi[k]);
-    bounds.CLo[k] = std::min(bounds.CLo[k], item.Centroid[k]);
-    bounds.CHi[k] = std::max(bounds.CHi[k], item.Centroid[k]);
+    bounds.Lo[k] = std::min(bounds.Lo[k], lo[k]);
+    bounds.Hi[k] = std::max(bounds.Hi[k], hi[k]);
+    bounds.CLo[k] = std::min(bounds.CLo[k], cLo[k]);
+    bounds.CHi[k] = std::max(bounds.CHi[k], cHi[k]);
   }
 }
 
 void MergeBounds(BuildBounds& whole, const BuildBounds& part)
 {
-  for (int k = 0; k < 3; ++k)
-  {
-    whole.Lo[k] = std::min(whole.Lo[k], part.Lo[k]);
-    whole.Hi[k] = std::max(whole.Hi[k], part.Hi[k]);
-    whole.CLo[k] = std::min(whole.CLo[k], part.CLo[k]);
-    whole.CHi[k] = std::max(whole.CHi[k], part.CHi[k]);
-  }
+  Widen(whole, part.Lo, part.Hi, part.CLo, part.CHi);
 }
 
 // A bin of the SAH split: the box of its triangles and of their centroids, and their
@@ -717,7 +711,10 @@ vtkMedialTriangleBVH::BuildBounds vtkMedialTriangleBVH::MeasureBounds(
   BuildBounds bounds = EmptyBounds();
   FoldRange(
     begin, end, bounds,
-    [&](BuildBounds& part, std::int32_t i) { AddItem(part, state.Items[i]); },
+    [&](BuildBounds& part, std::int32_t i) {
+      const BuildItem& item = state.Items[i];
+      Widen(part, item.Lo, item.Hi, item.Centroid, item.Centroid);
+    },
     MergeBounds, EmptyBounds());
   return bounds;
 }
@@ -813,7 +810,7 @@ std::int32_t vtkMedialTriangleBVH::SplitNode(BuildState& state, std::int32_t beg
       [&](Binned& part, std::int32_t i) {
         SahBin& bin = part.Bin[binOf(items[i])];
         ++bin.Count;
-        AddItem(bin.Bounds, items[i]);
+        Widen(bin.Bounds, items[i].Lo, items[i].Hi, items[i].Centroid, items[i].Centroid);
       },
       [](Binned& whole, const Binned& part) {
         for (int j = 0; j < Bins; ++j)
