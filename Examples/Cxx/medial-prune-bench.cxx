@@ -13,7 +13,7 @@
 //     the reconstruction (vtkMedialBallUnion MEDIAL_MESH envelope at N^3) against the
 //     CLEAN surface (vtkMedialReconstructionError: vertex Hausdorff, the larger of both
 //     directions, and the mean), and its ratio to the clean unpruned reconstruction's.
-//  3. K balls: horse, fandisk and rocker-arm meshed, then simplified to K = 500, 100, 30
+//  3. K balls: horse, fandisk, rocker-arm and spot (not tuned on) meshed, then simplified to K = 500, 100, 30
 //     vertices by each method (quadric, coverage) (and, K = all, the unsimplified mesh); the envelope's two-sided vertex
 //     Hausdorff to the original (% of the diagonal), and the seconds of sampling + meshing + simplifying (the pipeline from
 //     mesh to K balls) and of simplifying alone.
@@ -336,7 +336,7 @@ void SimplifyTable(int threads, int resolution)
     resolution, threads);
   std::printf("%-16s %-9s %6s %5s %6s %6s %9s %9s %10s %11s\n", "mesh", "method", "V_in", "K", "V_out", "F_out",
     "hd%", "mean%", "simplify_s", "pipeline_s");
-  for (const char* name : { "horse.ply", "fandisk.obj", "rocker-arm.obj" })
+  for (const char* name : { "horse.ply", "fandisk.obj", "rocker-arm.obj", "spot.obj" })
   {
     const std::string path = SharedMesh(name);
     if (path.empty())

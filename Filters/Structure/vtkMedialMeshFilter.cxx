@@ -5,6 +5,7 @@
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialBallClassifier.h"
 #include "vtkMedialDisjointSets.h"
+#include "vtkMedialEnvelopeRefinement.h"
 #include "vtkMedialMeshComplex.h"
 #include "vtkMedialPieces.h"
 #include "vtkMedialPipeline.h"
@@ -115,6 +116,25 @@ vtkSmartPointer<vtkPolyData> AppendExactBalls(vtkPolyData* balls, vtkPolyData* e
   return all;
 }
 
+// NaN (or -1 for integer arrays) in every array at point k.
+void SetMissing(vtkPointData* pd, vtkIdType k)
+{
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pd->GetArray(a);
+    if (!array)
+    {
+      continue;
+    }
+    const double missing =
+      array->GetDataType() == VTK_FLOAT || array->GetDataType() == VTK_DOUBLE ? std::nan("") : -1.0;
+    for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+    {
+      array->InsertComponent(k, c, missing);
+    }
+  }
+}
+
 void AddCount(vtkFieldData* fd, const char* name, vtkIdType value)
 {
   vtkNew<vtkIdTypeArray> a;
@@ -181,6 +201,8 @@ int vtkMedialMeshFilter::RequestData(
   this->HasSolidTopology = false;
   this->SolidEulerCharacteristic = this->SolidComponents = 0;
   this->DroppedBalls = this->DetachedBalls = this->RemainingTetrahedra = this->PrunedTriangles = 0;
+  this->RefinementBalls = 0;
+  this->EnvelopeProtrusion = 0.0;
   this->MaximumRadiusReduction = 0.0;
   const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
   auto aborted = [this]() { return this->GetAbortExecute() != 0; };
@@ -268,7 +290,7 @@ int vtkMedialMeshFilter::RequestData(
   }
 
   // 4. The complex.
-  stages.Begin("Building the medial mesh", 0.75, 0.95);
+  stages.Begin("Building the medial mesh", 0.75, 0.9);
   vtkMedialMeshComplex complex;
   vtkMedialMeshComplex::Balls ballData;
   ballData.Centres = &set.Centres;
@@ -279,6 +301,24 @@ int vtkMedialMeshFilter::RequestData(
   if (!complex.Build(power, query, ballData, tolerance, threads, aborted))
   {
     return 1; // aborted: empty output
+  }
+
+  // 4b. Envelope refinement.
+  if (this->EnvelopeTolerance >= 0.0)
+  {
+    stages.Begin("Refining the envelope", 0.9, 0.95);
+    vtkMedialEnvelopeRefinement refinement;
+    const vtkMedialEnvelopeRefinement::Mesh refined = { &set.Centres, &set.Radii, &complex.Vertices,
+      &complex.Edges, &complex.EdgeTriangles, &complex.Triangles };
+    this->RefinementBalls =
+      refinement.Refine(refined, query, this->EnvelopeTolerance * mesh.Diagonal, threads, aborted);
+    this->EnvelopeProtrusion = refinement.WorstProtrusion / mesh.Diagonal;
+    set.Source.resize(set.Radii.size(), -1);
+    set.SolidComponent.resize(set.Radii.size(), -1);
+    if (this->GetAbortExecute())
+    {
+      return 1;
+    }
   }
 
   // 5. Output.
@@ -473,7 +513,14 @@ void vtkMedialMeshFilter::WriteMesh(
     const vtkIdType ball = complex.Vertices[k];
     pointOf[ball] = k;
     points->SetPoint(k, &set.Centres[3 * ball]);
-    outPD->CopyData(inPD, set.Source[ball], k);
+    if (set.Source[ball] >= 0)
+    {
+      outPD->CopyData(inPD, set.Source[ball], k);
+    }
+    else
+    {
+      SetMissing(outPD, k); // a ball of the envelope refinement
+    }
     radius->SetValue(k, set.Radii[ball]);
   }
   outPD->RemoveArray(vtkMedialArrayNames::Radius);
@@ -494,7 +541,8 @@ void vtkMedialMeshFilter::WriteMesh(
     triangles[t] = { pointOf[c[0]], pointOf[c[1]], pointOf[c[2]] };
   }
   const auto cells = vtkMedialSimplicialComplex::WriteCells(nv, edges, complex.EdgeTriangles, triangles, output);
-  if (!outPD->GetArray(vtkMedialArrayNames::MedialPointType))
+  vtkDataArray* classified = outPD->GetArray(vtkMedialArrayNames::MedialPointType);
+  if (!classified)
   {
     vtkNew<vtkIntArray> types;
     types->SetName(vtkMedialArrayNames::MedialPointType);
@@ -504,6 +552,14 @@ void vtkMedialMeshFilter::WriteMesh(
       types->SetValue(k, cells.PointTypes[k]);
     }
     outPD->AddArray(types);
+    return;
+  }
+  for (vtkIdType k = 0; k < nv; ++k)
+  {
+    if (set.Source[complex.Vertices[k]] < 0)
+    {
+      classified->SetComponent(k, 0, cells.PointTypes[k]); // refinement balls: from the mesh
+    }
   }
 }
 
@@ -514,6 +570,9 @@ void vtkMedialMeshFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Classifier: " << this->Classifier << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "ProtrusionTolerance: " << this->ProtrusionTolerance << "\n";
+  os << indent << "EnvelopeTolerance: " << this->EnvelopeTolerance << "\n";
+  os << indent << "RefinementBalls: " << this->RefinementBalls << "\n";
+  os << indent << "EnvelopeProtrusion: " << this->EnvelopeProtrusion << "\n";
   os << indent << "PrunedTriangles: " << this->PrunedTriangles << "\n";
   os << indent << "EulerCharacteristic: " << this->EulerCharacteristic << "\n";
   os << indent << "NumberOfComponents: " << this->NumberOfComponents << "\n";

@@ -31,6 +31,9 @@
  *     free triangles, which keeps the homotopy type, and fins whose interpolated balls
  *     cross the surface by more than ProtrusionTolerance are pruned from their free
  *     sides (collapses too).
+ *  4b. Envelope refinement (vtkMedialEnvelopeRefinement): edges whose cones and slabs
+ *     cross the surface by more than EnvelopeTolerance are split with new inscribed
+ *     balls at their midpoints (a subdivision: the topology does not change).
  *  5. Output assembly and classification.
  *
  * Guarantees:
@@ -145,6 +148,17 @@ public:
   ///@}
 
   ///@{
+  /// Edges whose envelope (the balls interpolated along them and their triangles)
+  /// crosses the surface by more than this (relative to the diagonal; default 1e-3)
+  /// are split at their midpoint with a new inscribed ball, until none does (step 4b,
+  /// vtkMedialEnvelopeRefinement; at most as many new balls as there were); negative:
+  /// no refinement. New balls have NaN (or -1) in the balls' arrays and their
+  /// MedialPointType from the mesh.
+  vtkSetClampMacro(EnvelopeTolerance, double, -1.0, 1.0);
+  vtkGetMacro(EnvelopeTolerance, double);
+  ///@}
+
+  ///@{
   /// Figures from the last execution (see the class comment). The solid's figures are
   /// known (HasSolidTopology) only for a closed, manifold surface.
   vtkGetMacro(EulerCharacteristic, vtkIdType);
@@ -164,6 +178,10 @@ public:
   vtkGetMacro(RemainingTetrahedra, vtkIdType);
   /// Triangles removed by the protrusion pruning.
   vtkGetMacro(PrunedTriangles, vtkIdType);
+  /// Balls added by the envelope refinement, and the largest protrusion of the
+  /// envelope through the surface left (relative to the diagonal).
+  vtkGetMacro(RefinementBalls, vtkIdType);
+  vtkGetMacro(EnvelopeProtrusion, double);
   ///@}
 
   /// Includes the sampler's and the classifier's modification times.
@@ -197,6 +215,7 @@ protected:
   vtkMedialBallClassifier* Classifier = nullptr;
   int NumberOfThreads = 0;
   double ProtrusionTolerance = 1e-3;
+  double EnvelopeTolerance = 1e-3;
 
   vtkIdType EulerCharacteristic = 0;
   vtkIdType NumberOfComponents = 0;
@@ -209,6 +228,8 @@ protected:
   double MaximumRadiusReduction = 0.0;
   vtkIdType RemainingTetrahedra = 0;
   vtkIdType PrunedTriangles = 0;
+  vtkIdType RefinementBalls = 0;
+  double EnvelopeProtrusion = 0.0;
 
 private:
   vtkMedialMeshFilter(const vtkMedialMeshFilter&) = delete;

@@ -10,16 +10,21 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkGenericCell.h"
 #include "vtkStaticCellLocator.h"
+#include "vtkMedialArrayNames.h"
 #include "vtkMedialDisjointSets.h"
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialMeshFilter.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkMedialFileReader.h"
 #include "vtkPolyData.h"
+#include "vtkDataArray.h"
+#include "vtkPointData.h"
+#include "vtkIdList.h"
 #include "vtkSmartPointer.h"
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <set>
 #include <string>
 #include <utility>
@@ -76,6 +81,40 @@ inline double SurfaceDistance(vtkStaticCellLocator* locator, const double x[3])
   int sub;
   locator->FindClosestPoint(x, closest, cell, id, sub, d2);
   return std::sqrt(d2);
+}
+
+/// The same points, radii and cells, bit for bit.
+inline bool SameMesh(vtkPolyData* a, vtkPolyData* b)
+{
+  if (a->GetNumberOfPoints() != b->GetNumberOfPoints() || a->GetNumberOfCells() != b->GetNumberOfCells())
+  {
+    return false;
+  }
+  vtkDataArray* ra = a->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
+  vtkDataArray* rb = b->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    a->GetPoint(i, p);
+    b->GetPoint(i, q);
+    const double r = ra->GetTuple1(i), s = rb->GetTuple1(i);
+    if (std::memcmp(p, q, sizeof(p)) != 0 || std::memcmp(&r, &s, sizeof(r)) != 0)
+    {
+      return false;
+    }
+  }
+  vtkNew<vtkIdList> u, v;
+  for (vtkIdType c = 0; c < a->GetNumberOfCells(); ++c)
+  {
+    a->GetCellPoints(c, u);
+    b->GetCellPoints(c, v);
+    if (u->GetNumberOfIds() != v->GetNumberOfIds() ||
+      !std::equal(u->begin(), u->end(), v->begin()))
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 struct MeshTopology

@@ -24,38 +24,6 @@
 namespace
 {
 // Same points, radii and cells, bit for bit.
-bool SameMesh(vtkPolyData* a, vtkPolyData* b)
-{
-  if (a->GetNumberOfPoints() != b->GetNumberOfPoints() || a->GetNumberOfCells() != b->GetNumberOfCells())
-  {
-    return false;
-  }
-  vtkDataArray* ra = a->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
-  vtkDataArray* rb = b->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
-  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
-  {
-    double p[3], q[3];
-    a->GetPoint(i, p);
-    b->GetPoint(i, q);
-    const double r = ra->GetTuple1(i), s = rb->GetTuple1(i);
-    if (std::memcmp(p, q, sizeof(p)) != 0 || std::memcmp(&r, &s, sizeof(r)) != 0)
-    {
-      return false;
-    }
-  }
-  vtkNew<vtkIdList> u, v;
-  for (vtkIdType c = 0; c < a->GetNumberOfCells(); ++c)
-  {
-    a->GetCellPoints(c, u);
-    b->GetCellPoints(c, v);
-    if (u->GetNumberOfIds() != v->GetNumberOfIds() ||
-      !std::equal(u->begin(), u->end(), v->begin()))
-    {
-      return false;
-    }
-  }
-  return true;
-}
 
 vtkSmartPointer<vtkPolyData> BallsOf(const std::vector<std::array<double, 4>>& list)
 {
@@ -168,7 +136,7 @@ int TestMedialMeshInputs(int, char*[])
   external->Update();
   vtkPolyData* mesh = internal->GetOutput();
   MEDIAL_CHECK(mesh->GetNumberOfPolys() > 0, "no triangles");
-  MEDIAL_CHECK(SameMesh(mesh, external->GetOutput()), "port 1 or 2 threads give another mesh");
+  MEDIAL_CHECK(medialtest::SameMesh(mesh, external->GetOutput()), "port 1 or 2 threads give another mesh");
 
   // Arrays carried over; radii never grow; cell types in step with the cells.
   vtkPointData* pd = mesh->GetPointData();
@@ -179,13 +147,18 @@ int TestMedialMeshInputs(int, char*[])
   }
   vtkPolyData* balls = sampler->GetOutput();
   vtkDataArray* surfacePoint = pd->GetArray(vtkMedialArrayNames::SurfacePoint);
-  vtkIdType exact = 0;
+  vtkIdType exact = 0, refined = 0;
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
   {
     // The sample P identifies the ball: its radius may only have been lowered. The
     // classifier's exact seam and junction balls have none.
     double p[3];
     surfacePoint->GetTuple(i, p);
+    if (std::isnan(p[0]) && medialtest::Value(mesh, vtkMedialArrayNames::GovernorCount, i) < 0)
+    {
+      ++refined; // a ball of the envelope refinement: no array of the balls
+      continue;
+    }
     if (std::isnan(p[0]))
     {
       const int type = static_cast<int>(medialtest::Value(mesh, vtkMedialArrayNames::MedialPointType, i));
@@ -207,8 +180,11 @@ int TestMedialMeshInputs(int, char*[])
     }
     MEDIAL_CHECK(found, "vertex %lld is no input ball", static_cast<long long>(i));
   }
-  std::printf("%lld vertices, %lld of them exact seam or junction balls\n",
-    static_cast<long long>(mesh->GetNumberOfPoints()), static_cast<long long>(exact));
+  MEDIAL_CHECK(refined == internal->GetRefinementBalls(), "%lld balls without arrays, %lld refinement balls",
+    static_cast<long long>(refined), static_cast<long long>(internal->GetRefinementBalls()));
+  std::printf("%lld vertices, %lld of them exact seam or junction balls, %lld of the envelope refinement\n",
+    static_cast<long long>(mesh->GetNumberOfPoints()), static_cast<long long>(exact),
+    static_cast<long long>(refined));
   vtkDataArray* cellTypes = mesh->GetCellData()->GetArray(vtkMedialArrayNames::MedialCellType);
   MEDIAL_CHECK(cellTypes && cellTypes->GetNumberOfTuples() == mesh->GetNumberOfCells(), "MedialCellType size");
   for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
@@ -232,10 +208,11 @@ int TestMedialMeshInputs(int, char*[])
   MEDIAL_CHECK(internal->GetOutput()->GetNumberOfPoints() != before &&
       internal->GetOutput()->GetNumberOfPoints() < before,
     "the sampler's settings were not used");
-  // Without a classifier: only the sampled balls, types from the mesh, no governors.
+  // Without a classifier: only the sampled balls (and the envelope refinement's), types
+  // from the mesh, no governors.
   internal->SetClassifier(nullptr);
   internal->Update();
-  MEDIAL_CHECK(internal->GetOutput()->GetNumberOfPoints() <= 2000 &&
+  MEDIAL_CHECK(internal->GetOutput()->GetNumberOfPoints() <= 2000 + internal->GetRefinementBalls() &&
       internal->GetOutput()->GetPointData()->GetArray(vtkMedialArrayNames::MedialPointType) &&
       !internal->GetOutput()->GetPointData()->GetArray(vtkMedialArrayNames::GovernorCount),
     "without a classifier");

@@ -1,0 +1,272 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkMedialEnvelopeRefinement.h"
+
+#include "vtkMedialSurfaceQuery.h"
+#include "vtkMedialTriangleMesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace
+{
+using Edge = std::array<vtkIdType, 2>;
+
+Edge Sorted(vtkIdType a, vtkIdType b)
+{
+  return { std::min(a, b), std::max(a, b) };
+}
+
+// Probe weights: the barycentric points of step 1/4 of a triangle, corners excepted.
+constexpr int Steps = 4;
+}
+
+double vtkMedialEnvelopeRefinement::Probe(
+  const Mesh& mesh, const vtkMedialSurfaceQuery& query, const vtkIdType* ids, int n) const
+{
+  // `ids` holds n balls, followed by n weights (in Steps) packed as ids[n + j].
+  double c[3] = { 0, 0, 0 }, r = 0.0;
+  for (int j = 0; j < n; ++j)
+  {
+    const double w = static_cast<double>(ids[n + j]) / Steps;
+    const double* x = &(*mesh.Centres)[3 * ids[j]];
+    for (int k = 0; k < 3; ++k)
+    {
+      c[k] += w * x[k];
+    }
+    r += w * (*mesh.Radii)[ids[j]];
+  }
+  vtkMedialSurfaceQuery::ClosestHit hit;
+  return r > 0.0 && query.ClosestPoint(c, r, hit) ? r - hit.Distance : 0.0;
+}
+
+double vtkMedialEnvelopeRefinement::ProbeEdge(
+  const Mesh& mesh, const vtkMedialSurfaceQuery& query, vtkIdType a, vtkIdType b) const
+{
+  double worst = 0.0;
+  for (vtkIdType i = 1; i < Steps; ++i)
+  {
+    const vtkIdType probe[4] = { a, b, Steps - i, i };
+    worst = std::max(worst, this->Probe(mesh, query, probe, 2));
+  }
+  return worst;
+}
+
+double vtkMedialEnvelopeRefinement::ProbeTriangle(
+  const Mesh& mesh, const vtkMedialSurfaceQuery& query, const std::array<vtkIdType, 3>& t) const
+{
+  double worst = 0.0;
+  for (vtkIdType i = 0; i <= Steps; ++i)
+  {
+    for (vtkIdType j = 0; i + j <= Steps; ++j)
+    {
+      const vtkIdType k = Steps - i - j;
+      if (i == Steps || j == Steps || k == Steps)
+      {
+        continue; // a corner: a vertex ball, inscribed
+      }
+      const vtkIdType probe[6] = { t[0], t[1], t[2], i, j, k };
+      worst = std::max(worst, this->Probe(mesh, query, probe, 3));
+    }
+  }
+  return worst;
+}
+
+vtkIdType vtkMedialEnvelopeRefinement::SplitEdges(const Mesh& mesh, const vtkMedialSurfaceQuery& query,
+  std::vector<Edge>& marked, std::vector<Edge>& free, std::vector<char>& touched)
+{
+  std::vector<std::array<vtkIdType, 3>>& triangles = *mesh.Triangles;
+  // The triangles on each side, and the edges of no triangle.
+  std::vector<std::pair<Edge, vtkIdType>> sides;
+  sides.reserve(3 * triangles.size());
+  for (vtkIdType t = 0; t < static_cast<vtkIdType>(triangles.size()); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      sides.push_back({ Sorted(triangles[t][k], triangles[t][(k + 1) % 3]), t });
+    }
+  }
+  std::sort(sides.begin(), sides.end());
+  touched.assign(triangles.size(), 0);
+  const size_t freeCount = free.size(); // sorted up to here; split halves are appended
+  std::sort(marked.begin(), marked.end());
+  marked.erase(std::unique(marked.begin(), marked.end()), marked.end());
+  const double far = 2.0 * query.GetMesh()->Diagonal;
+  vtkIdType added = 0;
+  for (const Edge& e : marked)
+  {
+    auto first = std::lower_bound(sides.begin(), sides.end(), std::make_pair(e, vtkIdType(-1)));
+    auto last = first;
+    bool noTriangle = true;
+    while (last != sides.end() && last->first == e)
+    {
+      noTriangle = false;
+      if (touched[last->second])
+      {
+        break;
+      }
+      ++last;
+    }
+    if (last != sides.end() && last->first == e)
+    {
+      continue; // a triangle on it was split in this round
+    }
+    // The new ball: the midpoint, with the largest inscribed radius there.
+    const vtkIdType m = static_cast<vtkIdType>(mesh.Radii->size());
+    double c[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      c[k] = 0.5 * ((*mesh.Centres)[3 * e[0] + k] + (*mesh.Centres)[3 * e[1] + k]);
+    }
+    vtkMedialSurfaceQuery::ClosestHit hit;
+    const double radius = query.ClosestPoint(c, far, hit)
+      ? hit.Distance
+      : 0.5 * ((*mesh.Radii)[e[0]] + (*mesh.Radii)[e[1]]);
+    mesh.Centres->insert(mesh.Centres->end(), c, c + 3);
+    mesh.Radii->push_back(radius);
+    mesh.Vertices->push_back(m);
+    ++added;
+    if (noTriangle)
+    {
+      // An edge of no triangle: (a, b) becomes (a, m) and (m, b).
+      auto at = std::lower_bound(free.begin(), free.begin() + freeCount, e);
+      if (at != free.begin() + freeCount && *at == e)
+      {
+        *at = { e[0], m };
+        free.push_back({ e[1], m });
+      }
+      continue;
+    }
+    for (auto s = first; s != last; ++s)
+    {
+      // (a, b, c) becomes (a, m, c) and (m, b, c), in the same orientation.
+      std::array<vtkIdType, 3> t = triangles[s->second];
+      std::array<vtkIdType, 3> other = t;
+      std::replace(t.begin(), t.end(), e[1], m);
+      std::replace(other.begin(), other.end(), e[0], m);
+      triangles[s->second] = t;
+      triangles.push_back(other);
+      touched[s->second] = 1;
+      touched.push_back(1);
+    }
+  }
+  return added;
+}
+
+vtkIdType vtkMedialEnvelopeRefinement::Refine(const Mesh& mesh, const vtkMedialSurfaceQuery& query,
+  double tolerance, int threads, const std::function<bool()>& aborted)
+{
+  this->WorstProtrusion = 0.0;
+  this->Rounds = 0;
+  std::vector<std::array<vtkIdType, 3>>& triangles = *mesh.Triangles;
+  std::vector<Edge>& edges = *mesh.Edges;
+  const vtkIdType limit = static_cast<vtkIdType>(mesh.Vertices->size());
+  vtkIdType added = 0;
+  // Edges of no triangle (sorted), and which primitives may have changed.
+  std::vector<Edge> free;
+  for (size_t e = 0; e < edges.size(); ++e)
+  {
+    if ((*mesh.EdgeTriangles)[e] == 0)
+    {
+      free.push_back(Sorted(edges[e][0], edges[e][1]));
+    }
+  }
+  std::sort(free.begin(), free.end());
+  // Each triangle's protrusion, kept between rounds: only the triangles a split made or
+  // changed are probed again (the balls of the others did not move).
+  std::vector<char> triangleDirty(triangles.size(), 1);
+  std::vector<double> triangleProtrusion;
+  for (; this->Rounds < MaximumRounds && added < limit; ++this->Rounds)
+  {
+    if (aborted && aborted())
+    {
+      break;
+    }
+    const vtkIdType nt = static_cast<vtkIdType>(triangles.size());
+    const vtkIdType nf = static_cast<vtkIdType>(free.size());
+    triangleProtrusion.resize(nt, 0.0);
+    std::vector<double> edgeProtrusion(nf, 0.0);
+#pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
+    for (vtkIdType t = 0; t < nt; ++t)
+    {
+      if (triangleDirty[t])
+      {
+        triangleProtrusion[t] = this->ProbeTriangle(mesh, query, triangles[t]);
+      }
+    }
+#pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
+    for (vtkIdType e = 0; e < nf; ++e)
+    {
+      edgeProtrusion[e] = this->ProbeEdge(mesh, query, free[e][0], free[e][1]);
+    }
+    std::vector<Edge> marked;
+    double worst = 0.0;
+    for (vtkIdType t = 0; t < nt; ++t)
+    {
+      worst = std::max(worst, triangleProtrusion[t]);
+      if (triangleProtrusion[t] > tolerance)
+      {
+        // The longest side.
+        const auto& tri = triangles[t];
+        Edge best = Sorted(tri[0], tri[1]);
+        double longest = -1.0;
+        for (int k = 0; k < 3; ++k)
+        {
+          const double* p = &(*mesh.Centres)[3 * tri[k]];
+          const double* q = &(*mesh.Centres)[3 * tri[(k + 1) % 3]];
+          const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
+          if (d2 > longest)
+          {
+            longest = d2;
+            best = Sorted(tri[k], tri[(k + 1) % 3]);
+          }
+        }
+        marked.push_back(best);
+      }
+    }
+    for (vtkIdType e = 0; e < nf; ++e)
+    {
+      worst = std::max(worst, edgeProtrusion[e]);
+      if (edgeProtrusion[e] > tolerance)
+      {
+        marked.push_back(free[e]);
+      }
+    }
+    this->WorstProtrusion = worst;
+    if (marked.empty())
+    {
+      break;
+    }
+    added += this->SplitEdges(mesh, query, marked, free, triangleDirty);
+    std::sort(free.begin(), free.end());
+  }
+  // Every edge again: the sides of the triangles and the edges of no triangle.
+  std::vector<std::pair<Edge, int>> counted;
+  for (const auto& t : triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      counted.push_back({ Sorted(t[k], t[(k + 1) % 3]), 1 });
+    }
+  }
+  for (const Edge& e : free)
+  {
+    counted.push_back({ e, 0 });
+  }
+  std::sort(counted.begin(), counted.end());
+  edges.clear();
+  mesh.EdgeTriangles->clear();
+  for (const auto& c : counted)
+  {
+    if (!edges.empty() && edges.back() == c.first)
+    {
+      mesh.EdgeTriangles->back() += c.second;
+    }
+    else
+    {
+      edges.push_back(c.first);
+      mesh.EdgeTriangles->push_back(c.second);
+    }
+  }
+  return added;
+}
