@@ -8,6 +8,7 @@
 #include "vtkMedialMessageRelay.h"
 #include "vtkMedialOFFReader.h"
 
+#include "vtkCellArray.h"
 #include "vtkDataSetReader.h"
 #include "vtkDataSetSurfaceFilter.h"
 #include "vtkExecutive.h"
@@ -145,6 +146,17 @@ int vtkMedialFileReader::RequestData(
     return 0;
   }
   output->ShallowCopy(data);
+  // 32-bit cell storage where the ids fit: half the memory of a large surface's
+  // connectivity, which the pipeline holds while every later filter runs. (The
+  // arrays converted belong to the inner reader, which is about to go away; empty
+  // ones are skipped, as vtkPolyData hands out one shared empty array for all.)
+  for (vtkCellArray* cells : { output->GetVerts(), output->GetLines(), output->GetPolys(), output->GetStrips() })
+  {
+    if (cells && cells->GetNumberOfCells() > 0 && cells->IsStorage64Bit() && cells->CanConvertTo32BitStorage())
+    {
+      cells->ConvertTo32BitStorage();
+    }
+  }
   return 1;
 }
 

@@ -38,6 +38,7 @@
 #include <omp.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -56,6 +57,29 @@ namespace
 double Now()
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// User + system CPU seconds of the process so far (all threads): on a shared machine
+// a stage's CPU time varies less than its wall time.
+double CpuSeconds()
+{
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+// Resident size now (Linux /proc/self/statm; 0 elsewhere).
+double CurrentRssMiB()
+{
+  long pages = 0, resident = 0;
+  FILE* f = std::fopen("/proc/self/statm", "r");
+  if (!f)
+  {
+    return 0.0;
+  }
+  const int read = std::fscanf(f, "%ld %ld", &pages, &resident);
+  std::fclose(f);
+  return read == 2 ? resident * (sysconf(_SC_PAGESIZE) / 1048576.0) : 0.0;
 }
 
 double PeakRssMiB()
@@ -642,8 +666,9 @@ void PrintTables(const BenchFigures& f, const BenchOptions& options, const std::
 int RunPreparation(const std::string& file)
 {
   constexpr int Runs = 3;
-  std::vector<double> read, prepare, queries;
+  std::vector<double> read, prepare, queries, readCpu, prepareCpu, queriesCpu;
   double peak[3] = { 0, 0, 0 }; // peak RSS after each stage of the first run
+  double now[3] = { 0, 0, 0 };  // RSS after each stage of the first run
   std::unique_ptr<vtkMedialTriangleMesh> kept;
   std::unique_ptr<vtkMedialSurfaceQuery> keptQuery;
   vtkIdType triangles = 0;
@@ -652,7 +677,7 @@ int RunPreparation(const std::string& file)
     keptQuery.reset(); // one mesh at a time: the peak RSS is one run's
     kept.reset();
     std::string error;
-    double t0 = Now();
+    double t0 = Now(), c0 = CpuSeconds();
     vtkNew<vtkMedialFileReader> reader;
     reader->SetFileName(file.c_str());
     reader->Update();
@@ -663,25 +688,33 @@ int RunPreparation(const std::string& file)
       return 1;
     }
     read.push_back(Now() - t0);
+    readCpu.push_back(CpuSeconds() - c0);
     peak[0] = run == 0 ? PeakRssMiB() : peak[0];
+    now[0] = run == 0 ? CurrentRssMiB() : now[0];
     auto mesh = std::make_unique<vtkMedialTriangleMesh>();
     auto query = std::make_unique<vtkMedialSurfaceQuery>();
     t0 = Now();
+    c0 = CpuSeconds();
     if (!mesh->Build(surface, error))
     {
       std::fprintf(stderr, "medial-bench: %s\n", error.c_str());
       return 1;
     }
     prepare.push_back(Now() - t0);
+    prepareCpu.push_back(CpuSeconds() - c0);
     peak[1] = run == 0 ? PeakRssMiB() : peak[1];
+    now[1] = run == 0 ? CurrentRssMiB() : now[1];
     t0 = Now();
+    c0 = CpuSeconds();
     if (!query->Build(mesh.get(), error))
     {
       std::fprintf(stderr, "medial-bench: %s\n", error.c_str());
       return 1;
     }
     queries.push_back(Now() - t0);
+    queriesCpu.push_back(CpuSeconds() - c0);
     peak[2] = run == 0 ? PeakRssMiB() : peak[2];
+    now[2] = run == 0 ? CurrentRssMiB() : now[2];
     triangles = mesh->GetNumberOfTriangles();
     kept = std::move(mesh);
     keptQuery = std::move(query);
@@ -690,12 +723,21 @@ int RunPreparation(const std::string& file)
     std::sort(v.begin(), v.end());
     return v[v.size() / 2];
   };
+  std::vector<double> both(Runs), bothCpu(Runs);
+  for (int run = 0; run < Runs; ++run)
+  {
+    both[run] = prepare[run] + queries[run];
+    bothCpu[run] = prepareCpu[run] + queriesCpu[run];
+  }
   std::printf("preparation of %s, %lld triangles, %d threads, median of %d runs:\n", file.c_str(),
     static_cast<long long>(triangles), omp_get_max_threads(), Runs);
-  std::printf("| stage | seconds | peak RSS after it, first run (MiB) |\n|---|---|---|\n");
-  std::printf("| read | %.3f | %.0f |\n| mesh preparation | %.3f | %.0f |\n| surface queries (the tree) | %.3f | %.0f |\n",
-    median(read), peak[0], median(prepare), peak[1], median(queries), peak[2]);
-  std::printf("| preparation (mesh + tree) | %.3f | |\n", median(prepare) + median(queries));
+  std::printf("| stage | seconds | CPU seconds (user + sys) | RSS after it, first run (MiB) | peak RSS so far (MiB) "
+              "|\n|---|---|---|---|---|\n");
+  std::printf("| read | %.3f | %.3f | %.0f | %.0f |\n", median(read), median(readCpu), now[0], peak[0]);
+  std::printf("| mesh preparation | %.3f | %.3f | %.0f | %.0f |\n", median(prepare), median(prepareCpu), now[1], peak[1]);
+  std::printf("| surface queries (the tree) | %.3f | %.3f | %.0f | %.0f |\n", median(queries), median(queriesCpu),
+    now[2], peak[2]);
+  std::printf("| preparation (mesh + tree) | %.3f | %.3f | | |\n", median(both), median(bothCpu));
   std::printf("ray (2 threads, 200000 rays): %.3f us\n", MeasureRays(*kept, *keptQuery));
   std::printf("peak RSS: %.0f MiB\n", PeakRssMiB());
   return 0;

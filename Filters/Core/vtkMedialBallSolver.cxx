@@ -56,7 +56,7 @@ void vtkMedialSolveBall(const vtkMedialSurfaceQuery& query, const vtkMedialTrian
   const vtkMedialBallParameters& param, vtkIdType triangle, const double p[3], vtkMedialSampleRecord& out,
   vtkIdType hintTriangle)
 {
-  const double* outward = mesh.GetNormal(triangle);
+  const double* outward = query.GetNormal(triangle);
   const double n[3] = { -outward[0], -outward[1], -outward[2] };
   vtkMedialSolveBallAlong(query, mesh, param, triangle, p, n, out, hintTriangle);
 }

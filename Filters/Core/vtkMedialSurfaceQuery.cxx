@@ -54,7 +54,7 @@ bool vtkMedialSurfaceQuery::IntersectFrom(const double rayOrigin[3], const doubl
     {
       return false;
     }
-    const double* n = this->Mesh->GetNormal(t);
+    const double* n = this->GetNormal(t);
     const double* v0 = this->Mesh->GetPoint(this->Mesh->GetTriangle(t)[0]);
     double d[3];
     G::Sub(v0, origin, d);
@@ -92,7 +92,7 @@ bool vtkMedialSurfaceQuery::IntersectFromInside(
 {
   auto fromInside = [&](const double rayOrigin[3]) {
     return this->IntersectFrom(rayOrigin, origin, direction, tMin, HUGE_VAL, ignoreTriangle, hit) &&
-      G::Dot(this->Mesh->GetNormal(hit.Triangle), direction) > 0.0;
+      G::Dot(this->GetNormal(hit.Triangle), direction) > 0.0;
   };
   if (fromInside(origin))
   {

@@ -135,6 +135,10 @@ public:
   /// (vtkMedialGeometry::TrianglesCross; touching does not count).
   bool TriangleCrossesSurface(const double a[3], const double b[3], const double c[3]) const;
 
+  /// Unit outward normal of mesh triangle t, from the tree (the same values as the
+  /// mesh's, which a caller that only queries may then release: ReleaseNormals).
+  const double* GetNormal(vtkIdType t) const { return this->Tree.GetPlane(t); }
+
   /// Rank of each triangle in the internal tree's leaf order (spatially coherent).
   const std::vector<std::int32_t>& GetLeafRanks() const { return this->Tree.GetLeafRanks(); }
 

@@ -393,11 +393,43 @@ void TangentCandidates(const double p[3], const double n[3], const double* a, co
   }
 }
 
-// A bin of the SAH split: the box of its triangles and their number.
+using BuildBounds = vtkMedialTriangleBVH::BuildBounds;
+
+// Bounds of nothing, for min/max folds.
+BuildBounds EmptyBounds()
+{
+  BuildBounds b;
+  for (int k = 0; k < 3; ++k)
+  {
+    b.Lo[k] = b.CLo[k] = HUGE_VAL;
+    b.Hi[k] = b.CHi[k] = -HUGE_VAL;
+  }
+  return b;
+}
+
+// Widens `bounds` to hold the box [lo, hi] and the centroids' box [cLo, cHi].
+void Widen(BuildBounds& bounds, const double lo[3], const double hi[3], const double cLo[3], const double cHi[3])
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    bounds.Lo[k] = std::min(bounds.Lo[k], lo[k]);
+    bounds.Hi[k] = std::max(bounds.Hi[k], hi[k]);
+    bounds.CLo[k] = std::min(bounds.CLo[k], cLo[k]);
+    bounds.CHi[k] = std::max(bounds.CHi[k], cHi[k]);
+  }
+}
+
+void MergeBounds(BuildBounds& whole, const BuildBounds& part)
+{
+  Widen(whole, part.Lo, part.Hi, part.CLo, part.CHi);
+}
+
+// A bin of the SAH split: the box of its triangles and of their centroids, and their
+// number. Min and max do not depend on the order, so a child's bounds are exactly the
+// union of its bins': no second pass over its triangles.
 struct SahBin
 {
-  double Lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
-  double Hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+  BuildBounds Bounds = EmptyBounds();
   std::int32_t Count = 0;
 };
 
@@ -420,8 +452,8 @@ int CheapestSplit(const SahBin bins[Bins], std::int32_t count)
     {
       for (int k = 0; k < 3; ++k)
       {
-        lo[k] = std::min(lo[k], bins[b].Lo[k]);
-        hi[k] = std::max(hi[k], bins[b].Hi[k]);
+        lo[k] = std::min(lo[k], bins[b].Bounds.Lo[k]);
+        hi[k] = std::max(hi[k], bins[b].Bounds.Hi[k]);
       }
       n += bins[b].Count;
       rightCost[b] = n > 0 ? n * HalfArea(lo, hi) : 0.0;
@@ -435,8 +467,8 @@ int CheapestSplit(const SahBin bins[Bins], std::int32_t count)
   {
     for (int k = 0; k < 3; ++k)
     {
-      lo[k] = std::min(lo[k], bins[b].Lo[k]);
-      hi[k] = std::max(hi[k], bins[b].Hi[k]);
+      lo[k] = std::min(lo[k], bins[b].Bounds.Lo[k]);
+      hi[k] = std::max(hi[k], bins[b].Bounds.Hi[k]);
     }
     n += bins[b].Count;
     if (n == 0 || n == count)
@@ -453,12 +485,12 @@ int CheapestSplit(const SahBin bins[Bins], std::int32_t count)
   return bestSplit;
 }
 
-// Folds the items [begin, end) into `total` (which starts as T{}): fold(part, i) per
-// item, merge(total, part) for each thread's part. Large ranges (the top levels,
+// Folds the items [begin, end) into `total`: fold(part, i) per item, merge(total,
+// part) for each thread's part, which starts as `empty`. Large ranges (the top levels,
 // built before the subtrees run in parallel) take every thread; the folds used here
 // (counts, min, max) give the same result in any order.
 template <class T, class Fold, class Merge>
-void FoldRange(std::int32_t begin, std::int32_t end, T& total, Fold fold, Merge merge)
+void FoldRange(std::int32_t begin, std::int32_t end, T& total, Fold fold, Merge merge, const T& empty)
 {
   if (end - begin <= ParallelRange)
   {
@@ -470,7 +502,7 @@ void FoldRange(std::int32_t begin, std::int32_t end, T& total, Fold fold, Merge 
   }
 #pragma omp parallel
   {
-    T part{};
+    T part = empty;
 #pragma omp for schedule(static) nowait
     for (std::int32_t i = begin; i < end; ++i)
     {
@@ -480,13 +512,6 @@ void FoldRange(std::int32_t begin, std::int32_t end, T& total, Fold fold, Merge 
     merge(total, part);
   }
 }
-
-// The box of some triangles and the box of their centroids.
-struct NodeBoxes
-{
-  double Lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, Hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
-  double CLo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, CHi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
-};
 
 // Scratch space reused by every query on a thread: no allocation per sample.
 // A lane waiting in the tangent search, with the number of radius updates when it was pushed.
@@ -515,6 +540,64 @@ Scratch& ThreadScratch()
   return scratch;
 }}
 
+namespace
+{
+// What the splits read of a triangle, stored by its slot in the order being
+// partitioned and moved with it: the passes over a node read memory in sequence
+// instead of gathering from all over the mesh.
+struct BuildItem
+{
+  double Lo[3], Hi[3]; // the triangle's box
+  double Centroid[3];
+  std::int32_t Triangle;
+};
+
+// Partitions [first, last) so that the items satisfying `before` come first, by the
+// two-ended exchange (Hoare): scan from the front for an item that must move back and
+// from the back for one that must move forward, swap them. Fixed here rather than left
+// to std::partition so that the leaf order is the same with every standard library.
+template <class Before>
+BuildItem* PartitionItems(BuildItem* first, BuildItem* last, Before before)
+{
+  while (true)
+  {
+    while (true)
+    {
+      if (first == last)
+      {
+        return first;
+      }
+      if (!before(*first))
+      {
+        break;
+      }
+      ++first;
+    }
+    --last;
+    while (true)
+    {
+      if (first == last)
+      {
+        return first;
+      }
+      if (before(*last))
+      {
+        break;
+      }
+      --last;
+    }
+    std::swap(*first, *last);
+    ++first;
+  }
+}
+}
+
+struct vtkMedialTriangleBVH::BuildState
+{
+  const vtkMedialTriangleMesh& Mesh;
+  vtkMedialBuffer<BuildItem> Items; // by slot; the triangles' order is the leaf order at the end
+};
+
 bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh, const std::function<bool()>& aborted)
 {
   const vtkIdType nt = mesh.GetNumberOfTriangles();
@@ -530,7 +613,7 @@ bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh, const std::f
     extent = std::max({ extent, std::fabs(mesh.Bounds[2 * k]), std::fabs(mesh.Bounds[2 * k + 1]) });
   }
   this->RoundingPad = 1e-14 * extent;
-  std::vector<std::int32_t> order(nt);
+  vtkMedialBuffer<std::int32_t> order(nt);
   if (!this->BuildNodes(mesh, order, aborted))
   {
     this->Nodes.clear();
@@ -541,31 +624,32 @@ bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh, const std::f
 }
 
 bool vtkMedialTriangleBVH::BuildNodes(
-  const vtkMedialTriangleMesh& mesh, std::vector<std::int32_t>& order, const std::function<bool()>& aborted)
+  const vtkMedialTriangleMesh& mesh, vtkMedialBuffer<std::int32_t>& order, const std::function<bool()>& aborted)
 {
   // Per triangle: its box and its centroid (freed before the leaf-order copies are made).
   const vtkIdType nt = mesh.GetNumberOfTriangles();
-  std::vector<double> centroids(3 * nt), boxes(6 * nt);
+  BuildState state{ mesh, vtkMedialBuffer<BuildItem>(nt) };
 #pragma omp parallel for schedule(static)
   for (vtkIdType t = 0; t < nt; ++t)
   {
     const vtkIdType* v = mesh.GetTriangle(t);
+    BuildItem& item = state.Items[t];
     for (int k = 0; k < 3; ++k)
     {
       const double a = mesh.GetPoint(v[0])[k], b = mesh.GetPoint(v[1])[k], c = mesh.GetPoint(v[2])[k];
-      boxes[6 * t + k] = std::min({ a, b, c });
-      boxes[6 * t + 3 + k] = std::max({ a, b, c });
-      centroids[3 * t + k] = (a + b + c) / 3.0;
+      item.Lo[k] = std::min({ a, b, c });
+      item.Hi[k] = std::max({ a, b, c });
+      item.Centroid[k] = (a + b + c) / 3.0;
     }
-    order[t] = static_cast<std::int32_t>(t);
+    item.Triangle = static_cast<std::int32_t>(t);
   }
   // Top levels first, then the subtrees below them in parallel, appended in order.
   const std::int32_t grain = std::max<std::int32_t>(4096, static_cast<std::int32_t>(nt / 64));
   std::vector<Subtree> subtrees;
-  this->Nodes.emplace_back();
-  this->BuildNode(this->Nodes, 0, 0, static_cast<std::int32_t>(nt), order, centroids, boxes, mesh,
-    &subtrees, grain);
-  std::vector<std::vector<Node>> parts(subtrees.size());
+  vtkMedialSmallPageBuffer<Node> top(1);
+  const std::int32_t all = static_cast<std::int32_t>(nt);
+  this->BuildNode(state, top, 0, 0, all, MeasureBounds(state, 0, all), &subtrees, grain);
+  std::vector<vtkMedialSmallPageBuffer<Node>> parts(subtrees.size());
   std::atomic<bool> stop{ false };
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::int64_t i = 0; i < static_cast<std::int64_t>(subtrees.size()); ++i)
@@ -576,24 +660,34 @@ bool vtkMedialTriangleBVH::BuildNodes(
       stop = true;
       continue;
     }
-    parts[i].emplace_back();
-    this->BuildNode(parts[i], 0, subtrees[i].Begin, subtrees[i].End, order, centroids, boxes, mesh,
-      nullptr, 0);
+    // A subtree of n triangles has fewer than 2 n nodes: reserved (address space only;
+    // small pages, touched as nodes are added), so that the part never moves.
+    parts[i].reserve(2 * static_cast<size_t>(subtrees[i].End - subtrees[i].Begin));
+    parts[i].resize(1);
+    this->BuildNode(state, parts[i], 0, subtrees[i].Begin, subtrees[i].End, subtrees[i].Bounds, nullptr, 0);
   }
   if (stop)
   {
     return false;
   }
-  size_t total = this->Nodes.size();
+  size_t total = top.size();
   for (const auto& part : parts)
   {
     total += part.size() - 1;
   }
-  this->Nodes.reserve(total);
+  this->Nodes.resize(total);
+  std::copy(top.begin(), top.end(), this->Nodes.begin());
+  std::vector<std::int32_t> offsets(subtrees.size() + 1); // where each part's local node 1 goes
+  offsets[0] = static_cast<std::int32_t>(top.size());
   for (size_t i = 0; i < subtrees.size(); ++i)
   {
-    // Local node 0 takes the reserved slot; the others are appended.
-    const std::int32_t offset = static_cast<std::int32_t>(this->Nodes.size()) - 1;
+    offsets[i + 1] = offsets[i] + static_cast<std::int32_t>(parts[i].size()) - 1;
+  }
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::int64_t i = 0; i < static_cast<std::int64_t>(subtrees.size()); ++i)
+  {
+    // Local node 0 takes the reserved slot; the others follow the earlier parts.
+    const std::int32_t offset = offsets[i] - 1;
     auto global = [&](std::int32_t local) { return local == 0 ? subtrees[i].Node : offset + local; };
     for (size_t j = 0; j < parts[i].size(); ++j)
     {
@@ -602,29 +696,28 @@ bool vtkMedialTriangleBVH::BuildNodes(
       {
         node.Start = global(node.Start); // children are consecutive locally and globally
       }
-      if (j == 0)
-      {
-        this->Nodes[subtrees[i].Node] = node;
-      }
-      else
-      {
-        this->Nodes.push_back(node);
-      }
+      this->Nodes[global(static_cast<std::int32_t>(j))] = node;
     }
-    std::vector<Node>().swap(parts[i]);
+    vtkMedialSmallPageBuffer<Node>().swap(parts[i]);
+  }
+#pragma omp parallel for schedule(static)
+  for (vtkIdType i = 0; i < nt; ++i)
+  {
+    order[i] = state.Items[i].Triangle;
   }
   return true;
 }
 
 // The triangles' vertices and planes in leaf order, the ranks, and each node's parent.
-void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, const std::vector<std::int32_t>& order)
+void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, const vtkMedialBuffer<std::int32_t>& order)
 {
   const vtkIdType nt = mesh.GetNumberOfTriangles();
   this->Vertices.resize(9 * static_cast<size_t>(nt));
   this->TriangleIds.resize(nt);
   this->LeafRank.resize(nt);
   this->Planes.resize(4 * static_cast<size_t>(nt));
-  this->TriangleBoxes.assign(6 * static_cast<size_t>(nt) + 4, 0.0f); // + 4: read four floats at a time
+  this->TriangleBoxes.resize(6 * static_cast<size_t>(nt) + 4); // + 4: read four floats at a time
+  std::fill_n(this->TriangleBoxes.end() - 4, 4, 0.0f);
 #pragma omp parallel for schedule(static)
   for (vtkIdType i = 0; i < nt; ++i)
   {
@@ -632,7 +725,7 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, co
     const double* normal = mesh.GetNormal(t);
     std::copy_n(normal, 3, &this->Planes[4 * i]);
     this->Planes[4 * i + 3] = G::Dot(normal, mesh.GetPoint(mesh.GetTriangle(t)[0]));
-    this->TriangleIds[i] = t;
+    this->TriangleIds[i] = static_cast<std::int32_t>(t);
     this->LeafRank[t] = static_cast<std::int32_t>(i);
     const vtkIdType* v = mesh.GetTriangle(t);
     for (int k = 0; k < 3; ++k)
@@ -647,9 +740,12 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, co
       std::copy_n(mesh.GetPoint(mesh.GetTriangle(t)[j]), 3, &this->Vertices[9 * i + 3 * j]);
     }
   }
-  this->Parent.assign(this->Nodes.size(), -1);
+  // Every node but the root is some inner node's child, and every slot in some leaf.
+  this->Parent.resize(this->Nodes.size());
+  this->Parent[0] = -1;
   this->LeafNode.resize(nt);
-  for (size_t i = 0; i < this->Nodes.size(); ++i)
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < static_cast<std::int64_t>(this->Nodes.size()); ++i)
   {
     const Node& node = this->Nodes[i];
     if (node.Count > 0)
@@ -782,18 +878,16 @@ bool vtkMedialTriangleBVH::BuildWideNodes()
   return true;
 }
 
-void vtkMedialTriangleBVH::BuildNode(std::vector<Node>& nodes, std::int32_t nodeIndex,
-  std::int32_t begin, std::int32_t end, std::vector<std::int32_t>& order,
-  const std::vector<double>& centroids, const std::vector<double>& boxes,
-  const vtkMedialTriangleMesh& mesh, std::vector<Subtree>* later, std::int32_t grain) const
+void vtkMedialTriangleBVH::BuildNode(BuildState& state, vtkMedialSmallPageBuffer<Node>& nodes, std::int32_t nodeIndex,
+  std::int32_t begin, std::int32_t end, const BuildBounds& bounds, std::vector<Subtree>* later,
+  std::int32_t grain) const
 {
   if (later && end - begin <= grain)
   {
-    later->push_back({ nodeIndex, begin, end });
+    later->push_back({ nodeIndex, begin, end, bounds });
     return;
   }
-  double cLo[3], cHi[3];
-  Node node = this->BoundNode(begin, end, order, centroids, boxes, mesh, cLo, cHi);
+  Node node = this->BoundNode(state, begin, end, bounds);
   const std::int32_t count = end - begin;
   node.Start = begin;
   node.Count = count;
@@ -802,22 +896,38 @@ void vtkMedialTriangleBVH::BuildNode(std::vector<Node>& nodes, std::int32_t node
     nodes[nodeIndex] = node;
     return;
   }
-  const std::int32_t mid = SplitNode(begin, end, order, centroids, boxes, cLo, cHi);
+  BuildBounds leftBounds, rightBounds;
+  const std::int32_t mid = SplitNode(state, begin, end, bounds, leftBounds, rightBounds);
   const std::int32_t left = static_cast<std::int32_t>(nodes.size());
   nodes.emplace_back();
   nodes.emplace_back();
   node.Start = left;
   node.Count = 0;
   nodes[nodeIndex] = node;
-  this->BuildNode(nodes, left, begin, mid, order, centroids, boxes, mesh, later, grain);
-  this->BuildNode(nodes, left + 1, mid, end, order, centroids, boxes, mesh, later, grain);
+  this->BuildNode(state, nodes, left, begin, mid, leftBounds, later, grain);
+  this->BuildNode(state, nodes, left + 1, mid, end, rightBounds, later, grain);
 }
 
-vtkMedialTriangleBVH::Node vtkMedialTriangleBVH::BoundNode(std::int32_t begin, std::int32_t end,
-  const std::vector<std::int32_t>& order, const std::vector<double>& centroids, const std::vector<double>& boxes,
-  const vtkMedialTriangleMesh& mesh, double cLo[3], double cHi[3]) const
+vtkMedialTriangleBVH::BuildBounds vtkMedialTriangleBVH::MeasureBounds(
+  const BuildState& state, std::int32_t begin, std::int32_t end)
 {
-  // Bounds: the box of the triangles and of their centroids, and the area vector sum.
+  BuildBounds bounds = EmptyBounds();
+  FoldRange(
+    begin, end, bounds,
+    [&](BuildBounds& part, std::int32_t i) {
+      const BuildItem& item = state.Items[i];
+      Widen(part, item.Lo, item.Hi, item.Centroid, item.Centroid);
+    },
+    MergeBounds, EmptyBounds());
+  return bounds;
+}
+
+vtkMedialTriangleBVH::Node vtkMedialTriangleBVH::BoundNode(
+  const BuildState& state, std::int32_t begin, std::int32_t end, const BuildBounds& bounds) const
+{
+  // The slab along the area-weighted mean normal; the box from `bounds`.
+  const vtkMedialTriangleMesh& mesh = state.Mesh;
+  const vtkMedialBuffer<BuildItem>& items = state.Items;
   Node node{};
   double area[3] = { 0, 0, 0 }, totalArea = 0.0;
   // Large nodes are never culled by a slab (their boxes decide), so they skip it.
@@ -826,7 +936,7 @@ vtkMedialTriangleBVH::Node vtkMedialTriangleBVH::BoundNode(std::int32_t begin, s
   {
     for (std::int32_t i = begin; i < end; ++i)
     {
-      const std::int32_t t = order[i];
+      const std::int32_t t = items[i].Triangle;
       totalArea += mesh.Areas[t];
       for (int k = 0; k < 3; ++k)
       {
@@ -834,33 +944,7 @@ vtkMedialTriangleBVH::Node vtkMedialTriangleBVH::BoundNode(std::int32_t begin, s
       }
     }
   }
-  NodeBoxes box;
-  FoldRange(
-    begin, end, box,
-    [&](NodeBoxes& part, std::int32_t i) {
-      const std::int32_t t = order[i];
-      for (int k = 0; k < 3; ++k)
-      {
-        part.Lo[k] = std::min(part.Lo[k], boxes[6 * t + k]);
-        part.Hi[k] = std::max(part.Hi[k], boxes[6 * t + 3 + k]);
-        part.CLo[k] = std::min(part.CLo[k], centroids[3 * t + k]);
-        part.CHi[k] = std::max(part.CHi[k], centroids[3 * t + k]);
-      }
-    },
-    [](NodeBoxes& whole, const NodeBoxes& part) {
-      for (int k = 0; k < 3; ++k)
-      {
-        whole.Lo[k] = std::min(whole.Lo[k], part.Lo[k]);
-        whole.Hi[k] = std::max(whole.Hi[k], part.Hi[k]);
-        whole.CLo[k] = std::min(whole.CLo[k], part.CLo[k]);
-        whole.CHi[k] = std::max(whole.CHi[k], part.CHi[k]);
-      }
-    });
-  const double* lo = box.Lo;
-  const double* hi = box.Hi;
-  std::copy_n(box.CLo, 3, cLo);
-  std::copy_n(box.CHi, 3, cHi);
-  // The slab along the mean normal; skipped when the normals (nearly) cancel out.
+  // Skipped when the normals (nearly) cancel out.
   const double areaNorm = std::sqrt(G::Dot(area, area));
   if (slab && areaNorm > 0.25 * totalArea && areaNorm > 0.0)
   {
@@ -874,7 +958,7 @@ vtkMedialTriangleBVH::Node vtkMedialTriangleBVH::BoundNode(std::int32_t begin, s
     double slabLo = HUGE_VAL, slabHi = -HUGE_VAL;
     for (std::int32_t i = begin; i < end; ++i)
     {
-      const vtkIdType* v = mesh.GetTriangle(order[i]);
+      const vtkIdType* v = mesh.GetTriangle(items[i].Triangle);
       for (int j = 0; j < 3; ++j)
       {
         double x[3];
@@ -889,16 +973,19 @@ vtkMedialTriangleBVH::Node vtkMedialTriangleBVH::BoundNode(std::int32_t begin, s
   }
   for (int k = 0; k < 3; ++k)
   {
-    node.Lo[k] = Down(lo[k] - this->Origin[k], this->RoundingPad);
-    node.Hi[k] = Up(hi[k] - this->Origin[k], this->RoundingPad);
+    node.Lo[k] = Down(bounds.Lo[k] - this->Origin[k], this->RoundingPad);
+    node.Hi[k] = Up(bounds.Hi[k] - this->Origin[k], this->RoundingPad);
   }
   return node;
 }
 
-std::int32_t vtkMedialTriangleBVH::SplitNode(std::int32_t begin, std::int32_t end, std::vector<std::int32_t>& order,
-  const std::vector<double>& centroids, const std::vector<double>& boxes, const double cLo[3], const double cHi[3])
+std::int32_t vtkMedialTriangleBVH::SplitNode(BuildState& state, std::int32_t begin, std::int32_t end,
+  const BuildBounds& bounds, BuildBounds& leftBounds, BuildBounds& rightBounds)
 {
   // Binned SAH along the widest centroid axis.
+  vtkMedialBuffer<BuildItem>& items = state.Items;
+  const double* cLo = bounds.CLo;
+  const double* cHi = bounds.CHi;
   const std::int32_t count = end - begin;
   int axis = 0;
   for (int k = 1; k < 3; ++k)
@@ -909,12 +996,13 @@ std::int32_t vtkMedialTriangleBVH::SplitNode(std::int32_t begin, std::int32_t en
     }
   }
   std::int32_t mid = begin + count / 2;
+  bool binnedSplit = false;
   const double extent = cHi[axis] - cLo[axis];
   if (extent > 0.0)
   {
     const double scale = Bins / extent;
-    auto binOf = [&](std::int32_t t) {
-      return std::min(Bins - 1, static_cast<int>((centroids[3 * t + axis] - cLo[axis]) * scale));
+    auto binOf = [&](const BuildItem& item) {
+      return std::min(Bins - 1, static_cast<int>((item.Centroid[axis] - cLo[axis]) * scale));
     };
     struct Binned
     {
@@ -923,46 +1011,50 @@ std::int32_t vtkMedialTriangleBVH::SplitNode(std::int32_t begin, std::int32_t en
     FoldRange(
       begin, end, binned,
       [&](Binned& part, std::int32_t i) {
-        const std::int32_t t = order[i];
-        SahBin& b = part.Bin[binOf(t)];
-        ++b.Count;
-        for (int k = 0; k < 3; ++k)
-        {
-          b.Lo[k] = std::min(b.Lo[k], boxes[6 * t + k]);
-          b.Hi[k] = std::max(b.Hi[k], boxes[6 * t + 3 + k]);
-        }
+        SahBin& bin = part.Bin[binOf(items[i])];
+        ++bin.Count;
+        Widen(bin.Bounds, items[i].Lo, items[i].Hi, items[i].Centroid, items[i].Centroid);
       },
       [](Binned& whole, const Binned& part) {
         for (int j = 0; j < Bins; ++j)
         {
           whole.Bin[j].Count += part.Bin[j].Count;
-          for (int k = 0; k < 3; ++k)
-          {
-            whole.Bin[j].Lo[k] = std::min(whole.Bin[j].Lo[k], part.Bin[j].Lo[k]);
-            whole.Bin[j].Hi[k] = std::max(whole.Bin[j].Hi[k], part.Bin[j].Hi[k]);
-          }
+          MergeBounds(whole.Bin[j].Bounds, part.Bin[j].Bounds);
         }
-      });
+      },
+      Binned{});
     const SahBin* bins = binned.Bin;
     const int bestSplit = CheapestSplit(bins, count);
     if (bestSplit >= 0)
     {
       mid = static_cast<std::int32_t>(
-        std::partition(order.begin() + begin, order.begin() + end,
-          [&](std::int32_t t) { return binOf(t) <= bestSplit; }) -
-        order.begin());
+        PartitionItems(items.data() + begin, items.data() + end,
+          [&](const BuildItem& item) { return binOf(item) <= bestSplit; }) -
+        items.data());
+      leftBounds = rightBounds = EmptyBounds();
+      for (int j = 0; j < Bins; ++j)
+      {
+        MergeBounds(j <= bestSplit ? leftBounds : rightBounds, bins[j].Bounds);
+      }
+      binnedSplit = mid > begin && mid < end; // always, as the cheapest split leaves no side empty
     }
+  }
+  if (binnedSplit)
+  {
+    return mid;
   }
   if (mid <= begin || mid >= end)
   {
     // All centroids in one bin: split at the median, ties broken by id (deterministic).
     mid = begin + count / 2;
-    std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
-      [&](std::int32_t a, std::int32_t b) {
-        const double ca = centroids[3 * a + axis], cb = centroids[3 * b + axis];
-        return ca < cb || (ca == cb && a < b);
+    std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
+      [&](const BuildItem& a, const BuildItem& b) {
+        const double ca = a.Centroid[axis], cb = b.Centroid[axis];
+        return ca < cb || (ca == cb && a.Triangle < b.Triangle);
       });
   }
+  leftBounds = MeasureBounds(state, begin, mid);
+  rightBounds = MeasureBounds(state, mid, end);
   return mid;
 }
 

@@ -34,6 +34,7 @@
 #ifndef vtkMedialTriangleBVH_h
 #define vtkMedialTriangleBVH_h
 
+#include "vtkMedialBuffer.h"
 #include "vtkType.h"
 
 #include <cstdint>
@@ -120,6 +121,10 @@ public:
   void VisitWithin(const double x[3], double distance, const double samplePoint[3], double cosMinAngle,
     const std::function<void(double, const double*, vtkIdType)>& visit) const;
 
+  /// Mesh triangle t's unit outward normal and offset (n.x = offset on its plane): the
+  /// tree's copy of the mesh's normal, the same bits.
+  const double* GetPlane(vtkIdType t) const { return &this->Planes[4 * static_cast<size_t>(this->LeafRank[t])]; }
+
   /// Position of each mesh triangle in leaf order: nearby triangles get nearby ranks.
   const std::vector<std::int32_t>& GetLeafRanks() const { return this->LeafRank; }
   vtkIdType GetNumberOfNodes() const { return static_cast<vtkIdType>(this->Nodes.size()); }
@@ -148,37 +153,43 @@ public:
     std::int32_t Child[4];
   };
 
+  // Build only: a node's box and the box of its triangles' centroids, in double.
+  struct BuildBounds
+  {
+    double Lo[3], Hi[3], CLo[3], CHi[3];
+  };
+
 private:
   class TangentSearch; // the passes of MaximalTangentBall
 
   struct Subtree
   {
     std::int32_t Node, Begin, End;
+    BuildBounds Bounds;
   };
+  // Build only: each triangle's box and centroid, and the order being partitioned.
+  struct BuildState;
   // The nodes (Build's first pass): `order` becomes the leaf order. False when aborted.
-  bool BuildNodes(const vtkMedialTriangleMesh& mesh, std::vector<std::int32_t>& order,
+  bool BuildNodes(const vtkMedialTriangleMesh& mesh, vtkMedialBuffer<std::int32_t>& order,
     const std::function<bool()>& aborted);
   // Build's second pass: Vertices, Planes, TriangleIds, LeafRank, LeafNode, Parent.
-  void CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, const std::vector<std::int32_t>& order);
+  void CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, const vtkMedialBuffer<std::int32_t>& order);
   // Build's last pass: WideNodes and LaneOfNode from the binary tree.
   // False when the mesh is too large for the leaf encoding.
   bool BuildWideNodes();
-  // Builds the subtree of triangles order[begin, end) into nodes[node]. With
-  // `later`, ranges of at most `grain` triangles are only recorded there, to be
-  // built in parallel.
-  void BuildNode(std::vector<Node>& nodes, std::int32_t node, std::int32_t begin, std::int32_t end,
-    std::vector<std::int32_t>& order, const std::vector<double>& centroids,
-    const std::vector<double>& boxes, const vtkMedialTriangleMesh& mesh,
-    std::vector<Subtree>* later, std::int32_t grain) const;
-  // The node over order[begin, end): its box, its slab; and its centroids' box.
-  Node BoundNode(std::int32_t begin, std::int32_t end, const std::vector<std::int32_t>& order,
-    const std::vector<double>& centroids, const std::vector<double>& boxes, const vtkMedialTriangleMesh& mesh,
-    double cLo[3], double cHi[3]) const;
+  // Builds the subtree of triangles order[begin, end), whose bounds are `bounds`,
+  // into nodes[node]. With `later`, ranges of at most `grain` triangles are only
+  // recorded there, to be built in parallel.
+  void BuildNode(BuildState& state, vtkMedialSmallPageBuffer<Node>& nodes, std::int32_t node, std::int32_t begin,
+    std::int32_t end, const BuildBounds& bounds, std::vector<Subtree>* later, std::int32_t grain) const;
+  // The node over order[begin, end) with the given bounds: its float box and its slab.
+  Node BoundNode(const BuildState& state, std::int32_t begin, std::int32_t end, const BuildBounds& bounds) const;
+  // The bounds of order[begin, end), by a pass over its triangles.
+  static BuildBounds MeasureBounds(const BuildState& state, std::int32_t begin, std::int32_t end);
   // Partitions order[begin, end) for the two children (binned SAH, else the median);
-  // returns where the right child starts.
-  static std::int32_t SplitNode(std::int32_t begin, std::int32_t end, std::vector<std::int32_t>& order,
-    const std::vector<double>& centroids, const std::vector<double>& boxes, const double cLo[3],
-    const double cHi[3]);
+  // returns where the right child starts, and the children's bounds.
+  static std::int32_t SplitNode(BuildState& state, std::int32_t begin, std::int32_t end,
+    const BuildBounds& bounds, BuildBounds& left, BuildBounds& right);
 
   // Depth first, nearer child first, over the triangles other than ownTriangle
   // whose admissible part may lie within sqrt(reach2) of x. visit(d2, q, triangle)
@@ -188,20 +199,20 @@ private:
   void VisitAdmissible(const double x[3], vtkIdType ownTriangle, const double samplePoint[3],
     double cosMinAngle, bool capOnly, double& reach2, Visit visit) const;
 
-  std::vector<Node> Nodes;
+  vtkMedialBuffer<Node> Nodes;
   // The tangent search's tree. A lane is named by its reference, wide node * 4 + lane;
   // wide node 0 holds the binary root in lane 0 and nothing else.
   std::vector<WideNode> WideNodes;
   std::vector<std::int32_t> LaneOfNode; // reference of each binary node kept as a lane, else -1
-  double Origin[3] = { 0, 0, 0 };     // the bounding-box centre: node bounds are relative to it
-  double RoundingPad = 0.0;           // absolute padding of the float bounds
-  std::vector<double> Vertices;       // 9 per triangle, leaf order
-  std::vector<double> Planes;         // 4 per triangle, leaf order: unit normal, offset
-  std::vector<float> TriangleBoxes;   // 6 per triangle, leaf order: box like a node's
-  std::vector<vtkIdType> TriangleIds; // mesh triangle of each leaf-order slot
-  std::vector<std::int32_t> LeafRank; // inverse of TriangleIds
-  std::vector<std::int32_t> LeafNode; // leaf node of each leaf-order slot
-  std::vector<std::int32_t> Parent;   // parent of each node, -1 for the root
+  double Origin[3] = { 0, 0, 0 };          // the bounding-box centre: node bounds are relative to it
+  double RoundingPad = 0.0;                // absolute padding of the float bounds
+  vtkMedialBuffer<double> Vertices;        // 9 per triangle, leaf order
+  vtkMedialBuffer<double> Planes;          // 4 per triangle, leaf order: unit normal, offset
+  vtkMedialBuffer<float> TriangleBoxes;    // 6 per triangle, leaf order: box like a node's
+  vtkMedialBuffer<std::int32_t> TriangleIds; // mesh triangle of each leaf-order slot
+  std::vector<std::int32_t> LeafRank;      // inverse of TriangleIds
+  vtkMedialBuffer<std::int32_t> LeafNode;  // leaf node of each leaf-order slot
+  vtkMedialBuffer<std::int32_t> Parent;    // parent of each node, -1 for the root
 };
 
 #endif

@@ -24,6 +24,8 @@
 #include <cstring>
 #include <sstream>
 
+#include <omp.h>
+
 namespace
 {
 namespace G = vtkMedialGeometry;
@@ -57,30 +59,52 @@ std::string FormatPoint(const double x[3])
 
 // Items 0..n-1 grouped by key(i) in [0, keys) with a counting sort, stable: emit(i,
 // position) places item i, the items of each key in increasing order. Returns where
-// each key's items start (keys + 1 entries).
+// each key's items start (keys + 1 entries). Large inputs are cut into a few
+// consecutive chunks counted and placed in parallel; chunk c's items of a key go after
+// those of the chunks before it, so the result is the serial one.
 template <class Key, class Emit>
-std::vector<vtkIdType> GroupByKey(vtkIdType n, vtkIdType keys, Key key, Emit emit)
+vtkMedialBuffer<vtkIdType> GroupByKey(vtkIdType n, vtkIdType keys, Key key, Emit emit)
 {
-  std::vector<vtkIdType> offsets(static_cast<size_t>(keys) + 1, 0);
-  for (vtkIdType i = 0; i < n; ++i)
+  // At most 4 chunks: each keeps a count per key.
+  const int chunks = n >= (1 << 16) ? std::max(1, std::min(4, omp_get_max_threads())) : 1;
+  auto chunkBegin = [&](int c) { return static_cast<vtkIdType>(n * static_cast<double>(c) / chunks); };
+  std::vector<vtkMedialBuffer<vtkIdType>> next(chunks); // per chunk: where its next item of each key goes
+#pragma omp parallel for num_threads(chunks) schedule(static, 1)
+  for (int c = 0; c < chunks; ++c)
   {
-    ++offsets[key(i) + 1];
+    next[c].assign(static_cast<size_t>(keys), 0);
+    for (vtkIdType i = chunkBegin(c); i < chunkBegin(c + 1); ++i)
+    {
+      ++next[c][key(i)];
+    }
   }
+  vtkMedialBuffer<vtkIdType> offsets(static_cast<size_t>(keys) + 1);
+  vtkIdType total = 0;
   for (vtkIdType k = 0; k < keys; ++k)
   {
-    offsets[k + 1] += offsets[k];
+    offsets[k] = total;
+    for (int c = 0; c < chunks; ++c)
+    {
+      const vtkIdType count = next[c][k];
+      next[c][k] = total;
+      total += count;
+    }
   }
-  std::vector<vtkIdType> next(offsets.begin(), offsets.end() - 1);
-  for (vtkIdType i = 0; i < n; ++i)
+  offsets[keys] = total;
+#pragma omp parallel for num_threads(chunks) schedule(static, 1)
+  for (int c = 0; c < chunks; ++c)
   {
-    emit(i, next[key(i)]++);
+    for (vtkIdType i = chunkBegin(c); i < chunkBegin(c + 1); ++i)
+    {
+      emit(i, next[c][key(i)]++);
+    }
   }
   return offsets;
 }
 
 // The points as doubles, 3 per point, without a virtual call per point for the usual
 // float and double arrays.
-void ReadPoints(vtkPoints* points, std::vector<double>& out)
+void ReadPoints(vtkPoints* points, vtkMedialBuffer<double>& out)
 {
   const vtkIdType n = points->GetNumberOfPoints();
   out.resize(3 * static_cast<size_t>(n));
@@ -107,7 +131,7 @@ void ReadPoints(vtkPoints* points, std::vector<double>& out)
 // Every cell of `cells` as a triangle, 3 ids each; false (nothing read) when a cell
 // has another size.
 template <class Ids>
-bool ReadTriangleCells(const Ids* offsets, const Ids* connectivity, vtkIdType cells, std::vector<vtkIdType>& out)
+bool ReadTriangleCells(const Ids* offsets, const Ids* connectivity, vtkIdType cells, vtkMedialBuffer<vtkIdType>& out)
 {
   for (vtkIdType c = 0; c <= cells; ++c)
   {
@@ -119,7 +143,7 @@ bool ReadTriangleCells(const Ids* offsets, const Ids* connectivity, vtkIdType ce
   out.assign(connectivity, connectivity + 3 * cells);
   return true;
 }
-bool ReadTriangleCells(vtkCellArray* cells, std::vector<vtkIdType>& out)
+bool ReadTriangleCells(vtkCellArray* cells, vtkMedialBuffer<vtkIdType>& out)
 {
   const vtkIdType n = cells->GetNumberOfCells();
   if (cells->GetNumberOfConnectivityIds() != 3 * n)
@@ -139,7 +163,7 @@ bool ReadTriangleCells(vtkCellArray* cells, std::vector<vtkIdType>& out)
 // among them, as vtkStaticCleanPolyData does with tolerance 0: the kept points keep
 // their order (unused ones too) and the triangles are renumbered. Linear: points
 // are grouped by a hash of their coordinates, then compared within each group.
-void MergeCoincidentPoints(std::vector<double>& points, std::vector<vtkIdType>& triangles)
+void MergeCoincidentPoints(vtkMedialBuffer<double>& points, vtkMedialBuffer<vtkIdType>& triangles)
 {
   const vtkIdType np = static_cast<vtkIdType>(points.size() / 3);
   vtkIdType buckets = 1;
@@ -147,7 +171,7 @@ void MergeCoincidentPoints(std::vector<double>& points, std::vector<vtkIdType>& 
   {
     buckets <<= 1;
   }
-  std::vector<vtkIdType> hash(np);
+  vtkMedialBuffer<vtkIdType> hash(np);
 #pragma omp parallel for schedule(static)
   for (vtkIdType i = 0; i < np; ++i)
   {
@@ -162,10 +186,10 @@ void MergeCoincidentPoints(std::vector<double>& points, std::vector<vtkIdType>& 
     }
     hash[i] = static_cast<vtkIdType>(h & static_cast<std::uint64_t>(buckets - 1));
   }
-  std::vector<vtkIdType> byHash(np);
-  const std::vector<vtkIdType> offsets = GroupByKey(
+  vtkMedialBuffer<vtkIdType> byHash(np);
+  const vtkMedialBuffer<vtkIdType> offsets = GroupByKey(
     np, buckets, [&](vtkIdType i) { return hash[i]; }, [&](vtkIdType i, vtkIdType at) { byHash[at] = i; });
-  std::vector<vtkIdType>& merged = hash; // reused: the point each one merges into
+  vtkMedialBuffer<vtkIdType>& merged = hash; // reused: the point each one merges into
   vtkIdType mergedCount = 0;
 #pragma omp parallel for schedule(dynamic, 4096) reduction(+ : mergedCount)
   for (vtkIdType b = 0; b < buckets; ++b)
@@ -191,7 +215,7 @@ void MergeCoincidentPoints(std::vector<double>& points, std::vector<vtkIdType>& 
   {
     return;
   }
-  std::vector<vtkIdType>& newId = byHash; // reused
+  vtkMedialBuffer<vtkIdType>& newId = byHash; // reused
   vtkIdType kept = 0;
   for (vtkIdType p = 0; p < np; ++p)
   {
@@ -214,10 +238,11 @@ struct vtkMedialTriangleMesh::Adjacency
 {
   // The uses of edges (Lo, Hi), Lo < Hi, grouped by Lo: Uses[First[Lo], First[Lo + 1]),
   // sorted by Hi, then by triangle. The uses of one edge are adjacent.
+  // 32-bit fields (Build rejects larger meshes): half the memory to fill and sort.
   struct EdgeUse
   {
-    vtkIdType Hi;
-    vtkIdType TriangleAndDirection; // 2 * triangle, + 1 when the triangle walks Lo -> Hi
+    std::int32_t Hi;
+    std::int32_t TriangleAndDirection; // 2 * triangle, + 1 when the triangle walks Lo -> Hi
     bool operator<(const EdgeUse& o) const
     {
       return Hi != o.Hi ? Hi < o.Hi : TriangleAndDirection < o.TriangleAndDirection;
@@ -225,11 +250,12 @@ struct vtkMedialTriangleMesh::Adjacency
     vtkIdType Triangle() const { return TriangleAndDirection >> 1; }
     bool Forward() const { return (TriangleAndDirection & 1) != 0; }
   };
-  std::vector<vtkIdType> First;
-  std::vector<EdgeUse> Uses;
-  std::vector<vtkIdType> Neighbour;     // 3 per triangle, across manifold edges
-  std::vector<char> SameDirection;      // 3 per triangle: the neighbour walks the edge the same way
-  std::vector<unsigned char> Degree;    // neighbours of each triangle
+  vtkMedialBuffer<vtkIdType> First;
+  vtkMedialBuffer<EdgeUse> Uses;
+  // Entries k < Degree of each triangle are set, the others never read.
+  vtkMedialBuffer<std::int32_t> Neighbour; // 3 per triangle, across manifold edges
+  vtkMedialBuffer<char> SameDirection;  // 3 per triangle: the neighbour walks the edge the same way
+  vtkMedialBuffer<unsigned char> Degree; // neighbours of each triangle
 
   // Calls visit(begin, end) for the uses [begin, end) of each edge, in (Lo, Hi) order.
   template <class Visit>
@@ -277,6 +303,13 @@ bool vtkMedialTriangleMesh::Build(
   if (this->SourceCellIds.empty())
   {
     error = "input has no non-degenerate triangles";
+    return false;
+  }
+  // The adjacency and the tree number triangles and points in 32 bits.
+  if (this->GetNumberOfPoints() >= (vtkIdType(1) << 31) ||
+    static_cast<vtkIdType>(this->SourceCellIds.size()) >= (vtkIdType(1) << 30))
+  {
+    error = "input has too many triangles (at most 2^30) or points (2^31)";
     return false;
   }
   {
@@ -361,7 +394,7 @@ bool vtkMedialTriangleMesh::ValidateInput(vtkPolyData* input, std::string& error
 // read straight from its cell array; others go through vtkTriangleFilter.
 void vtkMedialTriangleMesh::ImportTriangles(vtkPolyData* input)
 {
-  std::vector<vtkIdType> triangles, sourceIds;
+  vtkMedialBuffer<vtkIdType> triangles, sourceIds;
   const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
   const bool direct = input->GetNumberOfStrips() == 0 && ReadTriangleCells(input->GetPolys(), triangles);
   if (!direct)
@@ -435,8 +468,8 @@ void vtkMedialTriangleMesh::DropDuplicateTriangles()
     std::sort(v.begin(), v.end());
     return v;
   };
-  std::vector<vtkIdType> byLowest(nt);
-  const std::vector<vtkIdType> offsets = GroupByKey(
+  vtkMedialBuffer<vtkIdType> byLowest(nt);
+  const vtkMedialBuffer<vtkIdType> offsets = GroupByKey(
     nt, this->GetNumberOfPoints(), [&](vtkIdType t) { return sorted(t)[0]; },
     [&](vtkIdType t, vtkIdType at) { byLowest[at] = t; });
   std::vector<char> duplicate(nt, 0);
@@ -518,7 +551,8 @@ bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::func
     [&](vtkIdType use, vtkIdType at) {
       vtkIdType a, b;
       ends(use, a, b);
-      uses[at] = { std::max(a, b), 2 * (use / 3) + (a < b ? 1 : 0) };
+      uses[at] = { static_cast<std::int32_t>(std::max(a, b)),
+        static_cast<std::int32_t>(2 * (use / 3) + (a < b ? 1 : 0)) };
     });
   if (aborted && aborted())
   {
@@ -534,8 +568,8 @@ bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::func
   {
     return false;
   }
-  adjacency.Neighbour.assign(3 * nt, -1);
-  adjacency.SameDirection.assign(3 * nt, 0);
+  adjacency.Neighbour.resize(3 * nt);
+  adjacency.SameDirection.resize(3 * nt);
   adjacency.Degree.assign(nt, 0);
   adjacency.ForEachEdge([&](size_t i, size_t j) {
     ++this->Edges;
@@ -551,9 +585,9 @@ bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::func
       auto& degree = adjacency.Degree;
       if (degree[a] < 3 && degree[b] < 3)
       {
-        adjacency.Neighbour[3 * a + degree[a]] = b;
+        adjacency.Neighbour[3 * a + degree[a]] = static_cast<std::int32_t>(b);
         adjacency.SameDirection[3 * a + degree[a]++] = same;
-        adjacency.Neighbour[3 * b + degree[b]] = a;
+        adjacency.Neighbour[3 * b + degree[b]] = static_cast<std::int32_t>(a);
         adjacency.SameDirection[3 * b + degree[b]++] = same;
       }
     }

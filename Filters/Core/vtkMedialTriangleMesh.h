@@ -33,6 +33,7 @@
 #ifndef vtkMedialTriangleMesh_h
 #define vtkMedialTriangleMesh_h
 
+#include "vtkMedialBuffer.h"
 #include "vtkType.h"
 
 #include <functional>
@@ -55,6 +56,10 @@ public:
   const double* GetPoint(vtkIdType i) const { return &this->Points[3 * i]; }
   const vtkIdType* GetTriangle(vtkIdType t) const { return &this->Triangles[3 * t]; }
   const double* GetNormal(vtkIdType t) const { return &this->Normals[3 * t]; }
+  /// Frees the normals (24 bytes a triangle) for a caller that reads them from a built
+  /// vtkMedialSurfaceQuery instead (its tree keeps the same values); GetNormal and the
+  /// Normals array must not be used afterwards.
+  void ReleaseNormals() { vtkMedialBuffer<double>().swap(this->Normals); }
 
   /// V - E + F of the triangulated surface (2 - 2 genus for a closed, connected one).
   vtkIdType GetEulerCharacteristic() const
@@ -92,13 +97,13 @@ public:
     double Point[3] = { 0, 0, 0 }; // where: the centroid of one of the touching triangles
   };
 
-  std::vector<double> Points;          // 3 per point
-  std::vector<vtkIdType> Triangles;    // 3 per triangle, counter-clockwise seen from outside
-  std::vector<vtkIdType> SourceCellIds; // input cell id of each triangle
-  std::vector<double> Normals;         // unit normal out of the solid, 3 per triangle
-  std::vector<double> Areas;
-  std::vector<double> AreaCdf; // normalised cumulative area, last entry 1
-  std::vector<int> ShellOfTriangle;
+  vtkMedialBuffer<double> Points;          // 3 per point
+  vtkMedialBuffer<vtkIdType> Triangles;    // 3 per triangle, counter-clockwise seen from outside
+  vtkMedialBuffer<vtkIdType> SourceCellIds; // input cell id of each triangle
+  vtkMedialBuffer<double> Normals;         // unit normal out of the solid, 3 per triangle
+  vtkMedialBuffer<double> Areas;
+  vtkMedialBuffer<double> AreaCdf; // normalised cumulative area, last entry 1
+  vtkMedialBuffer<int> ShellOfTriangle;
   std::vector<Shell> Shells; // in the order of their first triangle
   std::vector<ShellContact> Contacts;
 

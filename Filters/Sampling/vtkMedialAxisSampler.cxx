@@ -158,6 +158,11 @@ int vtkMedialAxisSampler::RequestData(
       0.1, 1.0);
     return passes.SampleIterative(mesh, query, output);
   }
+  if (this->CoverageTolerance <= 0.0)
+  {
+    // Random sampling reads normals from the query's tree only: the mesh's copy goes.
+    mesh.ReleaseNormals();
+  }
   return passes.SampleRandom(mesh, query, pieces, output, stages);
 }
 
