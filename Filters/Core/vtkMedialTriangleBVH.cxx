@@ -708,7 +708,7 @@ bool vtkMedialTriangleBVH::BuildNodes(
   return true;
 }
 
-// The triangles' vertices and planes in leaf order, the ranks, and each node's parent.
+// The triangles' vertices, planes and boxes in leaf order, and the ranks.
 void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, const vtkMedialBuffer<std::int32_t>& order)
 {
   const vtkIdType nt = mesh.GetNumberOfTriangles();
@@ -740,29 +740,12 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, co
       std::copy_n(mesh.GetPoint(mesh.GetTriangle(t)[j]), 3, &this->Vertices[9 * i + 3 * j]);
     }
   }
-  // Every node but the root is some inner node's child, and every slot in some leaf.
-  this->Parent.resize(this->Nodes.size());
-  this->Parent[0] = -1;
-  this->LeafNode.resize(nt);
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < static_cast<std::int64_t>(this->Nodes.size()); ++i)
-  {
-    const Node& node = this->Nodes[i];
-    if (node.Count > 0)
-    {
-      std::fill_n(&this->LeafNode[node.Start], node.Count, static_cast<std::int32_t>(i));
-    }
-    else
-    {
-      this->Parent[node.Start] = this->Parent[node.Start + 1] = static_cast<std::int32_t>(i);
-    }
-  }
 }
 
 bool vtkMedialTriangleBVH::BuildWideNodes()
 {
   this->WideNodes.clear();
-  this->LaneOfNode.assign(this->Nodes.size(), -1);
+  this->LeafLane.resize(this->TriangleIds.size());
   if (this->Nodes.empty() || this->TriangleIds.size() >= (size_t(1) << 28))
   {
     return false;
@@ -863,7 +846,10 @@ bool vtkMedialTriangleBVH::BuildWideNodes()
         wide.SlabLo[i] = node.SlabLo;
         wide.SlabHi[i] = node.SlabHi;
         wide.Child[i] = node.Count > 0 ? ~(node.Start * LeafCodeScale + node.Count) : 0;
-        this->LaneOfNode[lanes[i]] = 4 * index + i;
+        if (node.Count > 0)
+        {
+          std::fill_n(&this->LeafLane[node.Start], node.Count, 4 * index + i);
+        }
       }
       this->WideNodes.push_back(wide);
       for (int i = count - 1; i >= 0; --i)
@@ -1100,7 +1086,7 @@ public:
     std::int32_t seed = -1;
     if (this->Result.HintTriangle >= 0)
     {
-      seed = this->Tree.LaneOfNode[this->Tree.LeafNode[this->Tree.LeafRank[this->Result.HintTriangle]]];
+      seed = this->Tree.LeafLane[this->Tree.LeafRank[this->Result.HintTriangle]];
       this->Traverse(seed, -1);
     }
     this->Traverse(0, seed);

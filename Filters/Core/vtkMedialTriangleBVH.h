@@ -172,9 +172,9 @@ private:
   // The nodes (Build's first pass): `order` becomes the leaf order. False when aborted.
   bool BuildNodes(const vtkMedialTriangleMesh& mesh, vtkMedialBuffer<std::int32_t>& order,
     const std::function<bool()>& aborted);
-  // Build's second pass: Vertices, Planes, TriangleIds, LeafRank, LeafNode, Parent.
+  // Build's second pass: Vertices, Planes, TriangleIds, LeafRank.
   void CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, const vtkMedialBuffer<std::int32_t>& order);
-  // Build's last pass: WideNodes and LaneOfNode from the binary tree.
+  // Build's last pass: WideNodes and LeafLane from the binary tree.
   // False when the mesh is too large for the leaf encoding.
   bool BuildWideNodes();
   // Builds the subtree of triangles order[begin, end), whose bounds are `bounds`,
@@ -203,7 +203,6 @@ private:
   // The tangent search's tree. A lane is named by its reference, wide node * 4 + lane;
   // wide node 0 holds the binary root in lane 0 and nothing else.
   std::vector<WideNode> WideNodes;
-  std::vector<std::int32_t> LaneOfNode; // reference of each binary node kept as a lane, else -1
   double Origin[3] = { 0, 0, 0 };          // the bounding-box centre: node bounds are relative to it
   double RoundingPad = 0.0;                // absolute padding of the float bounds
   vtkMedialBuffer<double> Vertices;        // 9 per triangle, leaf order
@@ -211,8 +210,7 @@ private:
   vtkMedialBuffer<float> TriangleBoxes;    // 6 per triangle, leaf order: box like a node's
   vtkMedialBuffer<std::int32_t> TriangleIds; // mesh triangle of each leaf-order slot
   std::vector<std::int32_t> LeafRank;      // inverse of TriangleIds
-  vtkMedialBuffer<std::int32_t> LeafNode;  // leaf node of each leaf-order slot
-  vtkMedialBuffer<std::int32_t> Parent;    // parent of each node, -1 for the root
+  vtkMedialBuffer<std::int32_t> LeafLane;  // the lane of the leaf holding each leaf-order slot
 };
 
 #endif
