@@ -666,9 +666,26 @@ void PrintTables(const BenchFigures& f, const BenchOptions& options, const std::
 int RunPreparation(const std::string& file)
 {
   constexpr int Runs = 3;
-  std::vector<double> read, prepare, queries, readCpu, prepareCpu, queriesCpu;
-  double peak[3] = { 0, 0, 0 }; // peak RSS after each stage of the first run
-  double now[3] = { 0, 0, 0 };  // RSS after each stage of the first run
+  // One stage over the runs: wall and CPU seconds of each run, the RSS after it and
+  // the peak RSS so far in the first run.
+  struct Stage
+  {
+    std::vector<double> Wall, Cpu;
+    double Rss = 0, Peak = 0;
+  };
+  Stage read, prepare, queries;
+  auto timed = [](Stage& stage, int run, auto&& work) {
+    const double t0 = Now(), c0 = CpuSeconds();
+    const bool ok = work();
+    stage.Wall.push_back(Now() - t0);
+    stage.Cpu.push_back(CpuSeconds() - c0);
+    if (run == 0)
+    {
+      stage.Peak = PeakRssMiB();
+      stage.Rss = CurrentRssMiB();
+    }
+    return ok;
+  };
   std::unique_ptr<vtkMedialTriangleMesh> kept;
   std::unique_ptr<vtkMedialSurfaceQuery> keptQuery;
   vtkIdType triangles = 0;
@@ -677,44 +694,26 @@ int RunPreparation(const std::string& file)
     keptQuery.reset(); // one mesh at a time: the peak RSS is one run's
     kept.reset();
     std::string error;
-    double t0 = Now(), c0 = CpuSeconds();
     vtkNew<vtkMedialFileReader> reader;
-    reader->SetFileName(file.c_str());
-    reader->Update();
-    vtkPolyData* surface = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-    if (!surface || surface->GetNumberOfCells() == 0)
+    vtkPolyData* surface = nullptr;
+    if (!timed(read, run, [&]() {
+          reader->SetFileName(file.c_str());
+          reader->Update();
+          surface = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+          return surface && surface->GetNumberOfCells() > 0;
+        }))
     {
       std::fprintf(stderr, "medial-bench: cannot read %s\n", file.c_str());
       return 1;
     }
-    read.push_back(Now() - t0);
-    readCpu.push_back(CpuSeconds() - c0);
-    peak[0] = run == 0 ? PeakRssMiB() : peak[0];
-    now[0] = run == 0 ? CurrentRssMiB() : now[0];
     auto mesh = std::make_unique<vtkMedialTriangleMesh>();
     auto query = std::make_unique<vtkMedialSurfaceQuery>();
-    t0 = Now();
-    c0 = CpuSeconds();
-    if (!mesh->Build(surface, error))
+    if (!timed(prepare, run, [&]() { return mesh->Build(surface, error); }) ||
+      !timed(queries, run, [&]() { return query->Build(mesh.get(), error); }))
     {
       std::fprintf(stderr, "medial-bench: %s\n", error.c_str());
       return 1;
     }
-    prepare.push_back(Now() - t0);
-    prepareCpu.push_back(CpuSeconds() - c0);
-    peak[1] = run == 0 ? PeakRssMiB() : peak[1];
-    now[1] = run == 0 ? CurrentRssMiB() : now[1];
-    t0 = Now();
-    c0 = CpuSeconds();
-    if (!query->Build(mesh.get(), error))
-    {
-      std::fprintf(stderr, "medial-bench: %s\n", error.c_str());
-      return 1;
-    }
-    queries.push_back(Now() - t0);
-    queriesCpu.push_back(CpuSeconds() - c0);
-    peak[2] = run == 0 ? PeakRssMiB() : peak[2];
-    now[2] = run == 0 ? CurrentRssMiB() : now[2];
     triangles = mesh->GetNumberOfTriangles();
     kept = std::move(mesh);
     keptQuery = std::move(query);
@@ -723,21 +722,23 @@ int RunPreparation(const std::string& file)
     std::sort(v.begin(), v.end());
     return v[v.size() / 2];
   };
-  std::vector<double> both(Runs), bothCpu(Runs);
+  Stage both;
   for (int run = 0; run < Runs; ++run)
   {
-    both[run] = prepare[run] + queries[run];
-    bothCpu[run] = prepareCpu[run] + queriesCpu[run];
+    both.Wall.push_back(prepare.Wall[run] + queries.Wall[run]);
+    both.Cpu.push_back(prepare.Cpu[run] + queries.Cpu[run]);
   }
   std::printf("preparation of %s, %lld triangles, %d threads, median of %d runs:\n", file.c_str(),
     static_cast<long long>(triangles), omp_get_max_threads(), Runs);
   std::printf("| stage | seconds | CPU seconds (user + sys) | RSS after it, first run (MiB) | peak RSS so far (MiB) "
               "|\n|---|---|---|---|---|\n");
-  std::printf("| read | %.3f | %.3f | %.0f | %.0f |\n", median(read), median(readCpu), now[0], peak[0]);
-  std::printf("| mesh preparation | %.3f | %.3f | %.0f | %.0f |\n", median(prepare), median(prepareCpu), now[1], peak[1]);
-  std::printf("| surface queries (the tree) | %.3f | %.3f | %.0f | %.0f |\n", median(queries), median(queriesCpu),
-    now[2], peak[2]);
-  std::printf("| preparation (mesh + tree) | %.3f | %.3f | | |\n", median(both), median(bothCpu));
+  for (const auto& row : { std::make_pair("read", &read), std::make_pair("mesh preparation", &prepare),
+         std::make_pair("surface queries (the tree)", &queries) })
+  {
+    std::printf("| %s | %.3f | %.3f | %.0f | %.0f |\n", row.first, median(row.second->Wall),
+      median(row.second->Cpu), row.second->Rss, row.second->Peak);
+  }
+  std::printf("| preparation (mesh + tree) | %.3f | %.3f | | |\n", median(both.Wall), median(both.Cpu));
   std::printf("ray (2 threads, 200000 rays): %.3f us\n", MeasureRays(*kept, *keptQuery));
   std::printf("peak RSS: %.0f MiB\n", PeakRssMiB());
   return 0;
