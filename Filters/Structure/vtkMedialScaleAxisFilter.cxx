@@ -52,15 +52,16 @@ public:
       }
       this->LargestRadius = std::max(this->LargestRadius, radii[i]);
     }
-    // About two centres per cell if they filled the box.
-    double volume = 1.0, extent = 0.0;
+    // About two centres per cell if they filled the box (a flat side counts as a
+    // billionth of the longest, so that a planar set of centres still gets cells).
+    const double extent = std::max(
+      { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+    double volume = 1.0;
     for (int k = 0; k < 3; ++k)
     {
-      const double side = bounds[2 * k + 1] - bounds[2 * k];
-      extent = std::max(extent, side);
-      volume *= std::max(side, 1e-9 * extent);
+      volume *= std::max(bounds[2 * k + 1] - bounds[2 * k], 1e-9 * extent);
     }
-    const double size = std::max(std::cbrt(2.0 * volume / static_cast<double>(std::max<size_t>(n, 1))), 1e-12 * extent);
+    const double size = std::cbrt(2.0 * volume / static_cast<double>(std::max<size_t>(n, 1)));
     this->CellSize = vtkMedialUniformGrid::CubicCellSize(bounds, size > 0.0 ? size : 1.0);
     this->Grid.InitializeCubic(bounds, this->CellSize);
     this->Grid.BuildPoints(centres, {});
