@@ -64,14 +64,20 @@ std::string SharedMesh(const char* name)
   return stat(path.c_str(), &st) == 0 ? path : std::string();
 }
 
+// The output of `algorithm`, updated, as a polydata of its own.
+vtkSmartPointer<vtkPolyData> Output(vtkPolyDataAlgorithm* algorithm)
+{
+  algorithm->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(algorithm->GetOutput());
+  return out;
+}
+
 vtkSmartPointer<vtkPolyData> Read(const std::string& path)
 {
   vtkNew<vtkMedialFileReader> reader;
   reader->SetFileName(path.c_str());
-  reader->Update();
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  out->ShallowCopy(reader->GetOutput());
-  return out;
+  return Output(reader);
 }
 
 // End points, junctions and cycles (E - V + C) of a graph's lines.
@@ -200,31 +206,47 @@ vtkSmartPointer<vtkPolyData> AddNoise(vtkPolyData* surface, double fraction, uns
   return noisy;
 }
 
-// The medial mesh of the sampler's default balls; with scaleAxis > 0, of the balls
-// vtkMedialScaleAxisFilter keeps at that scale.
-vtkSmartPointer<vtkPolyData> MedialMesh(
-  vtkPolyData* surface, int threads, double* seconds = nullptr, double scaleAxis = 0.0)
+// The sampler's default balls on `surface`.
+vtkSmartPointer<vtkPolyData> DefaultBalls(vtkPolyData* surface, int threads)
 {
-  const auto start = std::chrono::steady_clock::now();
   vtkNew<vtkMedialAxisSampler> sampler;
   sampler->SetInputData(surface);
   sampler->SetNumberOfThreads(threads);
-  vtkNew<vtkMedialScaleAxisFilter> scale;
-  scale->SetInputConnection(sampler->GetOutputPort());
-  scale->SetScaleFactor(std::max(1.0, scaleAxis));
-  scale->SetNumberOfThreads(threads);
+  return Output(sampler);
+}
+
+// The medial mesh of `balls` inside `surface`; with scaleAxis > 0, of the balls
+// vtkMedialScaleAxisFilter keeps at that scale.
+vtkSmartPointer<vtkPolyData> MeshOf(vtkPolyData* surface, vtkPolyData* balls, int threads, double scaleAxis = 0.0)
+{
   vtkNew<vtkMedialMeshFilter> mesh;
   mesh->SetInputData(surface);
-  mesh->SetBallsConnection(scaleAxis > 0.0 ? scale->GetOutputPort() : sampler->GetOutputPort());
   mesh->SetNumberOfThreads(threads);
-  mesh->Update();
+  if (scaleAxis > 0.0)
+  {
+    vtkNew<vtkMedialScaleAxisFilter> scale;
+    scale->SetInputData(balls);
+    scale->SetScaleFactor(scaleAxis);
+    scale->SetNumberOfThreads(threads);
+    mesh->SetBallsData(Output(scale));
+  }
+  else
+  {
+    mesh->SetBallsData(balls);
+  }
+  return Output(mesh);
+}
+
+// The medial mesh of the sampler's default balls, and the seconds of both steps.
+vtkSmartPointer<vtkPolyData> MedialMesh(vtkPolyData* surface, int threads, double* seconds = nullptr)
+{
+  const auto start = std::chrono::steady_clock::now();
+  vtkSmartPointer<vtkPolyData> mesh = MeshOf(surface, DefaultBalls(surface, threads), threads);
   if (seconds)
   {
     *seconds = Seconds(start);
   }
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  out->ShallowCopy(mesh->GetOutput());
-  return out;
+  return mesh;
 }
 
 struct Reconstruction
@@ -270,10 +292,7 @@ vtkSmartPointer<vtkPolyData> Prune(vtkPolyData* mesh, int measure)
   vtkNew<vtkMedialPruneFilter> prune;
   prune->SetInputData(mesh);
   prune->SetMeasure(measure);
-  prune->Update();
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  out->ShallowCopy(prune->GetOutput());
-  return out;
+  return Output(prune);
 }
 
 void NoisyHorseTable(int threads, int resolution)
@@ -286,7 +305,8 @@ void NoisyHorseTable(int threads, int resolution)
   }
   vtkSmartPointer<vtkPolyData> clean = Read(path);
   const double diagonal = clean->GetLength();
-  vtkSmartPointer<vtkPolyData> cleanMesh = MedialMesh(clean, threads);
+  vtkSmartPointer<vtkPolyData> cleanBalls = DefaultBalls(clean, threads);
+  vtkSmartPointer<vtkPolyData> cleanMesh = MeshOf(clean, cleanBalls, threads);
   // The clean horse's medial points densely: 100,000 default balls (the mesh's 10,000
   // vertices are up to ~1% apart, which the one-sided Hausdorff would count as error).
   vtkNew<vtkMedialAxisSampler> dense;
@@ -308,13 +328,14 @@ void NoisyHorseTable(int threads, int resolution)
   for (double noise : { 0.0, 0.001, 0.005 })
   {
     vtkSmartPointer<vtkPolyData> surface = noise > 0.0 ? AddNoise(clean, noise, 7) : clean;
-    vtkSmartPointer<vtkPolyData> mesh = noise > 0.0 ? MedialMesh(surface, threads) : cleanMesh;
+    vtkSmartPointer<vtkPolyData> balls = noise > 0.0 ? DefaultBalls(surface, threads) : cleanBalls;
+    vtkSmartPointer<vtkPolyData> mesh = noise > 0.0 ? MeshOf(surface, balls, threads) : cleanMesh;
     // -1: unpruned; the prune filter's measures on the mesh; last: the scale axis on the balls.
     for (int m = -1; m <= vtkMedialPruneFilter::SCALE_AXIS + 1; ++m)
     {
       const bool onBalls = m > vtkMedialPruneFilter::SCALE_AXIS;
       vtkSmartPointer<vtkPolyData> kept =
-        m < 0 ? mesh : (onBalls ? MedialMesh(surface, threads, nullptr, scale) : Prune(mesh, m));
+        m < 0 ? mesh : (onBalls ? MeshOf(surface, balls, threads, scale) : Prune(mesh, m));
       const Reconstruction r = Rebuild(kept, clean, resolution, threads);
       const std::string name = m < 0 ? "(unpruned)"
                                      : (onBalls ? "balls s=" + std::to_string(scale).substr(0, 4)
