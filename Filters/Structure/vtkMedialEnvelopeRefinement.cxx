@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 #include <utility>
 
 namespace
@@ -52,25 +53,61 @@ double vtkMedialEnvelopeRefinement::ProbeEdge(
   return worst;
 }
 
-double vtkMedialEnvelopeRefinement::ProbeTriangle(
+double vtkMedialEnvelopeRefinement::ProbeInterior(
   const Mesh& mesh, const vtkMedialSurfaceQuery& query, const std::array<vtkIdType, 3>& t) const
 {
   double worst = 0.0;
-  for (vtkIdType i = 0; i <= Steps; ++i)
+  for (vtkIdType i = 1; i < Steps; ++i)
   {
-    for (vtkIdType j = 0; i + j <= Steps; ++j)
+    for (vtkIdType j = 1; i + j < Steps; ++j)
     {
-      const vtkIdType k = Steps - i - j;
-      if (i == Steps || j == Steps || k == Steps)
-      {
-        continue; // a corner: a vertex ball, inscribed
-      }
-      const vtkIdType probe[6] = { t[0], t[1], t[2], i, j, k };
+      const vtkIdType probe[6] = { t[0], t[1], t[2], i, j, Steps - i - j };
       worst = std::max(worst, this->Probe(mesh, query, probe, 3));
     }
   }
   return worst;
 }
+
+// The worst protrusion at each edge's probes (1/4, 1/2, 3/4), probed once per edge:
+// it depends on the edge's two balls only, which never move. A triangle's probes on
+// its sides are the same points, computed alike (a two-term weighted sum is the same
+// in either order, and the third ball's zero weight adds nothing), so a triangle's
+// worst protrusion is its interior probes' and its sides'.
+class vtkMedialEnvelopeRefinement::EdgeProbes
+{
+public:
+  // Probes the edges of `edges` (sorted pairs, any order, repeats allowed) not known yet.
+  void Probe(const vtkMedialEnvelopeRefinement& self, const Mesh& mesh, const vtkMedialSurfaceQuery& query,
+    std::vector<Edge>& edges, int threads)
+  {
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    edges.erase(std::remove_if(edges.begin(), edges.end(), [this](const Edge& e) { return this->Known.count(e) > 0; }),
+      edges.end());
+    const vtkIdType n = static_cast<vtkIdType>(edges.size());
+    std::vector<double> worst(edges.size());
+#pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      worst[i] = self.ProbeEdge(mesh, query, edges[i][0], edges[i][1]);
+    }
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      this->Known.emplace(edges[i], worst[i]);
+    }
+  }
+  double Get(const Edge& e) const { return this->Known.at(e); }
+
+private:
+  struct Hash
+  {
+    size_t operator()(const Edge& e) const
+    {
+      return std::hash<vtkIdType>()(e[0]) * 1000003u ^ std::hash<vtkIdType>()(e[1]);
+    }
+  };
+  std::unordered_map<Edge, double, Hash> Known;
+};
 
 vtkIdType vtkMedialEnvelopeRefinement::SplitEdges(const Mesh& mesh, const vtkMedialSurfaceQuery& query,
   std::vector<Edge>& marked, std::vector<Edge>& free, std::vector<char>& touched)
@@ -173,9 +210,11 @@ vtkIdType vtkMedialEnvelopeRefinement::Refine(const Mesh& mesh, const vtkMedialS
   }
   std::sort(free.begin(), free.end());
   // Each triangle's protrusion, kept between rounds: only the triangles a split made or
-  // changed are probed again (the balls of the others did not move).
+  // changed are probed again (the balls of the others did not move). A triangle's
+  // probes on its sides are its edges' probes (see EdgeProbes), kept per edge.
   std::vector<char> triangleDirty(triangles.size(), 1);
   std::vector<double> triangleProtrusion;
+  EdgeProbes sides;
   for (; this->Rounds < MaximumRounds && added < limit; ++this->Rounds)
   {
     if (aborted && aborted())
@@ -184,6 +223,15 @@ vtkIdType vtkMedialEnvelopeRefinement::Refine(const Mesh& mesh, const vtkMedialS
     }
     const vtkIdType nt = static_cast<vtkIdType>(triangles.size());
     const vtkIdType nf = static_cast<vtkIdType>(free.size());
+    std::vector<Edge> probed(free.begin(), free.end());
+    for (vtkIdType t = 0; t < nt; ++t)
+    {
+      for (int k = 0; k < 3 && triangleDirty[t]; ++k)
+      {
+        probed.push_back(Sorted(triangles[t][k], triangles[t][(k + 1) % 3]));
+      }
+    }
+    sides.Probe(*this, mesh, query, probed, threads);
     triangleProtrusion.resize(nt, 0.0);
     std::vector<double> edgeProtrusion(nf, 0.0);
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
@@ -191,13 +239,17 @@ vtkIdType vtkMedialEnvelopeRefinement::Refine(const Mesh& mesh, const vtkMedialS
     {
       if (triangleDirty[t])
       {
-        triangleProtrusion[t] = this->ProbeTriangle(mesh, query, triangles[t]);
+        double worst = this->ProbeInterior(mesh, query, triangles[t]);
+        for (int k = 0; k < 3; ++k)
+        {
+          worst = std::max(worst, sides.Get(Sorted(triangles[t][k], triangles[t][(k + 1) % 3])));
+        }
+        triangleProtrusion[t] = worst;
       }
     }
-#pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
     for (vtkIdType e = 0; e < nf; ++e)
     {
-      edgeProtrusion[e] = this->ProbeEdge(mesh, query, free[e][0], free[e][1]);
+      edgeProtrusion[e] = sides.Get(free[e]);
     }
     std::vector<Edge> marked;
     double worst = 0.0;

@@ -69,7 +69,9 @@ public:
 private:
   double Probe(const Mesh& mesh, const vtkMedialSurfaceQuery& query, const vtkIdType* ids, int n) const;
   double ProbeEdge(const Mesh& mesh, const vtkMedialSurfaceQuery& query, vtkIdType a, vtkIdType b) const;
-  double ProbeTriangle(const Mesh& mesh, const vtkMedialSurfaceQuery& query, const std::array<vtkIdType, 3>& t) const;
+  // The probes strictly inside a triangle (its side probes are its edges').
+  double ProbeInterior(const Mesh& mesh, const vtkMedialSurfaceQuery& query, const std::array<vtkIdType, 3>& t) const;
+  class EdgeProbes;
   // Splits the marked edges (see the class comment); `free` holds the edges of no
   // triangle, `touched` gets the triangles rewritten or made.
   vtkIdType SplitEdges(const Mesh& mesh, const vtkMedialSurfaceQuery& query,

@@ -562,26 +562,27 @@ void vtkMedialMeshComplex::PruneProtrusions(double tolerance)
       }
     }
   }
-  // Protrusions of every triangle (centroid and side midpoints) and edge (midpoint).
-  std::vector<double> triangleProtrusion(nf, 0.0), edgeProtrusion(ne, 0.0);
+  // Protrusions of every edge's midpoint, once per edge (a triangle's sides share
+  // them), and of every triangle: the worst of its centroid and its sides' midpoints.
+  std::vector<double> edgeProtrusion(ne, 0.0), triangleProtrusion(nf, 0.0);
+#pragma omp parallel for schedule(dynamic, 256) num_threads(this->Threads)
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    const double half[2] = { 0.5, 0.5 };
+    edgeProtrusion[e] = this->EdgeIn[e] || alive[e] > 0 ? this->Protrusion(p.EdgeVertices[e].data(), half, 2) : 0.0;
+  }
   const vtkIdType nt = static_cast<vtkIdType>(triangles.size());
 #pragma omp parallel for schedule(dynamic, 64) num_threads(this->Threads)
   for (vtkIdType k = 0; k < nt; ++k)
   {
     const vtkIdType* v = p.TriangleVertices[triangles[k]].data();
-    const double third[3] = { 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 }, half[2] = { 0.5, 0.5 };
+    const double third[3] = { 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 };
     double worst = this->Protrusion(v, third, 3);
     for (vtkIdType e : p.TriangleEdges[triangles[k]])
     {
-      worst = std::max(worst, this->Protrusion(p.EdgeVertices[e].data(), half, 2));
+      worst = std::max(worst, edgeProtrusion[e]);
     }
     triangleProtrusion[triangles[k]] = worst;
-  }
-#pragma omp parallel for schedule(dynamic, 256) num_threads(this->Threads)
-  for (vtkIdType e = 0; e < ne; ++e)
-  {
-    const double half[2] = { 0.5, 0.5 };
-    edgeProtrusion[e] = this->EdgeIn[e] && alive[e] == 0 ? this->Protrusion(p.EdgeVertices[e].data(), half, 2) : 0.0;
   }
   // Collapses, in a fixed order: a triangle through a free side, an edge through a free end.
   std::vector<vtkIdType> queue(triangles.begin(), triangles.end());
@@ -637,9 +638,7 @@ void vtkMedialMeshComplex::PruneProtrusions(double tolerance)
         }
         else if (alive[e] == 0 && e != side)
         {
-          const double half[2] = { 0.5, 0.5 };
-          edgeProtrusion[e] = this->Protrusion(p.EdgeVertices[e].data(), half, 2);
-          bareEdges.push_back(e);
+          bareEdges.push_back(e); // its midpoint's protrusion is known (a triangle side)
         }
       }
       continue;
