@@ -515,6 +515,78 @@ double vtkMedialMeshComplex::Protrusion(const vtkIdType* ids, const double* weig
   return r > 0.0 && this->Query->ClosestPoint(c, r, hit) ? r - hit.Distance : 0.0;
 }
 
+// Protrusions of the collapses' candidates, probed once each and only when asked
+// for: a triangle's is the worst of its centroid's and its sides' midpoints', an
+// edge's its midpoint's (shared by its triangles). Values are functions of the balls
+// only, so when they are probed does not change them.
+class vtkMedialMeshComplex::ProtrusionMemo
+{
+public:
+  ProtrusionMemo(const vtkMedialMeshComplex& complex, double tolerance)
+    : Complex(complex)
+    , Tolerance(tolerance)
+    , Edge(complex.Power->GetNumberOfEdges(), Unknown)
+    , Triangle(complex.Power->GetNumberOfTriangles(), Unknown)
+  {
+  }
+  // Probes the given triangles and edges (repeats allowed) in parallel.
+  void ProbeAll(const std::vector<vtkIdType>& triangles, std::vector<vtkIdType>& edges)
+  {
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    const vtkIdType ne = static_cast<vtkIdType>(edges.size()), nt = static_cast<vtkIdType>(triangles.size());
+#pragma omp parallel for schedule(dynamic, 256) num_threads(this->Complex.Threads)
+    for (vtkIdType k = 0; k < ne; ++k)
+    {
+      this->Edge[edges[k]] = this->ProbeEdge(edges[k]);
+    }
+#pragma omp parallel for schedule(dynamic, 64) num_threads(this->Complex.Threads)
+    for (vtkIdType k = 0; k < nt; ++k)
+    {
+      this->Triangle[triangles[k]] = this->ProbeTriangle(triangles[k]); // its sides are known
+    }
+  }
+  bool EdgeProtrudes(vtkIdType e) { return this->EdgeValue(e) > this->Tolerance; }
+  bool TriangleProtrudes(vtkIdType f)
+  {
+    if (this->Triangle[f] == Unknown)
+    {
+      this->Triangle[f] = this->ProbeTriangle(f);
+    }
+    return this->Triangle[f] > this->Tolerance;
+  }
+
+private:
+  static constexpr double Unknown = -1.0; // protrusions are >= 0
+  double ProbeEdge(vtkIdType e) const
+  {
+    const double half[2] = { 0.5, 0.5 };
+    return this->Complex.Protrusion(this->Complex.Power->EdgeVertices[e].data(), half, 2);
+  }
+  double ProbeTriangle(vtkIdType f)
+  {
+    const double third[3] = { 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 };
+    double worst = this->Complex.Protrusion(this->Complex.Power->TriangleVertices[f].data(), third, 3);
+    for (vtkIdType e : this->Complex.Power->TriangleEdges[f])
+    {
+      worst = std::max(worst, this->EdgeValue(e));
+    }
+    return worst;
+  }
+  double EdgeValue(vtkIdType e)
+  {
+    if (this->Edge[e] == Unknown)
+    {
+      this->Edge[e] = this->ProbeEdge(e);
+    }
+    return this->Edge[e];
+  }
+
+  const vtkMedialMeshComplex& Complex;
+  double Tolerance;
+  std::vector<double> Edge, Triangle;
+};
+
 void vtkMedialMeshComplex::PruneProtrusions(double tolerance)
 {
   const vtkMedialPowerComplex& p = *this->Power;
@@ -562,30 +634,7 @@ void vtkMedialMeshComplex::PruneProtrusions(double tolerance)
       }
     }
   }
-  // Protrusions of every edge's midpoint, once per edge (a triangle's sides share
-  // them), and of every triangle: the worst of its centroid and its sides' midpoints.
-  std::vector<double> edgeProtrusion(ne, 0.0), triangleProtrusion(nf, 0.0);
-#pragma omp parallel for schedule(dynamic, 256) num_threads(this->Threads)
-  for (vtkIdType e = 0; e < ne; ++e)
-  {
-    const double half[2] = { 0.5, 0.5 };
-    edgeProtrusion[e] = this->EdgeIn[e] || alive[e] > 0 ? this->Protrusion(p.EdgeVertices[e].data(), half, 2) : 0.0;
-  }
-  const vtkIdType nt = static_cast<vtkIdType>(triangles.size());
-#pragma omp parallel for schedule(dynamic, 64) num_threads(this->Threads)
-  for (vtkIdType k = 0; k < nt; ++k)
-  {
-    const vtkIdType* v = p.TriangleVertices[triangles[k]].data();
-    const double third[3] = { 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 };
-    double worst = this->Protrusion(v, third, 3);
-    for (vtkIdType e : p.TriangleEdges[triangles[k]])
-    {
-      worst = std::max(worst, edgeProtrusion[e]);
-    }
-    triangleProtrusion[triangles[k]] = worst;
-  }
   // Collapses, in a fixed order: a triangle through a free side, an edge through a free end.
-  std::vector<vtkIdType> queue(triangles.begin(), triangles.end());
   auto freeSide = [&](vtkIdType f) {
     for (vtkIdType e : p.TriangleEdges[f])
     {
@@ -596,6 +645,34 @@ void vtkMedialMeshComplex::PruneProtrusions(double tolerance)
     }
     return vtkIdType(-1);
   };
+  auto freeEnd = [&](vtkIdType e) {
+    return this->EdgeIn[e] && alive[e] == 0 && (degree[p.EdgeVertices[e][0]] == 1 || degree[p.EdgeVertices[e][1]] == 1);
+  };
+  // Protrusions are probed only where a collapse asks for them: in parallel for the
+  // triangles with a free side and the edges with a free end now, one by one for those
+  // the collapses free later. Each is a function of its balls only (the same value
+  // whenever it is probed), and an edge's midpoint is probed once for all its triangles.
+  ProtrusionMemo memo(*this, tolerance);
+  {
+    std::vector<vtkIdType> freeTriangles, edges;
+    for (vtkIdType f : triangles)
+    {
+      if (freeSide(f) >= 0)
+      {
+        freeTriangles.push_back(f);
+        edges.insert(edges.end(), p.TriangleEdges[f].begin(), p.TriangleEdges[f].end());
+      }
+    }
+    for (vtkIdType e = 0; e < ne; ++e)
+    {
+      if (freeEnd(e))
+      {
+        edges.push_back(e);
+      }
+    }
+    memo.ProbeAll(freeTriangles, edges);
+  }
+  std::vector<vtkIdType> queue(triangles.begin(), triangles.end());
   auto removeEdge = [&](vtkIdType e) {
     this->EdgeIn[e] = 0;
     for (vtkIdType b : p.EdgeVertices[e])
@@ -620,7 +697,7 @@ void vtkMedialMeshComplex::PruneProtrusions(double tolerance)
     {
       const vtkIdType f = queue[head++];
       const vtkIdType side = this->TriangleIn[f] ? freeSide(f) : -1;
-      if (side < 0 || triangleProtrusion[f] <= tolerance)
+      if (side < 0 || !memo.TriangleProtrudes(f))
       {
         continue;
       }
@@ -638,15 +715,14 @@ void vtkMedialMeshComplex::PruneProtrusions(double tolerance)
         }
         else if (alive[e] == 0 && e != side)
         {
-          bareEdges.push_back(e); // its midpoint's protrusion is known (a triangle side)
+          bareEdges.push_back(e); // may have a free end now
         }
       }
       continue;
     }
     const vtkIdType e = bareEdges[bare++];
     const auto& v = p.EdgeVertices[e];
-    if (!this->EdgeIn[e] || alive[e] != 0 || edgeProtrusion[e] <= tolerance ||
-      (degree[v[0]] != 1 && degree[v[1]] != 1))
+    if (!freeEnd(e) || !memo.EdgeProtrudes(e))
     {
       continue;
     }

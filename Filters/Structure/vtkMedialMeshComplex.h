@@ -114,6 +114,7 @@ private:
   // Largest protrusion through the surface of the balls interpolated at the given
   // barycentric weights over the balls `ids`.
   double Protrusion(const vtkIdType* ids, const double* weights, int n) const;
+  class ProtrusionMemo;
   void Extract();
 
   // Containment tests, memoised: 0 unknown, 1 inside, 2 crosses the surface.
