@@ -295,7 +295,17 @@ int QuadraticRoots(double a, double b, double c, double roots[2])
   return 2;
 }
 
-// Newton's method on the first `space.Dim` quadrics over X0 + N s, from X.
+// Damped steps after which Newton's method gives up when no halving of the step
+// lowered a residual still above the acceptance level (see Newton).
+constexpr int MaximumStalls = 3;
+
+// Newton's method on the first `space.Dim` quadrics over X0 + N s, from X. Converged
+// when the squared residual is at most 1e-24. Near a root the Newton step is a descent
+// direction, so a step that no halving (down to 2^-29) makes lower the residual means
+// the iteration is stuck away from a root: after MaximumStalls such steps above the
+// acceptance level it gives up (measured: a call that converged never had more than
+// one; the calls that do not converge had spent most of the solver's time going on
+// for all 60 iterations).
 bool Newton(const LinearSpace& space, const std::vector<Quadric>& quadrics, double X[4])
 {
   const int d = space.Dim;
@@ -320,6 +330,7 @@ bool Newton(const LinearSpace& space, const std::vector<Quadric>& quadrics, doub
   };
   double F[4];
   double norm = residual(s, F);
+  int stalls = 0;
   for (int iteration = 0; iteration < 60 && norm > 1e-32; ++iteration)
   {
     double Y[4], J[4][4], step[4];
@@ -340,17 +351,19 @@ bool Newton(const LinearSpace& space, const std::vector<Quadric>& quadrics, doub
     }
     // Damped: halve the step until the residual falls (or the step is tiny).
     double t = 1.0, trial[4], Ftrial[4], trialNorm = 0.0;
-    for (int halving = 0; halving < 30; ++halving, t *= 0.5)
+    bool lowered = false;
+    for (int halving = 0; halving < 30 && !lowered; ++halving, t *= 0.5)
     {
       for (int k = 0; k < d; ++k)
       {
         trial[k] = s[k] + t * step[k];
       }
       trialNorm = residual(trial, Ftrial);
-      if (trialNorm < norm)
-      {
-        break;
-      }
+      lowered = trialNorm < norm;
+    }
+    if (!lowered && norm > 1e-24 && ++stalls >= MaximumStalls)
+    {
+      return false;
     }
     double moved = 0.0;
     for (int k = 0; k < d; ++k)
