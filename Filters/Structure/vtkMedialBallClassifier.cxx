@@ -58,12 +58,14 @@ void WriteExactPoints(const std::vector<vtkMedialSeamSolver::ExactPoint>& exactP
   exact->GetPointData()->AddArray(count);
 }
 
-// The surface engines, built once per execution.
+// The surface engines, built once per execution (the mesh and queries unless lent).
 struct Surface
 {
-  vtkMedialTriangleMesh Mesh;
-  vtkMedialSurfaceQuery Query;
+  vtkMedialTriangleMesh OwnMesh;
+  vtkMedialSurfaceQuery OwnQuery;
+  const vtkMedialSurfaceQuery* Query = nullptr;
   vtkMedialGovernors Governors;
+  const vtkMedialTriangleMesh& Mesh() const { return *this->Query->GetMesh(); }
 };
 }
 
@@ -128,9 +130,14 @@ int vtkMedialBallClassifier::RequestData(
   std::string error;
   vtkMedialStages stages(this);
   stages.Begin("Preparing the surface and its governors", 0.0, 0.1);
-  if (!surface.Mesh.Build(surfaceData, error, aborted) || !surface.Query.Build(&surface.Mesh, error, aborted) ||
-    !surface.Governors.Build(surface.Mesh, surface.Query,
-      { this->Tolerance, this->MinimumSeparationAngle }, error))
+  surface.Query = this->PreparedSurface;
+  if (!surface.Query && surface.OwnMesh.Build(surfaceData, error, aborted) &&
+    surface.OwnQuery.Build(&surface.OwnMesh, error, aborted))
+  {
+    surface.Query = &surface.OwnQuery;
+  }
+  if (!surface.Query ||
+    !surface.Governors.Build(surface.Mesh(), *surface.Query, { this->Tolerance, this->MinimumSeparationAngle }, error))
   {
     if (aborted())
     {
@@ -139,9 +146,9 @@ int vtkMedialBallClassifier::RequestData(
     vtkErrorMacro(<< "Cannot classify the balls: " << error << ".");
     return 0;
   }
-  if (surface.Mesh.BoundaryEdges > 0)
+  if (surface.Mesh().BoundaryEdges > 0)
   {
-    vtkWarningMacro(<< "The surface has " << surface.Mesh.BoundaryEdges
+    vtkWarningMacro(<< "The surface has " << surface.Mesh().BoundaryEdges
                     << " boundary edges; governors near its holes are not meaningful.");
   }
 
@@ -244,6 +251,7 @@ void vtkMedialBallClassifier::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfNeighbors: " << this->NumberOfNeighbors << "\n";
   os << indent << "MaximumTracedSeams: " << this->MaximumTracedSeams << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "PreparedSurface: " << (this->PreparedSurface ? "lent" : "none") << "\n";
   os << indent << "NumberOfRimBalls: " << this->NumberOfRimBalls << "\n";
   os << indent << "NumberOfSheetBalls: " << this->NumberOfSheetBalls << "\n";
   os << indent << "NumberOfSeamBalls: " << this->NumberOfSeamBalls << "\n";

@@ -60,6 +60,8 @@
 #include "vtkMedialAxisStructureModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+class vtkMedialSurfaceQuery;
+
 class VTKMEDIALAXISSTRUCTURE_EXPORT vtkMedialBallClassifier : public vtkPolyDataAlgorithm
 {
 public:
@@ -159,6 +161,13 @@ protected:
   vtkIdType NumberOfSeamPoints = 0;
   vtkIdType NumberOfJunctionVertices = 0;
   vtkIdType NumberOfTracedSeams = 0;
+
+  // vtkMedialMeshFilter runs this classifier on the surface it has just prepared and
+  // lends it its queries for that execution (built by vtkMedialTriangleMesh and
+  // vtkMedialSurfaceQuery from the same surface, as here), so that the surface is not
+  // prepared twice. Null otherwise: the surface on input 1 is prepared here.
+  friend class vtkMedialMeshFilter;
+  const vtkMedialSurfaceQuery* PreparedSurface = nullptr;
 
 private:
   vtkMedialBallClassifier(const vtkMedialBallClassifier&) = delete;

@@ -259,7 +259,7 @@ int vtkMedialMeshFilter::RequestData(
   if (this->Classifier)
   {
     stages.Begin("Classifying the balls", 0.55, 0.65);
-    balls = this->Classify(balls, surface, !ballInput);
+    balls = this->Classify(balls, surface, query, !ballInput);
     if (!balls)
     {
       return this->GetAbortExecute() ? 1 : 0;
@@ -403,7 +403,7 @@ vtkSmartPointer<vtkPointSet> vtkMedialMeshFilter::RunSampler(vtkPolyData* surfac
 }
 
 vtkSmartPointer<vtkPointSet> vtkMedialMeshFilter::Classify(
-  vtkPointSet* balls, vtkPolyData* surface, bool sampled)
+  vtkPointSet* balls, vtkPolyData* surface, const vtkMedialSurfaceQuery& query, bool sampled)
 {
   vtkNew<vtkPolyData> points; // the classifier takes polydata
   points->SetPoints(balls->GetPoints());
@@ -417,7 +417,9 @@ vtkSmartPointer<vtkPointSet> vtkMedialMeshFilter::Classify(
   {
     this->Classifier->SetMinimumSeparationAngle(this->Sampler->GetMinimumSeparationAngle());
   }
+  this->Classifier->PreparedSurface = &query; // prepared from `surface` above
   const bool ok = this->RunStage(this->Classifier);
+  this->Classifier->PreparedSurface = nullptr;
   vtkSmartPointer<vtkPolyData> result =
     ok ? AppendExactBalls(this->Classifier->GetOutput(0), this->Classifier->GetOutput(1)) : nullptr;
   this->Classifier->SetInputData(0, nullptr);

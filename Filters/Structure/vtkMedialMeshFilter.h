@@ -11,7 +11,8 @@
  *     Then, unless the Classifier is null, vtkMedialBallClassifier gives each ball
  *     its GovernorCount and MedialPointType, and its exact seam points and junction
  *     vertices join the balls (so that the mesh's junction vertices are the exact
- *     ones where they could be solved). When this filter samples, the classifier
+ *     ones where they could be solved). The classifier runs on this filter's prepared
+ *     surface (the one steps 2 to 4 query), not a second preparation of it. When this filter samples, the classifier
  *     takes the sampler's MinimumSeparationAngle (balls and governors must share it;
  *     with balls on port 1, set the classifier's to theirs), and always this filter's
  *     NumberOfThreads.
@@ -199,8 +200,10 @@ protected:
   // Runs the sampler on a copy of the surface; null (after an error) when it fails.
   vtkSmartPointer<vtkPointSet> RunSampler(vtkPolyData* surface);
   // Governors and point types, and the exact seam and junction balls appended; null
-  // (after an error) when the classifier fails.
-  vtkSmartPointer<vtkPointSet> Classify(vtkPointSet* balls, vtkPolyData* surface, bool sampled);
+  // (after an error) when the classifier fails. The classifier borrows `query`, this
+  // filter's queries on `surface`, instead of preparing the surface again.
+  vtkSmartPointer<vtkPointSet> Classify(
+    vtkPointSet* balls, vtkPolyData* surface, const vtkMedialSurfaceQuery& query, bool sampled);
   // Runs a sub-filter (sampler, classifier) as the current stage: its progress is the
   // stage's and this filter's abort is passed on; false when it failed.
   bool RunStage(vtkAlgorithm* stage);
