@@ -104,7 +104,8 @@ struct LinearSpace
   // Gauss-Jordan with full pivoting. False when the rows are inconsistent.
   bool Reduce(const std::vector<Row>& rows)
   {
-    std::vector<std::array<double, 5>> m;
+    thread_local std::vector<std::array<double, 5>> m; // per-thread scratch: no allocation per call
+    m.clear();
     for (const Row& row : rows)
     {
       const double len = std::sqrt(row.A[0] * row.A[0] + row.A[1] * row.A[1] + row.A[2] * row.A[2] + row.A[3] * row.A[3]);
@@ -542,8 +543,13 @@ void BuildEquations(const vtkMedialGovernors& governors, const int* features, in
 void vtkMedialSeamSolver::TangentBalls(const int* features, int n, const double* constraint,
   const std::vector<BallVector>& seeds, std::vector<BallVector>& out) const
 {
-  std::vector<Row> rows;
-  std::vector<Quadric> quadrics;
+  // Per-thread scratch (the solver runs millions of these small systems): no allocation per call.
+  thread_local std::vector<Row> rows;
+  thread_local std::vector<Quadric> quadrics;
+  thread_local std::vector<std::array<double, 4>> scaled;
+  rows.clear();
+  quadrics.clear();
+  scaled.clear();
   BuildEquations(this->Governors, features, n, this->Origin, this->Scale, rows, quadrics);
   if (constraint)
   {
@@ -559,7 +565,6 @@ void vtkMedialSeamSolver::TangentBalls(const int* features, int n, const double*
   {
     return; // inconsistent, or a family of solutions (degenerate set)
   }
-  std::vector<std::array<double, 4>> scaled;
   if (space.Dim == 0)
   {
     scaled.push_back({ space.X0[0], space.X0[1], space.X0[2], space.X0[3] });
@@ -636,7 +641,8 @@ bool vtkMedialSeamSolver::SeamTangent(const int features[3], const BallVector& r
   }
   X[3] = reference[3] / this->Scale;
   // The tangency gradients at the reference; the seam runs along their null vector.
-  std::vector<Row> rows;
+  thread_local std::vector<Row> rows; // per-thread scratch
+  rows.clear();
   for (int i = 0; i < 3; ++i)
   {
     const auto& f = this->Governors.GetFeature(features[i]);

@@ -42,7 +42,8 @@ bool vtkMedialSeamSolver::OnSeam(
   double constraint[5];
   std::copy(tangent, tangent + 4, constraint);
   constraint[4] = tangent[0] * guess[0] + tangent[1] * guess[1] + tangent[2] * guess[2] + tangent[3] * guess[3];
-  std::vector<BallVector> solutions;
+  thread_local std::vector<BallVector> solutions; // per-thread scratch
+  solutions.clear();
   this->TangentBalls(features, 3, constraint, { guess }, solutions);
   double best = HUGE_VAL;
   for (const BallVector& s : solutions)
