@@ -7,6 +7,7 @@
 #include "vtkMedialPieces.h"
 #include "vtkMedialPipeline.h"
 #include "vtkMedialSeamSolver.h"
+#include "vtkMedialSpatialOrder.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
 
@@ -156,13 +157,20 @@ int vtkMedialBallClassifier::RequestData(
   stages.Begin("Classifying the balls", 0.1, this->ComputeExactPoints ? 0.5 : 1.0);
   const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
   std::vector<vtkMedialSeamSolver::Ball> records(static_cast<size_t>(n));
+  // Balls in a spatially coherent order (nearby balls read the same tree nodes).
+  const std::vector<vtkIdType> order = vtkMedialSpatialOrder::Order(n, [&](vtkIdType i) {
+    double c[3];
+    balls->GetPoint(i, c);
+    return vtkMedialSpatialOrder::Key(c, surface.Mesh().Bounds);
+  });
   const vtkIdType block = 4096;
   for (vtkIdType begin = 0; begin < n && !aborted(); begin += block)
   {
     const vtkIdType end = std::min(n, begin + block);
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 64)
-    for (vtkIdType i = begin; i < end; ++i)
+    for (vtkIdType k = begin; k < end; ++k)
     {
+      const vtkIdType i = order[k];
       auto& record = records[i];
       balls->GetPoint(i, record.Centre);
       record.Radius = radius->GetComponent(i, 0);

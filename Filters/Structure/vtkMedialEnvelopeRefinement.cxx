@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialEnvelopeRefinement.h"
 
+#include "vtkMedialSpatialOrder.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
 
@@ -68,6 +69,20 @@ double vtkMedialEnvelopeRefinement::ProbeInterior(
   return worst;
 }
 
+namespace
+{
+// Probes in a spatially coherent order (vtkMedialSpatialOrder.h): the n items by the
+// centre of one of their balls, ballOf(i).
+template <class BallOf>
+std::vector<vtkIdType> SpatialOrder(const vtkMedialEnvelopeRefinement::Mesh& mesh,
+  const vtkMedialSurfaceQuery& query, vtkIdType n, BallOf ballOf)
+{
+  const double* bounds = query.GetMesh()->Bounds;
+  return vtkMedialSpatialOrder::Order(
+    n, [&](vtkIdType i) { return vtkMedialSpatialOrder::Key(&(*mesh.Centres)[3 * ballOf(i)], bounds); });
+}
+}
+
 // The worst protrusion at each edge's probes (1/4, 1/2, 3/4), probed once per edge:
 // it depends on the edge's two balls only, which never move. A triangle's probes on
 // its sides are the same points, computed alike (a two-term weighted sum is the same
@@ -86,9 +101,11 @@ public:
       edges.end());
     const vtkIdType n = static_cast<vtkIdType>(edges.size());
     std::vector<double> worst(edges.size());
+    const std::vector<vtkIdType> order = SpatialOrder(mesh, query, n, [&](vtkIdType i) { return edges[i][0]; });
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
-    for (vtkIdType i = 0; i < n; ++i)
+    for (vtkIdType k = 0; k < n; ++k)
     {
+      const vtkIdType i = order[k];
       worst[i] = self.ProbeEdge(mesh, query, edges[i][0], edges[i][1]);
     }
     for (vtkIdType i = 0; i < n; ++i)
@@ -234,9 +251,11 @@ vtkIdType vtkMedialEnvelopeRefinement::Refine(const Mesh& mesh, const vtkMedialS
     sides.Probe(*this, mesh, query, probed, threads);
     triangleProtrusion.resize(nt, 0.0);
     std::vector<double> edgeProtrusion(nf, 0.0);
+    const std::vector<vtkIdType> order = SpatialOrder(mesh, query, nt, [&](vtkIdType t) { return triangles[t][0]; });
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
-    for (vtkIdType t = 0; t < nt; ++t)
+    for (vtkIdType k = 0; k < nt; ++k)
     {
+      const vtkIdType t = order[k];
       if (triangleDirty[t])
       {
         double worst = this->ProbeInterior(mesh, query, triangles[t]);

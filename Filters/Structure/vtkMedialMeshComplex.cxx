@@ -4,6 +4,7 @@
 #include "vtkMedialDisjointSets.h"
 #include "vtkMedialGeometry.h"
 #include "vtkMedialPowerComplex.h"
+#include "vtkMedialSpatialOrder.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
 
@@ -22,6 +23,14 @@ enum ContainmentState : char
   CROSSES = 2
 };
 
+// The n simplices in the spatial order of one of their balls, ballOf(i)
+// (vtkMedialSpatialOrder.h): the loops of surface queries run in this order.
+template <class BallOf>
+std::vector<vtkIdType> OrderByBall(const std::vector<std::uint64_t>& ballKeys, vtkIdType n, BallOf ballOf)
+{
+  return vtkMedialSpatialOrder::Order(n, [&](vtkIdType i) { return ballKeys[ballOf(i)]; });
+}
+
 
 }
 
@@ -34,6 +43,12 @@ bool vtkMedialMeshComplex::Build(const vtkMedialPowerComplex& power, const vtkMe
   this->Threads = std::max(1, threads);
   this->Stats = Statistics();
   this->EdgeState.assign(power.GetNumberOfEdges(), UNKNOWN);
+  const vtkIdType nb = static_cast<vtkIdType>(balls.Radii->size());
+  this->BallKeys.resize(nb);
+  for (vtkIdType b = 0; b < nb; ++b)
+  {
+    this->BallKeys[b] = vtkMedialSpatialOrder::Key(this->Centre(b), query.GetMesh()->Bounds);
+  }
   this->TriangleState.assign(power.GetNumberOfTriangles(), UNKNOWN);
   auto stop = [&aborted]() { return aborted && aborted(); };
 
@@ -100,16 +115,21 @@ void vtkMedialMeshComplex::SelectCandidates()
     lo[k] = mesh.Bounds[2 * k] - 1e-3 * mesh.Diagonal;
     hi[k] = mesh.Bounds[2 * k + 1] + 1e-3 * mesh.Diagonal;
   }
+  const std::vector<vtkIdType> tetOrder = OrderByBall(this->BallKeys, nt, [&](vtkIdType t) { return p.TetVertices[t][0]; });
 #pragma omp parallel for schedule(dynamic, 256) num_threads(this->Threads)
-  for (vtkIdType t = 0; t < nt; ++t)
+  for (vtkIdType k = 0; k < nt; ++k)
   {
+    const vtkIdType t = tetOrder[k];
     this->TetCandidate[t] = p.TetInUnion[t] || this->Query->IsInside(&p.PowerCentres[3 * t]);
   }
   // A triangle's dual: the segment between its tetrahedra's power centres, or on the
   // convex hull the ray from the inner one along the face's outward normal.
+  const std::vector<vtkIdType> triangleOrder =
+    OrderByBall(this->BallKeys, nf, [&](vtkIdType f) { return p.TriangleVertices[f][0]; });
 #pragma omp parallel for schedule(dynamic, 256) num_threads(this->Threads)
-  for (vtkIdType f = 0; f < nf; ++f)
+  for (vtkIdType k = 0; k < nf; ++k)
   {
+    const vtkIdType f = triangleOrder[k];
     const auto& tets = p.TriangleTets[f];
     if (p.TriangleInUnion[f] || this->TetCandidate[tets[0]] || (tets[1] >= 0 && this->TetCandidate[tets[1]]))
     {
@@ -179,17 +199,22 @@ void vtkMedialMeshComplex::KeepContained()
   }
   // Edges, then triangles (which read their edges' states): each state is written by
   // one thread only.
+  const std::vector<vtkIdType> edgeOrder = OrderByBall(this->BallKeys, ne, [&](vtkIdType e) { return p.EdgeVertices[e][0]; });
 #pragma omp parallel for schedule(dynamic, 256) num_threads(this->Threads)
-  for (vtkIdType e = 0; e < ne; ++e)
+  for (vtkIdType k = 0; k < ne; ++k)
   {
+    const vtkIdType e = edgeOrder[k];
     if (edgeCandidate[e] && !p.EdgeInUnion[e])
     {
       this->EdgeInside(e);
     }
   }
+  const std::vector<vtkIdType> triangleOrder =
+    OrderByBall(this->BallKeys, nf, [&](vtkIdType f) { return p.TriangleVertices[f][0]; });
 #pragma omp parallel for schedule(dynamic, 64) num_threads(this->Threads)
-  for (vtkIdType f = 0; f < nf; ++f)
+  for (vtkIdType k = 0; k < nf; ++k)
   {
+    const vtkIdType f = triangleOrder[k];
     if (this->TriangleCandidate[f] && !p.TriangleInUnion[f])
     {
       this->TriangleInside(f);
@@ -535,15 +560,22 @@ public:
     std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
     const vtkIdType ne = static_cast<vtkIdType>(edges.size()), nt = static_cast<vtkIdType>(triangles.size());
+    const vtkMedialPowerComplex& p = *this->Complex.Power;
+    const std::vector<vtkIdType> edgeOrder =
+      OrderByBall(this->Complex.BallKeys, ne, [&](vtkIdType k) { return p.EdgeVertices[edges[k]][0]; });
 #pragma omp parallel for schedule(dynamic, 256) num_threads(this->Complex.Threads)
     for (vtkIdType k = 0; k < ne; ++k)
     {
-      this->Edge[edges[k]] = this->ProbeEdge(edges[k]);
+      const vtkIdType e = edges[edgeOrder[k]];
+      this->Edge[e] = this->ProbeEdge(e);
     }
+    const std::vector<vtkIdType> triangleOrder =
+      OrderByBall(this->Complex.BallKeys, nt, [&](vtkIdType k) { return p.TriangleVertices[triangles[k]][0]; });
 #pragma omp parallel for schedule(dynamic, 64) num_threads(this->Complex.Threads)
     for (vtkIdType k = 0; k < nt; ++k)
     {
-      this->Triangle[triangles[k]] = this->ProbeTriangle(triangles[k]); // its sides are known
+      const vtkIdType f = triangles[triangleOrder[k]];
+      this->Triangle[f] = this->ProbeTriangle(f); // its sides are known
     }
   }
   bool EdgeProtrudes(vtkIdType e) { return this->EdgeValue(e) > this->Tolerance; }

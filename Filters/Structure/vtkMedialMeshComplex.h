@@ -52,6 +52,7 @@
 #include "vtkType.h"
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -131,6 +132,7 @@ private:
   std::vector<char> TetIn, TriangleIn, EdgeIn, VertexIn;
   std::vector<char> TetCandidate, TriangleCandidate;
   std::vector<char> EdgeState, TriangleState;
+  std::vector<std::uint64_t> BallKeys; // spatial order of the balls (vtkMedialSpatialOrder.h)
 };
 
 #endif

@@ -11,6 +11,7 @@
 #include "vtkMedialPipeline.h"
 #include "vtkMedialPowerComplex.h"
 #include "vtkMedialSimplicialComplex.h"
+#include "vtkMedialSpatialOrder.h"
 #include "vtkMedialProgress.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
@@ -455,9 +456,12 @@ bool vtkMedialMeshFilter::InscribeBalls(vtkPointSet* balls, vtkDataArray* radius
   const std::vector<vtkIdType> triangleBody = TriangleBodies(mesh);
   std::vector<double> reduction(n, 0.0);
   std::vector<vtkIdType> component(n, -1);
+  const std::vector<vtkIdType> order = vtkMedialSpatialOrder::Order(
+    n, [&](vtkIdType i) { return vtkMedialSpatialOrder::Key(&centres[3 * i], mesh.Bounds); });
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
-  for (vtkIdType i = 0; i < n; ++i)
+  for (vtkIdType k = 0; k < n; ++k)
   {
+    const vtkIdType i = order[k];
     const double* c = &centres[3 * i];
     if (closed && !query.IsInside(c))
     {
