@@ -66,6 +66,18 @@ int vtkMedialSeamSolver::SeamState(
     touched.clear();
     return LEFT;
   }
+  // A feature is touched only when its primitive is tangent to the ball within the
+  // tolerance (vtkMedialGovernors::TouchedFeatures): when one of the three is not, the
+  // ball is off the seam whatever the surface queries would say (callers only ask
+  // whether it is on the seam), so they are skipped.
+  for (int i = 0; i < 3; ++i)
+  {
+    if (!(std::fabs(this->Governors.DistanceToFeature(features[i], X.data()) - X[3]) <= tolerance))
+    {
+      touched.clear();
+      return LEFT;
+    }
+  }
   // The contains-ball query stops at the first point inside: cheap for the balls
   // beyond a seam's end, which may hold much of the surface.
   if (!this->Governors.GetQuery().ContainsBall(X.data(), X[3] - tolerance) ||
