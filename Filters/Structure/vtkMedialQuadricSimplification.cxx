@@ -45,20 +45,17 @@ void Erase(std::vector<vtkIdType>& sorted, vtkIdType x)
 void vtkMedialQuadricSimplification::Quadric::AddPlane(const double n[3], double d, double weight)
 {
   const double v[4] = { n[0], n[1], n[2], 1.0 };
-  for (int i = 0; i < 4; ++i)
-  {
-    for (int j = i; j < 4; ++j)
-    {
-      this->A[Sym[i][j]] += weight * v[i] * v[j];
-    }
-    this->B[i] += weight * d * v[i];
-  }
-  this->C += weight * d * d;
+  this->AddLinearForm(v, d, weight);
 }
 
 void vtkMedialQuadricSimplification::Quadric::AddCentrePlane(const double n[3], double d, double weight)
 {
   const double v[4] = { n[0], n[1], n[2], 0.0 };
+  this->AddLinearForm(v, d, weight);
+}
+
+void vtkMedialQuadricSimplification::Quadric::AddLinearForm(const double v[4], double d, double weight)
+{
   for (int i = 0; i < 4; ++i)
   {
     for (int j = i; j < 4; ++j)

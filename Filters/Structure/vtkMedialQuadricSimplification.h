@@ -95,6 +95,8 @@ private:
     void AddPlane(const double n[3], double d, double weight);
     /// A plane n.c = d on the centre alone (the radius is free).
     void AddCentrePlane(const double n[3], double d, double weight);
+    /// The error (v.m - d)^2 of the ball m = (c, r), weighted.
+    void AddLinearForm(const double v[4], double d, double weight);
     void Add(const Quadric& q);
     double Evaluate(const double m[4]) const;
     bool Minimise(double m[4]) const;
