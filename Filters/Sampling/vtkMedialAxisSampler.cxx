@@ -222,7 +222,7 @@ void vtkMedialAxisSampler::vtkInternals::ReportAllocationFailure(vtkIdType count
   vtkErrorWithObjectMacro(this->Self, << "Cannot allocate memory for " << count << " samples.");
 }
 
-int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh& mesh,
+int vtkMedialAxisSampler::vtkInternals::SampleRandom(vtkMedialTriangleMesh& mesh,
   vtkMedialSurfaceQuery& query, const vtkMedialPieces& pieces, vtkPolyData* output, vtkMedialStages& stages)
 {
   vtkMedialAxisSampler* self = this->Self;
@@ -282,6 +282,12 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh
   if (coverage)
   {
     SortByLeaf(query, triangles, block, order);
+  }
+  else
+  {
+    // The balls read the query's tree only: the mesh's points, triangles and areas go
+    // before the largest stage (about 90 bytes a triangle; the coverage still reads them).
+    mesh.ReleaseGeometry();
   }
   stages.Begin("Sampling", 0.15, 1.0);
   const vtkIdType used =

@@ -41,7 +41,7 @@ public:
     vtkMedialStages& stages);
   /// RANDOM: this piece's share of the samples, drawn, sorted by BVH leaf, solved in
   /// blocks; with a coverage stop (RequestData runs it in piece 0 only) all of them.
-  int SampleRandom(const vtkMedialTriangleMesh& mesh, vtkMedialSurfaceQuery& query,
+  int SampleRandom(vtkMedialTriangleMesh& mesh, vtkMedialSurfaceQuery& query,
     const vtkMedialPieces& pieces, vtkPolyData* output, vtkMedialStages& stages);
   /// CLOSEST_NEIGHBOR and FACE_DISTANCE (vtkMedialIterativeSampling); RequestData runs
   /// them in piece 0 only.
