@@ -43,7 +43,7 @@ vtkStandardNewMacro(vtkMedialAxisSampler);
 namespace
 {
 // Consecutive samples in leaf order that run on one thread, each hinted with the
-// previous one's contact. Chains start at multiples of HintChain whatever the thread
+// previous one's contact and blockers. Chains start at multiples of HintChain whatever the thread
 // count and the piece, so the output depends on neither. (A hint changes the
 // visiting order only: the ball is the same up to the 1e-12 slack, which can decide
 // nearly flat contacts either way.)
@@ -430,12 +430,13 @@ vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangl
     for (vtkIdType g = 0; g < groups; ++g)
     {
       const vtkIdType first = begin + g * HintChain;
+      vtkMedialTriangleBVH::BlockerChain blockers; // the previous sample's
       for (vtkIdType k = first; k < std::min(end, first + HintChain); ++k)
       {
         const vtkIdType i = order[k];
         const vtkIdType hint = k > first ? results[order[k - 1]].ContactTriangle : -1;
         const double p[3] = { results[i].Surface[0], results[i].Surface[1], results[i].Surface[2] };
-        vtkMedialSolveBall(query, mesh, param, triangles[i], p, results[i], hint);
+        vtkMedialSolveBall(query, mesh, param, triangles[i], p, results[i], hint, &blockers);
       }
     }
     self->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
