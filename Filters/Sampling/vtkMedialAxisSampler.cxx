@@ -43,10 +43,10 @@ vtkStandardNewMacro(vtkMedialAxisSampler);
 namespace
 {
 // Consecutive samples in leaf order that run on one thread, each hinted with the
-// previous one's contact and blockers. Chains start at multiples of HintChain whatever the thread
-// count and the piece, so the output depends on neither. (A hint changes the
-// visiting order only: the ball is the same up to the 1e-12 slack, which can decide
-// nearly flat contacts either way.)
+// previous one's contact and blockers. Chains start at multiples of HintChain
+// whatever the thread count and the piece, so the output depends on neither. (A hint
+// changes the visiting order only: the ball is the same up to the 1e-12 slack, which
+// can decide nearly flat contacts either way.)
 constexpr vtkIdType HintChain = 8;
 }
 
