@@ -45,6 +45,17 @@ void Erase(std::vector<vtkIdType>& sorted, vtkIdType x)
 void vtkMedialQuadricSimplification::Quadric::AddPlane(const double n[3], double d, double weight)
 {
   const double v[4] = { n[0], n[1], n[2], 1.0 };
+  this->AddLinearForm(v, d, weight);
+}
+
+void vtkMedialQuadricSimplification::Quadric::AddCentrePlane(const double n[3], double d, double weight)
+{
+  const double v[4] = { n[0], n[1], n[2], 0.0 };
+  this->AddLinearForm(v, d, weight);
+}
+
+void vtkMedialQuadricSimplification::Quadric::AddLinearForm(const double v[4], double d, double weight)
+{
   for (int i = 0; i < 4; ++i)
   {
     for (int j = i; j < 4; ++j)
@@ -228,6 +239,7 @@ void vtkMedialQuadricSimplification::InitialQuadrics(const vtkMedialSimplicialCo
       this->AddConePlanes(complex, a, b, Pi * (complex.Radii[a] + complex.Radii[b]) * length, weight);
     }
   }
+  this->AddRimPlanes(complex, weight);
   // A weak pull towards each ball's own position (1e-3 of its planes' weight) keeps
   // every solve well posed: a cone or a flat sheet leaves directions free. A ball with
   // no planes (a few on rocker-arm) gets 1e-3 of the mean weight: a pull of the
@@ -249,6 +261,75 @@ void vtkMedialQuadricSimplification::InitialQuadrics(const vtkMedialSimplicialCo
       q.A[Sym[i][i]] += w;
       q.B[i] += w * this->Balls[v][i];
       q.C += w * this->Balls[v][i] * this->Balls[v][i];
+    }
+  }
+}
+
+void vtkMedialQuadricSimplification::AddRimPlanes(
+  const vtkMedialSimplicialComplex& complex, std::vector<double>& weight)
+{
+  if (!(this->RimWeight > 0.0))
+  {
+    return;
+  }
+  for (size_t e = 0; e < complex.Edges.size(); ++e)
+  {
+    if (complex.EdgeTriangles[e].size() != 1)
+    {
+      continue;
+    }
+    const auto& t = complex.Triangles[complex.EdgeTriangles[e][0]];
+    const vtkIdType a = complex.Edges[e][0], b = complex.Edges[e][1];
+    const vtkIdType third = t[0] != a && t[0] != b ? t[0] : (t[1] != a && t[1] != b ? t[1] : t[2]);
+    const double* c[3] = { complex.Point(t[0]), complex.Point(t[1]), complex.Point(t[2]) };
+    const double r[3] = { complex.Radii[t[0]], complex.Radii[t[1]], complex.Radii[t[2]] };
+    vtkMedialEnvelope::TangentPlanes planes;
+    if (!vtkMedialEnvelope::SlabTangentPlanes(c, r, planes))
+    {
+      continue;
+    }
+    // The slab's two tangent planes meet at the angle phi, cos(phi / 2) = |W|: a rim
+    // pulled in by delta along the sheet moves the envelope by (1 - cos(phi / 2)) delta
+    // (nothing on a sheet that ends where its sides meet tangentially, delta on a plate's
+    // rounded rim).
+    const double f = 1.0 - std::sqrt(vtkMedialEnvelope::Dot3(planes.W, planes.W));
+    // The plane through the rim edge, perpendicular to the sheet, facing away from it.
+    const double* pa = complex.Point(a);
+    const double* pb = complex.Point(b);
+    const double* pc = complex.Point(third);
+    double u[3], w[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      u[k] = pb[k] - pa[k];
+      w[k] = pc[k] - pa[k];
+    }
+    const double uu = vtkMedialEnvelope::Dot3(u, u);
+    const double along = uu > 0.0 ? vtkMedialEnvelope::Dot3(w, u) / uu : 0.0;
+    double n[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      n[k] = along * u[k] - w[k];
+    }
+    const double nn = std::sqrt(vtkMedialEnvelope::Dot3(n, n));
+    if (!(f > 0.0) || !(uu > 0.0) || !(nn > 0.0))
+    {
+      continue;
+    }
+    for (double& x : n)
+    {
+      x /= nn;
+    }
+    // Weighted like a slab triangle of side |ab|, in full where the sheet reaches a crease
+    // (radii small against the edge) and fading on rims of large balls, whose envelope
+    // the slab planes already hold.
+    const double length = std::sqrt(uu);
+    const double crease = length / (length + 0.5 * (complex.Radii[a] + complex.Radii[b]));
+    const double planeWeight = this->RimWeight * f * f * uu * crease;
+    const double d = vtkMedialEnvelope::Dot3(n, pa);
+    for (vtkIdType v : { a, b })
+    {
+      this->Quadrics[v].AddCentrePlane(n, d, planeWeight);
+      weight[v] += planeWeight;
     }
   }
 }

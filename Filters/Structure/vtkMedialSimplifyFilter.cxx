@@ -99,6 +99,7 @@ int vtkMedialSimplifyFilter::RequestData(
   }
   const auto aborted = [this]() { return this->GetAbortExecute() != 0; };
   vtkMedialQuadricSimplification simplification;
+  simplification.RimWeight = this->Method == QUADRIC ? this->RimWeight : 0.0;
   if (this->Method == COVERAGE && n > this->NumberOfBalls)
   {
     // Balls that no collapse can remove are chosen in the next attempt, so that the
@@ -224,6 +225,7 @@ void vtkMedialSimplifyFilter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfBalls: " << this->NumberOfBalls << "\n";
   os << indent << "Method: " << GetMethodName(this->Method) << "\n";
+  os << indent << "RimWeight: " << this->RimWeight << "\n";
   os << indent << "Dilation: " << this->Dilation << "\n";
   os << indent << "NumberOfSurfaceSamples: " << this->NumberOfSurfaceSamples << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";

@@ -83,6 +83,14 @@ public:
   ///@}
 
   ///@{
+  /// QUADRIC: the weight of the planes that hold the sheets' rims where they are, against the
+  /// slab planes (default 10; 0: Q-MAT's spherical quadric alone). They keep creases
+  /// sharp: see vtkMedialQuadricSimplification.
+  vtkSetClampMacro(RimWeight, double, 0.0, 1e6);
+  vtkGetMacro(RimWeight, double);
+  ///@}
+
+  ///@{
   /// The surface whose samples the balls cover (input 1; COVERAGE only).
   void SetSurfaceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
   void SetSurfaceData(vtkDataObject* surface) { this->SetInputData(1, surface); }
@@ -129,6 +137,7 @@ protected:
 
   vtkIdType NumberOfBalls = 100;
   int Method = QUADRIC;
+  double RimWeight = 10.0;
   double Dilation = 0.02;
   vtkIdType NumberOfSurfaceSamples = 10000;
   int RandomSeed = 1;
