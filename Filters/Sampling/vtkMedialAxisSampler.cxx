@@ -46,8 +46,10 @@ namespace
 // previous one's contact and blockers. Chains start at multiples of HintChain
 // whatever the thread count and the piece, so the output depends on neither. (A hint
 // changes the visiting order only: the ball is the same up to the 1e-12 slack, which
-// can decide nearly flat contacts either way.)
-constexpr vtkIdType HintChain = 8;
+// can decide nearly flat contacts either way.) Only a chain's first sample searches
+// cold: 32 (against 8) cuts the search's work on the 1.55M-triangle horse by about
+// 6%, and still gives 31 chains per 1000 samples to spread over the threads.
+constexpr vtkIdType HintChain = 32;
 }
 
 vtkMedialAxisSampler::vtkMedialAxisSampler() = default;
