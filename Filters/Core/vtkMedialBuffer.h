@@ -153,6 +153,26 @@ private:
 
 template <class T>
 using vtkMedialBuffer = std::vector<T, vtkMedialBufferAllocator<T>>;
+
+/// For a buffer shrunk in place (resize down keeps the block): gives the whole pages
+/// past its size back to the system, so that they no longer count as resident. They
+/// stay reserved, and read as zeros if the buffer grows into them again.
+template <class T>
+void vtkMedialReleaseSpareCapacity(vtkMedialBuffer<T>& buffer)
+{
+#if defined(__linux__) && defined(MADV_DONTNEED)
+  const std::size_t page = std::size_t(1) << 12;
+  const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(buffer.data() + buffer.size());
+  const std::uintptr_t first = (end + page - 1) / page * page;
+  const std::uintptr_t last = reinterpret_cast<std::uintptr_t>(buffer.data() + buffer.capacity()) / page * page;
+  if (last > first && buffer.capacity() * sizeof(T) >= (std::size_t(1) << 20)) // mapped on its own
+  {
+    madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);
+  }
+#else
+  (void)buffer;
+#endif
+}
 /// The same, in small pages: for buffers reserved larger than they will be filled.
 template <class T>
 using vtkMedialSmallPageBuffer = std::vector<T, vtkMedialBufferAllocator<T, false>>;

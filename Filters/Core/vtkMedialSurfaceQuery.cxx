@@ -55,7 +55,7 @@ bool vtkMedialSurfaceQuery::IntersectFrom(const double rayOrigin[3], const doubl
       return false;
     }
     const double* n = this->GetNormal(t);
-    const double* v0 = this->Mesh->GetPoint(this->Mesh->GetTriangle(t)[0]);
+    const double* v0 = this->Tree.GetTriangleVertices(t);
     double d[3];
     G::Sub(v0, origin, d);
     const double denom = G::Dot(n, direction);
@@ -215,8 +215,8 @@ bool vtkMedialSurfaceQuery::CrossesSurface(const double* const points[], int n) 
     {
       return;
     }
-    const vtkIdType* v = this->Mesh->GetTriangle(t);
-    const double* u[3] = { this->Mesh->GetPoint(v[0]), this->Mesh->GetPoint(v[1]), this->Mesh->GetPoint(v[2]) };
+    const double* v = this->Tree.GetTriangleVertices(t);
+    const double* u[3] = { v, v + 3, v + 6 };
     crosses = n == 2 ? G::SegmentCrossesTriangle(points[0], points[1], u[0], u[1], u[2])
                      : G::TrianglesCross(points, u);
   });

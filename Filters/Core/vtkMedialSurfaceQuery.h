@@ -14,7 +14,10 @@
  * Embree's rays, and saves Embree's build time and memory.)
  *
  * Queries are const and keep their state on the stack, so any number of threads
- * may call them at once (e.g. from an OpenMP loop) after Build().
+ * may call them at once (e.g. from an OpenMP loop) after Build(). After Build() they
+ * read the tree's own copies of the triangles (vertices and normals) and only the
+ * mesh's Bounds, so a caller done with the mesh's arrays may release them
+ * (vtkMedialTriangleMesh::ReleaseGeometry).
  *
  * A ContactFilter describes which surface points may block a ball tangent to the
  * surface at a sample point P on triangle OwnTriangle:

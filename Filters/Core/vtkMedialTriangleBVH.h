@@ -151,6 +151,13 @@ public:
   /// tree's copy of the mesh's normal, the same bits.
   const double* GetPlane(vtkIdType t) const { return &this->Planes[4 * static_cast<size_t>(this->LeafRank[t])]; }
 
+  /// Mesh triangle t's three vertices, 9 doubles in the mesh's vertex order: the tree's
+  /// leaf-order copy, the same bits as the mesh's points.
+  const double* GetTriangleVertices(vtkIdType t) const
+  {
+    return &this->Vertices[9 * static_cast<size_t>(this->LeafRank[t])];
+  }
+
   /// Position of each mesh triangle in leaf order: nearby triangles get nearby ranks.
   const std::vector<std::int32_t>& GetLeafRanks() const { return this->LeafRank; }
   vtkIdType GetNumberOfNodes() const { return static_cast<vtkIdType>(this->Nodes.size()); }

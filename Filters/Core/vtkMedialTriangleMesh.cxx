@@ -1104,6 +1104,15 @@ bool vtkMedialTriangleMesh::BuildAreaCdf(std::string& error)
   return true;
 }
 
+void vtkMedialTriangleMesh::ReleaseGeometry()
+{
+  vtkMedialBuffer<double>().swap(this->Points);
+  vtkMedialBuffer<vtkIdType>().swap(this->Triangles);
+  vtkMedialBuffer<double>().swap(this->Normals);
+  vtkMedialBuffer<double>().swap(this->Areas);
+  vtkMedialBuffer<double>().swap(this->AreaCdf);
+}
+
 std::string vtkMedialTriangleMesh::ShellName(int shell) const
 {
   std::ostringstream os;

@@ -51,7 +51,7 @@ public:
   /// (false, error "aborted") so that a caller's abort is honoured promptly.
   bool Build(vtkPolyData* input, std::string& error, const std::function<bool()>& aborted = {});
 
-  vtkIdType GetNumberOfTriangles() const { return static_cast<vtkIdType>(this->Areas.size()); }
+  vtkIdType GetNumberOfTriangles() const { return static_cast<vtkIdType>(this->SourceCellIds.size()); }
   vtkIdType GetNumberOfPoints() const { return static_cast<vtkIdType>(this->Points.size() / 3); }
   const double* GetPoint(vtkIdType i) const { return &this->Points[3 * i]; }
   const vtkIdType* GetTriangle(vtkIdType t) const { return &this->Triangles[3 * t]; }
@@ -60,6 +60,13 @@ public:
   /// vtkMedialSurfaceQuery instead (its tree keeps the same values); GetNormal and the
   /// Normals array must not be used afterwards.
   void ReleaseNormals() { vtkMedialBuffer<double>().swap(this->Normals); }
+  /// Frees the points, triangles, normals, areas and area CDF (about 90 bytes a
+  /// triangle) for a caller that has drawn its samples and from then on only queries a
+  /// built vtkMedialSurfaceQuery (which reads the tree's copies). Afterwards only
+  /// GetNumberOfTriangles, the scalar fields, Shells, Contacts, ShellOfTriangle and
+  /// SourceCellIds remain; GetPoint, GetTriangle, GetNormal and PickTriangleByArea must
+  /// not be used.
+  void ReleaseGeometry();
 
   /// V - E + F of the triangulated surface (2 - 2 genus for a closed, connected one).
   vtkIdType GetEulerCharacteristic() const

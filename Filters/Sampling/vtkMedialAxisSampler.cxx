@@ -224,7 +224,7 @@ void vtkMedialAxisSampler::vtkInternals::ReportAllocationFailure(vtkIdType count
   vtkErrorWithObjectMacro(this->Self, << "Cannot allocate memory for " << count << " samples.");
 }
 
-int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh& mesh,
+int vtkMedialAxisSampler::vtkInternals::SampleRandom(vtkMedialTriangleMesh& mesh,
   vtkMedialSurfaceQuery& query, const vtkMedialPieces& pieces, vtkPolyData* output, vtkMedialStages& stages)
 {
   vtkMedialAxisSampler* self = this->Self;
@@ -260,9 +260,9 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh
     return 0;
   }
   const vtkIdType count = static_cast<vtkIdType>(index.size());
-  std::vector<vtkMedialSampleRecord> results;
   std::vector<vtkIdType> triangles;
-  if (!this->Allocate(count, results, triangles))
+  std::vector<double> points; // 3 per sample
+  if (!this->Allocate(count, triangles) || !this->Allocate(3 * count, points))
   {
     return 0;
   }
@@ -276,7 +276,7 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh
   // 30 ms on a 1.5M-triangle mesh) that an abort is honoured at once.
   const vtkIdType block = coverage ? 1024 : 1024 * threads;
   stages.Begin("Drawing the samples", 0.1, 0.15);
-  this->DrawSamples(mesh, index, threads, triangles, results);
+  this->DrawSamples(mesh, index, threads, triangles, points);
   if (self->GetAbortExecute())
   {
     return 1;
@@ -285,9 +285,21 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(const vtkMedialTriangleMesh
   {
     SortByLeaf(query, triangles, block, order);
   }
+  else
+  {
+    // The balls read the query's tree only: the mesh's points, triangles and areas
+    // (about 90 bytes a triangle; the coverage still reads them) make room for the
+    // records, the run's largest allocation.
+    mesh.ReleaseGeometry();
+  }
+  std::vector<vtkMedialSampleRecord> results;
+  if (!this->Allocate(count, results))
+  {
+    return 0;
+  }
   stages.Begin("Sampling", 0.15, 1.0);
   const vtkIdType used =
-    this->SolveBlocks(mesh, query, threads, block, triangles, order, results, coverage.get());
+    this->SolveBlocks(mesh, query, threads, block, triangles, points, order, results, coverage.get());
   if (self->GetAbortExecute())
   {
     return 1; // aborted: leave the output empty
@@ -359,10 +371,10 @@ void vtkMedialAxisSampler::vtkInternals::SelectSamples(const vtkMedialTriangleMe
 
 void vtkMedialAxisSampler::vtkInternals::DrawSamples(const vtkMedialTriangleMesh& mesh,
   const std::vector<vtkIdType>& index, int threads, std::vector<vtkIdType>& triangles,
-  std::vector<vtkMedialSampleRecord>& results) const
+  std::vector<double>& points) const
 {
   vtkMedialAxisSampler* self = this->Self;
-  const vtkIdType count = static_cast<vtkIdType>(results.size());
+  const vtkIdType count = static_cast<vtkIdType>(triangles.size());
   const std::uint64_t seed = static_cast<std::uint64_t>(self->RandomSeed);
   // Blocks: progress, and an abort honoured while millions of samples are drawn.
   const vtkIdType block = 1 << 18;
@@ -372,7 +384,7 @@ void vtkMedialAxisSampler::vtkInternals::DrawSamples(const vtkMedialTriangleMesh
 #pragma omp parallel for num_threads(threads) schedule(static)
     for (vtkIdType i = begin; i < end; ++i)
     {
-      vtkMedialDrawSurfacePoint(mesh, seed, index[i], triangles[i], results[i].Surface);
+      vtkMedialDrawSurfacePoint(mesh, seed, index[i], triangles[i], &points[3 * i]);
     }
     self->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
   }
@@ -417,7 +429,8 @@ void vtkMedialAxisSampler::vtkInternals::SortByLeaf(const vtkMedialSurfaceQuery&
 
 vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangleMesh& mesh,
   const vtkMedialSurfaceQuery& query, int threads, vtkIdType block, const std::vector<vtkIdType>& triangles,
-  const std::vector<vtkIdType>& order, std::vector<vtkMedialSampleRecord>& results, vtkMedialCoverage* coverage)
+  const std::vector<double>& points, const std::vector<vtkIdType>& order, std::vector<vtkMedialSampleRecord>& results,
+  vtkMedialCoverage* coverage)
 {
   vtkMedialAxisSampler* self = this->Self;
   const vtkMedialBallParameters param = this->MakeBallParameters(mesh.Diagonal);
@@ -437,8 +450,7 @@ vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangl
       {
         const vtkIdType i = order[k];
         const vtkIdType hint = k > first ? results[order[k - 1]].ContactTriangle : -1;
-        const double p[3] = { results[i].Surface[0], results[i].Surface[1], results[i].Surface[2] };
-        vtkMedialSolveBall(query, mesh, param, triangles[i], p, results[i], hint, &blockers);
+        vtkMedialSolveBall(query, mesh, param, triangles[i], &points[3 * i], results[i], hint, &blockers);
       }
     }
     self->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));

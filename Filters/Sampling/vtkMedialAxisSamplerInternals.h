@@ -41,7 +41,7 @@ public:
     vtkMedialStages& stages);
   /// RANDOM: this piece's share of the samples, drawn, sorted by BVH leaf, solved in
   /// blocks; with a coverage stop (RequestData runs it in piece 0 only) all of them.
-  int SampleRandom(const vtkMedialTriangleMesh& mesh, vtkMedialSurfaceQuery& query,
+  int SampleRandom(vtkMedialTriangleMesh& mesh, vtkMedialSurfaceQuery& query,
     const vtkMedialPieces& pieces, vtkPolyData* output, vtkMedialStages& stages);
   /// CLOSEST_NEIGHBOR and FACE_DISTANCE (vtkMedialIterativeSampling); RequestData runs
   /// them in piece 0 only.
@@ -80,9 +80,9 @@ private:
   void SelectSamples(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
     const vtkMedialPieces& pieces, bool coverage, int threads, std::vector<vtkIdType>& index,
     std::vector<vtkIdType>& order) const;
-  // Sample points of the RANDOM strategy: sample index[i] into results[i].
+  // Sample points of the RANDOM strategy: sample index[i] on triangles[i] at points[3 i].
   void DrawSamples(const vtkMedialTriangleMesh& mesh, const std::vector<vtkIdType>& index, int threads,
-    std::vector<vtkIdType>& triangles, std::vector<vtkMedialSampleRecord>& results) const;
+    std::vector<vtkIdType>& triangles, std::vector<double>& points) const;
   // Order of items by BVH leaf of their triangle (within blocks of `block` items when a
   // coverage stop needs prefixes, else a global, stable counting sort).
   static void SortByLeaf(const vtkMedialSurfaceQuery& query, const std::vector<vtkIdType>& triangles,
@@ -90,8 +90,8 @@ private:
   // Solves the samples block by block; with `coverage`, stops after the first block
   // that reaches it. Returns the samples used (a prefix).
   vtkIdType SolveBlocks(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int threads,
-    vtkIdType block, const std::vector<vtkIdType>& triangles, const std::vector<vtkIdType>& order,
-    std::vector<vtkMedialSampleRecord>& results, vtkMedialCoverage* coverage);
+    vtkIdType block, const std::vector<vtkIdType>& triangles, const std::vector<double>& points,
+    const std::vector<vtkIdType>& order, std::vector<vtkMedialSampleRecord>& results, vtkMedialCoverage* coverage);
   // Warns about samples discarded on an open or folded surface, or where shells touch.
   void WarnDiscarded(const vtkMedialTriangleMesh& mesh, vtkIdType count) const;
   // Warns when FACE_DISTANCE gave up faces and stopped short of the budget and the coverage.

@@ -9,7 +9,11 @@
 //  - rays through the tree are watertight: from inside a closed octahedron (whose
 //    rays from the centre meet vertices and edges exactly) and sphere, rays aimed
 //    exactly at every vertex and edge midpoint hit a triangle at that point, and
-//    count one crossing (vtkMedialSurfaceQuery::CountCrossings).
+//    count one crossing (vtkMedialSurfaceQuery::CountCrossings);
+//  - the query needs none of the mesh's arrays after Build (the random sampler frees
+//    them before it solves the balls): after vtkMedialTriangleMesh::ReleaseGeometry the
+//    same rays hit the same triangles at the same distances, and the same segments
+//    cross the surface, bit for bit.
 #include "MedialTestUtilities.h"
 
 #include "vtkMedialShapeSource.h"
@@ -26,6 +30,7 @@
 #include <array>
 #include <random>
 #include <set>
+#include <vector>
 
 using namespace medialtest;
 
@@ -204,7 +209,15 @@ int CheckWatertightRays(const char* label, vtkPolyData* closed)
   const double centre[3] = { 0.5 * (mesh.Bounds[0] + mesh.Bounds[1]), 0.5 * (mesh.Bounds[2] + mesh.Bounds[3]),
     0.5 * (mesh.Bounds[4] + mesh.Bounds[5]) };
   long long rays = 0;
+  struct Answer
+  {
+    vtkMedialSurfaceQuery::RayHit Hit;
+    bool Crosses;
+  };
+  std::vector<std::array<double, 3>> targets;
+  std::vector<Answer> answers;
   auto aim = [&](const double target[3]) {
+    targets.push_back({ target[0], target[1], target[2] });
     double d[3], length = 0.0;
     for (int k = 0; k < 3; ++k)
     {
@@ -225,6 +238,24 @@ int CheckWatertightRays(const char* label, vtkPolyData* closed)
     ++rays;
     return EXIT_SUCCESS;
   };
+  // A ray's hit and whether the segment from the centre to twice the target crosses.
+  auto answer = [&](const std::array<double, 3>& target) {
+    double d[3], beyond[3], length = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      d[k] = target[k] - centre[k];
+      beyond[k] = centre[k] + 2.0 * d[k];
+      length += d[k] * d[k];
+    }
+    for (double& x : d)
+    {
+      x /= std::sqrt(length);
+    }
+    Answer a{};
+    query.Intersect(centre, d, 0.0, HUGE_VAL, -1, a.Hit);
+    a.Crosses = query.SegmentCrossesSurface(centre, beyond);
+    return a;
+  };
   for (vtkIdType t = 0; t < mesh.GetNumberOfTriangles(); ++t)
   {
     const vtkIdType* v = mesh.GetTriangle(t);
@@ -238,8 +269,42 @@ int CheckWatertightRays(const char* label, vtkPolyData* closed)
         return EXIT_FAILURE;
       }
     }
+    // Through the centroid: the segment to twice as far crosses the face's interior.
+    double centroid[3] = { 0, 0, 0 };
+    for (int j = 0; j < 3; ++j)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        centroid[k] += mesh.GetPoint(v[j])[k] / 3.0;
+      }
+    }
+    if (aim(centroid) != EXIT_SUCCESS)
+    {
+      return EXIT_FAILURE;
+    }
   }
-  std::printf("%s: %lld rays through vertices and edge midpoints, each hits once at its target\n", label, rays);
+  size_t crossing = 0;
+  for (const auto& target : targets)
+  {
+    answers.push_back(answer(target));
+    crossing += answers.back().Crosses ? 1 : 0;
+  }
+  MEDIAL_CHECK(crossing >= static_cast<size_t>(mesh.GetNumberOfTriangles()),
+    "%zu segments cross the surface, fewer than the %lld through triangle centroids", crossing,
+    static_cast<long long>(mesh.GetNumberOfTriangles()));
+  mesh.ReleaseGeometry();
+  for (size_t i = 0; i < targets.size(); ++i)
+  {
+    const Answer a = answer(targets[i]);
+    MEDIAL_CHECK(a.Hit.Triangle == answers[i].Hit.Triangle && a.Hit.Distance == answers[i].Hit.Distance &&
+        a.Crosses == answers[i].Crosses,
+      "ray %zu after ReleaseGeometry: triangle %lld at %.17g (crosses %d), before %lld at %.17g (crosses %d)", i,
+      static_cast<long long>(a.Hit.Triangle), a.Hit.Distance, a.Crosses,
+      static_cast<long long>(answers[i].Hit.Triangle), answers[i].Hit.Distance, answers[i].Crosses);
+  }
+  std::printf("%s: %lld rays through vertices, edge midpoints and centroids, each hits once at its target, the same after "
+              "the mesh's arrays are released\n",
+    label, rays);
   return EXIT_SUCCESS;
 }
 }
