@@ -54,17 +54,23 @@ vtkMedialBallParameters vtkMedialMakeBallParameters(int method, double tolerance
 // Finds the maximal admissible ball tangent at p (on `triangle`) along the inward normal.
 void vtkMedialSolveBall(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& mesh,
   const vtkMedialBallParameters& param, vtkIdType triangle, const double p[3], vtkMedialSampleRecord& out,
-  vtkIdType hintTriangle)
+  vtkIdType hintTriangle, vtkMedialTriangleBVH::BlockerChain* blockers)
 {
   const double* outward = query.GetNormal(triangle);
   const double n[3] = { -outward[0], -outward[1], -outward[2] };
-  vtkMedialSolveBallAlong(query, mesh, param, triangle, p, n, out, hintTriangle);
+  vtkMedialSolveBallAlong(query, mesh, param, triangle, p, n, out, hintTriangle, blockers);
 }
 
 void vtkMedialSolveBallAlong(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& mesh,
   const vtkMedialBallParameters& param, vtkIdType triangle, const double p[3], const double n[3],
-  vtkMedialSampleRecord& out, vtkIdType hintTriangle)
+  vtkMedialSampleRecord& out, vtkIdType hintTriangle, vtkMedialTriangleBVH::BlockerChain* blockers)
 {
+  vtkMedialSurfaceQuery::TangentBall ball;
+  if (blockers)
+  {
+    ball.Blockers = *blockers;
+    blockers->Count = 0; // until a one-pass search fills it
+  }
   out.Valid = false;
   out.ContactTriangle = -1;
   out.Capped = false;
@@ -93,12 +99,15 @@ void vtkMedialSolveBallAlong(const vtkMedialSurfaceQuery& query, const vtkMedial
 
   if (param.Method == vtkMedialBallParameters::ONE_PASS)
   {
-    vtkMedialSurfaceQuery::TangentBall ball;
     ball.Radius = radius;
     std::copy(q, q + 3, ball.Contact);
     ball.ContactTriangle = hit.Triangle;
     ball.HintTriangle = hintTriangle;
     query.MaximalTangentBall(p, n, filter, param.MaximumProtrusion, ball);
+    if (blockers)
+    {
+      *blockers = ball.Blockers;
+    }
     out.Iterations = 1 + ball.Steps;
     out.Capped = ball.Capped;
     G::AddScaled(p, ball.Radius, n, out.Centre);

@@ -18,6 +18,7 @@
 #ifndef vtkMedialBallSolver_h
 #define vtkMedialBallSolver_h
 
+#include "vtkMedialTriangleBVH.h" // for BlockerChain
 #include "vtkType.h"
 
 class vtkMedialSurfaceQuery;
@@ -50,16 +51,19 @@ vtkMedialBallParameters vtkMedialMakeBallParameters(int method, double tolerance
 /// the inward ray escapes through a hole.
 /// `hintTriangle`: a triangle where the contact is likely (e.g. a neighbouring
 /// sample's contact); it changes how fast ONE_PASS finds the ball, and the ball only
-/// within the query's 1e-12 slack.
+/// within the query's 1e-12 slack. `blockers`, the same kind of hint: in, a nearby
+/// ball's blockers (the previous sample's); out, this ball's (ONE_PASS; else empty).
 void vtkMedialSolveBall(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& mesh,
   const vtkMedialBallParameters& param, vtkIdType triangle, const double p[3],
-  vtkMedialSampleRecord& out, vtkIdType hintTriangle = -1);
+  vtkMedialSampleRecord& out, vtkIdType hintTriangle = -1,
+  vtkMedialTriangleBVH::BlockerChain* blockers = nullptr);
 
 /// The same along a given unit inward direction n, e.g. a vertex normal.
 /// `ownTriangle` (never blocking, its input cell is out.SourceCell) may be -1: then
 /// the faces through p block only where they enter the ball, and ray hits at p are skipped.
 void vtkMedialSolveBallAlong(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& mesh,
   const vtkMedialBallParameters& param, vtkIdType ownTriangle, const double p[3], const double n[3],
-  vtkMedialSampleRecord& out, vtkIdType hintTriangle = -1);
+  vtkMedialSampleRecord& out, vtkIdType hintTriangle = -1,
+  vtkMedialTriangleBVH::BlockerChain* blockers = nullptr);
 
 #endif

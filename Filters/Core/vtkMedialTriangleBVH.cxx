@@ -1084,14 +1084,23 @@ public:
     this->Fast->SetBall(this->CentreRel, this->Radius);
   }
 
-  // First the leaf of the hinted triangle (a neighbour's contact): on smooth meshes
-  // the final contact is often near, and a ball that is small early culls most of
-  // the rest of the tree. (Larger seed subtrees, or seeds at the far hit and at p,
-  // cost more than they save.) Then the whole tree without that leaf. Then the
-  // triangles that only reached into the cap, until the radius settles. Last, with
-  // an allowed protrusion, the cap's surface set aside on the way.
+  // First a nearby ball's blockers in the order they shrank it: a neighbour's ball
+  // came down from its ray's bound through them, and this one usually can too (the
+  // ray's far hit alone rarely blocks: the far wall mostly faces p). Then the leaf of
+  // the hinted triangle (a neighbour's contact): on smooth meshes the final contact
+  // is often near, and a ball that is small early culls most of the rest of the
+  // tree. (Larger seed subtrees, or seeds at the far hit and at p, cost more than
+  // they save.) Then the whole tree without that leaf. Then the triangles that only
+  // reached into the cap, until the radius settles. Last, with an allowed
+  // protrusion, the cap's surface set aside on the way.
   void Run()
   {
+    const BlockerChain replay = this->Result.Blockers;
+    this->Result.Blockers.Count = 0;
+    for (int i = 0; i < replay.Count; ++i)
+    {
+      this->Visit(this->Tree.LeafRank[replay.Triangles[i]]);
+    }
     std::int32_t seed = -1;
     if (this->Result.HintTriangle >= 0)
     {
@@ -1175,6 +1184,7 @@ private:
     this->Fast->SetBall(this->CentreRel, this->Radius);
     G::Copy(q, this->Result.Contact);
     this->Result.ContactTriangle = this->Tree.TriangleIds[slot];
+    this->Result.Blockers.Add(this->Result.ContactTriangle);
     ++this->Result.Steps;
   }
 
@@ -1293,6 +1303,17 @@ private:
     return lo;
   }
 
+  // Shrinks on the triangle at `slot` (not p's own); one that reaches into the ball
+  // only in the cap is set aside for another look.
+  void Visit(std::int32_t slot)
+  {
+    if (this->Tree.TriangleIds[slot] != this->OwnTriangle && this->ShrinkOn(slot))
+    {
+      this->Work.Deferred.push_back(slot);
+      this->Work.DeferredSteps.push_back(this->Result.Steps);
+    }
+  }
+
   // The lanes among `within` (bit i: lane i) of wide node `index` that may hold
   // blockers of the current ball, their distances in `d2`. Lanes dropped for the cone
   // only are kept aside for InscribeInCap.
@@ -1359,11 +1380,7 @@ private:
         const std::int32_t end = start + ~child % LeafCodeScale;
         for (std::int32_t slot = start; slot < end; ++slot)
         {
-          if (this->Tree.TriangleIds[slot] != this->OwnTriangle && this->ShrinkOn(slot))
-          {
-            this->Work.Deferred.push_back(slot);
-            this->Work.DeferredSteps.push_back(this->Result.Steps);
-          }
+          this->Visit(slot);
         }
         continue;
       }

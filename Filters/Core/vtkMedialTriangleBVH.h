@@ -46,12 +46,35 @@ class vtkMedialTriangleMesh;
 class vtkMedialTriangleBVH
 {
 public:
+  /**
+   * The triangles whose blocking shrank a tangent ball, in the order they did (the
+   * first brought it down from the ray's bound, the last is its contact). When full,
+   * the last entry follows the latest blocker.
+   */
+  struct BlockerChain
+  {
+    static constexpr int Capacity = 16;
+    vtkIdType Triangles[Capacity];
+    int Count = 0;
+    void Add(vtkIdType triangle)
+    {
+      if (this->Count > 0 && this->Triangles[this->Count - 1] == triangle)
+      {
+        return;
+      }
+      this->Triangles[this->Count < Capacity ? this->Count++ : Capacity - 1] = triangle;
+    }
+  };
+
   struct TangentBall
   {
     double Radius = 0.0;
     double Contact[3] = { 0, 0, 0 }; // the surface point that stopped the ball
     vtkIdType ContactTriangle = -1;
     vtkIdType HintTriangle = -1; // in: where the contact is likely; changes the speed only
+    // In: a nearby ball's blockers (e.g. the previous sample's), shrunk on first;
+    // changes the speed only. Out: this ball's.
+    BlockerChain Blockers;
     int Steps = 0;       // radius updates
     bool Capped = false; // a triangle needed more than the per-triangle step cap
     // Out, when a protrusion is allowed: the surface of the cap around p (which the
@@ -76,6 +99,9 @@ public:
    * through the circle at angle theta from p (vtkMedialSurfaceQuery's rule).
    * Every blocking point q found shrinks the ball to the one through q,
    * r = |q - p|^2 / (2 n.(q - p)) (Ma et al. 2012), within a single traversal.
+   * Each step moves only through radii that the triangle blocks, so the result is
+   * the largest unblocked radius below the bound whichever triangles come first:
+   * hints (HintTriangle, Blockers) change the speed, not the ball.
    * With cosMinAngle < 1 and a finite `allowed` depth, the cap's surface that the
    * traversal set aside is then searched for points deeper than `allowed` inside the
    * final ball (result.Shrunk and the inscribed ball about the same centre).
