@@ -227,7 +227,7 @@ int vtkMedialBallClassifier::RequestData(
     {
       std::copy(records[i].Centre, records[i].Centre + 3, &centres[3 * i]);
     }
-    const auto pairs = vtkMedialSeamSolver::NearestPairs(centres.data(), n, this->NumberOfNeighbors);
+    const auto pairs = vtkMedialSeamSolver::NearestPairs(centres.data(), n, this->NumberOfNeighbors, threads);
     vtkMedialSeamSolver solver(surface.Governors);
     solver.SetMaximumTracedSeams(this->MaximumTracedSeams);
     if (!solver.Solve(records, pairs, threads, aborted, result))

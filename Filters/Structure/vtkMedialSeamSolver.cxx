@@ -1002,7 +1002,7 @@ bool vtkMedialSeamSolver::Solve(const std::vector<Ball>& balls, const std::vecto
 }
 
 std::vector<vtkMedialSeamSolver::Pair> vtkMedialSeamSolver::NearestPairs(
-  const double* centres, vtkIdType n, int k)
+  const double* centres, vtkIdType n, int k, int threads)
 {
   std::vector<Pair> pairs;
   if (n < 2 || k < 1)
@@ -1023,7 +1023,7 @@ std::vector<vtkMedialSeamSolver::Pair> vtkMedialSeamSolver::NearestPairs(
   locator->BuildLocator();
   const int wanted = static_cast<int>(std::min<vtkIdType>(k + 1, n));
   std::vector<std::vector<vtkIdType>> neighbours(static_cast<size_t>(n));
-#pragma omp parallel
+#pragma omp parallel num_threads(std::max(1, threads))
   {
     vtkNew<vtkIdList> ids;
 #pragma omp for schedule(static)

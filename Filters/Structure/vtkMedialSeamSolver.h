@@ -58,7 +58,7 @@
  * @code
  *   vtkMedialSeamSolver solver(governors);   // a built vtkMedialGovernors
  *   std::vector<vtkMedialSeamSolver::Ball> balls(n);  // Centre, Radius, Governors (Classify)
- *   auto pairs = vtkMedialSeamSolver::NearestPairs(centres, n, 12); // or the mesh's edges
+ *   auto pairs = vtkMedialSeamSolver::NearestPairs(centres, n, 12, threads); // or the mesh's edges
  *   vtkMedialSeamSolver::Result result;
  *   solver.Solve(balls, pairs, threads, aborted, result);
  *   // result.Points: Centre, Radius, Type (SEAM or JUNCTION), GovernorCount, Features
@@ -128,8 +128,9 @@ public:
   bool Solve(const std::vector<Ball>& balls, const std::vector<Pair>& pairs, int threads,
     const std::function<bool()>& aborted, Result& result) const;
 
-  /// The k nearest other centres of each of n centres (3 per centre), as sorted unique (i < j) pairs.
-  static std::vector<Pair> NearestPairs(const double* centres, vtkIdType n, int k);
+  /// The k nearest other centres of each of n centres (3 per centre), as sorted unique (i < j) pairs,
+  /// found on `threads` threads (the result does not depend on them).
+  static std::vector<Pair> NearestPairs(const double* centres, vtkIdType n, int k, int threads);
 
   /**
    * Balls tangent to n = 3 or 4 features; with n = 3 `constraint` (w[4], k: w.(x, r) = k)
