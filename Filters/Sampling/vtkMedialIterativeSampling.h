@@ -116,7 +116,9 @@ public:
   vtkMedialCoverage& operator=(const vtkMedialCoverage&) = delete;
 
   /// Starts from the valid records (their surface points bound the gaps), then adds their balls.
-  void Initialize(const std::vector<vtkMedialSampleRecord>& records);
+  /// `alongside`, if set, runs first on the calling thread while the other threads
+  /// start on this work (the calling thread joins them when it is done).
+  void Initialize(const std::vector<vtkMedialSampleRecord>& records, const std::function<void()>& alongside = {});
   /// The valid records' balls (numbered firstBall, firstBall + 1, ...), found in
   /// parallel and applied in order.
   void AddBalls(const vtkMedialSampleRecord* records, vtkIdType count, vtkIdType firstBall);
