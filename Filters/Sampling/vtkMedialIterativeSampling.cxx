@@ -581,10 +581,10 @@ vtkIdType vtkMedialCoverage::WorstPoint(vtkIdType face, double x[3]) const
   return m.Owner[best];
 }
 
-double vtkMedialCoverage::MaxGap()
+double vtkMedialCoverage::MaxGap(bool parallel)
 {
   Internals& m = *this->Impl;
-#pragma omp parallel num_threads(m.Threads)
+#pragma omp parallel num_threads(m.Threads) if (parallel)
   m.MaxGapInTeam();
   return m.Worst;
 }
@@ -634,7 +634,8 @@ struct Runner
   vtkMedialCoverage Coverage;
   SurfacePointSet Taken;
   Round Current;
-  vtkIdType Rounds = 0;
+  vtkIdType CountAtLastRound = 0;    // EndOfRound: samples at the previous round's end
+  vtkIdType CountAtLastRefresh = -1; // and at the maximum's last refresh (-1: never)
   std::vector<vtkIdType> SolveOrder, Near;
   std::vector<int> Attempts; // FACE_DISTANCE: per face, own samples that failed to lower it
 
@@ -658,12 +659,18 @@ struct Runner
 
   // Checks coverage, reports progress; true when the run must stop. Without a
   // coverage stop the maximum (which also tightens the coverage's search bound) is
-  // refreshed every 8th round only: it changes no choice then.
+  // refreshed every 8 RoundSize samples only: it changes no choice then. A round of a
+  // few samples (closest-neighbor's last ones) refreshes it on the calling thread:
+  // waking the team, on a loaded machine, can cost more than the scan.
   bool EndOfRound()
   {
-    if (this->S.CoverageTolerance > 0.0 || this->Rounds++ % 8 == 0)
+    const vtkIdType added = this->Count() - this->CountAtLastRound;
+    this->CountAtLastRound = this->Count();
+    if (this->S.CoverageTolerance > 0.0 || this->CountAtLastRefresh < 0 ||
+      this->Count() - this->CountAtLastRefresh >= 8 * this->RoundSize())
     {
-      this->R.MaxGap = this->Coverage.MaxGap();
+      this->CountAtLastRefresh = this->Count();
+      this->R.MaxGap = this->Coverage.MaxGap(added >= 32);
       this->R.CoverageReached = this->R.MaxGap <= this->S.CoverageTolerance;
     }
     if (this->Progress(static_cast<double>(this->Count()) / static_cast<double>(this->S.Budget)))

@@ -134,8 +134,9 @@ public:
   /// The face's point (vertex or centroid) of largest gap; returns the ball that set
   /// its gap (the nearest one to it), or -1.
   vtkIdType WorstPoint(vtkIdType face, double x[3]) const;
-  /// Largest gap over all faces (recomputed; also refreshes the internal bound).
-  double MaxGap();
+  /// Largest gap over all faces (recomputed; also refreshes the internal bounds), on
+  /// the `threads` of the constructor, or on the calling thread alone.
+  double MaxGap(bool parallel = true);
   /// The face of largest gap (lowest id among ties).
   vtkIdType WorstFace() const;
 
