@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The iterative sampling strategies and the coverage measure; see the header for the
-// algorithms. Everything here runs on the calling thread except the ball solves.
+// algorithms. The choices are made on the calling thread; the ball solves, the darts and
+// the coverage's passes run in parallel.
 #include "vtkMedialIterativeSampling.h"
 
 #include "vtkMedialBallSolver.h"
