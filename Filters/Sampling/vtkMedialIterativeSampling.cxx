@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 #include <numeric>
 #include <queue>
 #include <unordered_set>
@@ -378,11 +379,19 @@ void vtkMedialCoverage::Initialize(
   m.Pending.resize(std::max(m.Pending.size(), std::min<size_t>(Internals::Batch, records.size())));
   // One team: the calling thread first runs `alongside`, then joins the others, which
   // meanwhile take the dynamically scheduled start values.
+  std::exception_ptr failure; // an exception must not leave the parallel region
 #pragma omp parallel num_threads(m.Threads)
   {
     if (alongside && omp_get_thread_num() == 0)
     {
-      alongside();
+      try
+      {
+        alongside();
+      }
+      catch (...)
+      {
+        failure = std::current_exception();
+      }
     }
     if (!seeds.empty())
     {
@@ -391,6 +400,10 @@ void vtkMedialCoverage::Initialize(
     m.UpdateAllCellMaxInTeam();
     m.MaxGapInTeam();
     m.AddBallsInTeam(*this, records.data(), static_cast<vtkIdType>(records.size()), 0);
+  }
+  if (failure)
+  {
+    std::rethrow_exception(failure);
   }
 }
 
