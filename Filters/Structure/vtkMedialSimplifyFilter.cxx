@@ -34,7 +34,7 @@ namespace
 // COVERAGE: choices made again with the balls no collapse could remove.
 constexpr int CoverageAttempts = 6;
 // QUADRIC: the surface vertices that guard the collapses, at most.
-constexpr vtkIdType MaximumGuardPoints = 100000;
+constexpr vtkIdType MaximumGuardPoints = 20000;
 }
 
 vtkMedialSimplifyFilter::vtkMedialSimplifyFilter()

@@ -16,7 +16,7 @@
  * collapse: see vtkMedialQuadricSimplification).
  *
  * With the surface on input port 1, QUADRIC's collapses are guarded (ErrorTolerance):
- * the surface's vertices (at most 100,000, every k-th beyond) are shared out to their
+ * the surface's vertices (at most 20,000, every k-th beyond) are shared out to their
  * nearest balls, and a collapse that would leave one of its balls' vertices farther
  * than ErrorTolerance (and than they already were) from the envelope waits behind all
  * others; once only such collapses are left, the one that moves the surface least goes
