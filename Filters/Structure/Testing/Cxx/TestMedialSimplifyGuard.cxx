@@ -12,14 +12,9 @@
 //  - the guard's set-up runs in parallel: 1 and 2 threads give the same balls.
 #include "MedialMeshTestUtilities.h"
 
-#include "vtkMedialBallUnion.h"
-#include "vtkMedialReconstructionError.h"
 #include "vtkMedialSimplifyFilter.h"
 
-#include "vtkPoints.h"
-
 #include <cstdio>
-#include <cstring>
 
 namespace
 {
@@ -37,43 +32,6 @@ vtkSmartPointer<vtkPolyData> Simplify(
   simplify->SetNumberOfThreads(threads);
   simplify->Update();
   return simplify->GetOutput();
-}
-
-double EnvelopeError(vtkPolyData* simplified, vtkPolyData* solid)
-{
-  vtkNew<vtkMedialBallUnion> rebuild;
-  rebuild->SetInputData(simplified);
-  rebuild->SetPrimitives(vtkMedialBallUnion::MEDIAL_MESH);
-  rebuild->SetSampleDimensions(96, 96, 96);
-  vtkNew<vtkMedialReconstructionError> measure;
-  measure->SetOriginalData(solid);
-  measure->SetReconstructionConnection(rebuild->GetOutputPort());
-  measure->Update();
-  return measure->GetVertexHausdorff();
-}
-
-// Same points and radii, bit for bit.
-bool SameBalls(vtkPolyData* a, vtkPolyData* b)
-{
-  const vtkIdType n = a->GetNumberOfPoints();
-  if (n != b->GetNumberOfPoints() || a->GetNumberOfCells() != b->GetNumberOfCells())
-  {
-    return false;
-  }
-  vtkDataArray* ra = a->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
-  vtkDataArray* rb = b->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double pa[3], pb[3];
-    a->GetPoint(i, pa);
-    b->GetPoint(i, pb);
-    const double qa = ra->GetTuple1(i), qb = rb->GetTuple1(i);
-    if (std::memcmp(pa, pb, sizeof(pa)) != 0 || std::memcmp(&qa, &qb, sizeof(double)) != 0)
-    {
-      return false;
-    }
-  }
-  return true;
 }
 }
 
@@ -97,16 +55,16 @@ int TestMedialSimplifyGuard(int, char*[])
     const auto unguarded = Simplify(mesh, solid, k, 0.0);
     MEDIAL_CHECK(guarded->GetNumberOfPoints() == k, "%s: %lld balls instead of %lld", c.Name,
       static_cast<long long>(guarded->GetNumberOfPoints()), static_cast<long long>(k));
-    const double with = EnvelopeError(guarded, solid);
-    const double without = EnvelopeError(unguarded, solid);
+    const double with = medialtest::EnvelopeHausdorff(guarded, solid);
+    const double without = medialtest::EnvelopeHausdorff(unguarded, solid);
     std::printf("%-4s K %lld: envelope Hausdorff %.3f%% of the diagonal guarded, %.3f%% unguarded (bound %.1f%%)\n",
       c.Name, static_cast<long long>(k), 100 * with, 100 * without, 100 * c.Bound);
     MEDIAL_CHECK(with <= c.Bound, "%s: %.3f%% above %.1f%%", c.Name, 100 * with, 100 * c.Bound);
     MEDIAL_CHECK(without > 1.5 * with, "%s: the guard no longer matters (%.3f%% unguarded): the test lost its point",
       c.Name, 100 * without);
-    MEDIAL_CHECK(SameBalls(Simplify(mesh, nullptr, k, tolerance), unguarded),
+    MEDIAL_CHECK(medialtest::SameMesh(Simplify(mesh, nullptr, k, tolerance), unguarded),
       "%s: without the surface the result differs from ErrorTolerance 0", c.Name);
-    MEDIAL_CHECK(SameBalls(Simplify(mesh, solid, k, tolerance, 1), guarded),
+    MEDIAL_CHECK(medialtest::SameMesh(Simplify(mesh, solid, k, tolerance, 1), guarded),
       "%s: the guarded result depends on the thread count", c.Name);
   }
   return EXIT_SUCCESS;
