@@ -17,8 +17,8 @@
 #ifndef MedialAxisHugePages_h
 #define MedialAxisHugePages_h
 
+#include <cstdlib> // first: it defines __GLIBC__
 #if defined(__linux__) && defined(__GLIBC__)
-#include <cstdlib>
 #include <unistd.h>
 #endif
 
