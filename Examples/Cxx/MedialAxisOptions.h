@@ -37,6 +37,7 @@ struct Options
   double PruneThreshold = -1.0;  // negative: the measure's default
   long long Simplify = 0;        // --simplify K: the medial mesh reduced to K balls
   int SimplifyMethod = -1;       // --simplify-method: vtkMedialSimplifyFilter's Method (-1: not given)
+  double SimplifyTolerance = -1.0; // --simplify-tolerance: its ErrorTolerance (negative: not given)
   double ThicknessBelow = 0.0;
   int Resolution = 128;
   bool Stats = false;

@@ -545,6 +545,10 @@ void Program::Simplify()
   simplify->SetInputData(this->Mesh);
   simplify->SetNumberOfBalls(this->Opt.Simplify);
   simplify->SetMethod(std::max(0, this->Opt.SimplifyMethod));
+  if (this->Opt.SimplifyTolerance >= 0.0)
+  {
+    simplify->SetErrorTolerance(this->Opt.SimplifyTolerance);
+  }
   simplify->SetSurfaceData(this->Surface);
   simplify->SetNumberOfThreads(this->Opt.Threads);
   const Clock::time_point start = Clock::now();

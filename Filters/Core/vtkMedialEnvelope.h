@@ -129,13 +129,9 @@ inline bool SlabTangentPlanes(const double* const c[3], const double r[3], Tange
 
 /// The slab of the triangle of balls (c_j, r_j) where its minimum is inside the
 /// triangle; +inf where it is on an edge (or for a degenerate triangle).
-inline double TriangleField(const double x[3], const double* const c[3], const double r[3])
+/// The same with the slab's tangent planes computed already (SlabTangentPlanes true).
+inline double TriangleField(const double x[3], const double* const c[3], const double r[3], const TangentPlanes& t)
 {
-  TangentPlanes t;
-  if (!SlabTangentPlanes(c, r, t))
-  {
-    return HUGE_VAL;
-  }
   const double* e1 = t.E1;
   const double* e2 = t.E2;
   const double w[3] = { x[0] - c[0][0], x[1] - c[0][1], x[2] - c[0][2] };
@@ -169,6 +165,12 @@ inline double TriangleField(const double x[3], const double* const c[3], const d
     return HUGE_VAL;
   }
   return g;
+}
+
+inline double TriangleField(const double x[3], const double* const c[3], const double r[3])
+{
+  TangentPlanes t;
+  return SlabTangentPlanes(c, r, t) ? TriangleField(x, c, r, t) : HUGE_VAL;
 }
 
 /// Upper bound of how far the cone of an edge reaches beyond its two balls.

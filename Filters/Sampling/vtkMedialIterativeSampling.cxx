@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The iterative sampling strategies and the coverage measure; see the header for the
-// algorithms. Everything here runs on the calling thread except the ball solves.
+// algorithms. The choices are made on the calling thread; the ball solves, the darts and
+// the coverage's passes run in parallel.
 #include "vtkMedialIterativeSampling.h"
 
 #include "vtkMedialBallSolver.h"
@@ -17,6 +18,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 #include <numeric>
 #include <queue>
 #include <unordered_set>
@@ -146,11 +148,19 @@ struct vtkMedialCoverage::Internals
   std::vector<vtkIdType> Owner;     // per slot: the ball (record index) that set its gap, or -1
   std::vector<vtkIdType> CellOfSlot;
   std::vector<double> CellMax; // per cell: the largest gap of its points (-infinity if none)
+  // Per row of cells (fixed y and z): an upper bound of its cells' CellMax (gaps only
+  // fall, so a bound from an earlier refresh stays valid), and its first and last
+  // non-empty cell: FindLowered skips whole rows and the empty ends of the others.
+  std::vector<double> RowMax;
+  std::vector<int> RowFirst, RowLast;
   std::vector<vtkIdType> FaceStart; // vertex -> faces (CSR)
   std::vector<vtkIdType> FaceList;
   std::vector<unsigned> Stamp; // per face, dedupes `touched`
   unsigned CurrentStamp = 0;
   double Bound = HUGE_VAL; // upper bound of every gap
+  double Worst = -HUGE_VAL; // MaxGapInTeam's result
+  std::vector<std::vector<vtkMedialCoverage::Lowering>> Pending; // AddBallsInTeam: one batch's lowerings
+  static constexpr vtkIdType Batch = 1024; // AddBallsInTeam: bounds the memory of the lowerings waiting
   double Pad = 0.0;        // added to the search reach: cell binning and slab bounds may differ by an ulp
 
   template <class F>
@@ -170,15 +180,56 @@ struct vtkMedialCoverage::Internals
   double GapOf(vtkIdType point) const { return this->Gap[this->SlotOf[point]]; }
 
   void BuildFaceLists();
-  void UpdateAllCellMax()
+  // The *InTeam passes are orphaned worksharing loops: every thread of the enclosing
+  // parallel region calls them (outside one, the calling thread does all the work).
+  void UpdateAllCellMaxInTeam()
   {
     const vtkIdType cells = this->Grid.GetNumberOfCells();
-#pragma omp parallel for num_threads(this->Threads) schedule(static, 4096)
+#pragma omp for schedule(static, 4096)
     for (vtkIdType c = 0; c < cells; ++c)
     {
       this->UpdateCellMax(c);
     }
+    this->UpdateAllRowMaxInTeam();
   }
+  void UpdateAllRowMaxInTeam()
+  {
+    const vtkIdType rows = static_cast<vtkIdType>(this->RowMax.size());
+    const vtkIdType rowLength = this->Grid.GetDimension(0);
+#pragma omp for schedule(static, 1024)
+    for (vtkIdType row = 0; row < rows; ++row)
+    {
+      double worst = -HUGE_VAL;
+      for (int i = this->RowFirst[row]; i <= this->RowLast[row]; ++i)
+      {
+        worst = std::max(worst, this->CellMax[row * rowLength + i]);
+      }
+      this->RowMax[row] = worst;
+    }
+  }
+  /// Largest gap; sets Bound and refreshes RowMax. Every thread gets the result.
+  double MaxGapInTeam()
+  {
+    const vtkIdType slots = static_cast<vtkIdType>(this->Gap.size());
+#pragma omp single
+    this->Worst = -HUGE_VAL;
+    double worst = -HUGE_VAL;
+#pragma omp for schedule(static) nowait
+    for (vtkIdType s = 0; s < slots; ++s)
+    {
+      worst = std::max(worst, this->Gap[s]);
+    }
+#pragma omp critical(vtkMedialCoverageMaxGap)
+    this->Worst = std::max(this->Worst, worst);
+#pragma omp barrier
+#pragma omp single
+    this->Bound = std::max(this->Worst, 0.0);
+    this->UpdateAllRowMaxInTeam();
+    return this->Worst;
+  }
+  void StartValuesInTeam(const std::vector<double>& seeds, const vtkMedialUniformGrid& seedGrid);
+  void AddBallsInTeam(const vtkMedialCoverage& coverage, const vtkMedialSampleRecord* records, vtkIdType count,
+    vtkIdType firstBall);
   void UpdateCellMax(vtkIdType cell)
   {
     double worst = -HUGE_VAL;
@@ -257,6 +308,22 @@ void vtkMedialCoverage::Internals::BuildSlots(const std::vector<double>& points,
     std::fill(this->CellOfSlot.begin() + this->Grid.ItemOffset(c), this->CellOfSlot.begin() + this->Grid.ItemOffset(c + 1), c);
   }
   this->Pad = 1e-9 * mesh.Diagonal;
+  const int rowLength = this->Grid.GetDimension(0);
+  const vtkIdType rows = cells / rowLength;
+  this->RowMax.assign(static_cast<size_t>(rows), HUGE_VAL);
+  this->RowFirst.assign(static_cast<size_t>(rows), rowLength);
+  this->RowLast.assign(static_cast<size_t>(rows), -1);
+  for (vtkIdType row = 0; row < rows; ++row)
+  {
+    for (int i = 0; i < rowLength; ++i)
+    {
+      if (!this->Grid.IsCellEmpty(row * rowLength + i))
+      {
+        this->RowFirst[row] = std::min(this->RowFirst[row], i);
+        this->RowLast[row] = i;
+      }
+    }
+  }
 }
 
 vtkMedialCoverage::vtkMedialCoverage(const vtkMedialTriangleMesh& mesh, int threads)
@@ -290,7 +357,8 @@ vtkMedialCoverage::vtkMedialCoverage(const vtkMedialTriangleMesh& mesh, int thre
 
 vtkMedialCoverage::~vtkMedialCoverage() = default;
 
-void vtkMedialCoverage::Initialize(const std::vector<vtkMedialSampleRecord>& records)
+void vtkMedialCoverage::Initialize(
+  const std::vector<vtkMedialSampleRecord>& records, const std::function<void()>& alongside)
 {
   Internals& m = *this->Impl;
   std::vector<double> seeds;
@@ -301,34 +369,64 @@ void vtkMedialCoverage::Initialize(const std::vector<vtkMedialSampleRecord>& rec
       seeds.insert(seeds.end(), r.Surface, r.Surface + 3);
     }
   }
-  const size_t n = seeds.size() / 3;
-  if (n > 0)
+  vtkMedialUniformGrid seedGrid;
+  if (!seeds.empty())
   {
-    // Start value: distance to a nearby seed's surface point (an upper bound of the gap).
-    vtkMedialUniformGrid seedGrid;
-    const double spacing = std::max(std::sqrt(m.Mesh->TotalArea / n), 1e-9 * m.Mesh->Diagonal);
+    const double spacing = std::max(std::sqrt(m.Mesh->TotalArea / (seeds.size() / 3)), 1e-9 * m.Mesh->Diagonal);
     seedGrid.InitializeCubic(m.Mesh->Bounds, vtkMedialUniformGrid::CubicCellSize(m.Mesh->Bounds, spacing));
     seedGrid.BuildPoints(seeds, std::vector<char>());
-    const vtkIdType slots = static_cast<vtkIdType>(m.Gap.size());
-#pragma omp parallel for num_threads(m.Threads) schedule(static, 1024)
-    for (vtkIdType s = 0; s < slots; ++s)
-    {
-      const double x[3] = { m.X[s], m.Y[s], m.Z[s] };
-      double best = HUGE_VAL;
-      int centre[3];
-      seedGrid.CellCoordinates(x, centre);
-      for (int ring = 1; best == HUGE_VAL && ring <= seedGrid.GetMaximumDimension(); ring *= 2)
-      {
-        const int lo[3] = { centre[0] - ring, centre[1] - ring, centre[2] - ring };
-        const int hi[3] = { centre[0] + ring, centre[1] + ring, centre[2] + ring };
-        seedGrid.ForEachItemInBox(lo, hi, [&](vtkIdType i) { best = std::min(best, Distance(x, &seeds[3 * i])); });
-      }
-      m.Gap[s] = std::min(m.Gap[s], best);
-    }
   }
-  m.UpdateAllCellMax();
-  this->MaxGap();
-  this->AddBalls(records.data(), static_cast<vtkIdType>(records.size()), 0);
+  m.Pending.resize(std::max(m.Pending.size(), std::min<size_t>(Internals::Batch, records.size())));
+  // One team: the calling thread first runs `alongside`, then joins the others, which
+  // meanwhile take the dynamically scheduled start values.
+  std::exception_ptr failure; // an exception must not leave the parallel region
+#pragma omp parallel num_threads(m.Threads)
+  {
+    if (alongside && omp_get_thread_num() == 0)
+    {
+      try
+      {
+        alongside();
+      }
+      catch (...)
+      {
+        failure = std::current_exception();
+      }
+    }
+    if (!seeds.empty())
+    {
+      m.StartValuesInTeam(seeds, seedGrid);
+    }
+    m.UpdateAllCellMaxInTeam();
+    m.MaxGapInTeam();
+    m.AddBallsInTeam(*this, records.data(), static_cast<vtkIdType>(records.size()), 0);
+  }
+  if (failure)
+  {
+    std::rethrow_exception(failure);
+  }
+}
+
+// Start value: distance to a nearby seed's surface point (an upper bound of the gap).
+void vtkMedialCoverage::Internals::StartValuesInTeam(
+  const std::vector<double>& seeds, const vtkMedialUniformGrid& seedGrid)
+{
+  const vtkIdType slots = static_cast<vtkIdType>(this->Gap.size());
+#pragma omp for schedule(dynamic, 1024)
+  for (vtkIdType s = 0; s < slots; ++s)
+  {
+    const double x[3] = { this->X[s], this->Y[s], this->Z[s] };
+    double best = HUGE_VAL;
+    int centre[3];
+    seedGrid.CellCoordinates(x, centre);
+    for (int ring = 1; best == HUGE_VAL && ring <= seedGrid.GetMaximumDimension(); ring *= 2)
+    {
+      const int lo[3] = { centre[0] - ring, centre[1] - ring, centre[2] - ring };
+      const int hi[3] = { centre[0] + ring, centre[1] + ring, centre[2] + ring };
+      seedGrid.ForEachItemInBox(lo, hi, [&](vtkIdType i) { best = std::min(best, Distance(x, &seeds[3 * i])); });
+    }
+    this->Gap[s] = std::min(this->Gap[s], best);
+  }
 }
 
 void vtkMedialCoverage::FindLowered(const double c[3], double r, std::vector<Lowering>& lowered) const
@@ -342,10 +440,20 @@ void vtkMedialCoverage::FindLowered(const double c[3], double r, std::vector<Low
   const double* gap = m.Gap.data();
 
   const double* cellMax = m.CellMax.data();
+  const int rowLength = m.Grid.GetDimension(0);
   m.Grid.ForEachRowNear(c, reach, [&](int cy, int cz, int x0, int x1, double d2) {
-
     const vtkIdType row = m.Grid.CellId(0, cy, cz);
-    for (int i = x0; i <= x1; ++i)
+    // The row's bound first: most rows near a large ball are empty or covered.
+    const vtkIdType rowIndex = row / rowLength;
+    const double rowTop = r + m.RowMax[rowIndex] + m.Pad;
+    if (!(rowTop > 0.0) || d2 > rowTop * rowTop)
+    {
+      return;
+    }
+    const double dx = std::sqrt(rowTop * rowTop - d2);
+    const int first = std::max(std::max(x0, m.RowFirst[rowIndex]), m.Grid.Coordinate(c[0] - dx, 0));
+    const int last = std::min(std::min(x1, m.RowLast[rowIndex]), m.Grid.Coordinate(c[0] + dx, 0));
+    for (int i = first; i <= last; ++i)
     {
       // A point is lowered only within r + its gap of c: skip the cells too far for their largest gap.
       const double top = r + cellMax[row + i] + m.Pad;
@@ -418,43 +526,47 @@ void vtkMedialCoverage::Apply(const std::vector<Lowering>& lowered, vtkIdType ba
 void vtkMedialCoverage::AddBalls(const vtkMedialSampleRecord* records, vtkIdType count, vtkIdType firstBall)
 {
   Internals& m = *this->Impl;
-  // Batches bound the memory of the lowerings waiting to be applied.
-  constexpr vtkIdType Batch = 1024;
-  std::vector<std::vector<Lowering>> lowered(static_cast<size_t>(std::min(Batch, count)));
-  const vtkIdType slots = static_cast<vtkIdType>(m.Gap.size());
+  m.Pending.resize(std::max(m.Pending.size(), static_cast<size_t>(std::min(Internals::Batch, count))));
+#pragma omp parallel num_threads(m.Threads)
+  m.AddBallsInTeam(*this, records, count, firstBall);
+}
+
+void vtkMedialCoverage::Internals::AddBallsInTeam(
+  const vtkMedialCoverage& coverage, const vtkMedialSampleRecord* records, vtkIdType count, vtkIdType firstBall)
+{
+  std::vector<std::vector<Lowering>>& lowered = this->Pending;
+  const vtkIdType slots = static_cast<vtkIdType>(this->Gap.size());
+  const int threads = omp_get_num_threads();
+  const int thread = omp_get_thread_num();
+  const vtkIdType lo = slots * thread / threads, hi = slots * (thread + 1) / threads;
   for (vtkIdType begin = 0; begin < count; begin += Batch)
   {
     const vtkIdType n = std::min(Batch, count - begin);
-#pragma omp parallel num_threads(m.Threads)
-    {
 #pragma omp for schedule(dynamic, 4)
-      for (vtkIdType j = 0; j < n; ++j)
+    for (vtkIdType j = 0; j < n; ++j)
+    {
+      const vtkMedialSampleRecord& r = records[begin + j];
+      lowered[j].clear();
+      if (r.Valid)
       {
-        const vtkMedialSampleRecord& r = records[begin + j];
-        lowered[j].clear();
-        if (r.Valid)
-        {
-          this->FindLowered(r.Centre, r.Radius, lowered[j]);
-        }
+        coverage.FindLowered(r.Centre, r.Radius, lowered[j]);
       }
-      // Each thread applies the lowerings of its own range of slots, in ball order.
-      const int threads = omp_get_num_threads();
-      const int thread = omp_get_thread_num();
-      const vtkIdType lo = slots * thread / threads, hi = slots * (thread + 1) / threads;
-      for (vtkIdType j = 0; j < n; ++j)
+    }
+    // Each thread applies the lowerings of its own range of slots, in ball order.
+    for (vtkIdType j = 0; j < n; ++j)
+    {
+      for (const Lowering& l : lowered[j])
       {
-        for (const Lowering& l : lowered[j])
+        if (l.Slot >= lo && l.Slot < hi && l.Gap < this->Gap[l.Slot])
         {
-          if (l.Slot >= lo && l.Slot < hi && l.Gap < m.Gap[l.Slot])
-          {
-            m.Gap[l.Slot] = l.Gap;
-            m.Owner[l.Slot] = firstBall + begin + j;
-          }
+          this->Gap[l.Slot] = l.Gap;
+          this->Owner[l.Slot] = firstBall + begin + j;
         }
       }
     }
+#pragma omp barrier
   }
-  m.UpdateAllCellMax();
+  this->UpdateAllCellMaxInTeam();
 }
 
 double vtkMedialCoverage::FaceGap(vtkIdType face) const
@@ -483,19 +595,12 @@ vtkIdType vtkMedialCoverage::WorstPoint(vtkIdType face, double x[3]) const
   return m.Owner[best];
 }
 
-double vtkMedialCoverage::MaxGap()
+double vtkMedialCoverage::MaxGap(bool parallel)
 {
   Internals& m = *this->Impl;
-  double worst = -HUGE_VAL;
-  const vtkIdType slots = static_cast<vtkIdType>(m.Gap.size());
-  const double* gap = m.Gap.data();
-#pragma omp parallel for num_threads(m.Threads) reduction(max : worst) schedule(static)
-  for (vtkIdType s = 0; s < slots; ++s)
-  {
-    worst = std::max(worst, gap[s]);
-  }
-  m.Bound = std::max(worst, 0.0);
-  return worst;
+#pragma omp parallel num_threads(m.Threads) if (parallel)
+  m.MaxGapInTeam();
+  return m.Worst;
 }
 
 vtkIdType vtkMedialCoverage::WorstFace() const
@@ -543,7 +648,8 @@ struct Runner
   vtkMedialCoverage Coverage;
   SurfacePointSet Taken;
   Round Current;
-  vtkIdType Rounds = 0;
+  vtkIdType CountAtLastRound = 0;    // EndOfRound: samples at the previous round's end
+  vtkIdType CountAtLastRefresh = -1; // and at the maximum's last refresh (-1: never)
   std::vector<vtkIdType> SolveOrder, Near;
   std::vector<int> Attempts; // FACE_DISTANCE: per face, own samples that failed to lower it
 
@@ -567,12 +673,18 @@ struct Runner
 
   // Checks coverage, reports progress; true when the run must stop. Without a
   // coverage stop the maximum (which also tightens the coverage's search bound) is
-  // refreshed every 8th round only: it changes no choice then.
+  // refreshed every 8 RoundSize samples only: it changes no choice then. A round of a
+  // few samples (closest-neighbor's last ones) refreshes it on the calling thread:
+  // waking the team, on a loaded machine, can cost more than the scan.
   bool EndOfRound()
   {
-    if (this->S.CoverageTolerance > 0.0 || this->Rounds++ % 8 == 0)
+    const vtkIdType added = this->Count() - this->CountAtLastRound;
+    this->CountAtLastRound = this->Count();
+    if (this->S.CoverageTolerance > 0.0 || this->CountAtLastRefresh < 0 ||
+      this->Count() - this->CountAtLastRefresh >= 8 * this->RoundSize())
     {
-      this->R.MaxGap = this->Coverage.MaxGap();
+      this->CountAtLastRefresh = this->Count();
+      this->R.MaxGap = this->Coverage.MaxGap(added >= 32);
       this->R.CoverageReached = this->R.MaxGap <= this->S.CoverageTolerance;
     }
     if (this->Progress(static_cast<double>(this->Count()) / static_cast<double>(this->S.Budget)))
@@ -603,7 +715,6 @@ struct Runner
       this->Taken.Insert(&points[3 * i]);
     }
     this->R.Seeds = this->Count();
-    this->Coverage.Initialize(this->R.Records);
   }
 
   // Fills this->Current's n slots in parallel, in the order of near[j] (a triangle
@@ -911,7 +1022,10 @@ private:
 void Runner::ClosestNeighbor()
 {
   std::vector<Segment> segments;
-  if (!this->ChainSeeds(segments))
+  // The chains (one thread) and the coverage's start (the others, then all) at once.
+  bool chained = false;
+  this->Coverage.Initialize(this->R.Records, [&]() { chained = this->ChainSeeds(segments); });
+  if (!chained)
   {
     this->R.Aborted = true;
     return;
@@ -1119,6 +1233,7 @@ void vtkMedialRunIterativeSampling(const vtkMedialTriangleMesh& mesh, const vtkM
   }
   else
   {
+    runner.Coverage.Initialize(result.Records);
     runner.FaceDistance();
   }
   if (!result.Aborted)

@@ -11,7 +11,8 @@
  * and centroid, stored cell after cell of a uniform grid, and lowers it ball by
  * ball: a new ball (c, r) can only lower points with |x - c| < r + G, G being an
  * upper bound of every gap, so only the rows of cells within that distance are
- * visited, and of those only the cells that come within r + (their largest gap).
+ * visited, and of those only the rows and cells that come within r + (their largest
+ * gap; a row's bound is refreshed with the maximum, and stays valid since gaps only fall).
  * Finding the points a ball lowers is read-only and runs for a round's balls in
  * parallel; applying them is a minimum, so the gaps do not depend on the order the
  * balls are added in; they are applied in sample order. It starts from the first
@@ -76,7 +77,9 @@
  * points each new ball lowers (vtkMedialCoverage::FindLowered, against the gaps
  * before the round), the seeds' darts, and the coverage's start values and maximum.
  * The lowerings are then applied in sample order (the seeds' ones by ranges of
- * points, each range in sample order). The result does not depend on the thread count.
+ * points, each range in sample order). CLOSEST_NEIGHBOR's step 1 runs on the calling
+ * thread while the other threads start the coverage (its passes are worksharing loops
+ * of one team). The result does not depend on the thread count.
  * No two samples share a surface point: exact duplicates are refused.
  */
 #ifndef vtkMedialIterativeSampling_h
@@ -116,7 +119,9 @@ public:
   vtkMedialCoverage& operator=(const vtkMedialCoverage&) = delete;
 
   /// Starts from the valid records (their surface points bound the gaps), then adds their balls.
-  void Initialize(const std::vector<vtkMedialSampleRecord>& records);
+  /// `alongside`, if set, runs first on the calling thread while the other threads
+  /// start on this work (the calling thread joins them when it is done).
+  void Initialize(const std::vector<vtkMedialSampleRecord>& records, const std::function<void()>& alongside = {});
   /// The valid records' balls (numbered firstBall, firstBall + 1, ...), found in
   /// parallel and applied in order.
   void AddBalls(const vtkMedialSampleRecord* records, vtkIdType count, vtkIdType firstBall);
@@ -132,8 +137,9 @@ public:
   /// The face's point (vertex or centroid) of largest gap; returns the ball that set
   /// its gap (the nearest one to it), or -1.
   vtkIdType WorstPoint(vtkIdType face, double x[3]) const;
-  /// Largest gap over all faces (recomputed; also refreshes the internal bound).
-  double MaxGap();
+  /// Largest gap over all faces (recomputed; also refreshes the internal bounds), on
+  /// the `threads` of the constructor, or on the calling thread alone.
+  double MaxGap(bool parallel = true);
   /// The face of largest gap (lowest id among ties).
   vtkIdType WorstFace() const;
 

@@ -3,6 +3,7 @@
 
 #include "vtkMedialEnvelope.h"
 #include "vtkMedialSimplicialComplex.h"
+#include "vtkMedialUniformGrid.h"
 
 #include <algorithm>
 #include <cmath>
@@ -511,6 +512,243 @@ void vtkMedialQuadricSimplification::Collapse(vtkIdType a, vtkIdType b, const do
   ++this->Versions[b];
 }
 
+void vtkMedialQuadricSimplification::AssignGuardPoints()
+{
+  this->Owned.clear();
+  this->LocalError.clear();
+  const vtkIdType np = static_cast<vtkIdType>(this->GuardPoints.size() / 3);
+  const vtkIdType nv = static_cast<vtkIdType>(this->Balls.size());
+  if (np == 0 || nv == 0 || !this->Kept.empty())
+  {
+    return;
+  }
+  // Each point's owner is the ball nearest to it, |p - c| - r least (ties: the lower
+  // id). The balls are binned by radius (halving from the largest), each bin on a grid
+  // of its centres: a ball within rho of p has its centre within rho + the bin's
+  // largest radius, and rho grows until some ball lies within it.
+  double largest = 0.0;
+  for (const auto& ball : this->Balls)
+  {
+    largest = std::max(largest, ball[3]);
+  }
+  constexpr int Bins = 16;
+  std::vector<std::vector<vtkIdType>> members(Bins);
+  for (vtkIdType v = 0; v < nv; ++v)
+  {
+    const double r = this->Balls[v][3];
+    const int bin = r > 0.0 && largest > 0.0 ? std::min(Bins - 1, static_cast<int>(std::log2(largest / r))) : Bins - 1;
+    members[bin].push_back(v);
+  }
+  struct Bin
+  {
+    double Largest = 0.0;
+    std::vector<vtkIdType> Ids;
+    std::vector<double> Centres;
+    vtkMedialUniformGrid Grid;
+  };
+  std::vector<Bin> bins;
+  for (auto& ids : members)
+  {
+    if (ids.empty())
+    {
+      continue;
+    }
+    Bin bin;
+    double bounds[6] = { HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL };
+    for (vtkIdType v : ids)
+    {
+      bin.Largest = std::max(bin.Largest, this->Balls[v][3]);
+      for (int k = 0; k < 3; ++k)
+      {
+        bin.Centres.push_back(this->Balls[v][k]);
+        bounds[2 * k] = std::min(bounds[2 * k], this->Balls[v][k]);
+        bounds[2 * k + 1] = std::max(bounds[2 * k + 1], this->Balls[v][k]);
+      }
+    }
+    bin.Ids = std::move(ids);
+    const double cell = vtkMedialUniformGrid::CubicCellSize(bounds, std::max(bin.Largest, this->Scale / 128.0), 262144.0);
+    bin.Grid.InitializeCubic(bounds, cell);
+    bin.Grid.BuildPoints(bin.Centres, {});
+    bins.push_back(std::move(bin));
+  }
+  std::vector<vtkIdType> owner(static_cast<size_t>(np));
+#pragma omp parallel for schedule(dynamic, 256) num_threads(std::max(1, this->NumberOfThreads))
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    const double* p = &this->GuardPoints[3 * i];
+    double best = HUGE_VAL;
+    vtkIdType at = 0;
+    for (double rho = this->Scale / 256.0;; rho *= 4.0)
+    {
+      for (const Bin& bin : bins)
+      {
+        bin.Grid.ForEachItemNear(p, rho + bin.Largest, [&](vtkIdType item) {
+          const vtkIdType v = bin.Ids[item];
+          const double g = vtkMedialEnvelope::BallField(p, this->Balls[v].data(), this->Balls[v][3]);
+          if (g < best || (g == best && v < at))
+          {
+            best = g;
+            at = v;
+          }
+        });
+      }
+      if (best <= rho || rho > 4.0 * this->Scale)
+      {
+        break;
+      }
+    }
+    owner[i] = at;
+  }
+  this->Owned.assign(static_cast<size_t>(nv), {});
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    this->Owned[owner[i]].push_back(i);
+  }
+  this->LocalError.assign(static_cast<size_t>(nv), 0.0);
+#pragma omp parallel for schedule(dynamic, 64) num_threads(std::max(1, this->NumberOfThreads))
+  for (vtkIdType v = 0; v < nv; ++v)
+  {
+    this->LocalError[v] = this->MergedError(v, -1, this->Balls[v].data());
+  }
+}
+
+double vtkMedialQuadricSimplification::MergedError(vtkIdType a, vtkIdType b, const double m[4]) const
+{
+  std::vector<vtkIdType> ring;
+  for (vtkIdType v : { a, b })
+  {
+    if (v < 0)
+    {
+      continue;
+    }
+    for (vtkIdType x : this->Neighbours[v])
+    {
+      if (x != a && x != b)
+      {
+        ring.push_back(x);
+      }
+    }
+  }
+  std::sort(ring.begin(), ring.end());
+  ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+  std::vector<std::array<vtkIdType, 2>> sides;
+  for (vtkIdType v : { a, b })
+  {
+    if (v < 0)
+    {
+      continue;
+    }
+    for (vtkIdType t : this->VertexTriangles[v])
+    {
+      if (!this->TriangleAlive[t])
+      {
+        continue;
+      }
+      const auto& tri = this->AllTriangles[t];
+      int onAB = 0;
+      std::array<vtkIdType, 2> rest{ -1, -1 };
+      int k = 0;
+      for (vtkIdType x : tri)
+      {
+        if (x == a || x == b)
+        {
+          ++onAB;
+        }
+        else if (k < 2)
+        {
+          rest[k++] = x;
+        }
+      }
+      if (onAB == 1 && k == 2)
+      {
+        sides.push_back({ std::min(rest[0], rest[1]), std::max(rest[0], rest[1]) });
+      }
+    }
+  }
+  std::sort(sides.begin(), sides.end());
+  sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
+  // The primitives around m, each with a bounding ball (centre, radius) for pruning:
+  // a primitive's field at p is at least |p - centre| - radius.
+  struct Primitive
+  {
+    double Centre[3];
+    double Reach;
+    const double* C[3];
+    double R[3];
+    vtkMedialEnvelope::TangentPlanes Planes;
+    bool Slab;
+  };
+  std::vector<Primitive> primitives;
+  primitives.reserve(ring.size() + sides.size());
+  auto bound = [](Primitive& q, int corners) {
+    for (int k = 0; k < 3; ++k)
+    {
+      q.Centre[k] = 0.0;
+      for (int j = 0; j < corners; ++j)
+      {
+        q.Centre[k] += q.C[j][k] / corners;
+      }
+    }
+    q.Reach = 0.0;
+    for (int j = 0; j < corners; ++j)
+    {
+      q.Reach = std::max(q.Reach, Distance(q.Centre, q.C[j]) + q.R[j]);
+    }
+  };
+  for (vtkIdType x : ring)
+  {
+    Primitive q;
+    q.C[0] = m;
+    q.C[1] = this->Balls[x].data();
+    q.R[0] = m[3];
+    q.R[1] = this->Balls[x][3];
+    q.Slab = false;
+    bound(q, 2);
+    primitives.push_back(q);
+  }
+  for (const auto& side : sides)
+  {
+    Primitive q;
+    q.C[0] = m;
+    q.C[1] = this->Balls[side[0]].data();
+    q.C[2] = this->Balls[side[1]].data();
+    q.R[0] = m[3];
+    q.R[1] = this->Balls[side[0]][3];
+    q.R[2] = this->Balls[side[1]][3];
+    q.Slab = vtkMedialEnvelope::SlabTangentPlanes(q.C, q.R, q.Planes);
+    if (q.Slab)
+    {
+      bound(q, 3);
+      primitives.push_back(q);
+    }
+  }
+  double error = 0.0;
+  for (vtkIdType v : { a, b })
+  {
+    if (v < 0)
+    {
+      continue;
+    }
+    for (vtkIdType i : this->Owned[v])
+    {
+      const double* p = &this->GuardPoints[3 * i];
+      double g = vtkMedialEnvelope::BallField(p, m, m[3]);
+      for (const Primitive& q : primitives)
+      {
+        if (Distance(p, q.Centre) - q.Reach >= g)
+        {
+          continue;
+        }
+        g = std::min(g,
+          q.Slab ? vtkMedialEnvelope::TriangleField(p, q.C, q.R, q.Planes)
+                 : vtkMedialEnvelope::EdgeField(p, q.C[0], q.R[0], q.C[1], q.R[1]));
+      }
+      error = std::max(error, std::fabs(g));
+    }
+  }
+  return error;
+}
+
 void vtkMedialQuadricSimplification::Extract()
 {
   const vtkIdType nv = static_cast<vtkIdType>(this->Balls.size());
@@ -608,11 +846,13 @@ bool vtkMedialQuadricSimplification::Run(
   }
 
   std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> heap;
+  this->AssignGuardPoints();
+  const bool guarded = !this->Owned.empty() && this->Kept.empty();
   auto push = [&](vtkIdType a, vtkIdType b) {
     if (this->Orient(a, b))
     {
       double m[4];
-      heap.push({ this->CollapseCost(a, b, m), a, b, this->Versions[a] + this->Versions[b] });
+      heap.push({ this->CollapseCost(a, b, m), a, b, this->Versions[a] + this->Versions[b], 0, -1.0 });
     }
   };
   for (const auto& e : complex.Edges)
@@ -666,13 +906,35 @@ bool vtkMedialQuadricSimplification::Run(
       }
       continue;
     }
+    double m[4];
+    this->CollapseCost(next.A, next.B, m);
+    double error = next.Error;
+    if (guarded && next.Tier == 0)
+    {
+      // Guarded lazily: a collapse that would leave its points farther from the envelope
+      // than the tolerance (or than they already are) waits behind every collapse that
+      // does not, in the order of that distance.
+      error = this->MergedError(next.A, next.B, m);
+      if (error > std::max(this->GuardTolerance, std::max(this->LocalError[next.A], this->LocalError[next.B])))
+      {
+        heap.push({ error, next.A, next.B, next.Version, 1, error });
+        continue;
+      }
+    }
     if ((++made & 1023) == 0 && aborted && aborted())
     {
       return false;
     }
-    double m[4];
-    this->CollapseCost(next.A, next.B, m);
     this->Collapse(next.A, next.B, m);
+    if (guarded)
+    {
+      // The merged ball takes b's points and carries their distance.
+      auto& into = this->Owned[next.A];
+      auto& from = this->Owned[next.B];
+      into.insert(into.end(), from.begin(), from.end());
+      std::vector<vtkIdType>().swap(from);
+      this->LocalError[next.A] = error;
+    }
     --alive;
     std::vector<vtkIdType> ring = this->Neighbours[next.A];
     for (vtkIdType x : ring)

@@ -39,6 +39,23 @@
  * around its bore, had been flattened to a triangle (envelope Hausdorff 6.5% of the
  * diagonal for any K below 850; 0.9% at K = 500 with these collapses allowed).
  *
+ * Guard (GuardPoints, GuardTolerance): the quadric is a sum of squares, and what it
+ * lets go first are collapses that pull a corner or a thin tip in by a little each,
+ * until a few surface vertices are far from the envelope (fandisk at K = 100: 2.88%
+ * of the diagonal, at a corner). With guard points (the
+ * surface's vertices), each point belongs to the ball nearest to it (|p - c| - r
+ * least; the balls binned by radius on grids of their centres), and each ball carries
+ * its points' largest distance |g| from the envelope around it (its ball, edges and
+ * triangles; vtkMedialEnvelope's fields). When a collapse comes off the queue, the
+ * points of its two balls are measured against the envelope around the merged ball;
+ * if one lies farther than both the tolerance and the two balls' own largest, the
+ * collapse goes back into the queue behind every unguarded one, ordered by that
+ * distance, so that once no collapse keeps within the tolerance, the one that moves
+ * the surface least goes first. The merged ball takes its two balls' points. Points
+ * of the neighbours are not measured again (their envelope changes too, a little).
+ * The guard is evaluated lazily, when a collapse comes off the queue: a collapse is
+ * measured about once instead of each time its neighbourhood changes.
+ *
  * Stops at the target number of balls, or earlier when no collapse is allowed.
  *
  * RunKeeping connects chosen balls instead (vtkMedialSimplifyFilter's COVERAGE method):
@@ -74,6 +91,12 @@ public:
 
   /// Weight of the rim planes (see the class comment); 0: Q-MAT's quadric alone.
   double RimWeight = 10.0;
+  /// Points of the surface (x, y, z each) that guard the collapses, and the guard's
+  /// tolerance (a distance; see the class comment). No points: no guard.
+  std::vector<double> GuardPoints;
+  double GuardTolerance = 0.0;
+  /// Threads of the guard's set-up (at least 1).
+  int NumberOfThreads = 1;
 
   /// The result: balls (centres and radii), edges with their triangle counts, triangles.
   std::vector<double> Points;
@@ -106,8 +129,14 @@ private:
     double Cost;
     vtkIdType A, B;
     unsigned Version; // sum of the two balls' versions when it was queued
+    int Tier;
+    double Error;
     bool operator>(const Candidate& o) const
     {
+      if (Tier != o.Tier)
+      {
+        return Tier > o.Tier;
+      }
       return Cost != o.Cost ? Cost > o.Cost : (A != o.A ? A > o.A : B > o.B);
     }
   };
@@ -131,6 +160,14 @@ private:
   bool Orient(vtkIdType& a, vtkIdType& b) const;
   void Collapse(vtkIdType a, vtkIdType b, const double m[4]);
   void Extract();
+  // The guard: each point goes to the ball nearest to it, and each ball's error is its
+  // points' largest distance from the envelope around it.
+  void AssignGuardPoints();
+  // The largest |field| of the points of a and b against the envelope around the ball m
+  // that replaces them (their edges and triangles, with b's moved to m); b < 0: a's own.
+  double MergedError(vtkIdType a, vtkIdType b, const double m[4]) const;
+  std::vector<std::vector<vtkIdType>> Owned; // the guard points of each ball
+  std::vector<double> LocalError;            // and their distance from its envelope
 
   std::vector<std::array<double, 4>> Balls;
   std::vector<Quadric> Quadrics;

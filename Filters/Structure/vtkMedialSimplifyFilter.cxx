@@ -33,6 +33,8 @@ namespace
 {
 // COVERAGE: choices made again with the balls no collapse could remove.
 constexpr int CoverageAttempts = 6;
+// QUADRIC: the surface vertices that guard the collapses, at most.
+constexpr vtkIdType MaximumGuardPoints = 20000;
 }
 
 vtkMedialSimplifyFilter::vtkMedialSimplifyFilter()
@@ -100,6 +102,31 @@ int vtkMedialSimplifyFilter::RequestData(
   const auto aborted = [this]() { return this->GetAbortExecute() != 0; };
   vtkMedialQuadricSimplification simplification;
   simplification.RimWeight = this->Method == QUADRIC ? this->RimWeight : 0.0;
+  vtkPolyData* surface = vtkPolyData::GetData(inputVector[1], 0);
+  const bool guarded = surface && this->Method == QUADRIC && this->ErrorTolerance > 0.0;
+  vtkMedialTriangleMesh mesh;
+  if (surface && (guarded || this->Method == COVERAGE))
+  {
+    std::string surfaceError;
+    if (!mesh.Build(surface, surfaceError, aborted))
+    {
+      if (this->GetAbortExecute())
+      {
+        return 1;
+      }
+      vtkErrorMacro(<< "Cannot simplify: the surface on input 1: " << surfaceError << ".");
+      return 0;
+    }
+  }
+  else if (this->Method == COVERAGE)
+  {
+    vtkErrorMacro(<< "Cannot simplify by coverage: connect the surface to input 1 (SetSurfaceConnection).");
+    return 0;
+  }
+  if (guarded)
+  {
+    this->SetGuardPoints(mesh, simplification);
+  }
   if (this->Method == COVERAGE && n > this->NumberOfBalls)
   {
     // Balls that no collapse can remove are chosen in the next attempt, so that the
@@ -108,7 +135,7 @@ int vtkMedialSimplifyFilter::RequestData(
     for (int attempt = 0; attempt < CoverageAttempts; ++attempt)
     {
       std::vector<char> kept;
-      if (!this->ChooseByCoverage(complex, vtkPolyData::GetData(inputVector[1], 0), forced, kept))
+      if (!this->ChooseByCoverage(complex, mesh, forced, kept))
       {
         return this->GetAbortExecute() ? 1 : 0;
       }
@@ -182,25 +209,38 @@ int vtkMedialSimplifyFilter::RequestData(
   return 1;
 }
 
-bool vtkMedialSimplifyFilter::ChooseByCoverage(const vtkMedialSimplicialComplex& complex, vtkPolyData* surface,
-  const std::vector<char>& forced, std::vector<char>& kept)
+void vtkMedialSimplifyFilter::SetGuardPoints(
+  const vtkMedialTriangleMesh& mesh, vtkMedialQuadricSimplification& simplification) const
 {
-  if (!surface)
+  // The surface's vertices (those of its triangles), where its corners are; at most
+  // MaximumGuardPoints of them, every k-th, on very fine meshes.
+  std::vector<char> used(static_cast<size_t>(mesh.GetNumberOfPoints()), 0);
+  for (vtkIdType t = 0; t < mesh.GetNumberOfTriangles(); ++t)
   {
-    vtkErrorMacro(<< "Cannot simplify by coverage: connect the surface to input 1 (SetSurfaceConnection).");
-    return false;
-  }
-  vtkMedialTriangleMesh mesh;
-  std::string error;
-  const auto aborted = [this]() { return this->GetAbortExecute() != 0; };
-  if (!mesh.Build(surface, error, aborted))
-  {
-    if (!this->GetAbortExecute())
+    for (int k = 0; k < 3; ++k)
     {
-      vtkErrorMacro(<< "Cannot simplify by coverage: the surface on input 1: " << error << ".");
+      used[mesh.GetTriangle(t)[k]] = 1;
     }
-    return false;
   }
+  const vtkIdType count = static_cast<vtkIdType>(std::count(used.begin(), used.end(), 1));
+  const vtkIdType stride = (count + MaximumGuardPoints - 1) / MaximumGuardPoints;
+  vtkIdType seen = 0;
+  for (vtkIdType i = 0; i < mesh.GetNumberOfPoints(); ++i)
+  {
+    if (used[i] && seen++ % stride == 0)
+    {
+      const double* x = mesh.GetPoint(i);
+      simplification.GuardPoints.insert(simplification.GuardPoints.end(), x, x + 3);
+    }
+  }
+  simplification.GuardTolerance = this->ErrorTolerance * mesh.Diagonal;
+  simplification.NumberOfThreads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+}
+
+bool vtkMedialSimplifyFilter::ChooseByCoverage(const vtkMedialSimplicialComplex& complex,
+  const vtkMedialTriangleMesh& mesh, const std::vector<char>& forced, std::vector<char>& kept)
+{
+  const auto aborted = [this]() { return this->GetAbortExecute() != 0; };
   std::vector<double> samples(static_cast<size_t>(3 * this->NumberOfSurfaceSamples));
   for (vtkIdType i = 0; i < this->NumberOfSurfaceSamples; ++i)
   {
@@ -226,6 +266,7 @@ void vtkMedialSimplifyFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfBalls: " << this->NumberOfBalls << "\n";
   os << indent << "Method: " << GetMethodName(this->Method) << "\n";
   os << indent << "RimWeight: " << this->RimWeight << "\n";
+  os << indent << "ErrorTolerance: " << this->ErrorTolerance << "\n";
   os << indent << "Dilation: " << this->Dilation << "\n";
   os << indent << "NumberOfSurfaceSamples: " << this->NumberOfSurfaceSamples << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";

@@ -11,6 +11,8 @@
 #include "vtkGenericCell.h"
 #include "vtkStaticCellLocator.h"
 #include "vtkMedialArrayNames.h"
+#include "vtkMedialBallUnion.h"
+#include "vtkMedialReconstructionError.h"
 #include "vtkMedialDisjointSets.h"
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialMeshFilter.h"
@@ -81,6 +83,21 @@ inline double SurfaceDistance(vtkStaticCellLocator* locator, const double x[3])
   int sub;
   locator->FindClosestPoint(x, closest, cell, id, sub, d2);
   return std::sqrt(d2);
+}
+
+/// The envelope of a medial mesh (vtkMedialBallUnion MEDIAL_MESH at 96^3) against the solid:
+/// vtkMedialReconstructionError's vertex Hausdorff (the larger direction), relative to the diagonal.
+inline double EnvelopeHausdorff(vtkPolyData* mesh, vtkPolyData* solid)
+{
+  vtkNew<vtkMedialBallUnion> rebuild;
+  rebuild->SetInputData(mesh);
+  rebuild->SetPrimitives(vtkMedialBallUnion::MEDIAL_MESH);
+  rebuild->SetSampleDimensions(96, 96, 96);
+  vtkNew<vtkMedialReconstructionError> measure;
+  measure->SetOriginalData(solid);
+  measure->SetReconstructionConnection(rebuild->GetOutputPort());
+  measure->Update();
+  return measure->GetVertexHausdorff();
 }
 
 /// The same points, radii and cells, bit for bit.
