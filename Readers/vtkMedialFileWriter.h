@@ -9,12 +9,12 @@
  *
  * | Content | extension | writer |
  * |---|---|---|
- * | SURFACE | .vtp | vtkXMLPolyDataWriter (binary, appended) |
+ * | SURFACE | .vtp | vtkXMLPolyDataWriter (appended raw binary, uncompressed) |
  * | SURFACE | .vtk | vtkPolyDataWriter (binary legacy) |
  * | SURFACE | .stl | vtkSTLWriter (binary; triangles only) |
  * | SURFACE | .ply | vtkPLYWriter (binary) |
  * | SURFACE | .obj | vtkOBJWriter |
- * | BALLS | .vtp | vtkXMLPolyDataWriter (every array: Radius, SurfacePoint, ...) |
+ * | BALLS | .vtp | vtkXMLPolyDataWriter (appended raw binary, uncompressed; every array: Radius, SurfacePoint, ...) |
  * | BALLS | .vtk | vtkPolyDataWriter |
  * | BALLS | .ply | vtkMedialBallPLYWriter (vertices with `radius`, edges, faces) |
  * | BALLS | .ma | vtkMedialMeshWriter (`v x y z r`, edges, faces) |

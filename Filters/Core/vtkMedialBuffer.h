@@ -18,10 +18,10 @@
  *    (madvise MADV_HUGEPAGE): 512 times fewer page faults on first touch and fewer
  *    TLB misses in the random accesses of the tree build. Only whole huge pages
  *    inside the block are advised, so the resident size does not grow.
- *    vtkMedialSmallPageBuffer skips the advice, for buffers reserved larger than
- *    they will be filled (a touched huge page is resident whole).
  * Measured on 1.55M triangles (issue 18): about a third of the preparation's CPU time
- * was page faults and zero fills.
+ * was page faults and zero fills. On this project's virtual machine a first touch
+ * costs about 15 us per 4 kB page, 50 times a huge page's cost per byte, so large
+ * buffers of the preparation should all be vtkMedialBuffer, not std::vector.
  */
 #ifndef vtkMedialBuffer_h
 #define vtkMedialBuffer_h
@@ -173,8 +173,5 @@ void vtkMedialReleaseSpareCapacity(vtkMedialBuffer<T>& buffer)
   (void)buffer;
 #endif
 }
-/// The same, in small pages: for buffers reserved larger than they will be filled.
-template <class T>
-using vtkMedialSmallPageBuffer = std::vector<T, vtkMedialBufferAllocator<T, false>>;
 
 #endif

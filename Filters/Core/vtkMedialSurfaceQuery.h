@@ -143,7 +143,7 @@ public:
   const double* GetNormal(vtkIdType t) const { return this->Tree.GetPlane(t); }
 
   /// Rank of each triangle in the internal tree's leaf order (spatially coherent).
-  const std::vector<std::int32_t>& GetLeafRanks() const { return this->Tree.GetLeafRanks(); }
+  const vtkMedialBuffer<std::int32_t>& GetLeafRanks() const { return this->Tree.GetLeafRanks(); }
 
   /// Frees the tree; no query may run afterwards. For callers done with querying that
   /// build a large output next (the tree is about 150 bytes per triangle).

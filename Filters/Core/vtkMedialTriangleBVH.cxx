@@ -11,6 +11,7 @@
 #include <optional>
 
 #include <omp.h>
+
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -655,42 +656,54 @@ bool vtkMedialTriangleBVH::BuildNodes(
   // Top levels first, then the subtrees below them in parallel, appended in order.
   const std::int32_t grain = std::max<std::int32_t>(4096, static_cast<std::int32_t>(nt / 64));
   std::vector<Subtree> subtrees;
-  vtkMedialSmallPageBuffer<Node> top(1);
+  vtkMedialBuffer<Node> top(1);
   const std::int32_t all = static_cast<std::int32_t>(nt);
   this->BuildNode(state, top, 0, 0, all, MeasureBounds(state, 0, all), &subtrees, grain);
-  std::vector<vtkMedialSmallPageBuffer<Node>> parts(subtrees.size());
-  std::atomic<bool> stop{ false };
-#pragma omp parallel for schedule(dynamic, 1)
-  for (std::int64_t i = 0; i < static_cast<std::int64_t>(subtrees.size()); ++i)
+  // Each thread builds its subtrees in one scratch buffer that it reuses (a subtree of n
+  // triangles has fewer than 2 n nodes), then moves each into a shared staging buffer,
+  // packed in whatever order they finish; the final array takes them from there in
+  // subtree order. Every page is touched once per buffer, in huge pages: buffers
+  // reserved per subtree at their upper bound were small pages (a touched huge page
+  // is resident whole), a fault per 4 kB, and that was a third of the tree's CPU time.
+  vtkMedialBuffer<Node> staging(2 * static_cast<size_t>(nt)); // address space; filled as packed
+  std::atomic<size_t> packed{ 0 };
+  struct Placed
   {
-    // Polled on the calling thread only: the callback need not be thread-safe.
-    if (stop || (aborted && omp_get_thread_num() == 0 && aborted()))
+    size_t At, Size;
+  };
+  std::vector<Placed> placed(subtrees.size());
+  std::atomic<bool> stop{ false };
+#pragma omp parallel
+  {
+    vtkMedialBuffer<Node> scratch;
+    scratch.reserve(2 * static_cast<size_t>(grain));
+#pragma omp for schedule(dynamic, 1)
+    for (std::int64_t i = 0; i < static_cast<std::int64_t>(subtrees.size()); ++i)
     {
-      stop = true;
-      continue;
+      // Polled on the calling thread only: the callback need not be thread-safe.
+      if (stop || (aborted && omp_get_thread_num() == 0 && aborted()))
+      {
+        stop = true;
+        continue;
+      }
+      scratch.resize(1);
+      this->BuildNode(state, scratch, 0, subtrees[i].Begin, subtrees[i].End, subtrees[i].Bounds, nullptr, 0);
+      placed[i] = { packed.fetch_add(scratch.size()), scratch.size() };
+      std::copy(scratch.begin(), scratch.end(), staging.begin() + placed[i].At);
     }
-    // A subtree of n triangles has fewer than 2 n nodes: reserved (address space only;
-    // small pages, touched as nodes are added), so that the part never moves.
-    parts[i].reserve(2 * static_cast<size_t>(subtrees[i].End - subtrees[i].Begin));
-    parts[i].resize(1);
-    this->BuildNode(state, parts[i], 0, subtrees[i].Begin, subtrees[i].End, subtrees[i].Bounds, nullptr, 0);
   }
   if (stop)
   {
     return false;
   }
-  size_t total = top.size();
-  for (const auto& part : parts)
-  {
-    total += part.size() - 1;
-  }
+  size_t total = top.size() + packed - subtrees.size();
   this->Nodes.resize(total);
   std::copy(top.begin(), top.end(), this->Nodes.begin());
   std::vector<std::int32_t> offsets(subtrees.size() + 1); // where each part's local node 1 goes
   offsets[0] = static_cast<std::int32_t>(top.size());
   for (size_t i = 0; i < subtrees.size(); ++i)
   {
-    offsets[i + 1] = offsets[i] + static_cast<std::int32_t>(parts[i].size()) - 1;
+    offsets[i + 1] = offsets[i] + static_cast<std::int32_t>(placed[i].Size) - 1;
   }
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::int64_t i = 0; i < static_cast<std::int64_t>(subtrees.size()); ++i)
@@ -698,16 +711,16 @@ bool vtkMedialTriangleBVH::BuildNodes(
     // Local node 0 takes the reserved slot; the others follow the earlier parts.
     const std::int32_t offset = offsets[i] - 1;
     auto global = [&](std::int32_t local) { return local == 0 ? subtrees[i].Node : offset + local; };
-    for (size_t j = 0; j < parts[i].size(); ++j)
+    const Node* part = staging.data() + placed[i].At;
+    for (size_t j = 0; j < placed[i].Size; ++j)
     {
-      Node node = parts[i][j];
+      Node node = part[j];
       if (node.Count == 0)
       {
         node.Start = global(node.Start); // children are consecutive locally and globally
       }
       this->Nodes[global(static_cast<std::int32_t>(j))] = node;
     }
-    vtkMedialSmallPageBuffer<Node>().swap(parts[i]);
   }
 #pragma omp parallel for schedule(static)
   for (vtkIdType i = 0; i < nt; ++i)
@@ -752,6 +765,118 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, co
   vtkMedialReleaseSpareCapacity(this->Vertices); // the build items' last tenth
 }
 
+int vtkMedialTriangleBVH::WideLanes(std::int32_t binary, bool root, std::int32_t lanes[4]) const
+{
+  // The binary root alone for wide node 0, else the node's children with the largest
+  // inner one opened until there are four.
+  if (root)
+  {
+    lanes[0] = binary;
+    return 1;
+  }
+  auto halfArea = [&](std::int32_t b) {
+    const Node& node = this->Nodes[b];
+    const double lo[3] = { node.Lo[0], node.Lo[1], node.Lo[2] };
+    const double hi[3] = { node.Hi[0], node.Hi[1], node.Hi[2] };
+    return HalfArea(lo, hi);
+  };
+  const Node& node = this->Nodes[binary];
+  lanes[0] = node.Start;
+  lanes[1] = node.Start + 1;
+  int count = 2;
+  while (count < 4)
+  {
+    int open = -1;
+    double largest = -1.0;
+    for (int i = 0; i < count; ++i)
+    {
+      if (this->Nodes[lanes[i]].Count == 0 && halfArea(lanes[i]) > largest)
+      {
+        largest = halfArea(lanes[i]);
+        open = i;
+      }
+    }
+    if (open < 0)
+    {
+      break;
+    }
+    const std::int32_t left = this->Nodes[lanes[open]].Start;
+    std::copy_backward(lanes + open + 1, lanes + count, lanes + count + 1);
+    lanes[open] = left;
+    lanes[open + 1] = left + 1;
+    ++count;
+  }
+  return count;
+}
+
+void vtkMedialTriangleBVH::WriteWideNode(std::int32_t index, const std::int32_t lanes[4], int count)
+{
+  WideNode& wide = this->WideNodes[index];
+  for (int i = 0; i < 4; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      wide.Lo[k][i] = HUGE_VALF; // empty: an inverted box
+      wide.Hi[k][i] = -HUGE_VALF;
+      wide.Axis[k][i] = 0.0f;
+    }
+    wide.SlabLo[i] = wide.SlabHi[i] = 0.0f;
+    wide.Child[i] = 0;
+  }
+  for (int i = 0; i < count; ++i)
+  {
+    const Node& node = this->Nodes[lanes[i]];
+    for (int k = 0; k < 3; ++k)
+    {
+      wide.Lo[k][i] = node.Lo[k];
+      wide.Hi[k][i] = node.Hi[k];
+      wide.Axis[k][i] = node.Axis[k];
+    }
+    wide.SlabLo[i] = node.SlabLo;
+    wide.SlabHi[i] = node.SlabHi;
+    wide.Child[i] = node.Count > 0 ? ~(node.Start * LeafCodeScale + node.Count) : 0;
+    if (node.Count > 0)
+    {
+      std::fill_n(&this->LeafLane[node.Start], node.Count, 4 * index + i);
+    }
+  }
+}
+
+std::int32_t vtkMedialTriangleBVH::WideSubtree(std::int32_t binary, std::int32_t first, bool write)
+{
+  // Depth first, lane 0's subtree next: a subtree's wide nodes are stored together.
+  struct Pending
+  {
+    std::int32_t Binary, Ref; // an inner binary node, and the lane that will hold its wide node
+  };
+  std::vector<Pending> stack{ { binary, -1 } };
+  std::int32_t next = first;
+  while (!stack.empty())
+  {
+    const Pending pending = stack.back();
+    stack.pop_back();
+    std::int32_t lanes[4];
+    const int count = this->WideLanes(pending.Binary, false, lanes);
+    const std::int32_t index = next++;
+    if (write)
+    {
+      if (pending.Ref >= 0)
+      {
+        this->WideNodes[pending.Ref / 4].Child[pending.Ref % 4] = index;
+      }
+      this->WriteWideNode(index, lanes, count);
+    }
+    for (int i = count - 1; i >= 0; --i)
+    {
+      if (this->Nodes[lanes[i]].Count == 0)
+      {
+        stack.push_back({ lanes[i], 4 * index + i });
+      }
+    }
+  }
+  return next - first;
+}
+
 bool vtkMedialTriangleBVH::BuildWideNodes()
 {
   this->WideNodes.clear();
@@ -760,121 +885,79 @@ bool vtkMedialTriangleBVH::BuildWideNodes()
   {
     return false;
   }
-  auto halfArea = [&](std::int32_t binary) {
-    const Node& node = this->Nodes[binary];
-    const double lo[3] = { node.Lo[0], node.Lo[1], node.Lo[2] };
-    const double hi[3] = { node.Hi[0], node.Hi[1], node.Hi[2] };
-    return HalfArea(lo, hi);
-  };
-  // Depth first, lane 0's subtree next: a subtree's wide nodes are stored together.
-  struct Pending
+  // The wide nodes are numbered depth first, lane 0's subtree next. The top levels are
+  // walked in that order first; the subtrees below them are counted in parallel, which
+  // places each one (a subtree's nodes are consecutive), then written in parallel.
+  // Counting first also allocates the nodes once (grown by doubling, they would take
+  // up to twice the memory).
+  constexpr int TopDepth = 5;
+  struct TopNode
   {
-    std::int32_t Binary, Ref; // an inner binary node, and the lane that will hold its wide node
+    std::int32_t Binary, Parent, Lane; // the parent's lane that points at it (Parent -1: none)
+    bool Below;                        // the root of a subtree left to the parallel passes
+    std::int32_t Index = 0, Size = 1;  // its wide node; its subtree's nodes when Below
   };
-  // Two passes: the first only counts the wide nodes, so that the second allocates
-  // them once (grown by doubling, they would take up to twice the memory).
-  size_t total = 0;
-  for (int pass = 0; pass < 2; ++pass)
-  {
-    this->WideNodes.reserve(total);
-    std::vector<Pending> stack{ { 0, -1 } };
-    while (!stack.empty())
+  std::vector<TopNode> top; // depth first, lane 0's subtree next
+  std::function<void(std::int32_t, std::int32_t, std::int32_t, int)> walk = [&](std::int32_t binary,
+                                                                          std::int32_t parent, std::int32_t lane,
+                                                                          int depth) {
+    const std::int32_t at = static_cast<std::int32_t>(top.size());
+    top.push_back({ binary, parent, lane, depth == TopDepth });
+    if (depth == TopDepth)
     {
-      const Pending pending = stack.back();
-      stack.pop_back();
-      // The wide node's lanes: the binary root alone for wide node 0, else the node's
-      // children with the largest inner one opened until there are four.
-      std::int32_t lanes[4] = { 0, 0, 0, 0 };
-      int count = 1;
-      if (pending.Ref >= 0)
+      return;
+    }
+    std::int32_t lanes[4];
+    const int count = this->WideLanes(binary, parent < 0, lanes);
+    for (int i = 0; i < count; ++i)
+    {
+      if (this->Nodes[lanes[i]].Count == 0)
       {
-        const Node& node = this->Nodes[pending.Binary];
-        lanes[0] = node.Start;
-        lanes[1] = node.Start + 1;
-        count = 2;
-        while (count < 4)
-        {
-          int open = -1;
-          double largest = -1.0;
-          for (int i = 0; i < count; ++i)
-          {
-            if (this->Nodes[lanes[i]].Count == 0 && halfArea(lanes[i]) > largest)
-            {
-              largest = halfArea(lanes[i]);
-              open = i;
-            }
-          }
-          if (open < 0)
-          {
-            break;
-          }
-          const std::int32_t left = this->Nodes[lanes[open]].Start;
-          std::copy_backward(lanes + open + 1, lanes + count, lanes + count + 1);
-          lanes[open] = left;
-          lanes[open + 1] = left + 1;
-          ++count;
-        }
+        walk(lanes[i], at, i, depth + 1);
       }
-      if (pass == 0)
-      {
-        ++total;
-        for (int i = 0; i < count; ++i)
-        {
-          if (this->Nodes[lanes[i]].Count == 0)
-          {
-            stack.push_back({ lanes[i], 0 });
-          }
-        }
-        continue;
-      }
-      const std::int32_t index = static_cast<std::int32_t>(this->WideNodes.size());
-      if (pending.Ref >= 0)
-      {
-        this->WideNodes[pending.Ref / 4].Child[pending.Ref % 4] = index;
-      }
-      WideNode wide;
-      for (int i = 0; i < 4; ++i)
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          wide.Lo[k][i] = HUGE_VALF; // empty: an inverted box
-          wide.Hi[k][i] = -HUGE_VALF;
-          wide.Axis[k][i] = 0.0f;
-        }
-        wide.SlabLo[i] = wide.SlabHi[i] = 0.0f;
-        wide.Child[i] = 0;
-      }
-      for (int i = 0; i < count; ++i)
-      {
-        const Node& node = this->Nodes[lanes[i]];
-        for (int k = 0; k < 3; ++k)
-        {
-          wide.Lo[k][i] = node.Lo[k];
-          wide.Hi[k][i] = node.Hi[k];
-          wide.Axis[k][i] = node.Axis[k];
-        }
-        wide.SlabLo[i] = node.SlabLo;
-        wide.SlabHi[i] = node.SlabHi;
-        wide.Child[i] = node.Count > 0 ? ~(node.Start * LeafCodeScale + node.Count) : 0;
-        if (node.Count > 0)
-        {
-          std::fill_n(&this->LeafLane[node.Start], node.Count, 4 * index + i);
-        }
-      }
-      this->WideNodes.push_back(wide);
-      for (int i = count - 1; i >= 0; --i)
-      {
-        if (this->Nodes[lanes[i]].Count == 0)
-        {
-          stack.push_back({ lanes[i], 4 * index + i });
-        }
-      }
+    }
+  };
+  walk(0, -1, 0, 0);
+  const std::int64_t tops = static_cast<std::int64_t>(top.size());
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::int64_t t = 0; t < tops; ++t)
+  {
+    if (top[t].Below)
+    {
+      top[t].Size = this->WideSubtree(top[t].Binary, 0, false);
+    }
+  }
+  std::int32_t total = 0;
+  for (TopNode& node : top)
+  {
+    node.Index = total;
+    total += node.Size;
+  }
+  this->WideNodes.resize(static_cast<size_t>(total));
+  for (const TopNode& node : top)
+  {
+    if (!node.Below)
+    {
+      std::int32_t lanes[4];
+      this->WriteWideNode(node.Index, lanes, this->WideLanes(node.Binary, node.Parent < 0, lanes));
+    }
+    if (node.Parent >= 0)
+    {
+      this->WideNodes[top[node.Parent].Index].Child[node.Lane] = node.Index;
+    }
+  }
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::int64_t t = 0; t < tops; ++t)
+  {
+    if (top[t].Below)
+    {
+      this->WideSubtree(top[t].Binary, top[t].Index, true);
     }
   }
   return true;
 }
 
-void vtkMedialTriangleBVH::BuildNode(BuildState& state, vtkMedialSmallPageBuffer<Node>& nodes, std::int32_t nodeIndex,
+void vtkMedialTriangleBVH::BuildNode(BuildState& state, vtkMedialBuffer<Node>& nodes, std::int32_t nodeIndex,
   std::int32_t begin, std::int32_t end, const BuildBounds& bounds, std::vector<Subtree>* later,
   std::int32_t grain) const
 {
@@ -1341,7 +1424,7 @@ private:
   // slab are tested again (its side of the cone does not change with the radius).
   void Traverse(std::int32_t root, std::int32_t skip)
   {
-    const std::vector<WideNode>& wides = this->Tree.WideNodes;
+    const vtkMedialBuffer<WideNode>& wides = this->Tree.WideNodes;
     std::vector<PendingLane>& stack = this->Work.Lanes;
     float d2[4];
     if (!this->OpenLanes(root / 4, d2, 1 << (root % 4)))

@@ -159,7 +159,7 @@ public:
   }
 
   /// Position of each mesh triangle in leaf order: nearby triangles get nearby ranks.
-  const std::vector<std::int32_t>& GetLeafRanks() const { return this->LeafRank; }
+  const vtkMedialBuffer<std::int32_t>& GetLeafRanks() const { return this->LeafRank; }
   vtkIdType GetNumberOfNodes() const { return static_cast<vtkIdType>(this->Nodes.size()); }
 
   // 64 bytes: one cache line. Single precision, relative to Origin, rounded outward,
@@ -210,10 +210,18 @@ private:
   // Build's last pass: WideNodes and LeafLane from the binary tree.
   // False when the mesh is too large for the leaf encoding.
   bool BuildWideNodes();
+  // The binary nodes that the wide node over `binary` holds (its children, opened two
+  // levels down or so; `root`: wide node 0, the binary root alone); returns how many.
+  int WideLanes(std::int32_t binary, bool root, std::int32_t lanes[4]) const;
+  // Wide node `index` over the binary nodes `lanes`, and LeafLane for its leaves.
+  void WriteWideNode(std::int32_t index, const std::int32_t lanes[4], int count);
+  // The wide subtree over inner binary node `binary`, numbered from `first`: its size,
+  // and with `write` its nodes (the root's parent lane is left to the caller).
+  std::int32_t WideSubtree(std::int32_t binary, std::int32_t first, bool write);
   // Builds the subtree of triangles order[begin, end), whose bounds are `bounds`,
   // into nodes[node]. With `later`, ranges of at most `grain` triangles are only
   // recorded there, to be built in parallel.
-  void BuildNode(BuildState& state, vtkMedialSmallPageBuffer<Node>& nodes, std::int32_t node, std::int32_t begin,
+  void BuildNode(BuildState& state, vtkMedialBuffer<Node>& nodes, std::int32_t node, std::int32_t begin,
     std::int32_t end, const BuildBounds& bounds, std::vector<Subtree>* later, std::int32_t grain) const;
   // The node over order[begin, end) with the given bounds: its float box and its slab.
   Node BoundNode(const BuildState& state, std::int32_t begin, std::int32_t end, const BuildBounds& bounds) const;
@@ -235,14 +243,14 @@ private:
   vtkMedialBuffer<Node> Nodes;
   // The tangent search's tree. A lane is named by its reference, wide node * 4 + lane;
   // wide node 0 holds the binary root in lane 0 and nothing else.
-  std::vector<WideNode> WideNodes;
+  vtkMedialBuffer<WideNode> WideNodes;
   double Origin[3] = { 0, 0, 0 };          // the bounding-box centre: node bounds are relative to it
   double RoundingPad = 0.0;                // absolute padding of the float bounds
   vtkMedialBuffer<double> Vertices;        // 9 per triangle, leaf order
   vtkMedialBuffer<double> Planes;          // 4 per triangle, leaf order: unit normal, offset
   vtkMedialBuffer<float> TriangleBoxes;    // 6 per triangle, leaf order: box like a node's
   vtkMedialBuffer<std::int32_t> TriangleIds; // mesh triangle of each leaf-order slot
-  std::vector<std::int32_t> LeafRank;      // inverse of TriangleIds
+  vtkMedialBuffer<std::int32_t> LeafRank; // inverse of TriangleIds
   vtkMedialBuffer<std::int32_t> LeafLane;  // the lane of the leaf holding each leaf-order slot
 };
 

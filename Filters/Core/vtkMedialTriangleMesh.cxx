@@ -26,6 +26,7 @@
 
 #include <omp.h>
 
+
 namespace
 {
 namespace G = vtkMedialGeometry;
@@ -133,14 +134,22 @@ void ReadPoints(vtkPoints* points, vtkMedialBuffer<double>& out)
 template <class Ids>
 bool ReadTriangleCells(const Ids* offsets, const Ids* connectivity, vtkIdType cells, vtkMedialBuffer<vtkIdType>& out)
 {
+  bool triangles = true;
+#pragma omp parallel for schedule(static) reduction(&& : triangles)
   for (vtkIdType c = 0; c <= cells; ++c)
   {
-    if (offsets[c] != 3 * c)
-    {
-      return false;
-    }
+    triangles = triangles && offsets[c] == 3 * c;
   }
-  out.assign(connectivity, connectivity + 3 * cells);
+  if (!triangles)
+  {
+    return false;
+  }
+  out.resize(3 * static_cast<size_t>(cells));
+#pragma omp parallel for schedule(static)
+  for (vtkIdType i = 0; i < 3 * cells; ++i)
+  {
+    out[i] = connectivity[i];
+  }
   return true;
 }
 bool ReadTriangleCells(vtkCellArray* cells, vtkMedialBuffer<vtkIdType>& out)
@@ -257,11 +266,13 @@ struct vtkMedialTriangleMesh::Adjacency
   vtkMedialBuffer<char> SameDirection;  // 3 per triangle: the neighbour walks the edge the same way
   vtkMedialBuffer<unsigned char> Degree; // neighbours of each triangle
 
-  // Calls visit(begin, end) for the uses [begin, end) of each edge, in (Lo, Hi) order.
+  // Calls visit(begin, end) for the uses [begin, end) of each edge, in (Lo, Hi) order;
+  // only for the edges whose lower vertex is in [loBegin, loEnd) when given.
   template <class Visit>
-  void ForEachEdge(Visit visit) const
+  void ForEachEdge(Visit visit, vtkIdType loBegin = 0, vtkIdType loEnd = -1) const
   {
-    for (size_t lo = 0; lo + 1 < this->First.size(); ++lo)
+    const vtkIdType points = static_cast<vtkIdType>(this->First.size()) - 1;
+    for (vtkIdType lo = loBegin; lo < (loEnd < 0 ? points : loEnd); ++lo)
     {
       const size_t last = static_cast<size_t>(this->First[lo + 1]);
       for (size_t i = static_cast<size_t>(this->First[lo]); i < last;)
@@ -299,7 +310,6 @@ bool vtkMedialTriangleMesh::Build(
   {
     return false;
   }
-  this->DropDuplicateTriangles();
   if (this->SourceCellIds.empty())
   {
     error = "input has no non-degenerate triangles";
@@ -318,6 +328,18 @@ bool vtkMedialTriangleMesh::Build(
     {
       error = "aborted";
       return false;
+    }
+    // Duplicates share their edges with the first copy: found there, and in the rare
+    // input that has them, dropped before the adjacency is built again without them.
+    if (this->DropDuplicateTriangles(adjacency))
+    {
+      adjacency = Adjacency();
+      this->UsedPoints = 0;
+      if (stop() || !this->BuildAdjacency(adjacency, aborted) || stop())
+      {
+        error = "aborted";
+        return false;
+      }
     }
     this->OrientShells(adjacency);
     if (stop())
@@ -458,56 +480,37 @@ void vtkMedialTriangleMesh::ImportTriangles(vtkPolyData* input)
 
 // A triangle with the same three vertices as an earlier one (either orientation) would
 // make each of its edges non-manifold and block every ray leaving it: keep the first.
-void vtkMedialTriangleMesh::DropDuplicateTriangles()
+// Such triangles share every edge: each triangle looks among the other uses of the
+// edge between its two lowest vertices for an earlier one with the same third vertex.
+bool vtkMedialTriangleMesh::DropDuplicateTriangles(const Adjacency& adjacency)
 {
-  // Triangles grouped by their lowest vertex; within a group, sorted by the other two
-  // and then by id, so that the first of equal triangles is kept.
   const vtkIdType nt = static_cast<vtkIdType>(this->SourceCellIds.size());
-  auto sorted = [this](vtkIdType t) {
+  vtkMedialBuffer<char> duplicate(nt);
+  vtkIdType duplicates = 0;
+#pragma omp parallel for schedule(static) reduction(+ : duplicates)
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
     std::array<vtkIdType, 3> v = { this->Triangles[3 * t], this->Triangles[3 * t + 1], this->Triangles[3 * t + 2] };
     std::sort(v.begin(), v.end());
-    return v;
-  };
-  vtkMedialBuffer<vtkIdType> byLowest(nt);
-  const vtkMedialBuffer<vtkIdType> offsets = GroupByKey(
-    nt, this->GetNumberOfPoints(), [&](vtkIdType t) { return sorted(t)[0]; },
-    [&](vtkIdType t, vtkIdType at) { byLowest[at] = t; });
-  std::vector<char> duplicate(nt, 0);
-  vtkIdType duplicates = 0;
-#pragma omp parallel reduction(+ : duplicates)
-  {
-    std::vector<std::array<vtkIdType, 3>> keys; // the other two vertices, then the triangle
-#pragma omp for schedule(dynamic, 4096)
-    for (vtkIdType p = 0; p < this->GetNumberOfPoints(); ++p)
+    const auto last = adjacency.Uses.begin() + adjacency.First[v[0] + 1];
+    auto use = std::lower_bound(adjacency.Uses.begin() + adjacency.First[v[0]], last,
+      Adjacency::EdgeUse{ static_cast<std::int32_t>(v[1]), 0 });
+    bool earlier = false;
+    for (; use != last && use->Hi == v[1] && use->Triangle() < t && !earlier; ++use)
     {
-      if (offsets[p + 1] - offsets[p] < 2)
-      {
-        continue;
-      }
-      keys.clear();
-      for (vtkIdType i = offsets[p]; i < offsets[p + 1]; ++i)
-      {
-        const std::array<vtkIdType, 3> v = sorted(byLowest[i]);
-        keys.push_back({ v[1], v[2], byLowest[i] });
-      }
-      std::sort(keys.begin(), keys.end());
-      for (size_t i = 1; i < keys.size(); ++i)
-      {
-        if (keys[i][0] == keys[i - 1][0] && keys[i][1] == keys[i - 1][1])
-        {
-          duplicate[keys[i][2]] = 1;
-          ++duplicates;
-        }
-      }
+      const vtkIdType* w = &this->Triangles[3 * use->Triangle()];
+      earlier = (w[0] == v[2] || w[1] == v[2] || w[2] == v[2]);
     }
+    duplicate[t] = earlier;
+    duplicates += earlier ? 1 : 0;
   }
   this->DuplicateTriangles = duplicates;
   if (this->DuplicateTriangles == 0)
   {
-    return;
+    return false;
   }
   size_t kept = 0;
-  for (size_t t = 0; t < nt; ++t)
+  for (size_t t = 0; t < static_cast<size_t>(nt); ++t)
   {
     if (!duplicate[t])
     {
@@ -517,6 +520,7 @@ void vtkMedialTriangleMesh::DropDuplicateTriangles()
   }
   this->Triangles.resize(3 * kept);
   this->SourceCellIds.resize(kept);
+  return true;
 }
 
 // Edge uses sorted so that the uses of one edge are adjacent; manifold edges (two
@@ -570,32 +574,61 @@ bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::func
   }
   adjacency.Neighbour.resize(3 * nt);
   adjacency.SameDirection.resize(3 * nt);
-  adjacency.Degree.assign(nt, 0);
-  adjacency.ForEachEdge([&](size_t i, size_t j) {
-    ++this->Edges;
-    if (j - i == 1)
+  adjacency.Degree.resize(nt);
+  // Edge counts, over ranges of lower vertices on every thread.
+  vtkIdType edges = 0, boundary = 0, nonManifold = 0;
+#pragma omp parallel for schedule(dynamic, 4096) reduction(+ : edges, boundary, nonManifold)
+  for (vtkIdType lo = 0; lo < np; ++lo)
+  {
+    adjacency.ForEachEdge(
+      [&](size_t i, size_t j) {
+        ++edges;
+        boundary += j - i == 1 ? 1 : 0;
+        nonManifold += j - i > 2 ? 1 : 0;
+      },
+      lo, lo + 1);
+  }
+  this->Edges = edges;
+  this->BoundaryEdges = boundary;
+  this->NonManifoldEdges = nonManifold;
+  // Each triangle's neighbours across its manifold edges (two uses), in the (Lo, Hi)
+  // order of those edges, found by a search in each edge's group of uses.
+#pragma omp parallel for schedule(static)
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    struct Link
     {
-      ++this->BoundaryEdges;
-    }
-    else if (j - i == 2)
+      std::int64_t Edge; // Lo * points + Hi: the edges' order
+      std::int32_t Neighbour;
+      bool Same;
+    };
+    Link links[3];
+    int count = 0;
+    const vtkIdType* v = &this->Triangles[3 * t];
+    for (int k = 0; k < 3; ++k)
     {
-      const vtkIdType a = uses[i].Triangle();
-      const vtkIdType b = uses[i + 1].Triangle();
-      const bool same = uses[i].Forward() == uses[i + 1].Forward();
-      auto& degree = adjacency.Degree;
-      if (degree[a] < 3 && degree[b] < 3)
+      const vtkIdType lo = std::min(v[k], v[(k + 1) % 3]), hi = std::max(v[k], v[(k + 1) % 3]);
+      const Adjacency::EdgeUse key{ static_cast<std::int32_t>(hi), 0 };
+      const auto first = uses.begin() + adjacency.First[lo];
+      const auto last = uses.begin() + adjacency.First[lo + 1];
+      const auto begin = std::lower_bound(first, last, key,
+        [](const Adjacency::EdgeUse& a, const Adjacency::EdgeUse& b) { return a.Hi < b.Hi; });
+      if (last - begin < 2 || begin[1].Hi != hi || (last - begin > 2 && begin[2].Hi == hi))
       {
-        adjacency.Neighbour[3 * a + degree[a]] = static_cast<std::int32_t>(b);
-        adjacency.SameDirection[3 * a + degree[a]++] = same;
-        adjacency.Neighbour[3 * b + degree[b]] = static_cast<std::int32_t>(a);
-        adjacency.SameDirection[3 * b + degree[b]++] = same;
+        continue; // a boundary or non-manifold edge
       }
+      const bool mine = begin[0].Triangle() == t;
+      links[count++] = { static_cast<std::int64_t>(lo) * np + hi,
+        static_cast<std::int32_t>(begin[mine ? 1 : 0].Triangle()), begin[0].Forward() == begin[1].Forward() };
     }
-    else
+    std::sort(links, links + count, [](const Link& a, const Link& b) { return a.Edge < b.Edge; });
+    for (int k = 0; k < count; ++k)
     {
-      ++this->NonManifoldEdges;
+      adjacency.Neighbour[3 * t + k] = links[k].Neighbour;
+      adjacency.SameDirection[3 * t + k] = links[k].Same;
     }
-  });
+    adjacency.Degree[t] = static_cast<unsigned char>(count);
+  }
   return true;
 }
 
@@ -604,8 +637,8 @@ void vtkMedialTriangleMesh::OrientShells(const Adjacency& adjacency)
 {
   const vtkIdType nt = static_cast<vtkIdType>(this->SourceCellIds.size());
   this->ShellOfTriangle.assign(nt, -1);
-  std::vector<char> flip(nt, 0);
-  std::vector<vtkIdType> queue;
+  vtkMedialBuffer<char> flip(nt, 0);
+  vtkMedialBuffer<vtkIdType> queue;
   queue.reserve(nt);
   for (vtkIdType seed = 0; seed < nt; ++seed)
   {
@@ -660,32 +693,58 @@ void vtkMedialTriangleMesh::OrientShells(const Adjacency& adjacency)
 // closes both).
 void vtkMedialTriangleMesh::MarkClosedShells(const Adjacency& adjacency)
 {
-  for (Shell& shell : this->Shells)
+  // Shells with an edge used an odd number of times by them, found over ranges of
+  // lower vertices on every thread (the result does not depend on the order).
+  const size_t ns = this->Shells.size();
+  std::vector<char> open(ns, 0);
+  const vtkIdType np = this->GetNumberOfPoints();
+#pragma omp parallel
   {
-    shell.Closed = true;
+    std::vector<char> openHere(ns, 0);
+    std::vector<int> shellsOnEdge;
+#pragma omp for schedule(static) nowait
+    for (vtkIdType chunk = 0; chunk < (np + 4095) / 4096; ++chunk)
+    {
+      adjacency.ForEachEdge(
+        [&](size_t i, size_t j) {
+          if (j - i == 2 &&
+            this->ShellOfTriangle[adjacency.Uses[i].Triangle()] ==
+              this->ShellOfTriangle[adjacency.Uses[i + 1].Triangle()])
+          {
+            return; // the usual edge: used twice by one shell
+          }
+          shellsOnEdge.clear();
+          for (; i < j; ++i)
+          {
+            shellsOnEdge.push_back(this->ShellOfTriangle[adjacency.Uses[i].Triangle()]);
+          }
+          std::sort(shellsOnEdge.begin(), shellsOnEdge.end());
+          for (size_t a = 0; a < shellsOnEdge.size();)
+          {
+            size_t b = a;
+            while (b < shellsOnEdge.size() && shellsOnEdge[b] == shellsOnEdge[a])
+            {
+              ++b;
+            }
+            if ((b - a) % 2 == 1)
+            {
+              openHere[shellsOnEdge[a]] = 1;
+            }
+            a = b;
+          }
+        },
+        chunk * 4096, std::min(np, (chunk + 1) * 4096));
+    }
+#pragma omp critical
+    for (size_t s = 0; s < ns; ++s)
+    {
+      open[s] |= openHere[s];
+    }
   }
-  std::vector<int> shellsOnEdge;
-  adjacency.ForEachEdge([&](size_t i, size_t j) {
-    shellsOnEdge.clear();
-    for (; i < j; ++i)
-    {
-      shellsOnEdge.push_back(this->ShellOfTriangle[adjacency.Uses[i].Triangle()]);
-    }
-    std::sort(shellsOnEdge.begin(), shellsOnEdge.end());
-    for (size_t a = 0; a < shellsOnEdge.size();)
-    {
-      size_t b = a;
-      while (b < shellsOnEdge.size() && shellsOnEdge[b] == shellsOnEdge[a])
-      {
-        ++b;
-      }
-      if ((b - a) % 2 == 1)
-      {
-        this->Shells[shellsOnEdge[a]].Closed = false;
-      }
-      a = b;
-    }
-  });
+  for (size_t s = 0; s < ns; ++s)
+  {
+    this->Shells[s].Closed = !open[s];
+  }
 }
 
 // Signed volume and bounds per shell (the volume about the box centre, for accuracy);

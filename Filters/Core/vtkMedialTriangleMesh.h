@@ -136,7 +136,7 @@ private:
 
   bool ValidateInput(vtkPolyData* input, std::string& error); // and reads the points
   void ImportTriangles(vtkPolyData* input);
-  void DropDuplicateTriangles();
+  bool DropDuplicateTriangles(const Adjacency& adjacency); // true when some were dropped
   bool BuildAdjacency(Adjacency& adjacency, const std::function<bool()>& aborted);
   void OrientShells(const Adjacency& adjacency);
   void MarkClosedShells(const Adjacency& adjacency);

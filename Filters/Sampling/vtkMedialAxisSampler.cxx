@@ -394,7 +394,7 @@ void vtkMedialAxisSampler::vtkInternals::SortByLeaf(const vtkMedialSurfaceQuery&
   const std::vector<vtkIdType>& triangles, vtkIdType block, std::vector<vtkIdType>& order)
 {
   const vtkIdType count = static_cast<vtkIdType>(triangles.size());
-  const std::vector<std::int32_t>& rank = query.GetLeafRanks();
+  const auto& rank = query.GetLeafRanks();
   if (block > 0)
   {
     auto leafOrder = [&](vtkIdType a, vtkIdType b) {

@@ -732,7 +732,7 @@ struct Runner
     std::vector<vtkIdType>& order = this->SolveOrder;
     order.resize(static_cast<size_t>(n));
     std::iota(order.begin(), order.end(), 0);
-    const std::vector<std::int32_t>& rank = this->Query.GetLeafRanks();
+    const auto& rank = this->Query.GetLeafRanks();
     auto rankOf = [&](vtkIdType j) { return near[j] >= 0 ? rank[near[j]] : INT32_MAX; };
     std::sort(order.begin(), order.end(),
       [&](vtkIdType a, vtkIdType b) { return rankOf(a) < rankOf(b) || (rankOf(a) == rankOf(b) && a < b); });

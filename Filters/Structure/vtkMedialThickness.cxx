@@ -94,7 +94,7 @@ template <class Solve>
 bool SolveInLeafOrder(vtkAlgorithm* self, const vtkMedialSurfaceQuery& query,
   std::vector<std::pair<vtkIdType, vtkIdType>> items, int threads, Solve solve)
 {
-  const std::vector<std::int32_t>& rank = query.GetLeafRanks();
+  const auto& rank = query.GetLeafRanks();
   std::stable_sort(items.begin(), items.end(),
     [&](const auto& a, const auto& b) { return rank[a.second] < rank[b.second]; });
   const vtkIdType n = static_cast<vtkIdType>(items.size());
