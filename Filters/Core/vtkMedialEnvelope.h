@@ -173,6 +173,27 @@ inline double TriangleField(const double x[3], const double* const c[3], const d
   return SlabTangentPlanes(c, r, t) ? TriangleField(x, c, r, t) : HUGE_VAL;
 }
 
+/// The pruning bound of a primitive with n (1 to 3) vertex balls: the ball centred at the
+/// mean of their centres, of radius max_j (|centre - c_j| + r_j), which the primitive lies in.
+inline double BoundingBall(const double* const c[], const double r[], int n, double centre[3])
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    centre[k] = 0.0;
+    for (int j = 0; j < n; ++j)
+    {
+      centre[k] += c[j][k] / n;
+    }
+  }
+  double radius = 0.0;
+  for (int j = 0; j < n; ++j)
+  {
+    const double d[3] = { centre[0] - c[j][0], centre[1] - c[j][1], centre[2] - c[j][2] };
+    radius = std::max(radius, std::sqrt(Dot3(d, d)) + r[j]);
+  }
+  return radius;
+}
+
 /// Upper bound of how far the cone of an edge reaches beyond its two balls.
 inline double EdgeExcess(const double c0[3], double r0, const double c1[3], double r1)
 {

@@ -126,22 +126,19 @@ struct Envelope
   void Add(const vtkIdType* ids, int n)
   {
     std::array<vtkIdType, 3> p = { -1, -1, -1 };
-    Ball bound = { { 0, 0, 0 }, 0.0 };
-    for (int j = 0; j < n; ++j)
-    {
-      p[j] = ids[j];
-      for (int k = 0; k < 3; ++k)
-      {
-        bound.C[k] += this->Vertices[ids[j]].C[k] / n;
-      }
-    }
+    const double* centres[3];
+    double radii[3];
     vtkIdType inner = ids[0];
     for (int j = 0; j < n; ++j)
     {
       const Ball& v = this->Vertices[ids[j]];
-      bound.R = std::max(bound.R, std::sqrt(vtkMath::Distance2BetweenPoints(bound.C, v.C)) + v.R);
+      p[j] = ids[j];
+      centres[j] = v.C;
+      radii[j] = v.R;
       inner = v.R > this->Vertices[inner].R ? ids[j] : inner;
     }
+    Ball bound;
+    bound.R = vtkMedialEnvelope::BoundingBall(centres, radii, n, bound.C);
     this->Primitives.push_back(p);
     this->Bounds.push_back(bound);
     this->Inner.push_back(this->Vertices[inner]);

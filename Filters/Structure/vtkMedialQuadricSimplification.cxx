@@ -680,21 +680,6 @@ double vtkMedialQuadricSimplification::MergedError(vtkIdType a, vtkIdType b, con
   };
   std::vector<Primitive> primitives;
   primitives.reserve(ring.size() + sides.size());
-  auto bound = [](Primitive& q, int corners) {
-    for (int k = 0; k < 3; ++k)
-    {
-      q.Centre[k] = 0.0;
-      for (int j = 0; j < corners; ++j)
-      {
-        q.Centre[k] += q.C[j][k] / corners;
-      }
-    }
-    q.Reach = 0.0;
-    for (int j = 0; j < corners; ++j)
-    {
-      q.Reach = std::max(q.Reach, Distance(q.Centre, q.C[j]) + q.R[j]);
-    }
-  };
   for (vtkIdType x : ring)
   {
     Primitive q;
@@ -703,7 +688,7 @@ double vtkMedialQuadricSimplification::MergedError(vtkIdType a, vtkIdType b, con
     q.R[0] = m[3];
     q.R[1] = this->Balls[x][3];
     q.Slab = false;
-    bound(q, 2);
+    q.Reach = vtkMedialEnvelope::BoundingBall(q.C, q.R, 2, q.Centre);
     primitives.push_back(q);
   }
   for (const auto& side : sides)
@@ -718,7 +703,7 @@ double vtkMedialQuadricSimplification::MergedError(vtkIdType a, vtkIdType b, con
     q.Slab = vtkMedialEnvelope::SlabTangentPlanes(q.C, q.R, q.Planes);
     if (q.Slab)
     {
-      bound(q, 3);
+      q.Reach = vtkMedialEnvelope::BoundingBall(q.C, q.R, 3, q.Centre);
       primitives.push_back(q);
     }
   }

@@ -123,9 +123,11 @@ int vtkMedialSimplifyFilter::RequestData(
     vtkErrorMacro(<< "Cannot simplify by coverage: connect the surface to input 1 (SetSurfaceConnection).");
     return 0;
   }
+  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
   if (guarded)
   {
     this->SetGuardPoints(mesh, simplification);
+    simplification.NumberOfThreads = threads;
   }
   if (this->Method == COVERAGE && n > this->NumberOfBalls)
   {
@@ -135,7 +137,7 @@ int vtkMedialSimplifyFilter::RequestData(
     for (int attempt = 0; attempt < CoverageAttempts; ++attempt)
     {
       std::vector<char> kept;
-      if (!this->ChooseByCoverage(complex, mesh, forced, kept))
+      if (!this->ChooseByCoverage(complex, mesh, threads, forced, kept))
       {
         return this->GetAbortExecute() ? 1 : 0;
       }
@@ -234,11 +236,10 @@ void vtkMedialSimplifyFilter::SetGuardPoints(
     }
   }
   simplification.GuardTolerance = this->ErrorTolerance * mesh.Diagonal;
-  simplification.NumberOfThreads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
 }
 
 bool vtkMedialSimplifyFilter::ChooseByCoverage(const vtkMedialSimplicialComplex& complex,
-  const vtkMedialTriangleMesh& mesh, const std::vector<char>& forced, std::vector<char>& kept)
+  const vtkMedialTriangleMesh& mesh, int threads, const std::vector<char>& forced, std::vector<char>& kept)
 {
   const auto aborted = [this]() { return this->GetAbortExecute() != 0; };
   std::vector<double> samples(static_cast<size_t>(3 * this->NumberOfSurfaceSamples));
@@ -247,7 +248,6 @@ bool vtkMedialSimplifyFilter::ChooseByCoverage(const vtkMedialSimplicialComplex&
     vtkIdType triangle;
     vtkMedialDrawSurfacePoint(mesh, static_cast<std::uint64_t>(this->RandomSeed), i, triangle, &samples[3 * i]);
   }
-  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
   vtkMedialCoverageSelection selection;
   selection.Forced = forced;
   if (!selection.Select(complex.Points, complex.Radii, samples, this->NumberOfBalls, this->Dilation * mesh.Diagonal,

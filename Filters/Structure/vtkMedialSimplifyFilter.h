@@ -172,7 +172,7 @@ protected:
 private:
   // COVERAGE: the kept flags of the complex's balls, the forced ones among them; false
   // on a bad surface or an abort.
-  bool ChooseByCoverage(const vtkMedialSimplicialComplex& complex, const vtkMedialTriangleMesh& mesh,
+  bool ChooseByCoverage(const vtkMedialSimplicialComplex& complex, const vtkMedialTriangleMesh& mesh, int threads,
     const std::vector<char>& forced, std::vector<char>& kept);
   // QUADRIC: the surface's vertices guard the collapses.
   void SetGuardPoints(const vtkMedialTriangleMesh& mesh, vtkMedialQuadricSimplification& simplification) const;
