@@ -39,16 +39,19 @@ vtkSmartPointer<vtkPolyData> WeldedSurface(vtkPolyData* input, std::vector<vtkId
   std::vector<vtkIdType> order(static_cast<size_t>(n));
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](vtkIdType a, vtkIdType b) { return x[a] < x[b] || (x[a] == x[b] && a < b); });
-  welded.assign(static_cast<size_t>(n), -1);
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
+  // Each point's first copy (the smallest id with its coordinates) stands for all; the
+  // welded points keep the input's order and type, so a welded input is smoothed as is.
+  std::vector<vtkIdType> first(static_cast<size_t>(n));
   for (size_t k = 0; k < order.size(); ++k)
   {
-    if (k == 0 || x[order[k]] != x[order[k - 1]])
-    {
-      points->InsertNextPoint(x[order[k]].data());
-    }
-    welded[order[k]] = points->GetNumberOfPoints() - 1;
+    first[order[k]] = (k > 0 && x[order[k]] == x[order[k - 1]]) ? first[order[k - 1]] : order[k];
+  }
+  welded.assign(static_cast<size_t>(n), -1);
+  vtkNew<vtkPoints> points;
+  points->SetDataType(input->GetPoints()->GetDataType());
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    welded[i] = first[i] == i ? points->InsertNextPoint(input->GetPoint(i)) : welded[first[i]];
   }
   vtkNew<vtkCellArray> polygons;
   vtkNew<vtkIdList> ids;
