@@ -7,6 +7,8 @@
 #include "vtkIdList.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
+#include "vtkMedialPieces.h"
+#include "vtkMedialPipeline.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -101,12 +103,23 @@ vtkSmartPointer<vtkPolyData> WeldedSurface(vtkPolyData* input, std::vector<vtkId
 }
 }
 
+int vtkMedialDenoiseFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  vtkMedialRequestWholeInput(inputVector, 1); // a vertex moves by all its neighbours
+  return 1;
+}
+
 int vtkMedialDenoiseFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   this->MaximumDisplacement = 0.0;
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!vtkMedialPieces::FromRequest(outputVector->GetInformationObject(0)).IsFirst())
+  {
+    return 1; // piece 0 holds the whole smoothed surface
+  }
   if (!input || input->GetNumberOfPoints() == 0 || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
   {
     vtkErrorMacro("Cannot denoise: the input has no polygons.");

@@ -24,6 +24,10 @@
  * Output: the input's points moved, and its cells, point data (less the point normals,
  * which no longer fit) and cell data. MaximumDisplacement reports the largest move.
  *
+ * Pieces: smoothing needs every neighbour, so every piece asks for the whole surface and
+ * piece 0 holds the result; the other pieces are empty (the sampler asks for piece 0 of
+ * 1, so each MPI rank still gets all of it).
+ *
  * @sa vtkMedialAxisSampler vtkMedialScaleAxisFilter vtkWindowedSincPolyDataFilter
  */
 #ifndef vtkMedialDenoiseFilter_h
@@ -60,6 +64,7 @@ protected:
   vtkMedialDenoiseFilter() = default;
   ~vtkMedialDenoiseFilter() override = default;
 
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int NumberOfIterations = 20;

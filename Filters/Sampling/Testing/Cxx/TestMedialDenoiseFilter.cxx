@@ -9,6 +9,7 @@
 //  - MaximumDisplacement is the largest vertex move over the input's diagonal, checked
 //    against the points themselves; the input's point normals are dropped, its other
 //    point data kept; the cells are the input's;
+//  - pieces: piece 0 of 2 holds the whole smoothed surface, piece 1 is empty;
 //  - the defaults (20 iterations, pass band 0.03);
 //  - bad input (no polygons, a NaN coordinate, nothing at all): an error, no output.
 #include "MedialTestSupport.h"
@@ -148,6 +149,16 @@ int Sphere()
   }
   MEDIAL_CHECK(again->GetOutput()->GetNumberOfPoints() == exploded->GetNumberOfPoints() && worst <= 1e-6,
     "a surface with a point per triangle corner: a copy lies %g from where the shared vertex went", worst);
+
+  // Pieces: piece 0 of 2 is the whole smoothed surface, piece 1 is empty.
+  vtkNew<vtkMedialDenoiseFilter> pieces;
+  pieces->SetInputData(noisy);
+  pieces->UpdatePiece(1, 2, 0);
+  const vtkIdType second = pieces->GetOutput()->GetNumberOfPoints();
+  pieces->UpdatePiece(0, 2, 0);
+  MEDIAL_CHECK(second == 0 && pieces->GetOutput()->GetNumberOfPoints() == out->GetNumberOfPoints(),
+    "pieces of 2: %lld and %lld points, %lld expected in piece 0", static_cast<long long>(pieces->GetOutput()->GetNumberOfPoints()),
+    static_cast<long long>(second), static_cast<long long>(out->GetNumberOfPoints()));
   return 0;
 }
 
