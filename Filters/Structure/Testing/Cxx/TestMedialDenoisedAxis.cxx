@@ -1,21 +1,23 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The medial axis of a noisy surface, the way the README and `medial-axis --denoise
 // --prune` make it: the surface low-pass filtered (vtkMedialDenoiseFilter's defaults:
-// a windowed sinc, 20 iterations, pass band 0.05), the sampler's default balls,
-// the scale axis at its default scale (vtkMedialScaleAxisFilter), the medial mesh.
+// a windowed sinc, 20 iterations, pass band 0.03), the sampler's default balls,
+// the scale axis at 1.3 (vtkMedialScaleAxisFilter), the medial mesh.
 //
 // Shapes with a closed-form medial axis, with Gaussian vertex noise of 0.1% and 0.5% of
 // the diagonal per coordinate (fixed seed):
 //  - a torus (axis: the ring's circle in z = 0) and a capsule (axis: its segment on z);
-//  - every medial mesh vertex lies within 1.5% of the diagonal of the true axis
-//    (measured when this test was written: 0.52 to 1.27%);
-//  - the mesh's envelope stays within 0.6% of the CLEAN surface (measured: 0.08 to
-//    0.41%);
+//  - every medial mesh vertex lies within 2% of the diagonal of the true axis
+//    (measured when this test was written: 0.59 to 1.58%; the torus at 0.5% is the
+//    1.58%, and the scale 1.5 gave it 0.96%);
+//  - the mesh's envelope stays within 0.6% of the CLEAN surface (measured: 0.07 to
+//    0.34%);
 //  - the mesh keeps the solid's topology (torus: Euler characteristic 0, capsule 1; one
 //    component);
-//  - without the smoothing, the same pipeline misses these bounds at 0.5% noise (measured:
-//    torus 9.16% from the axis, envelope 1.86%): the test checks that too, so it shows
-//    what the smoothing is for, and that the noise is strong enough to test it.
+//  - without the smoothing (at --prune's scale 1.5) the pipeline misses these bounds at
+//    0.5% noise (measured: torus 6.20% from the axis, capsule 7.87%, envelopes 1.37% and
+//    3.01%): the test checks that too, so it shows what the smoothing is for, and that
+//    the noise is strong enough to test it.
 #include "MedialMeshTestUtilities.h"
 #include "MedialTestSupport.h"
 
@@ -64,13 +66,16 @@ vtkSmartPointer<vtkPolyData> Denoised(vtkPolyData* surface, double& moved)
   return denoise->GetOutput();
 }
 
-vtkSmartPointer<vtkPolyData> PrunedMedialMesh(vtkPolyData* surface)
+// The medial mesh of the balls the scale axis keeps at `scale` (--prune: 1.5 alone, 1.3
+// after --denoise).
+vtkSmartPointer<vtkPolyData> PrunedMedialMesh(vtkPolyData* surface, double scale)
 {
   vtkNew<vtkMedialAxisSampler> sampler;
   sampler->SetInputData(surface);
   sampler->SetNumberOfThreads(2);
   vtkNew<vtkMedialScaleAxisFilter> scaleAxis;
   scaleAxis->SetInputConnection(sampler->GetOutputPort());
+  scaleAxis->SetScaleFactor(scale);
   scaleAxis->SetNumberOfThreads(2);
   vtkNew<vtkMedialMeshFilter> mesh;
   mesh->SetInputData(surface);
@@ -115,7 +120,7 @@ double FarthestFromAxis(const Shape& shape, vtkMedialShapeSource* source, vtkPol
 int TestMedialDenoisedAxis(int, char*[])
 {
   // Bounds in fractions of the diagonal: on the axis, and the envelope against the clean surface.
-  const double axisBound = 0.015, envelopeBound = 0.006;
+  const double axisBound = 0.02, envelopeBound = 0.006;
   for (const Shape& shape : { Shape{ "torus", vtkMedialShapeSource::TORUS, 0 },
          Shape{ "capsule", vtkMedialShapeSource::CAPSULE, 1 } })
   {
@@ -129,7 +134,7 @@ int TestMedialDenoisedAxis(int, char*[])
     {
       vtkSmartPointer<vtkPolyData> noisy = WithNoise(clean, noise);
       double moved = 0.0;
-      vtkSmartPointer<vtkPolyData> mesh = PrunedMedialMesh(Denoised(noisy, moved));
+      vtkSmartPointer<vtkPolyData> mesh = PrunedMedialMesh(Denoised(noisy, moved), 1.3);
       MEDIAL_CHECK(moved > noise, "%s, noise %g: the smoothing moved no vertex farther than %g of the diagonal",
         shape.Name, noise, moved);
       const double axis = FarthestFromAxis(shape, source, mesh) / diagonal;
@@ -152,7 +157,7 @@ int TestMedialDenoisedAxis(int, char*[])
         continue;
       }
       // The same without the smoothing: the bounds are out of reach, so they measure it.
-      vtkSmartPointer<vtkPolyData> raw = PrunedMedialMesh(noisy);
+      vtkSmartPointer<vtkPolyData> raw = PrunedMedialMesh(noisy, 1.5);
       const double rawAxis = FarthestFromAxis(shape, source, raw) / diagonal;
       const double rawEnvelope = medialtest::EnvelopeHausdorff(raw, clean);
       std::printf("%s, noise %g: not denoised: %.3f%% from the axis, envelope %.3f%%\n", shape.Name, noise,
