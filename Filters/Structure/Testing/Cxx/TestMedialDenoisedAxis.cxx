@@ -34,29 +34,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <random>
 
 namespace
 {
-vtkSmartPointer<vtkPolyData> WithNoise(vtkPolyData* clean, double fraction)
-{
-  auto noisy = vtkSmartPointer<vtkPolyData>::New();
-  noisy->DeepCopy(clean);
-  std::mt19937_64 random(7);
-  std::normal_distribution<double> gauss(0.0, fraction * clean->GetLength());
-  for (vtkIdType i = 0; i < noisy->GetNumberOfPoints(); ++i)
-  {
-    double x[3];
-    noisy->GetPoint(i, x);
-    for (double& c : x)
-    {
-      c += gauss(random);
-    }
-    noisy->GetPoints()->SetPoint(i, x);
-  }
-  return noisy;
-}
-
 vtkSmartPointer<vtkPolyData> Denoised(vtkPolyData* surface, double& moved)
 {
   vtkNew<vtkMedialDenoiseFilter> denoise; // its defaults
@@ -132,7 +112,7 @@ int TestMedialDenoisedAxis(int, char*[])
     const double diagonal = clean->GetLength();
     for (double noise : { 0.001, 0.005 })
     {
-      vtkSmartPointer<vtkPolyData> noisy = WithNoise(clean, noise);
+      vtkSmartPointer<vtkPolyData> noisy = medialtest::WithGaussianNoise(clean, noise, 7);
       double moved = 0.0;
       vtkSmartPointer<vtkPolyData> mesh = PrunedMedialMesh(Denoised(noisy, moved), 1.3);
       MEDIAL_CHECK(moved > noise, "%s, noise %g: the smoothing moved no vertex farther than %g of the diagonal",
