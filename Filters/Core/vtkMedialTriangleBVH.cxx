@@ -596,6 +596,76 @@ BuildItem* PartitionItems(BuildItem* first, BuildItem* last, Before before)
     ++first;
   }
 }
+
+// PartitionItems' result on every thread, for the top levels: the two-ended exchange
+// swaps the k-th item of the front part [first, mid) that must move back with the k-th
+// item, counted from the end, of the back part [mid, last) that must move forward, mid
+// being where the items satisfying `before` end. Chunks count those items, then swap
+// them pairwise: the same items in the same slots, whatever the thread count.
+template <class Before>
+BuildItem* PartitionItemsInParallel(BuildItem* first, BuildItem* last, Before before)
+{
+  const std::int64_t count = last - first;
+  constexpr int Chunks = 64;
+  auto chunkBegin = [](std::int64_t from, std::int64_t to, int c) { return from + (to - from) * c / Chunks; };
+  std::int64_t staying = 0;
+#pragma omp parallel for schedule(static) reduction(+ : staying)
+  for (std::int64_t i = 0; i < count; ++i)
+  {
+    staying += before(first[i]) ? 1 : 0;
+  }
+  const std::int64_t mid = staying;
+  // Per chunk of each part: how many of its items must move (front: !before; back: before).
+  std::int64_t moving[2][Chunks + 1] = {};
+#pragma omp parallel for schedule(static)
+  for (int job = 0; job < 2 * Chunks; ++job)
+  {
+    const int part = job / Chunks, c = job % Chunks;
+    const std::int64_t from = part == 0 ? 0 : mid, to = part == 0 ? mid : count;
+    std::int64_t n = 0;
+    for (std::int64_t i = chunkBegin(from, to, c); i < chunkBegin(from, to, c + 1); ++i)
+    {
+      n += before(first[i]) == (part == 1) ? 1 : 0;
+    }
+    moving[part][c + 1] = n;
+  }
+  for (int part = 0; part < 2; ++part)
+  {
+    for (int c = 0; c < Chunks; ++c)
+    {
+      moving[part][c + 1] += moving[part][c];
+    }
+  }
+  // The back part's moving items, in increasing order; the k-th of the front part's
+  // goes where the k-th from the end of these is.
+  const std::int64_t swaps = moving[0][Chunks];
+  std::vector<std::int64_t> back(static_cast<size_t>(swaps));
+#pragma omp parallel for schedule(static)
+  for (int c = 0; c < Chunks; ++c)
+  {
+    std::int64_t k = moving[1][c];
+    for (std::int64_t i = chunkBegin(mid, count, c); i < chunkBegin(mid, count, c + 1); ++i)
+    {
+      if (before(first[i]))
+      {
+        back[static_cast<size_t>(k++)] = i;
+      }
+    }
+  }
+#pragma omp parallel for schedule(static)
+  for (int c = 0; c < Chunks; ++c)
+  {
+    std::int64_t k = moving[0][c];
+    for (std::int64_t i = chunkBegin(0, mid, c); i < chunkBegin(0, mid, c + 1); ++i)
+    {
+      if (!before(first[i]))
+      {
+        std::swap(first[i], first[back[static_cast<size_t>(swaps - 1 - k++)]]);
+      }
+    }
+  }
+  return first + mid;
+}
 }
 
 struct vtkMedialTriangleBVH::BuildState
@@ -1106,8 +1176,10 @@ std::int32_t vtkMedialTriangleBVH::SplitNode(BuildState& state, std::int32_t beg
     const int bestSplit = CheapestSplit(bins, count);
     if (bestSplit >= 0)
     {
+      auto leftOfSplit = [&](const BuildItem& item) { return binOf(item) <= bestSplit; };
       mid = static_cast<std::int32_t>(
-        PartitionItems(items + begin, items + end, [&](const BuildItem& item) { return binOf(item) <= bestSplit; }) -
+        (count > ParallelRange ? PartitionItemsInParallel(items + begin, items + end, leftOfSplit)
+                               : PartitionItems(items + begin, items + end, leftOfSplit)) -
         items);
       leftBounds = rightBounds = EmptyBounds();
       for (int j = 0; j < Bins; ++j)
