@@ -14,7 +14,7 @@
 // the sampling strategies' wall time per sample on horse.ply against Random's, in
 // the same run (--strategies runs only these rows).
 // Prints a table, or one JSON object with --json. Not a test: it checks nothing.
-#include "MedialAxisHugePages.h"
+#include "MedialAxisRuntime.h"
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialFileReader.h"
@@ -747,7 +747,7 @@ int RunPreparation(const std::string& file)
 
 int main(int argc, char* argv[])
 {
-  medialaxis::RestartWithHugePages(argv);
+  medialaxis::RestartWithRuntimeSettings(argv);
   BenchOptions options;
   if (!ParseArgs(argc, argv, options))
   {
