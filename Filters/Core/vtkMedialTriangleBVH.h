@@ -17,8 +17,9 @@
  *
  * Build: top-down binned SAH (16 bins on the widest centroid axis), leaves of at
  * most 4 triangles, children stored next to each other. The top levels are built
- * first; the subtrees below them are built in parallel (OpenMP) and appended in a
- * fixed order, so the tree and its numbering do not depend on the thread count. Each node has its box
+ * first; the subtrees below them are built in parallel (OpenMP) and appended as they
+ * finish: the tree, its leaf order and the 4-wide tree do not depend on the thread
+ * count, only where a subtree's binary nodes are stored does. Each node has its box
  * and a slab [SlabLo, SlabHi] of m.x over its vertices, m the normalised sum of
  * its triangles' area vectors. Triangle vertices are copied in leaf order so a
  * leaf is read contiguously. The tree depends only on the mesh: deterministic.
