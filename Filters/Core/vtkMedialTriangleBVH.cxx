@@ -581,6 +581,19 @@ static_assert(ItemDoubles * sizeof(double) == sizeof(BuildItem) && alignof(Build
     ItemDoubles >= 9,
   "build items must tile the vertices' storage");
 
+// Widen(bounds, item's box, its centroid as a point), written out so that the binning
+// loop, the build's hottest, inlines it (a call per item and level before).
+inline void WidenByItem(BuildBounds& bounds, const BuildItem& item)
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    bounds.Lo[k] = std::min(bounds.Lo[k], item.Lo[k]);
+    bounds.Hi[k] = std::max(bounds.Hi[k], item.Hi[k]);
+    bounds.CLo[k] = std::min(bounds.CLo[k], item.Centroid[k]);
+    bounds.CHi[k] = std::max(bounds.CHi[k], item.Centroid[k]);
+  }
+}
+
 // Partitions [first, last) so that the items satisfying `before` come first, by the
 // two-ended exchange (Hoare): scan from the front for an item that must move back and
 // from the back for one that must move forward, swap them. Fixed here rather than left
@@ -1074,8 +1087,7 @@ vtkMedialTriangleBVH::BuildBounds vtkMedialTriangleBVH::MeasureBounds(
   FoldRange(
     begin, end, bounds,
     [&](BuildBounds& part, std::int32_t i) {
-      const BuildItem& item = state.Items[i];
-      Widen(part, item.Lo, item.Hi, item.Centroid, item.Centroid);
+      WidenByItem(part, state.Items[i]);
     },
     MergeBounds, EmptyBounds());
   return bounds;
@@ -1172,7 +1184,7 @@ std::int32_t vtkMedialTriangleBVH::SplitNode(BuildState& state, std::int32_t beg
       [&](Binned& part, std::int32_t i) {
         SahBin& bin = part.Bin[binOf(items[i])];
         ++bin.Count;
-        Widen(bin.Bounds, items[i].Lo, items[i].Hi, items[i].Centroid, items[i].Centroid);
+        WidenByItem(bin.Bounds, items[i]);
       },
       [](Binned& whole, const Binned& part) {
         for (int j = 0; j < Bins; ++j)
