@@ -203,11 +203,11 @@ private:
   };
   // Build only: each triangle's box and centroid, and the order being partitioned.
   struct BuildState;
-  // The nodes (Build's first pass): `order` becomes the leaf order. False when aborted.
-  bool BuildNodes(const vtkMedialTriangleMesh& mesh, vtkMedialBuffer<std::int32_t>& order,
-    const std::function<bool()>& aborted);
-  // Build's second pass: Vertices, Planes, TriangleIds, LeafRank.
-  void CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, const vtkMedialBuffer<std::int32_t>& order);
+  // The nodes (Build's first pass), then from the build items the leaf order
+  // (TriangleIds), LeafRank and TriangleBoxes. False when aborted.
+  bool BuildNodes(const vtkMedialTriangleMesh& mesh, const std::function<bool()>& aborted);
+  // Build's second pass: Vertices and Planes, gathered from the mesh in leaf order.
+  void CopyInLeafOrder(const vtkMedialTriangleMesh& mesh);
   // Build's last pass: WideNodes and LeafLane from the binary tree.
   // False when the mesh is too large for the leaf encoding.
   bool BuildWideNodes();
