@@ -34,6 +34,10 @@ constexpr std::int32_t SlabMaximumTriangles = 1 << 14;
 constexpr std::int32_t LeafCodeScale = 8;
 // Build passes over more triangles than this (the top levels) run on every thread.
 constexpr std::int32_t ParallelRange = 1 << 16;
+// Partitions of more triangles than this (the first levels) run on every thread. Each
+// takes four parallel regions, and on a loaded machine a region's join waits until the
+// host runs every thread: below this, a serial partition is cheaper.
+constexpr std::int32_t ParallelPartitionRange = 1 << 18;
 
 template <class T>
 double BoxDistance2(const T lo[3], const T hi[3], const double x[3])
@@ -1224,7 +1228,7 @@ std::int32_t vtkMedialTriangleBVH::SplitNode(BuildState& state, std::int32_t beg
     {
       auto leftOfSplit = [&](const BuildItem& item) { return binOf(item) <= bestSplit; };
       mid = static_cast<std::int32_t>(
-        (count > ParallelRange ? PartitionItemsInParallel(items + begin, items + end, leftOfSplit)
+        (count > ParallelPartitionRange ? PartitionItemsInParallel(items + begin, items + end, leftOfSplit)
                                : PartitionItems(items + begin, items + end, leftOfSplit)) -
         items);
       leftBounds = rightBounds = EmptyBounds();
