@@ -261,9 +261,6 @@ private:
   float Margin = 0.0f, ConeSin2 = 0.0f, Radius = 0.0f, Reach2 = 0.0f;
 };
 
-// Single precision bounds that still hold: `pad` (far above the double rounding
-// of the subtraction that produced v, far below a float step at the mesh's size)
-// and one float step beyond the nearest float.
 // std::nextafter(f, -HUGE_VALF) and std::nextafter(f, HUGE_VALF), the same bits, without
 // a call into the maths library (six per triangle and eight per node in the build).
 float FloatBelow(float f)
@@ -286,6 +283,9 @@ float FloatAbove(float f)
 {
   return -FloatBelow(-f);
 }
+// Single precision bounds that still hold: `pad` (far above the double rounding
+// of the subtraction that produced v, far below a float step at the mesh's size)
+// and one float step beyond the nearest float.
 float Down(double v, double pad)
 {
   return FloatBelow(static_cast<float>(v - pad));
@@ -647,7 +647,7 @@ BuildItem* PartitionItems(BuildItem* first, BuildItem* last, Before before)
   }
 }
 
-// PartitionItems' result on every thread, for the top levels: the two-ended exchange
+// PartitionItems' result on every thread, for the first levels: the two-ended exchange
 // swaps the k-th item of the front part [first, mid) that must move back with the k-th
 // item, counted from the end, of the back part [mid, last) that must move forward, mid
 // being where the items satisfying `before` end. Chunks count those items, then swap
@@ -689,7 +689,7 @@ BuildItem* PartitionItemsInParallel(BuildItem* first, BuildItem* last, Before be
   // The back part's moving items, in increasing order; the k-th of the front part's
   // goes where the k-th from the end of these is.
   const std::int64_t swaps = moving[0][Chunks];
-  std::vector<std::int64_t> back(static_cast<size_t>(swaps));
+  vtkMedialBuffer<std::int64_t> back(static_cast<size_t>(swaps)); // every entry written below
 #pragma omp parallel for schedule(static)
   for (int c = 0; c < Chunks; ++c)
   {
