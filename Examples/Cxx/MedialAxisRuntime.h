@@ -12,8 +12,9 @@
  *    spinning for a while first. On a machine whose cores are shared, a spinning thread
  *    takes the core its late partner needs: at load 7 on 2 cores, the preparation (mesh
  *    and tree) of the 1.55M-triangle horse took a median 3.31 s with the default and
- *    2.62 s with this, over five alternating runs of each (issue 18). Alone on the
- *    machine the sleep costs a wake-up per barrier (microseconds).
+ *    2.62 s with this, over five alternating runs of each; at load 6 the wall times were
+ *    alike and the spinning cost 0.4 CPU s more (issue 18). Alone on the machine the sleep
+ *    costs a wake-up per barrier (microseconds).
  * Each is set only when the user has not set it (GLIBC_TUNABLES; OMP_WAIT_POLICY or
  * GOMP_SPINCOUNT: set either, e.g. empty, to keep libgomp's default), and the program
  * restarts only when it set one, so it restarts at most once. Skipped outside Linux and
