@@ -11,7 +11,7 @@
 // format in vtkMedialFileReader / vtkMedialFileWriter, every picture in
 // vtkMedialScene. The flag rules are in MedialAxisOptions.h, what is said on
 // stderr in MedialAxisConsole.h.
-#include "MedialAxisHugePages.h"
+#include "MedialAxisRuntime.h"
 #include "MedialAxisConsole.h"
 #include "MedialAxisOptions.h"
 
@@ -749,7 +749,7 @@ void Program::PrintStats()
 
 int main(int argc, char* argv[])
 {
-  medialaxis::RestartWithHugePages(argv);
+  medialaxis::RestartWithRuntimeSettings(argv);
   const Options options = medialaxis::Parse(argc, argv);
   medialaxis::CheckOutputs(options); // before any work
   Console console(options.Quiet);
