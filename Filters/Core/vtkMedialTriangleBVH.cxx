@@ -556,6 +556,7 @@ struct Scratch
   std::vector<std::int32_t> DeferredSteps; // radius updates when each was last looked at
   std::vector<std::int32_t> CapNodes; // dropped for the cone while reaching into the ball
   std::vector<std::int32_t> CapSlots; // the same, triangles
+  std::vector<PendingLane> CapLanes; // InscribeInCap's stack
 };
 Scratch& ThreadScratch()
 {
@@ -565,6 +566,7 @@ Scratch& ThreadScratch()
   scratch.DeferredSteps.clear();
   scratch.CapNodes.clear();
   scratch.CapSlots.clear();
+  scratch.CapLanes.clear();
   return scratch;
 }}
 
@@ -1629,18 +1631,18 @@ private:
     const double reach = this->Radius - this->Allowed;
     double best2 = reach * reach, best[3] = { 0, 0, 0 };
     std::int32_t bestSlot = -1;
-    auto test = [&](std::int32_t slot) {
+    auto test = [&](std::int32_t slot) -> bool {
       const double* plane = &this->Tree.Planes[4 * slot];
       const double off = G::Dot(plane, this->Centre) - plane[3];
       if (this->Tree.TriangleIds[slot] == this->OwnTriangle || off * off >= best2)
       {
-        return;
+        return false;
       }
       const double* a = &this->Tree.Vertices[9 * slot];
       double q[3];
       if (G::ClosestPointOnTriangle(this->Centre, a, a + 3, a + 6, q) >= best2)
       {
-        return; // the whole triangle is no closer than its part in the cap
+        return false; // the whole triangle is no closer than its part in the cap
       }
       const double d2 = G::ClosestPointOnClippedTriangle(this->Centre, a, a + 3, a + 6, w, k, q);
       if (d2 < best2)
@@ -1648,7 +1650,9 @@ private:
         best2 = d2;
         G::Copy(q, best);
         bestSlot = slot;
+        return true;
       }
+      return false;
     };
     for (const std::vector<std::int32_t>* slots : { &this->Work.CapSlots, &this->Work.Deferred })
     {
@@ -1657,16 +1661,23 @@ private:
         test(slot);
       }
     }
-    std::vector<std::int32_t>& stack = this->Work.Stack;
+    // Depth first from each lane set aside. A wide node's four lanes are tested at once
+    // (in float, conservatively) when it is opened; a lane is tested again in double
+    // when popped only if the reach shrank since it was pushed (Steps counts that).
+    int shrinks = 0;
+    this->Fast->SetBall(this->CentreRel, std::sqrt(best2));
+    std::vector<PendingLane>& stack = this->Work.CapLanes;
     for (std::int32_t root : this->Work.CapNodes)
     {
-      stack.push_back(root);
+      stack.push_back({ root, -1 }); // tested against an earlier, larger ball
       while (!stack.empty())
       {
-        const WideNode& holder = this->Tree.WideNodes[stack.back() / 4];
-        const int lane = stack.back() % 4;
+        const PendingLane pending = stack.back();
         stack.pop_back();
-        if (MissesBall(FloatNodeTests::LaneNode(holder, lane), this->CentreRel, std::sqrt(best2)))
+        const WideNode& holder = this->Tree.WideNodes[pending.Ref / 4];
+        const int lane = pending.Ref % 4;
+        if (pending.Steps != shrinks &&
+          MissesBall(FloatNodeTests::LaneNode(holder, lane), this->CentreRel, std::sqrt(best2)))
         {
           continue;
         }
@@ -1676,16 +1687,22 @@ private:
           const std::int32_t start = ~child / LeafCodeScale;
           for (std::int32_t slot = start; slot < start + ~child % LeafCodeScale; ++slot)
           {
-            test(slot);
+            if (test(slot))
+            {
+              ++shrinks;
+              this->Fast->SetBall(this->CentreRel, std::sqrt(best2));
+            }
           }
           continue;
         }
         const WideNode& wide = this->Tree.WideNodes[child];
+        FloatNodeTests::Lanes lanes;
+        this->Fast->TestLanes(wide, lanes);
         for (int i = 3; i >= 0; --i)
         {
-          if (wide.Lo[0][i] <= wide.Hi[0][i]) // not empty
+          if (!(lanes.Miss & (1 << i)) && wide.Lo[0][i] <= wide.Hi[0][i]) // not empty
           {
-            stack.push_back(4 * child + i);
+            stack.push_back({ 4 * child + i, shrinks });
           }
         }
       }
