@@ -1630,6 +1630,11 @@ private:
     const double k = G::Dot(w, this->Centre) - this->Radius * this->Radius * this->CosMinAngle;
     const double reach = this->Radius - this->Allowed;
     double best2 = reach * reach, best[3] = { 0, 0, 0 };
+    // best2 and room for the rounding of the exact squared distance, whose closest
+    // point is off by a few ulps of the coordinates (RoundingPad is 1e-14 of them):
+    // a triangle whose TriangleDistance2Below reaches this is out for the exact test too.
+    auto clearOf = [this](double d2) { return d2 * (1.0 + 1e-9) + 10.0 * this->Tree.RoundingPad * std::sqrt(d2); };
+    double clear2 = clearOf(best2);
     std::int32_t bestSlot = -1;
     auto test = [&](std::int32_t slot) -> bool {
       const double* plane = &this->Tree.Planes[4 * slot];
@@ -1640,7 +1645,8 @@ private:
       }
       const double* a = &this->Tree.Vertices[9 * slot];
       double q[3];
-      if (G::ClosestPointOnTriangle(this->Centre, a, a + 3, a + 6, q) >= best2)
+      if (G::TriangleDistance2Below(this->Centre, a, a + 3, a + 6) >= clear2 ||
+        G::ClosestPointOnTriangle(this->Centre, a, a + 3, a + 6, q) >= best2)
       {
         return false; // the whole triangle is no closer than its part in the cap
       }
@@ -1648,6 +1654,7 @@ private:
       if (d2 < best2)
       {
         best2 = d2;
+        clear2 = clearOf(d2);
         G::Copy(q, best);
         bestSlot = slot;
         return true;
