@@ -1289,6 +1289,7 @@ public:
     G::AddScaled(this->PRel, this->Radius, n, this->CentreRel);
     this->Fast.emplace(bvh.Nodes[0], this->PRel, n, this->ConeSin);
     this->Fast->SetBall(this->CentreRel, this->Radius);
+    this->Clear2 = this->ClearOf(this->Radius - this->Slack);
   }
 
   // First a nearby ball's blockers in the order they shrank it: a neighbour's ball
@@ -1386,6 +1387,7 @@ private:
   void Accept(double r, const double q[3], std::int32_t slot)
   {
     this->Radius = r;
+    this->Clear2 = this->ClearOf(r - this->Slack);
     G::AddScaled(this->P, this->Radius, this->N, this->Centre);
     G::AddScaled(this->PRel, this->Radius, this->N, this->CentreRel);
     this->Fast->SetBall(this->CentreRel, this->Radius);
@@ -1418,6 +1420,15 @@ private:
     return side != FloatNodeTests::ABOVE;
   }
 
+  // reach^2 and room for the rounding of an exact squared distance, whose closest
+  // point is off by a few ulps of the coordinates (RoundingPad is 1e-14 of them): a
+  // triangle whose TriangleDistance2Below reaches this is beyond `reach` for the
+  // exact test too, so skipping that test changes no decision.
+  double ClearOf(double reach) const
+  {
+    return reach * reach * (1.0 + 1e-9) + 10.0 * this->Tree.RoundingPad * std::fabs(reach);
+  }
+
   // Shrinks the ball on triangle `slot` until it no longer blocks. Returns true
   // when the triangle still reaches into the ball, but only inside the cap: a
   // smaller ball lowers the cap's plane, so it must be looked at again.
@@ -1426,9 +1437,9 @@ private:
     const double* a = &this->Tree.Vertices[9 * slot];
     const double* b = a + 3;
     const double* c = a + 6;
-    if (this->CannotBlock(slot))
+    if (this->CannotBlock(slot) || G::TriangleDistance2Below(this->Centre, a, b, c) >= this->Clear2)
     {
-      return false;
+      return false; // (the second: it misses the ball, as Blocks would find at more cost)
     }
     double q[3];
     bool touches;
@@ -1630,11 +1641,7 @@ private:
     const double k = G::Dot(w, this->Centre) - this->Radius * this->Radius * this->CosMinAngle;
     const double reach = this->Radius - this->Allowed;
     double best2 = reach * reach, best[3] = { 0, 0, 0 };
-    // best2 and room for the rounding of the exact squared distance, whose closest
-    // point is off by a few ulps of the coordinates (RoundingPad is 1e-14 of them):
-    // a triangle whose TriangleDistance2Below reaches this is out for the exact test too.
-    auto clearOf = [this](double d2) { return d2 * (1.0 + 1e-9) + 10.0 * this->Tree.RoundingPad * std::sqrt(d2); };
-    double clear2 = clearOf(best2);
+    double clear2 = this->ClearOf(reach); // follows best2
     std::int32_t bestSlot = -1;
     auto test = [&](std::int32_t slot) -> bool {
       const double* plane = &this->Tree.Planes[4 * slot];
@@ -1654,7 +1661,7 @@ private:
       if (d2 < best2)
       {
         best2 = d2;
-        clear2 = clearOf(d2);
+        clear2 = this->ClearOf(std::sqrt(d2));
         G::Copy(q, best);
         bestSlot = slot;
         return true;
@@ -1733,6 +1740,7 @@ private:
   const double Allowed;
   const bool Inscribe;
   double Radius;
+  double Clear2; // ClearOf(Radius - Slack)
   double Centre[3], PRel[3], CentreRel[3];
   TangentBall& Result;
   Scratch& Work;
