@@ -98,6 +98,15 @@ public:
       this->N[k] = static_cast<float>(n[k]);
     }
     this->ConeSin2 = static_cast<float>(coneSin * coneSin * (1.0 - 1e-5));
+#if defined(__SSE2__)
+    for (int k = 0; k < 3; ++k)
+    {
+      this->LaneP[k] = _mm_set1_ps(this->P[k]);
+      this->LaneN[k] = _mm_set1_ps(this->N[k]);
+    }
+    this->LaneMargin = _mm_set1_ps(this->Margin);
+    this->LaneConeSin2 = _mm_set1_ps(this->ConeSin2);
+#endif
   }
 
   /// The ball's centre (relative to the origin) and radius moved.
@@ -109,6 +118,14 @@ public:
     }
     this->Radius = static_cast<float>(radius) + this->Margin;
     this->Reach2 = this->Radius * this->Radius;
+#if defined(__SSE2__)
+    for (int k = 0; k < 3; ++k)
+    {
+      this->LaneC[k] = _mm_set1_ps(this->C[k]);
+    }
+    this->LaneRadius = _mm_set1_ps(this->Radius);
+    this->LaneReach2 = _mm_set1_ps(this->Reach2);
+#endif
   }
 
   /// Squared distance from the ball's centre to the node's box (rounded: for ordering
@@ -168,22 +185,22 @@ public:
   {
 #if defined(__SSE2__)
     const __m128 zero = _mm_setzero_ps();
-    const __m128 margin = _mm_set1_ps(this->Margin);
+    const __m128 margin = this->LaneMargin;
     __m128 sq[3], sp[3];
     __m128 h = margin, m = zero;
     for (int k = 0; k < 3; ++k)
     {
       const __m128 lo = _mm_load_ps(w.Lo[k]);
       const __m128 hi = _mm_load_ps(w.Hi[k]);
-      const __m128 c = _mm_set1_ps(this->C[k]);
-      const __m128 p = _mm_set1_ps(this->P[k]);
+      const __m128 c = this->LaneC[k];
+      const __m128 p = this->LaneP[k];
       const __m128 gc = _mm_max_ps(_mm_max_ps(_mm_sub_ps(lo, c), _mm_sub_ps(c, hi)), zero);
       sq[k] = _mm_mul_ps(gc, gc);
       const __m128 gp =
         _mm_max_ps(_mm_sub_ps(_mm_max_ps(_mm_sub_ps(lo, p), _mm_sub_ps(p, hi)), margin), zero);
       sp[k] = _mm_mul_ps(gp, gp);
       const __m128 far = this->N[k] > 0.0f ? hi : lo;
-      h = _mm_add_ps(h, _mm_mul_ps(_mm_set1_ps(this->N[k]), _mm_sub_ps(far, p)));
+      h = _mm_add_ps(h, _mm_mul_ps(this->LaneN[k], _mm_sub_ps(far, p)));
       const __m128 mk = _mm_mul_ps(_mm_load_ps(w.Axis[k]), c);
       m = k == 0 ? mk : _mm_add_ps(m, mk);
     }
@@ -191,13 +208,13 @@ public:
     const __m128 d2 = _mm_add_ps(_mm_add_ps(sq[0], sq[2]), sq[1]);
     const __m128 dp2 = _mm_mul_ps(_mm_add_ps(_mm_add_ps(sp[0], sp[2]), sp[1]), _mm_set1_ps(1.0f - 1e-5f));
     _mm_store_ps(out.D2, d2);
-    const __m128 radius = _mm_set1_ps(this->Radius);
-    const __m128 miss = _mm_or_ps(_mm_cmpge_ps(d2, _mm_set1_ps(this->Reach2)),
+    const __m128 radius = this->LaneRadius;
+    const __m128 miss = _mm_or_ps(_mm_cmpge_ps(d2, this->LaneReach2),
       _mm_or_ps(_mm_cmpge_ps(_mm_sub_ps(m, radius), _mm_load_ps(w.SlabHi)),
         _mm_cmple_ps(_mm_add_ps(m, radius), _mm_load_ps(w.SlabLo))));
     const int above = _mm_movemask_ps(_mm_cmpgt_ps(h, zero));
     const int outside =
-      _mm_movemask_ps(_mm_cmplt_ps(_mm_mul_ps(h, h), _mm_mul_ps(_mm_set1_ps(this->ConeSin2), dp2)));
+      _mm_movemask_ps(_mm_cmplt_ps(_mm_mul_ps(h, h), _mm_mul_ps(this->LaneConeSin2, dp2)));
     out.Miss = _mm_movemask_ps(miss);
     out.Keep = ~out.Miss & above & ~outside & 0xF;
     out.Cap = ~out.Miss & above & outside & 0xF;
@@ -259,6 +276,11 @@ private:
 
   alignas(16) float P[4] = { 0, 0, 0, 0 }, N[4] = { 0, 0, 0, 0 }, C[4] = { 0, 0, 0, 0 };
   float Margin = 0.0f, ConeSin2 = 0.0f, Radius = 0.0f, Reach2 = 0.0f;
+#if defined(__SSE2__)
+  // The same, broadcast to four lanes once per ball rather than once per node.
+  __m128 LaneC[3], LaneP[3], LaneN[3];
+  __m128 LaneMargin, LaneConeSin2, LaneRadius, LaneReach2;
+#endif
 };
 
 // std::nextafter(f, -HUGE_VALF) and std::nextafter(f, HUGE_VALF), the same bits, without
