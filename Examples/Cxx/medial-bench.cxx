@@ -154,6 +154,23 @@ struct PreparationEnd
   }
 };
 
+// Updates the sampler; returns its wall seconds, and in `solving` those after its
+// surface preparation (drawing, solving, the output), from its own stages.
+double UpdateTimed(vtkMedialAxisSampler* sampler, double& solving)
+{
+  PreparationEnd prepared;
+  vtkNew<vtkCallbackCommand> observer;
+  observer->SetCallback(PreparationEnd::OnProgress);
+  observer->SetClientData(&prepared);
+  const unsigned long tag = sampler->AddObserver(vtkCommand::ProgressEvent, observer);
+  const double t0 = Now();
+  sampler->Update();
+  const double t1 = Now();
+  sampler->RemoveObserver(tag);
+  solving = t1 - (prepared.Time > 0.0 ? prepared.Time : t0);
+  return t1 - t0;
+}
+
 // Runs the sampler; returns its wall seconds with the preparation, and in `solving`
 // those after it (drawing, solving, the output).
 double TimeSampler(vtkPolyData* mesh, int method, int threads, vtkIdType samples, double& iterations,
@@ -164,18 +181,10 @@ double TimeSampler(vtkPolyData* mesh, int method, int threads, vtkIdType samples
   sampler->SetMethod(method);
   sampler->SetNumberOfThreads(threads);
   sampler->SetNumberOfSamples(samples);
-  PreparationEnd prepared;
-  vtkNew<vtkCallbackCommand> observer;
-  observer->SetCallback(PreparationEnd::OnProgress);
-  observer->SetClientData(&prepared);
-  sampler->AddObserver(vtkCommand::ProgressEvent, observer);
-  const double t0 = Now();
-  sampler->Update();
-  const double t1 = Now();
+  const double seconds = UpdateTimed(sampler, solving);
   iterations = sampler->GetMeanIterations();
   capped = sampler->GetCappedSamples();
-  solving = t1 - (prepared.Time > 0.0 ? prepared.Time : t0);
-  return t1 - t0;
+  return seconds;
 }
 
 struct StructureRow
@@ -265,7 +274,7 @@ void PrintStructure(const std::vector<StructureRow>& rows, const std::string& la
 }
 
 // One row per sampling strategy: wall time per evaluated sample without the
-// preparation (Random's 1-sample run is subtracted), the median of 3 rounds that
+// preparation (timed from the sampler's own stages), the median of 3 rounds that
 // alternate the strategies, and the median of the per-round ratios to Random.
 struct StrategyRow
 {
@@ -291,14 +300,11 @@ std::vector<StrategyRow> RunStrategies(vtkPolyData* mesh, vtkIdType samples)
     sampler->SetSamplingStrategy(strategy);
     sampler->SetNumberOfThreads(2);
     sampler->SetNumberOfSamples(n);
-    const double t0 = Now();
-    sampler->Update();
-    const double seconds = Now() - t0;
+    double solving = 0.0;
+    UpdateTimed(sampler, solving);
     evaluated = strategy == vtkMedialAxisSampler::RANDOM ? n : sampler->GetEvaluatedSamples();
-    return seconds;
+    return solving;
   };
-  vtkIdType one;
-  const double preparation = timed(vtkMedialAxisSampler::RANDOM, 1, one);
   std::vector<double> micro[3], ratio[3];
   vtkIdType evaluated[3] = { 0, 0, 0 };
   for (int round = 0; round < 3; ++round)
@@ -306,7 +312,7 @@ std::vector<StrategyRow> RunStrategies(vtkPolyData* mesh, vtkIdType samples)
     for (int k = 0; k < 3; ++k)
     {
       const double seconds = timed(strategies[k], samples, evaluated[k]);
-      micro[k].push_back(1e6 * (seconds - preparation) / std::max<vtkIdType>(evaluated[k], 1));
+      micro[k].push_back(1e6 * seconds / std::max<vtkIdType>(evaluated[k], 1));
       ratio[k].push_back(micro[k].back() / micro[0].back());
     }
   }
