@@ -98,6 +98,10 @@ public:
       this->N[k] = static_cast<float>(n[k]);
     }
     this->ConeSin2 = static_cast<float>(coneSin * coneSin * (1.0 - 1e-5));
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Far[k] = this->N[k] > 0.0f ? 1 : 0;
+    }
 #if defined(__SSE2__)
     for (int k = 0; k < 3; ++k)
     {
@@ -159,10 +163,11 @@ public:
   Sides Side(const float* lo, const float* hi) const
   {
     // Largest n.(q - p) over the box, plus the margin: an upper bound.
+    const float* corners[2] = { lo, hi };
     float h = this->Margin;
     for (int k = 0; k < 3; ++k)
     {
-      h += this->N[k] * ((this->N[k] > 0.0f ? hi[k] : lo[k]) - this->P[k]);
+      h += this->N[k] * (corners[this->Far[k]][k] - this->P[k]);
     }
     if (!(h > 0.0f))
     {
@@ -276,6 +281,7 @@ private:
 
   alignas(16) float P[4] = { 0, 0, 0, 0 }, N[4] = { 0, 0, 0, 0 }, C[4] = { 0, 0, 0, 0 };
   float Margin = 0.0f, ConeSin2 = 0.0f, Radius = 0.0f, Reach2 = 0.0f;
+  int Far[3] = { 0, 0, 0 }; // 1 where n points up the axis: the box's far corner takes hi there
 #if defined(__SSE2__)
   // The same, broadcast to four lanes once per ball rather than once per node.
   __m128 LaneC[3], LaneP[3], LaneN[3];
