@@ -25,6 +25,8 @@
 #include "vtkMedialTriangleBVH.h"
 #include "vtkMedialTriangleMesh.h"
 
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkPoints.h"
@@ -132,19 +134,57 @@ vtkSmartPointer<vtkPolyData> LoadBenchMesh(
   return jack->GetOutput();
 }
 
+// When a sampler's surface preparation ended: the start of the stage that follows
+// "Building the surface queries", seen through the stage names the sampler gives as
+// its progress text.
+struct PreparationEnd
+{
+  double Time = 0.0; // 0 until seen
+  bool Building = false;
+  static void OnProgress(vtkObject* caller, unsigned long, void* clientData, void*)
+  {
+    PreparationEnd* self = static_cast<PreparationEnd*>(clientData);
+    const char* text = static_cast<vtkAlgorithm*>(caller)->GetProgressText();
+    const bool building = text && std::strcmp(text, "Building the surface queries") == 0;
+    if (self->Building && !building && self->Time == 0.0)
+    {
+      self->Time = Now();
+    }
+    self->Building = self->Building || building;
+  }
+};
+
+// Updates the sampler; returns its wall seconds, and in `solving` those after its
+// surface preparation (drawing, solving, the output), from its own stages.
+double UpdateTimed(vtkMedialAxisSampler* sampler, double& solving)
+{
+  PreparationEnd prepared;
+  vtkNew<vtkCallbackCommand> observer;
+  observer->SetCallback(PreparationEnd::OnProgress);
+  observer->SetClientData(&prepared);
+  const unsigned long tag = sampler->AddObserver(vtkCommand::ProgressEvent, observer);
+  const double t0 = Now();
+  sampler->Update();
+  const double t1 = Now();
+  sampler->RemoveObserver(tag);
+  solving = t1 - (prepared.Time > 0.0 ? prepared.Time : t0);
+  return t1 - t0;
+}
+
+// Runs the sampler; returns its wall seconds with the preparation, and in `solving`
+// those after it (drawing, solving, the output).
 double TimeSampler(vtkPolyData* mesh, int method, int threads, vtkIdType samples, double& iterations,
-  vtkIdType& capped)
+  vtkIdType& capped, double& solving)
 {
   vtkNew<vtkMedialAxisSampler> sampler;
   sampler->SetInputData(mesh);
   sampler->SetMethod(method);
   sampler->SetNumberOfThreads(threads);
   sampler->SetNumberOfSamples(samples);
-  const double t0 = Now();
-  sampler->Update();
+  const double seconds = UpdateTimed(sampler, solving);
   iterations = sampler->GetMeanIterations();
   capped = sampler->GetCappedSamples();
-  return Now() - t0;
+  return seconds;
 }
 
 struct StructureRow
@@ -234,7 +274,7 @@ void PrintStructure(const std::vector<StructureRow>& rows, const std::string& la
 }
 
 // One row per sampling strategy: wall time per evaluated sample without the
-// preparation (Random's 1-sample run is subtracted), the median of 3 rounds that
+// preparation (timed from the sampler's own stages), the median of 3 rounds that
 // alternate the strategies, and the median of the per-round ratios to Random.
 struct StrategyRow
 {
@@ -260,14 +300,11 @@ std::vector<StrategyRow> RunStrategies(vtkPolyData* mesh, vtkIdType samples)
     sampler->SetSamplingStrategy(strategy);
     sampler->SetNumberOfThreads(2);
     sampler->SetNumberOfSamples(n);
-    const double t0 = Now();
-    sampler->Update();
-    const double seconds = Now() - t0;
+    double solving = 0.0;
+    UpdateTimed(sampler, solving);
     evaluated = strategy == vtkMedialAxisSampler::RANDOM ? n : sampler->GetEvaluatedSamples();
-    return seconds;
+    return solving;
   };
-  vtkIdType one;
-  const double preparation = timed(vtkMedialAxisSampler::RANDOM, 1, one);
   std::vector<double> micro[3], ratio[3];
   vtkIdType evaluated[3] = { 0, 0, 0 };
   for (int round = 0; round < 3; ++round)
@@ -275,7 +312,7 @@ std::vector<StrategyRow> RunStrategies(vtkPolyData* mesh, vtkIdType samples)
     for (int k = 0; k < 3; ++k)
     {
       const double seconds = timed(strategies[k], samples, evaluated[k]);
-      micro[k].push_back(1e6 * (seconds - preparation) / std::max<vtkIdType>(evaluated[k], 1));
+      micro[k].push_back(1e6 * seconds / std::max<vtkIdType>(evaluated[k], 1));
       ratio[k].push_back(micro[k].back() / micro[0].back());
     }
   }
@@ -314,20 +351,20 @@ void PrintStrategies(const std::vector<StrategyRow>& rows, const std::string& la
   }
 }
 
-// Microseconds per sample (wall), without the preparation (merge, orientation,
-// BVH builds): the time of a 1-sample run with the same settings is subtracted.
+// Microseconds per sample (wall), without the preparation (merge, orientation, tree
+// build), timed from the sampler's own stages in the same run. (Subtracting a separate
+// 1-sample run, as before, let the preparation's first-touch page faults, which vary
+// by up to 0.5 s between runs on this project's VM, swing a 50k-sample row by 10 us.)
 double RunSampler(vtkPolyData* mesh, int method, int threads, vtkIdType samples, double& iterations,
   vtkIdType& capped, double* totalSeconds = nullptr)
 {
-  double it;
-  vtkIdType cap;
-  const double preparation = TimeSampler(mesh, method, threads, 1, it, cap);
-  const double seconds = TimeSampler(mesh, method, threads, samples, iterations, capped);
+  double solving = 0.0;
+  const double seconds = TimeSampler(mesh, method, threads, samples, iterations, capped, solving);
   if (totalSeconds)
   {
     *totalSeconds = seconds;
   }
-  return 1e6 * (seconds - preparation) / samples;
+  return 1e6 * solving / samples;
 }
 
 struct BenchOptions
@@ -630,7 +667,7 @@ void PrintTables(const BenchFigures& f, const BenchOptions& options, const std::
   std::printf("| bounded closest point | %.2f |\n| contains ball, yes (r - 1e-6 r) | %.2f |\n"
               "| contains ball, no (1.01 r) | %.2f |\n",
     f.Points.Closest, f.Points.Yes, f.Points.No);
-  std::printf("\nMethod rows: wall time per sample without the preparation (a 1-sample run is subtracted).\n");
+  std::printf("\nMethod rows: wall time per sample without the preparation (timed from the end of the sampler's \"Building the surface queries\" stage).\n");
   std::printf("| query or method | us per sample | mean iterations | ratio to limit | ratio to bisection | "
               "2-thread speed-up |\n");
   std::printf("|---|---|---|---|---|---|\n");

@@ -78,6 +78,21 @@ inline double SegmentDistance2(const double p[3], const double a[3], const doubl
   return Distance2(p, q);
 }
 
+/**
+ * A lower bound of the squared distance from p to triangle (a, b, c): the nearest
+ * vertex's squared distance less a third of the longest edge's square. For a point
+ * x = l_a a + l_b b + l_c c of the triangle, |x - p|^2 is the weighted sum of the
+ * vertices' squared distances less sum l_i l_j |v_i - v_j|^2 (i < j), and
+ * sum l_i l_j <= 1/3. Close to the distance for triangles small against it, without
+ * branches, so a search can skip most exact tests of triangles that only come near.
+ */
+inline double TriangleDistance2Below(const double p[3], const double a[3], const double b[3], const double c[3])
+{
+  const double nearest = std::min({ Distance2(p, a), Distance2(p, b), Distance2(p, c) });
+  const double longest = std::max({ Distance2(a, b), Distance2(b, c), Distance2(c, a) });
+  return nearest - longest / 3.0;
+}
+
 /// Closest point to p on triangle (a, b, c); returns the squared distance.
 inline double ClosestPointOnTriangle(
   const double p[3], const double a[3], const double b[3], const double c[3], double out[3])

@@ -98,6 +98,19 @@ public:
       this->N[k] = static_cast<float>(n[k]);
     }
     this->ConeSin2 = static_cast<float>(coneSin * coneSin * (1.0 - 1e-5));
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Far[k] = this->N[k] > 0.0f ? 1 : 0;
+    }
+#if defined(__SSE2__)
+    for (int k = 0; k < 3; ++k)
+    {
+      this->LaneP[k] = _mm_set1_ps(this->P[k]);
+      this->LaneN[k] = _mm_set1_ps(this->N[k]);
+    }
+    this->LaneMargin = _mm_set1_ps(this->Margin);
+    this->LaneConeSin2 = _mm_set1_ps(this->ConeSin2);
+#endif
   }
 
   /// The ball's centre (relative to the origin) and radius moved.
@@ -109,6 +122,14 @@ public:
     }
     this->Radius = static_cast<float>(radius) + this->Margin;
     this->Reach2 = this->Radius * this->Radius;
+#if defined(__SSE2__)
+    for (int k = 0; k < 3; ++k)
+    {
+      this->LaneC[k] = _mm_set1_ps(this->C[k]);
+    }
+    this->LaneRadius = _mm_set1_ps(this->Radius);
+    this->LaneReach2 = _mm_set1_ps(this->Reach2);
+#endif
   }
 
   /// Squared distance from the ball's centre to the node's box (rounded: for ordering
@@ -142,10 +163,11 @@ public:
   Sides Side(const float* lo, const float* hi) const
   {
     // Largest n.(q - p) over the box, plus the margin: an upper bound.
+    const float* corners[2] = { lo, hi };
     float h = this->Margin;
     for (int k = 0; k < 3; ++k)
     {
-      h += this->N[k] * ((this->N[k] > 0.0f ? hi[k] : lo[k]) - this->P[k]);
+      h += this->N[k] * (corners[this->Far[k]][k] - this->P[k]);
     }
     if (!(h > 0.0f))
     {
@@ -168,22 +190,22 @@ public:
   {
 #if defined(__SSE2__)
     const __m128 zero = _mm_setzero_ps();
-    const __m128 margin = _mm_set1_ps(this->Margin);
+    const __m128 margin = this->LaneMargin;
     __m128 sq[3], sp[3];
     __m128 h = margin, m = zero;
     for (int k = 0; k < 3; ++k)
     {
       const __m128 lo = _mm_load_ps(w.Lo[k]);
       const __m128 hi = _mm_load_ps(w.Hi[k]);
-      const __m128 c = _mm_set1_ps(this->C[k]);
-      const __m128 p = _mm_set1_ps(this->P[k]);
+      const __m128 c = this->LaneC[k];
+      const __m128 p = this->LaneP[k];
       const __m128 gc = _mm_max_ps(_mm_max_ps(_mm_sub_ps(lo, c), _mm_sub_ps(c, hi)), zero);
       sq[k] = _mm_mul_ps(gc, gc);
       const __m128 gp =
         _mm_max_ps(_mm_sub_ps(_mm_max_ps(_mm_sub_ps(lo, p), _mm_sub_ps(p, hi)), margin), zero);
       sp[k] = _mm_mul_ps(gp, gp);
       const __m128 far = this->N[k] > 0.0f ? hi : lo;
-      h = _mm_add_ps(h, _mm_mul_ps(_mm_set1_ps(this->N[k]), _mm_sub_ps(far, p)));
+      h = _mm_add_ps(h, _mm_mul_ps(this->LaneN[k], _mm_sub_ps(far, p)));
       const __m128 mk = _mm_mul_ps(_mm_load_ps(w.Axis[k]), c);
       m = k == 0 ? mk : _mm_add_ps(m, mk);
     }
@@ -191,13 +213,13 @@ public:
     const __m128 d2 = _mm_add_ps(_mm_add_ps(sq[0], sq[2]), sq[1]);
     const __m128 dp2 = _mm_mul_ps(_mm_add_ps(_mm_add_ps(sp[0], sp[2]), sp[1]), _mm_set1_ps(1.0f - 1e-5f));
     _mm_store_ps(out.D2, d2);
-    const __m128 radius = _mm_set1_ps(this->Radius);
-    const __m128 miss = _mm_or_ps(_mm_cmpge_ps(d2, _mm_set1_ps(this->Reach2)),
+    const __m128 radius = this->LaneRadius;
+    const __m128 miss = _mm_or_ps(_mm_cmpge_ps(d2, this->LaneReach2),
       _mm_or_ps(_mm_cmpge_ps(_mm_sub_ps(m, radius), _mm_load_ps(w.SlabHi)),
         _mm_cmple_ps(_mm_add_ps(m, radius), _mm_load_ps(w.SlabLo))));
     const int above = _mm_movemask_ps(_mm_cmpgt_ps(h, zero));
     const int outside =
-      _mm_movemask_ps(_mm_cmplt_ps(_mm_mul_ps(h, h), _mm_mul_ps(_mm_set1_ps(this->ConeSin2), dp2)));
+      _mm_movemask_ps(_mm_cmplt_ps(_mm_mul_ps(h, h), _mm_mul_ps(this->LaneConeSin2, dp2)));
     out.Miss = _mm_movemask_ps(miss);
     out.Keep = ~out.Miss & above & ~outside & 0xF;
     out.Cap = ~out.Miss & above & outside & 0xF;
@@ -259,6 +281,12 @@ private:
 
   alignas(16) float P[4] = { 0, 0, 0, 0 }, N[4] = { 0, 0, 0, 0 }, C[4] = { 0, 0, 0, 0 };
   float Margin = 0.0f, ConeSin2 = 0.0f, Radius = 0.0f, Reach2 = 0.0f;
+  int Far[3] = { 0, 0, 0 }; // 1 where n points up the axis: the box's far corner takes hi there
+#if defined(__SSE2__)
+  // The same, broadcast to four lanes once per ball rather than once per node.
+  __m128 LaneC[3], LaneP[3], LaneN[3];
+  __m128 LaneMargin, LaneConeSin2, LaneRadius, LaneReach2;
+#endif
 };
 
 // std::nextafter(f, -HUGE_VALF) and std::nextafter(f, HUGE_VALF), the same bits, without
@@ -556,6 +584,7 @@ struct Scratch
   std::vector<std::int32_t> DeferredSteps; // radius updates when each was last looked at
   std::vector<std::int32_t> CapNodes; // dropped for the cone while reaching into the ball
   std::vector<std::int32_t> CapSlots; // the same, triangles
+  std::vector<PendingLane> CapLanes; // InscribeInCap's stack
 };
 Scratch& ThreadScratch()
 {
@@ -565,6 +594,7 @@ Scratch& ThreadScratch()
   scratch.DeferredSteps.clear();
   scratch.CapNodes.clear();
   scratch.CapSlots.clear();
+  scratch.CapLanes.clear();
   return scratch;
 }}
 
@@ -1287,6 +1317,7 @@ public:
     G::AddScaled(this->PRel, this->Radius, n, this->CentreRel);
     this->Fast.emplace(bvh.Nodes[0], this->PRel, n, this->ConeSin);
     this->Fast->SetBall(this->CentreRel, this->Radius);
+    this->Clear2 = this->ClearOf(this->Radius - this->Slack);
   }
 
   // First a nearby ball's blockers in the order they shrank it: a neighbour's ball
@@ -1384,6 +1415,7 @@ private:
   void Accept(double r, const double q[3], std::int32_t slot)
   {
     this->Radius = r;
+    this->Clear2 = this->ClearOf(r - this->Slack);
     G::AddScaled(this->P, this->Radius, this->N, this->Centre);
     G::AddScaled(this->PRel, this->Radius, this->N, this->CentreRel);
     this->Fast->SetBall(this->CentreRel, this->Radius);
@@ -1416,6 +1448,15 @@ private:
     return side != FloatNodeTests::ABOVE;
   }
 
+  // reach^2 and room for the rounding of an exact squared distance, whose closest
+  // point is off by a few ulps of the coordinates (RoundingPad is 1e-14 of them): a
+  // triangle whose TriangleDistance2Below reaches this is beyond `reach` for the
+  // exact test too, so skipping that test changes no decision.
+  double ClearOf(double reach) const
+  {
+    return reach * reach * (1.0 + 1e-9) + 10.0 * this->Tree.RoundingPad * std::fabs(reach);
+  }
+
   // Shrinks the ball on triangle `slot` until it no longer blocks. Returns true
   // when the triangle still reaches into the ball, but only inside the cap: a
   // smaller ball lowers the cap's plane, so it must be looked at again.
@@ -1424,9 +1465,9 @@ private:
     const double* a = &this->Tree.Vertices[9 * slot];
     const double* b = a + 3;
     const double* c = a + 6;
-    if (this->CannotBlock(slot))
+    if (this->CannotBlock(slot) || G::TriangleDistance2Below(this->Centre, a, b, c) >= this->Clear2)
     {
-      return false;
+      return false; // (the second: it misses the ball, as Blocks would find at more cost)
     }
     double q[3];
     bool touches;
@@ -1628,27 +1669,32 @@ private:
     const double k = G::Dot(w, this->Centre) - this->Radius * this->Radius * this->CosMinAngle;
     const double reach = this->Radius - this->Allowed;
     double best2 = reach * reach, best[3] = { 0, 0, 0 };
+    double clear2 = this->ClearOf(reach); // follows best2
     std::int32_t bestSlot = -1;
-    auto test = [&](std::int32_t slot) {
+    auto test = [&](std::int32_t slot) -> bool {
       const double* plane = &this->Tree.Planes[4 * slot];
       const double off = G::Dot(plane, this->Centre) - plane[3];
       if (this->Tree.TriangleIds[slot] == this->OwnTriangle || off * off >= best2)
       {
-        return;
+        return false;
       }
       const double* a = &this->Tree.Vertices[9 * slot];
       double q[3];
-      if (G::ClosestPointOnTriangle(this->Centre, a, a + 3, a + 6, q) >= best2)
+      if (G::TriangleDistance2Below(this->Centre, a, a + 3, a + 6) >= clear2 ||
+        G::ClosestPointOnTriangle(this->Centre, a, a + 3, a + 6, q) >= best2)
       {
-        return; // the whole triangle is no closer than its part in the cap
+        return false; // the whole triangle is no closer than its part in the cap
       }
       const double d2 = G::ClosestPointOnClippedTriangle(this->Centre, a, a + 3, a + 6, w, k, q);
       if (d2 < best2)
       {
         best2 = d2;
+        clear2 = this->ClearOf(std::sqrt(d2));
         G::Copy(q, best);
         bestSlot = slot;
+        return true;
       }
+      return false;
     };
     for (const std::vector<std::int32_t>* slots : { &this->Work.CapSlots, &this->Work.Deferred })
     {
@@ -1657,16 +1703,23 @@ private:
         test(slot);
       }
     }
-    std::vector<std::int32_t>& stack = this->Work.Stack;
+    // Depth first from each lane set aside. A wide node's four lanes are tested at once
+    // (in float, conservatively) when it is opened; a lane is tested again in double
+    // when popped only if the reach shrank since it was pushed (Steps counts that).
+    int shrinks = 0;
+    this->Fast->SetBall(this->CentreRel, std::sqrt(best2));
+    std::vector<PendingLane>& stack = this->Work.CapLanes;
     for (std::int32_t root : this->Work.CapNodes)
     {
-      stack.push_back(root);
+      stack.push_back({ root, -1 }); // tested against an earlier, larger ball
       while (!stack.empty())
       {
-        const WideNode& holder = this->Tree.WideNodes[stack.back() / 4];
-        const int lane = stack.back() % 4;
+        const PendingLane pending = stack.back();
         stack.pop_back();
-        if (MissesBall(FloatNodeTests::LaneNode(holder, lane), this->CentreRel, std::sqrt(best2)))
+        const WideNode& holder = this->Tree.WideNodes[pending.Ref / 4];
+        const int lane = pending.Ref % 4;
+        if (pending.Steps != shrinks &&
+          MissesBall(FloatNodeTests::LaneNode(holder, lane), this->CentreRel, std::sqrt(best2)))
         {
           continue;
         }
@@ -1676,16 +1729,22 @@ private:
           const std::int32_t start = ~child / LeafCodeScale;
           for (std::int32_t slot = start; slot < start + ~child % LeafCodeScale; ++slot)
           {
-            test(slot);
+            if (test(slot))
+            {
+              ++shrinks;
+              this->Fast->SetBall(this->CentreRel, std::sqrt(best2));
+            }
           }
           continue;
         }
         const WideNode& wide = this->Tree.WideNodes[child];
+        FloatNodeTests::Lanes lanes;
+        this->Fast->TestLanes(wide, lanes);
         for (int i = 3; i >= 0; --i)
         {
-          if (wide.Lo[0][i] <= wide.Hi[0][i]) // not empty
+          if (!(lanes.Miss & (1 << i)) && wide.Lo[0][i] <= wide.Hi[0][i]) // not empty
           {
-            stack.push_back(4 * child + i);
+            stack.push_back({ 4 * child + i, shrinks });
           }
         }
       }
@@ -1709,6 +1768,7 @@ private:
   const double Allowed;
   const bool Inscribe;
   double Radius;
+  double Clear2; // ClearOf(Radius - Slack)
   double Centre[3], PRel[3], CentreRel[3];
   TangentBall& Result;
   Scratch& Work;
