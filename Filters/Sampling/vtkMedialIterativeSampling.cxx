@@ -32,6 +32,10 @@ namespace G = vtkMedialGeometry;
 constexpr std::uint64_t DartStream = 0x5EEDDA27C0FFEE01ull;
 constexpr std::uint64_t FaceStream = 0xFACE5A3B1E0D0C02ull;
 
+// Consecutive solves in leaf order on one thread, hinted with the previous one (as
+// vtkMedialAxisSampler's Random strategy does).
+constexpr vtkIdType HintChain = 32;
+
 double Distance(const double a[3], const double b[3])
 {
   double d[3];
@@ -95,7 +99,7 @@ void ThrowDarts(const vtkMedialTriangleMesh& mesh, const vtkMedialIterativeSetti
   {
     return;
   }
-  const double rho = std::sqrt(0.6 * mesh.TotalArea / static_cast<double>(wanted));
+  const double rho = std::sqrt(0.5 * mesh.TotalArea / static_cast<double>(wanted));
   // Accepted seeds by cell; a dart is tested against those in the cells within rho.
   vtkMedialUniformGrid accepted;
   accepted.InitializeCubic(mesh.Bounds, vtkMedialUniformGrid::CubicCellSize(mesh.Bounds, 2.0 * rho));
@@ -153,33 +157,14 @@ struct vtkMedialCoverage::Internals
   // non-empty cell: FindLowered skips whole rows and the empty ends of the others.
   std::vector<double> RowMax;
   std::vector<int> RowFirst, RowLast;
-  std::vector<vtkIdType> FaceStart; // vertex -> faces (CSR)
-  std::vector<vtkIdType> FaceList;
-  std::vector<unsigned> Stamp; // per face, dedupes `touched`
-  unsigned CurrentStamp = 0;
   double Bound = HUGE_VAL; // upper bound of every gap
   double Worst = -HUGE_VAL; // MaxGapInTeam's result
   std::vector<std::vector<vtkMedialCoverage::Lowering>> Pending; // AddBallsInTeam: one batch's lowerings
   static constexpr vtkIdType Batch = 1024; // AddBallsInTeam: bounds the memory of the lowerings waiting
   double Pad = 0.0;        // added to the search reach: cell binning and slab bounds may differ by an ulp
 
-  template <class F>
-  void ForEachFaceOf(vtkIdType point, F&& f) const
-  {
-    if (point >= this->NumberOfVertices)
-    {
-      f(point - this->NumberOfVertices);
-      return;
-    }
-    for (vtkIdType s = this->FaceStart[point]; s < this->FaceStart[point + 1]; ++s)
-    {
-      f(this->FaceList[s]);
-    }
-  }
-
   double GapOf(vtkIdType point) const { return this->Gap[this->SlotOf[point]]; }
 
-  void BuildFaceLists();
   // The *InTeam passes are orphaned worksharing loops: every thread of the enclosing
   // parallel region calls them (outside one, the calling thread does all the work).
   void UpdateAllCellMaxInTeam()
@@ -227,7 +212,32 @@ struct vtkMedialCoverage::Internals
     this->UpdateAllRowMaxInTeam();
     return this->Worst;
   }
-  void StartValuesInTeam(const std::vector<double>& seeds, const vtkMedialUniformGrid& seedGrid);
+  void StartValuesInTeam(const std::vector<double>& balls, const vtkMedialUniformGrid& seedGrid);
+  /// Lowers this thread's range of slots by lowered[j] for each j < n with ballOf(j) >= 0, in j order.
+  template <class BallOf>
+  void ApplyInTeam(const std::vector<std::vector<Lowering>>& lowered, vtkIdType n, BallOf&& ballOf)
+  {
+    const vtkIdType slots = static_cast<vtkIdType>(this->Gap.size());
+    const int threads = omp_get_num_threads();
+    const int thread = omp_get_thread_num();
+    const vtkIdType lo = slots * thread / threads, hi = slots * (thread + 1) / threads;
+    for (vtkIdType j = 0; j < n; ++j)
+    {
+      const vtkIdType ball = ballOf(j);
+      if (ball < 0)
+      {
+        continue;
+      }
+      for (const Lowering& l : lowered[j])
+      {
+        if (l.Slot >= lo && l.Slot < hi && l.Gap < this->Gap[l.Slot])
+        {
+          this->Gap[l.Slot] = l.Gap;
+          this->Owner[l.Slot] = ball;
+        }
+      }
+    }
+  }
   void AddBallsInTeam(const vtkMedialCoverage& coverage, const vtkMedialSampleRecord* records, vtkIdType count,
     vtkIdType firstBall);
   void UpdateCellMax(vtkIdType cell)
@@ -241,35 +251,6 @@ struct vtkMedialCoverage::Internals
   }
   void BuildSlots(const std::vector<double>& points, const std::vector<char>& used);
 };
-
-// Vertex -> faces, in increasing face id.
-void vtkMedialCoverage::Internals::BuildFaceLists()
-{
-  const vtkMedialTriangleMesh& mesh = *this->Mesh;
-  const vtkIdType nv = this->NumberOfVertices;
-  const vtkIdType nf = mesh.GetNumberOfTriangles();
-  this->FaceStart.assign(static_cast<size_t>(nv + 1), 0);
-  for (vtkIdType f = 0; f < nf; ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      ++this->FaceStart[mesh.GetTriangle(f)[k] + 1];
-    }
-  }
-  for (vtkIdType v = 0; v < nv; ++v)
-  {
-    this->FaceStart[v + 1] += this->FaceStart[v];
-  }
-  this->FaceList.resize(static_cast<size_t>(this->FaceStart[nv]));
-  std::vector<vtkIdType> fill(this->FaceStart.begin(), this->FaceStart.end() - 1);
-  for (vtkIdType f = 0; f < nf; ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      this->FaceList[fill[mesh.GetTriangle(f)[k]]++] = f;
-    }
-  }
-}
 
 // The grid over the used points, and the points' coordinates in its item order.
 void vtkMedialCoverage::Internals::BuildSlots(const std::vector<double>& points, const std::vector<char>& used)
@@ -350,9 +331,7 @@ vtkMedialCoverage::vtkMedialCoverage(const vtkMedialTriangleMesh& mesh, int thre
     }
     used[nv + f] = 1;
   }
-  m.BuildFaceLists();
   m.BuildSlots(points, used);
-  m.Stamp.assign(static_cast<size_t>(nf), 0);
 }
 
 vtkMedialCoverage::~vtkMedialCoverage() = default;
@@ -361,12 +340,14 @@ void vtkMedialCoverage::Initialize(
   const std::vector<vtkMedialSampleRecord>& records, const std::function<void()>& alongside)
 {
   Internals& m = *this->Impl;
-  std::vector<double> seeds;
+  std::vector<double> seeds, balls; // surface points; centres and radii
   for (const vtkMedialSampleRecord& r : records)
   {
     if (r.Valid)
     {
       seeds.insert(seeds.end(), r.Surface, r.Surface + 3);
+      balls.insert(balls.end(), r.Centre, r.Centre + 3);
+      balls.push_back(r.Radius);
     }
   }
   vtkMedialUniformGrid seedGrid;
@@ -395,7 +376,7 @@ void vtkMedialCoverage::Initialize(
     }
     if (!seeds.empty())
     {
-      m.StartValuesInTeam(seeds, seedGrid);
+      m.StartValuesInTeam(balls, seedGrid);
     }
     m.UpdateAllCellMaxInTeam();
     m.MaxGapInTeam();
@@ -407,9 +388,11 @@ void vtkMedialCoverage::Initialize(
   }
 }
 
-// Start value: distance to a nearby seed's surface point (an upper bound of the gap).
+// Start value: the gap to the balls of the seeds whose surface points are nearest (an
+// upper bound of the gap to all balls, and a tight one: the seeds' balls then search
+// few points).
 void vtkMedialCoverage::Internals::StartValuesInTeam(
-  const std::vector<double>& seeds, const vtkMedialUniformGrid& seedGrid)
+  const std::vector<double>& balls, const vtkMedialUniformGrid& seedGrid)
 {
   const vtkIdType slots = static_cast<vtkIdType>(this->Gap.size());
 #pragma omp for schedule(dynamic, 1024)
@@ -423,7 +406,8 @@ void vtkMedialCoverage::Internals::StartValuesInTeam(
     {
       const int lo[3] = { centre[0] - ring, centre[1] - ring, centre[2] - ring };
       const int hi[3] = { centre[0] + ring, centre[1] + ring, centre[2] + ring };
-      seedGrid.ForEachItemInBox(lo, hi, [&](vtkIdType i) { best = std::min(best, Distance(x, &seeds[3 * i])); });
+      seedGrid.ForEachItemInBox(
+        lo, hi, [&](vtkIdType i) { best = std::min(best, Distance(x, &balls[4 * i]) - balls[4 * i + 3]); });
     }
     this->Gap[s] = std::min(this->Gap[s], best);
   }
@@ -485,10 +469,9 @@ void vtkMedialCoverage::FindLowered(const double c[3], double r, std::vector<Low
   });
 }
 
-void vtkMedialCoverage::Apply(const std::vector<Lowering>& lowered, vtkIdType ball, std::vector<vtkIdType>* touched)
+void vtkMedialCoverage::Apply(const std::vector<Lowering>& lowered, vtkIdType ball)
 {
   Internals& m = *this->Impl;
-  ++m.CurrentStamp;
   vtkIdType changedCell = -1; // lowerings come in slot order, so mostly cell by cell
   for (const Lowering& l : lowered)
   {
@@ -506,20 +489,35 @@ void vtkMedialCoverage::Apply(const std::vector<Lowering>& lowered, vtkIdType ba
       }
       changedCell = m.CellOfSlot[l.Slot];
     }
-    if (touched)
-    {
-      m.ForEachFaceOf(m.PointOf[l.Slot], [&](vtkIdType f) {
-        if (m.Stamp[f] != m.CurrentStamp)
-        {
-          m.Stamp[f] = m.CurrentStamp;
-          touched->push_back(f);
-        }
-      });
-    }
   }
   if (changedCell >= 0)
   {
     m.UpdateCellMax(changedCell);
+  }
+}
+
+void vtkMedialCoverage::ApplyRound(
+  const std::vector<std::vector<Lowering>>& lowered, const std::vector<vtkIdType>& balls)
+{
+  Internals& m = *this->Impl;
+  const vtkIdType n = static_cast<vtkIdType>(balls.size());
+  if (n < 32)
+  {
+    // A few balls (closest-neighbor's last rounds): waking the team would cost more.
+    for (vtkIdType j = 0; j < n; ++j)
+    {
+      if (balls[j] >= 0)
+      {
+        this->Apply(lowered[j], balls[j]);
+      }
+    }
+    return;
+  }
+#pragma omp parallel num_threads(m.Threads)
+  {
+    m.ApplyInTeam(lowered, n, [&](vtkIdType j) { return balls[j]; });
+#pragma omp barrier
+    m.UpdateAllCellMaxInTeam();
   }
 }
 
@@ -535,10 +533,6 @@ void vtkMedialCoverage::Internals::AddBallsInTeam(
   const vtkMedialCoverage& coverage, const vtkMedialSampleRecord* records, vtkIdType count, vtkIdType firstBall)
 {
   std::vector<std::vector<Lowering>>& lowered = this->Pending;
-  const vtkIdType slots = static_cast<vtkIdType>(this->Gap.size());
-  const int threads = omp_get_num_threads();
-  const int thread = omp_get_thread_num();
-  const vtkIdType lo = slots * thread / threads, hi = slots * (thread + 1) / threads;
   for (vtkIdType begin = 0; begin < count; begin += Batch)
   {
     const vtkIdType n = std::min(Batch, count - begin);
@@ -553,17 +547,7 @@ void vtkMedialCoverage::Internals::AddBallsInTeam(
       }
     }
     // Each thread applies the lowerings of its own range of slots, in ball order.
-    for (vtkIdType j = 0; j < n; ++j)
-    {
-      for (const Lowering& l : lowered[j])
-      {
-        if (l.Slot >= lo && l.Slot < hi && l.Gap < this->Gap[l.Slot])
-        {
-          this->Gap[l.Slot] = l.Gap;
-          this->Owner[l.Slot] = firstBall + begin + j;
-        }
-      }
-    }
+    this->ApplyInTeam(lowered, n, [&](vtkIdType j) { return firstBall + begin + j; });
 #pragma omp barrier
   }
   this->UpdateAllCellMaxInTeam();
@@ -650,8 +634,12 @@ struct Runner
   Round Current;
   vtkIdType CountAtLastRound = 0;    // EndOfRound: samples at the previous round's end
   vtkIdType CountAtLastRefresh = -1; // and at the maximum's last refresh (-1: never)
-  std::vector<vtkIdType> SolveOrder, Near;
+  std::vector<vtkIdType> SolveOrder, Near, Balls;
   std::vector<int> Attempts; // FACE_DISTANCE: per face, own samples that failed to lower it
+  std::vector<double> FaceGaps; // FACE_DISTANCE: per face, its gap before the round
+  std::vector<double> FaceKeys; // and its priority: the gap halved for each failed own sample
+  std::vector<vtkIdType> Candidates;
+  std::vector<unsigned> Picked; // FACE_DISTANCE: per vertex, the last round a face of it was picked
 
   Runner(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
     const vtkMedialIterativeSettings& s, const std::function<bool(double)>& progress,
@@ -666,6 +654,12 @@ struct Runner
   }
 
   vtkIdType Count() const { return static_cast<vtkIdType>(this->R.Records.size()); }
+  // CLOSEST_NEIGHBOR chooses nothing by the coverage: without a coverage stop, its
+  // balls are added once, at the end, all in parallel.
+  bool DeferCoverage() const
+  {
+    return this->S.Strategy == vtkMedialIterativeSettings::CLOSEST_NEIGHBOR && !(this->S.CoverageTolerance > 0.0);
+  }
   vtkIdType RoundSize() const
   {
     return this->S.RoundSize > 0 ? this->S.RoundSize : std::max<vtkIdType>(64, this->S.Budget / 64);
@@ -680,8 +674,9 @@ struct Runner
   {
     const vtkIdType added = this->Count() - this->CountAtLastRound;
     this->CountAtLastRound = this->Count();
-    if (this->S.CoverageTolerance > 0.0 || this->CountAtLastRefresh < 0 ||
-      this->Count() - this->CountAtLastRefresh >= 8 * this->RoundSize())
+    if (!this->DeferCoverage() &&
+      (this->S.CoverageTolerance > 0.0 || this->CountAtLastRefresh < 0 ||
+        this->Count() - this->CountAtLastRefresh >= 8 * this->RoundSize()))
     {
       this->CountAtLastRefresh = this->Count();
       this->R.MaxGap = this->Coverage.MaxGap(added >= 32);
@@ -721,7 +716,10 @@ struct Runner
   // near slot j, or -1) in the tree's leaves: prepare(j, triangle, point, hint) sets
   // slot j's sample and a neighbouring ball's contact triangle as the solver's hint
   // (false: no sample), then its ball is solved and, when `lowered`, the coverage
-  // points the ball lowers are found (against the gaps before the round).
+  // points the ball lowers are found (against the gaps before the round). As in the
+  // Random strategy, runs of HintChain consecutive slots in that order go to one
+  // thread, each solve after the first hinted with the previous one's contact and
+  // blockers (the runs do not depend on the thread count).
   template <class Prepare>
   void SolveRound(vtkIdType n, bool lowered, const std::vector<vtkIdType>& near, Prepare&& prepare)
   {
@@ -738,28 +736,37 @@ struct Runner
       [&](vtkIdType a, vtkIdType b) { return rankOf(a) < rankOf(b) || (rankOf(a) == rankOf(b) && a < b); });
     // A small round (closest-neighbor's last ones, when few links are left) runs on
     // the calling thread: waking the team would cost more than it saves.
-#pragma omp parallel for num_threads(this->S.Threads) schedule(dynamic, 4) if (n >= 32)
-    for (vtkIdType k = 0; k < n; ++k)
+    const vtkIdType chains = (n + HintChain - 1) / HintChain;
+#pragma omp parallel for num_threads(this->S.Threads) schedule(dynamic, 1) if (n >= 32)
+    for (vtkIdType g = 0; g < chains; ++g)
     {
-      const vtkIdType j = order[k];
-      double* p = &round.Points[3 * j];
-      vtkIdType hint = -1;
-      round.Used[j] = prepare(j, round.Triangles[j], p, hint);
-      round.Lowered[j].clear();
-      if (!round.Used[j])
+      vtkMedialTriangleBVH::BlockerChain blockers; // the previous solve's
+      vtkIdType previous = -1;                     // its contact triangle
+      for (vtkIdType k = g * HintChain; k < std::min(n, (g + 1) * HintChain); ++k)
       {
-        continue;
-      }
-      vtkMedialSampleRecord& ball = round.Balls[j];
-      vtkMedialSolveBall(this->Query, this->Mesh, this->S.Ball, round.Triangles[j], p, ball, hint);
-      if (lowered && ball.Valid)
-      {
-        this->Coverage.FindLowered(ball.Centre, ball.Radius, round.Lowered[j]);
+        const vtkIdType j = order[k];
+        double* p = &round.Points[3 * j];
+        vtkIdType hint = -1;
+        round.Used[j] = prepare(j, round.Triangles[j], p, hint);
+        round.Lowered[j].clear();
+        if (!round.Used[j])
+        {
+          continue;
+        }
+        vtkMedialSampleRecord& ball = round.Balls[j];
+        vtkMedialSolveBall(this->Query, this->Mesh, this->S.Ball, round.Triangles[j], p, ball,
+          previous >= 0 ? previous : hint, &blockers);
+        previous = ball.Valid ? ball.ContactTriangle : -1;
+        if (lowered && ball.Valid)
+        {
+          this->Coverage.FindLowered(ball.Centre, ball.Radius, round.Lowered[j]);
+        }
       }
     }
   }
 
   void FaceDistance();
+  void PickFaces(vtkIdType room, unsigned roundIndex, std::vector<vtkIdType>& faces);
   void ClosestNeighbor();
 
   // CLOSEST_NEIGHBOR's passes (see the header).
@@ -768,17 +775,6 @@ struct Runner
   bool LinkMidpoint(const Segment& link, double shortest, vtkIdType& triangle, double point[3]) const;
   vtkIdType DrawFacePoint(vtkIdType face, vtkIdType draw, double point[3]) const;
   void CollectLinks(const std::vector<Segment>& segments, vtkIdType initialLinks);
-};
-
-struct FaceEntry
-{
-  double Gap;
-  vtkIdType Face;
-  unsigned Version;
-  bool operator<(const FaceEntry& o) const // max-heap on Gap; ties: smaller face first
-  {
-    return this->Gap < o.Gap || (this->Gap == o.Gap && this->Face > o.Face);
-  }
 };
 
 // A random point on the face, drawn toward its least covered point w from the
@@ -802,70 +798,81 @@ vtkIdType Runner::DrawFacePoint(vtkIdType face, vtkIdType draw, double p[3]) con
   return owner;
 }
 
+// The worst faces, at most `room`, none sharing a vertex with another (one ball
+// covers around its face: a neighbour waits for the next round, up to 4 room of
+// them); faces within the tolerance or given up are not candidates.
+void Runner::PickFaces(vtkIdType room, unsigned roundIndex, std::vector<vtkIdType>& faces)
+{
+  const vtkIdType nf = this->Mesh.GetNumberOfTriangles();
+  std::vector<double>& gap = this->FaceGaps;
+  std::vector<double>& key = this->FaceKeys;
+  std::vector<vtkIdType>& candidates = this->Candidates;
+  gap.resize(static_cast<size_t>(nf));
+  key.resize(static_cast<size_t>(nf));
+  candidates.clear();
+#pragma omp parallel num_threads(this->S.Threads)
+  {
+    std::vector<vtkIdType> mine;
+#pragma omp for schedule(static) nowait
+    for (vtkIdType f = 0; f < nf; ++f)
+    {
+      gap[f] = this->Coverage.FaceGap(f);
+      if (gap[f] > this->S.CoverageTolerance && this->Attempts[f] < this->S.MaximumFaceAttempts)
+      {
+        mine.push_back(f);
+      }
+      key[f] = this->Attempts[f] > 0 ? std::ldexp(gap[f], -this->Attempts[f]) : gap[f];
+    }
+#pragma omp critical(vtkMedialPickFaces)
+    candidates.insert(candidates.end(), mine.begin(), mine.end());
+  }
+  // Worst first, lower face ids first among ties: the order does not depend on the
+  // threads' merge order above.
+  const auto worse = [&](vtkIdType a, vtkIdType b) { return key[a] > key[b] || (key[a] == key[b] && a < b); };
+  const size_t keep = std::min(candidates.size(), static_cast<size_t>(5 * room));
+  std::nth_element(candidates.begin(), candidates.begin() + keep, candidates.end(), worse);
+  std::sort(candidates.begin(), candidates.begin() + keep, worse);
+  faces.clear();
+  vtkIdType deferred = 0;
+  for (size_t k = 0; k < keep && static_cast<vtkIdType>(faces.size()) < room && deferred < 4 * room; ++k)
+  {
+    const vtkIdType f = candidates[k];
+    const vtkIdType* t = this->Mesh.GetTriangle(f);
+    if (this->Picked[t[0]] == roundIndex || this->Picked[t[1]] == roundIndex || this->Picked[t[2]] == roundIndex)
+    {
+      ++deferred;
+      continue;
+    }
+    this->Picked[t[0]] = this->Picked[t[1]] = this->Picked[t[2]] = roundIndex;
+    faces.push_back(f);
+  }
+}
+
 void Runner::FaceDistance()
 {
   const vtkIdType nf = this->Mesh.GetNumberOfTriangles();
   const double tol = this->S.CoverageTolerance;
-  std::vector<unsigned> version(static_cast<size_t>(nf), 0);
-  std::vector<int>& attempts = this->Attempts;
-  attempts.assign(static_cast<size_t>(nf), 0);
-  std::vector<double> key(static_cast<size_t>(nf));
-  std::vector<unsigned> round(static_cast<size_t>(nf), 0); // round in which the face was pushed last
-  std::priority_queue<FaceEntry> heap;
-  for (vtkIdType f = 0; f < nf; ++f)
-  {
-    key[f] = this->Coverage.FaceGap(f);
-    if (key[f] > tol)
-    {
-      heap.push({ key[f], f, 0 });
-    }
-  }
-  auto push = [&](vtkIdType f) {
-    ++version[f];
-    if (key[f] > tol && attempts[f] < this->S.MaximumFaceAttempts)
-    {
-      heap.push({ key[f], f, version[f] });
-    }
-  };
+  this->Attempts.assign(static_cast<size_t>(nf), 0);
+  this->Picked.assign(this->Mesh.Points.size() / 3, 0);
   vtkIdType drawn = 0; // index of the face-sample stream
   unsigned roundIndex = 0;
-  std::vector<vtkIdType> faces, touched, failed;
-  std::vector<FaceEntry> deferred;
-  std::vector<unsigned> picked(this->Mesh.Points.size() / 3, 0); // per vertex: last round a face of it was picked
+  std::vector<vtkIdType> faces, balls;
+  std::vector<double> before;
   if (this->EndOfRound())
   {
     return;
   }
-  while (this->Count() < this->S.Budget && !heap.empty())
+  while (this->Count() < this->S.Budget)
   {
-    ++roundIndex;
-    faces.clear();
-    const vtkIdType room = std::min<vtkIdType>(this->RoundSize(), this->S.Budget - this->Count());
-    // The worst faces, but no two with a common vertex: one ball covers around its
-    // face, so a neighbour waits for the next round (up to 4 room waiting entries).
-    deferred.clear();
-    while (static_cast<vtkIdType>(faces.size()) < room && !heap.empty() &&
-      static_cast<vtkIdType>(deferred.size()) < 4 * room)
+    // A quarter of what is left, at least RoundSize: the first rounds are large (their
+    // samples lie close together, so the solves share caches and hints), the last ones
+    // RoundSize, where the choice of the very worst faces matters most.
+    const vtkIdType left = this->S.Budget - this->Count();
+    const vtkIdType room = std::min<vtkIdType>(std::max<vtkIdType>(this->RoundSize(), left / 4), left);
+    this->PickFaces(room, ++roundIndex, faces);
+    if (faces.empty())
     {
-      const FaceEntry e = heap.top();
-      heap.pop();
-      if (e.Version != version[e.Face] || attempts[e.Face] >= this->S.MaximumFaceAttempts)
-      {
-        continue; // stale (the face's gap changed since), or given up
-      }
-      const vtkIdType* t = this->Mesh.GetTriangle(e.Face);
-      if (picked[t[0]] == roundIndex || picked[t[1]] == roundIndex || picked[t[2]] == roundIndex)
-      {
-        deferred.push_back(e);
-        continue;
-      }
-      picked[t[0]] = picked[t[1]] = picked[t[2]] = roundIndex;
-      ++version[e.Face]; // consumed: no other live entry remains
-      faces.push_back(e.Face);
-    }
-    for (const FaceEntry& e : deferred)
-    {
-      heap.push(e);
+      break;
     }
     const vtkIdType firstDraw = drawn;
     drawn += static_cast<vtkIdType>(faces.size());
@@ -875,43 +882,29 @@ void Runner::FaceDistance()
       hint = owner >= 0 ? this->R.Records[owner].ContactTriangle : -1;
       return true;
     });
-    // In sample order: the balls' lowerings; a face whose own sample leaves its gap
-    // as it was counts a failed attempt.
-    touched.clear();
-    failed.clear();
+    // The balls in sample order (numbered as they are kept), then their lowerings at once.
+    balls.assign(faces.size(), -1);
     for (size_t j = 0; j < faces.size(); ++j)
     {
-      const vtkIdType f = faces[j];
-      const double before = this->Coverage.FaceGap(f);
       if (this->Taken.Insert(&this->Current.Points[3 * j]))
       {
-        this->Coverage.Apply(this->Current.Lowered[j], this->Count(), &touched);
+        balls[j] = this->Count();
         this->R.Records.push_back(this->Current.Balls[j]);
       }
-      if (this->Coverage.FaceGap(f) == before)
-      {
-        ++attempts[f]; // try again, up to the cap
-        failed.push_back(f);
-      }
     }
-    // Each face whose gap changed gets one live entry with its new gap; so does each
-    // consumed face whose own sample failed.
-    for (vtkIdType g : touched)
+    before.resize(faces.size());
+    for (size_t j = 0; j < faces.size(); ++j)
     {
-      const double now = this->Coverage.FaceGap(g);
-      if (now != key[g])
-      {
-        key[g] = now;
-        round[g] = roundIndex;
-        push(g);
-      }
+      before[j] = this->FaceGaps[faces[j]];
     }
-    for (vtkIdType f : failed)
+    this->Coverage.ApplyRound(this->Current.Lowered, balls);
+    // A face whose gap the round left as it was counts a failed attempt (by default
+    // it is then given up: its worst point is out of its samples' reach).
+    for (size_t j = 0; j < faces.size(); ++j)
     {
-      if (round[f] != roundIndex)
+      if (this->Coverage.FaceGap(faces[j]) == before[j])
       {
-        round[f] = roundIndex;
-        push(f);
+        ++this->Attempts[faces[j]];
       }
     }
     if (this->EndOfRound())
@@ -922,7 +915,7 @@ void Runner::FaceDistance()
   this->R.GivenUpFaces = 0;
   for (vtkIdType f = 0; f < nf; ++f)
   {
-    this->R.GivenUpFaces += key[f] > tol && attempts[f] >= this->S.MaximumFaceAttempts ? 1 : 0;
+    this->R.GivenUpFaces += this->Attempts[f] >= this->S.MaximumFaceAttempts && this->Coverage.FaceGap(f) > tol ? 1 : 0;
   }
 }
 
@@ -1033,6 +1026,10 @@ void Runner::ClosestNeighbor()
   const vtkIdType initialLinks = static_cast<vtkIdType>(segments.size());
   this->SplitLinks(segments);
   this->CollectLinks(segments, initialLinks);
+  if (this->DeferCoverage() && !this->R.Aborted)
+  {
+    this->Coverage.AddBalls(this->R.Records.data() + this->R.Seeds, this->Count() - this->R.Seeds, this->R.Seeds);
+  }
 }
 
 // Step 1: chains of closest, unlinked, non-overlapping seeds. False when aborted.
@@ -1119,11 +1116,12 @@ void Runner::SplitLinks(std::vector<Segment>& segments)
     {
       this->Near.push_back(rec[segments[i].A].ContactTriangle);
     }
-    this->SolveRound(static_cast<vtkIdType>(popped.size()), true, this->Near,
+    this->SolveRound(static_cast<vtkIdType>(popped.size()), !this->DeferCoverage(), this->Near,
       [&](vtkIdType j, vtkIdType& t, double p[3], vtkIdType& hint) {
         hint = rec[segments[popped[j]].A].ContactTriangle;
         return this->LinkMidpoint(segments[popped[j]], shortest, t, p);
       });
+    this->Balls.assign(popped.size(), -1);
     for (size_t j = 0; j < popped.size(); ++j)
     {
       if (!round.Used[j] || !this->Taken.Insert(&round.Points[3 * j]))
@@ -1136,7 +1134,7 @@ void Runner::SplitLinks(std::vector<Segment>& segments)
       {
         continue;
       }
-      this->Coverage.Apply(round.Lowered[j], m, nullptr);
+      this->Balls[j] = m;
       const vtkIdType i = popped[j];
       const Segment parent = segments[i];
       const vtkIdType left = static_cast<vtkIdType>(segments.size());
@@ -1146,6 +1144,10 @@ void Runner::SplitLinks(std::vector<Segment>& segments)
       segments[i].Child[1] = left + 1;
       pushIfApart(left);
       pushIfApart(left + 1);
+    }
+    if (!this->DeferCoverage())
+    {
+      this->Coverage.ApplyRound(round.Lowered, this->Balls);
     }
     stop = this->EndOfRound();
   }
