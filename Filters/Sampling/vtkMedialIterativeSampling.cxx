@@ -637,7 +637,6 @@ struct Runner
   std::vector<vtkIdType> SolveOrder, Near, Balls;
   std::vector<int> Attempts; // FACE_DISTANCE: per face, own samples that failed to lower it
   std::vector<double> FaceGaps; // FACE_DISTANCE: per face, its gap before the round
-  std::vector<double> FaceKeys; // and its priority: the gap halved for each failed own sample
   std::vector<vtkIdType> Candidates;
   std::vector<unsigned> Picked; // FACE_DISTANCE: per vertex, the last round a face of it was picked
 
@@ -805,10 +804,8 @@ void Runner::PickFaces(vtkIdType room, unsigned roundIndex, std::vector<vtkIdTyp
 {
   const vtkIdType nf = this->Mesh.GetNumberOfTriangles();
   std::vector<double>& gap = this->FaceGaps;
-  std::vector<double>& key = this->FaceKeys;
   std::vector<vtkIdType>& candidates = this->Candidates;
   gap.resize(static_cast<size_t>(nf));
-  key.resize(static_cast<size_t>(nf));
   candidates.clear();
 #pragma omp parallel num_threads(this->S.Threads)
   {
@@ -821,14 +818,13 @@ void Runner::PickFaces(vtkIdType room, unsigned roundIndex, std::vector<vtkIdTyp
       {
         mine.push_back(f);
       }
-      key[f] = this->Attempts[f] > 0 ? std::ldexp(gap[f], -this->Attempts[f]) : gap[f];
     }
 #pragma omp critical(vtkMedialPickFaces)
     candidates.insert(candidates.end(), mine.begin(), mine.end());
   }
   // Worst first, lower face ids first among ties: the order does not depend on the
   // threads' merge order above.
-  const auto worse = [&](vtkIdType a, vtkIdType b) { return key[a] > key[b] || (key[a] == key[b] && a < b); };
+  const auto worse = [&](vtkIdType a, vtkIdType b) { return gap[a] > gap[b] || (gap[a] == gap[b] && a < b); };
   const size_t keep = std::min(candidates.size(), static_cast<size_t>(5 * room));
   std::nth_element(candidates.begin(), candidates.begin() + keep, candidates.end(), worse);
   std::sort(candidates.begin(), candidates.begin() + keep, worse);
@@ -864,11 +860,11 @@ void Runner::FaceDistance()
   }
   while (this->Count() < this->S.Budget)
   {
-    // A quarter of what is left, at least RoundSize: the first rounds are large (their
+    // An eighth of what is left, at least RoundSize: the first rounds are large (their
     // samples lie close together, so the solves share caches and hints), the last ones
     // RoundSize, where the choice of the very worst faces matters most.
     const vtkIdType left = this->S.Budget - this->Count();
-    const vtkIdType room = std::min<vtkIdType>(std::max<vtkIdType>(this->RoundSize(), left / 4), left);
+    const vtkIdType room = std::min<vtkIdType>(std::max<vtkIdType>(this->RoundSize(), left / 8), left);
     this->PickFaces(room, ++roundIndex, faces);
     if (faces.empty())
     {
@@ -898,8 +894,7 @@ void Runner::FaceDistance()
       before[j] = this->FaceGaps[faces[j]];
     }
     this->Coverage.ApplyRound(this->Current.Lowered, balls);
-    // A face whose gap the round left as it was counts a failed attempt (by default
-    // it is then given up: its worst point is out of its samples' reach).
+    // A face whose gap the round left as it was counts a failed attempt.
     for (size_t j = 0; j < faces.size(); ++j)
     {
       if (this->Coverage.FaceGap(faces[j]) == before[j])

@@ -33,10 +33,9 @@
  * samples (the drawback of both strategies in the report) cannot occur.
  *
  * FACE_DISTANCE. Each round computes every face's gap (in parallel) and takes the
- * worst faces first, by their gap halved for each earlier own sample that failed
- * to lower it (ties: lower face id), but no two with a common vertex (a ball covers
- * around its face: a neighbour waits for a later round; at most 4 room faces wait
- * per round). A round takes a quarter of the samples left, at least RoundSize: the
+ * worst faces first (ties: lower face id), but no two with a common vertex (a ball
+ * covers around its face: a neighbour waits for a later round; at most 4 room faces
+ * wait per round). A round takes an eighth of the samples left, at least RoundSize: the
  * first rounds are large, so that their samples lie close together in the tree's
  * leaves and their solves share caches and hints; the last ones are small, where
  * the choice of the very worst faces matters most. It draws on each face a random
@@ -46,9 +45,7 @@
  * first solve hinted with the contact triangle of the ball nearest to w) and adds
  * them in index order. A face whose own samples fail to lower its gap
  * MaximumFaceAttempts times (e.g. next to a hole, or a vertex no admissible ball
- * reaches) is given up. Halving a failed face's priority, instead of retrying it
- * at once, sends the samples to the faces they can still cover: on horse.ply 76%
- * of the samples used to be such retries.
+ * reaches) is given up.
  *
  * CLOSEST_NEIGHBOR. Step 1 chains the seeds: from the first unlinked seed, link to
  * the closest seed that has no link yet and whose ball does not overlap the
