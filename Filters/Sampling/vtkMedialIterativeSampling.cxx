@@ -89,6 +89,25 @@ struct Round
   }
 };
 
+// near[k] = 1 when the point (xs[k], ys[k], zs[k]) of gap gs[k] may come within its
+// gap of the sphere (c, r): a square test with a margin, without branches so that it
+// vectorises. True when any may.
+bool MayBeLowered(const double* xs, const double* ys, const double* zs, const double* gs, vtkIdType n,
+  const double c[3], double r, std::int64_t* near)
+{
+  const double cx = c[0], cy = c[1], cz = c[2];
+  std::int64_t any = 0;
+#pragma omp simd reduction(| : any)
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    const double dx = xs[k] - cx, dy = ys[k] - cy, dz = zs[k] - cz;
+    const double within = r + gs[k];
+    near[k] = (within > 0.0 && dx * dx + dy * dy + dz * dz <= within * within * (1.0 + 1e-9)) ? 1 : 0;
+    any |= near[k];
+  }
+  return any != 0;
+}
+
 // Poisson-disk seeds by dart throwing (see the header); returns their surface points.
 void ThrowDarts(const vtkMedialTriangleMesh& mesh, const vtkMedialIterativeSettings& s,
   vtkIdType wanted, std::vector<vtkIdType>& triangles, std::vector<double>& points)
@@ -447,22 +466,29 @@ void vtkMedialCoverage::FindLowered(const double c[3], double r, std::vector<Low
         continue;
       }
       const vtkIdType end = m.Grid.ItemOffset(row + i + 1);
-
-      for (vtkIdType s = m.Grid.ItemOffset(row + i); s < end; ++s)
+      // Most points are not lowered (about 1 in 300 on horse.ply): a square test with
+      // a margin first, over a run of points at once without branches (so that it
+      // vectorises), then the exact gap (and its decision) only for the few that pass.
+      constexpr vtkIdType Run = 64;
+      std::int64_t near[Run]; // as wide as a double, so that the test vectorises
+      for (vtkIdType first = m.Grid.ItemOffset(row + i); first < end; first += Run)
       {
-        const double d[3] = { x[s] - c[0], y[s] - c[1], z[s] - c[2] };
-        const double d2 = G::Dot(d, d);
-        // Most points are not lowered: a square test with a margin first, the exact
-        // gap (and its decision) only for the few that may be.
-        const double within = r + gap[s];
-        if (!(within > 0.0) || d2 > within * within * (1.0 + 1e-9))
+        const vtkIdType n = std::min(Run, end - first);
+        const double *xs = x + first, *ys = y + first, *zs = z + first, *gs = gap + first;
+        const bool any = MayBeLowered(xs, ys, zs, gs, n, c, r, near);
+        for (vtkIdType k = 0; any && k < n; ++k)
         {
-          continue;
-        }
-        const double g = std::sqrt(d2) - r;
-        if (g < gap[s])
-        {
-          lowered.push_back({ s, g });
+          if (!near[k])
+          {
+            continue;
+          }
+          const vtkIdType s = first + k;
+          const double d[3] = { x[s] - c[0], y[s] - c[1], z[s] - c[2] };
+          const double g = std::sqrt(G::Dot(d, d)) - r;
+          if (g < gap[s])
+          {
+            lowered.push_back({ s, g });
+          }
         }
       }
     }
