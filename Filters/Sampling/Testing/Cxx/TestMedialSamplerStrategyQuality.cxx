@@ -10,7 +10,6 @@
 
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialShapeSource.h"
-#include "vtkTriangleFilter.h"
 
 #include <cstdlib>
 
@@ -43,18 +42,14 @@ int TestMedialSamplerStrategyQuality(int, char*[])
 {
   for (int shape : { vtkMedialShapeSource::JACK, vtkMedialShapeSource::CAPSULE })
   {
-    vtkNew<vtkMedialShapeSource> source;
-    source->SetShape(shape);
-    vtkNew<vtkTriangleFilter> triangles;
-    triangles->SetInputConnection(source->GetOutputPort());
-    triangles->Update();
+    const vtkSmartPointer<vtkPolyData> surface = TriangulatedShape(shape);
     const char* shapeName = shape == vtkMedialShapeSource::JACK ? "jack" : "capsule";
     for (int strategy : { vtkMedialAxisSampler::FACE_DISTANCE, vtkMedialAxisSampler::CLOSEST_NEIGHBOR })
     {
       const char* name = vtkMedialAxisSampler::GetSamplingStrategyName(strategy);
       vtkIdType used = 0, randomUsed = 0;
-      const double gap = RunGap(triangles->GetOutput(), strategy, 4000, used);
-      const double randomGap = RunGap(triangles->GetOutput(), vtkMedialAxisSampler::RANDOM, used, randomUsed);
+      const double gap = RunGap(surface, strategy, 4000, used);
+      const double randomGap = RunGap(surface, vtkMedialAxisSampler::RANDOM, used, randomUsed);
       std::printf("%s, %s: %lld samples, largest gap %.6g of the diagonal; random at %lld samples %.6g (ratio %.3f)\n",
         shapeName, name, static_cast<long long>(used), gap, static_cast<long long>(randomUsed), randomGap,
         gap / randomGap);
