@@ -140,8 +140,8 @@ public:
   ///  - CLOSEST_NEIGHBOR: Poisson-disk seeds chained to their closest non-overlapping
   ///    unlinked neighbour, the longest links split at the surface point between
   ///    their ends until consecutive balls overlap; the links are output as lines;
-  ///  - FACE_DISTANCE: Poisson-disk seeds, then the face farthest from the union of
-  ///    balls is sampled next (a max-heap with lazy deletion).
+  ///  - FACE_DISTANCE: Poisson-disk seeds, then the faces farthest from the union of
+  ///    balls are sampled next, round by round.
   /// The two iterative strategies stop at the budget (NumberOfSamples, seeds
   /// included), when CoverageTolerance is reached, or when they run out of work
   /// (CLOSEST_NEIGHBOR: every link's balls overlap; if a CoverageTolerance is set
