@@ -3,7 +3,8 @@
 #  - 2D: the medial graph of the trefoil (a rounded 3-armed star, 608 vertices) before and
 #    after --prune (tubularity): 477 end points become 3;
 #  - 3D: the medial mesh of horse.ply with Gaussian noise (sigma 0.1% of the diagonal per
-#    coordinate) before and after --prune (the scale axis of the balls).
+#    coordinate) before and after --prune (the scale axis of the balls), and after
+#    --denoise --prune (the surface smoothed first; the picture draws the smoothed surface).
 #
 #   sh scripts/prune-pictures.sh [BUILD_DIR] [MESH_DIR] [OUT_DIR]
 #
@@ -40,4 +41,5 @@ writer.Write()
 PY
 "$cli" "$scratch/noisy-horse.vtp" --medial-mesh "$scratch/m.vtp" --render "$out/prune-3d-before.png" --quiet
 "$cli" "$scratch/noisy-horse.vtp" --prune --medial-mesh "$scratch/m.vtp" --render "$out/prune-3d-after.png" --quiet
-echo "wrote $out/prune-2d-before.png prune-2d-after.png prune-3d-before.png prune-3d-after.png"
+"$cli" "$scratch/noisy-horse.vtp" --denoise --prune --medial-mesh "$scratch/m.vtp" --render "$out/prune-3d-denoised.png" --quiet
+echo "wrote $out/prune-2d-before.png prune-2d-after.png prune-3d-before.png prune-3d-after.png prune-3d-denoised.png"

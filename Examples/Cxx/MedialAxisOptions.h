@@ -33,6 +33,9 @@ struct Options
   std::string Junctions;   // --junctions: the 2D medial graph
   std::string Thickness;   // --thickness: the surface with its wall thickness
   std::string MedialMesh;  // --medial-mesh: the 3D medial mesh
+  bool Denoise = false;          // --denoise, --denoise-*: the surface smoothed first
+  int DenoiseIterations = 0;     // --denoise-iterations (0: vtkMedialDenoiseFilter's default)
+  double DenoisePassBand = -1.0; // --denoise-passband (negative: the filter's default)
   bool Prune = false;            // --prune, --prune-threshold: the graph or medial mesh pruned
   double PruneThreshold = -1.0;  // negative: the measure's default
   long long Simplify = 0;        // --simplify K: the medial mesh reduced to K balls

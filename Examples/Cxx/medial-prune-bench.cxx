@@ -13,16 +13,21 @@
 //     the reconstruction (vtkMedialBallUnion MEDIAL_MESH envelope at N^3) against the
 //     CLEAN surface (vtkMedialReconstructionError: vertex Hausdorff, the larger of both
 //     directions, and the mean), and its ratio to the clean unpruned reconstruction's.
+//     Three more rows per noise level smooth the surface first, as `medial-axis --denoise`
+//     does (vtkMedialDenoiseFilter; its default pass band unless --denoise-passband X):
+//     "denoised s=1.3" and "s=1.5" (the scale axis of the balls, then the mesh) and
+//     "--denoise --prune" (s = 1.3, then the mesh pruned by the scale axis measure too).
 //  3. K balls: horse, fandisk, rocker-arm and spot (not tuned on) meshed, then simplified to K = 500, 100, 30
 //     vertices by each method (quadric with its guard, the default; quadric unguarded, ErrorTolerance 0; coverage)
 //     (and, K = all, the unsimplified mesh); the envelope's two-sided vertex
 //     Hausdorff to the original (% of the diagonal), and the seconds of sampling + meshing + simplifying (the pipeline from
 //     mesh to K balls) and of simplifying alone.
 //
-// usage: medial-prune-bench [--threads T] [--resolution N] [--tables 123]
+// usage: medial-prune-bench [--threads T] [--resolution N] [--tables 123] [--denoise-passband X]
 
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialBallUnion.h"
+#include "vtkMedialDenoiseFilter.h"
 #include "vtkMedialFileReader.h"
 #include "vtkMedialJunctionFilter.h"
 #include "vtkMedialMeshFilter.h"
@@ -288,12 +293,33 @@ double OneSidedHausdorff(vtkPolyData* from, vtkPolyData* to)
   return worst;
 }
 
-vtkSmartPointer<vtkPolyData> Prune(vtkPolyData* mesh, int measure)
+vtkSmartPointer<vtkPolyData> Prune(vtkPolyData* mesh, int measure, double threshold = -1.0)
 {
   vtkNew<vtkMedialPruneFilter> prune;
   prune->SetInputData(mesh);
   prune->SetMeasure(measure);
+  if (threshold >= 0.0)
+  {
+    prune->SetThreshold(threshold);
+  }
   return Output(prune);
+}
+
+// `medial-axis --denoise --prune`'s scale (MedialAxisOptions: the smoothing leaves less
+// noise for the scale axis to cover); --denoise-passband X overrides the filter's default.
+const double DenoisedPruneScale = 1.3;
+double DenoisePassBand = -1.0;
+
+// The surface smoothed as `medial-axis --denoise` smooths it.
+vtkSmartPointer<vtkPolyData> Denoise(vtkPolyData* surface)
+{
+  vtkNew<vtkMedialDenoiseFilter> denoise;
+  denoise->SetInputData(surface);
+  if (DenoisePassBand > 0.0)
+  {
+    denoise->SetPassBand(DenoisePassBand);
+  }
+  return Output(denoise);
 }
 
 void NoisyHorseTable(int threads, int resolution)
@@ -331,16 +357,43 @@ void NoisyHorseTable(int threads, int resolution)
     vtkSmartPointer<vtkPolyData> surface = noise > 0.0 ? AddNoise(clean, noise, 7) : clean;
     vtkSmartPointer<vtkPolyData> balls = noise > 0.0 ? DefaultBalls(surface, threads) : cleanBalls;
     vtkSmartPointer<vtkPolyData> mesh = noise > 0.0 ? MeshOf(surface, balls, threads) : cleanMesh;
-    // -1: unpruned; the prune filter's measures on the mesh; last: the scale axis on the balls.
-    for (int m = -1; m <= vtkMedialPruneFilter::SCALE_AXIS + 1; ++m)
+    vtkSmartPointer<vtkPolyData> smoothed = Denoise(surface);
+    vtkSmartPointer<vtkPolyData> smoothedBalls = DefaultBalls(smoothed, threads);
+    // -1: unpruned; the prune filter's measures on the mesh; then the scale axis on the
+    // balls; then on the smoothed surface at both scales, and `--denoise --prune` (its
+    // scale, then the mesh pruned by the scale axis measure at the same threshold).
+    const int scaleOnBalls = vtkMedialPruneFilter::SCALE_AXIS + 1, denoisedLast = scaleOnBalls + 3;
+    for (int m = -1; m <= denoisedLast; ++m)
     {
-      const bool onBalls = m > vtkMedialPruneFilter::SCALE_AXIS;
-      vtkSmartPointer<vtkPolyData> kept =
-        m < 0 ? mesh : (onBalls ? MeshOf(surface, balls, threads, scale) : Prune(mesh, m));
+      vtkSmartPointer<vtkPolyData> kept;
+      std::string name = "balls s=" + std::to_string(scale).substr(0, 4);
+      if (m < 0)
+      {
+        kept = mesh;
+        name = "(unpruned)";
+      }
+      else if (m < scaleOnBalls)
+      {
+        kept = Prune(mesh, m);
+        name = vtkMedialPruneFilter::GetMeasureName(m);
+      }
+      else if (m == scaleOnBalls)
+      {
+        kept = MeshOf(surface, balls, threads, scale);
+      }
+      else if (m < denoisedLast)
+      {
+        const double s = m == scaleOnBalls + 1 ? DenoisedPruneScale : scale;
+        kept = MeshOf(smoothed, smoothedBalls, threads, s);
+        name = "denoised s=" + std::to_string(s).substr(0, 4);
+      }
+      else
+      {
+        kept = Prune(MeshOf(smoothed, smoothedBalls, threads, DenoisedPruneScale), vtkMedialPruneFilter::SCALE_AXIS,
+          1.0 - 1.0 / DenoisedPruneScale);
+        name = "--denoise --prune";
+      }
       const Reconstruction r = Rebuild(kept, clean, resolution, threads);
-      const std::string name = m < 0 ? "(unpruned)"
-                                     : (onBalls ? "balls s=" + std::to_string(scale).substr(0, 4)
-                                                : vtkMedialPruneFilter::GetMeasureName(m));
       std::printf("%-7.1f %-18s %8lld %8lld %10.3f %10.3f %9.3f %9.4f %7.2f\n", 100 * noise, name.c_str(),
         static_cast<long long>(kept->GetNumberOfPoints()), static_cast<long long>(kept->GetNumberOfPolys()),
         100 * OneSidedHausdorff(kept, cleanMesh) / diagonal,
@@ -426,9 +479,13 @@ int main(int argc, char* argv[])
     {
       tables = argv[++i];
     }
+    else if (a == "--denoise-passband" && i + 1 < argc)
+    {
+      DenoisePassBand = std::atof(argv[++i]);
+    }
     else
     {
-      std::printf("usage: medial-prune-bench [--threads T] [--resolution N] [--tables 123]\n");
+      std::printf("usage: medial-prune-bench [--threads T] [--resolution N] [--tables 123] [--denoise-passband X]\n");
       return a == "-h" || a == "--help" ? 0 : 1;
     }
   }

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Pruning and simplification: the 2D graph of a finely polygonised trefoil pruned to its
-3 true branches, the balls of a noisy sphere reduced by the scale axis transform, and the
-medial mesh of the demo jack simplified to K balls.
+3 true branches, the balls of a noisy sphere reduced by the scale axis transform (and the
+same after vtkMedialDenoiseFilter smoothed the sphere first), and the medial mesh of the demo
+jack simplified to K balls.
 
 Usage (from the build tree):
   PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 Examples/Python/prune_simplify.py [K]
@@ -61,6 +62,23 @@ far = [np.max(np.linalg.norm(vtk_to_numpy(b.GetPoints().GetData()), axis=1))
 print(f"noisy sphere: {sphere_balls.GetOutput().GetNumberOfPoints()} balls reaching {far[0]:.3f} from the "
       f"centre -> {scale_axis.GetOutput().GetNumberOfPoints()} balls within {far[1]:.3f} "
       f"(scale {scale_axis.GetScaleFactor():g}, {scale_axis.GetNumberOfRemovedBalls()} removed)")
+
+# The same noisy sphere smoothed first (vtkMedialDenoiseFilter, as medial-axis --denoise),
+# then the scale axis at 1.3 (the scale --denoise --prune uses).
+denoise = medialaxis.vtkMedialDenoiseFilter()
+denoise.SetInputData(noisy)
+smoothed_balls = medialaxis.vtkMedialAxisSampler()
+smoothed_balls.SetInputConnection(denoise.GetOutputPort())
+smoothed_balls.SetNumberOfSamples(3000)
+smoothed_axis = medialaxis.vtkMedialScaleAxisFilter()
+smoothed_axis.SetInputConnection(smoothed_balls.GetOutputPort())
+smoothed_axis.SetScaleFactor(1.3)
+smoothed_axis.Update()
+far = [np.max(np.linalg.norm(vtk_to_numpy(b.GetPoints().GetData()), axis=1))
+       for b in (smoothed_balls.GetOutput(), smoothed_axis.GetOutput())]
+print(f"denoised sphere (vertices moved up to {denoise.GetMaximumDisplacement():.4f} of the diagonal): "
+      f"balls reaching {far[0]:.3f} from the centre -> {smoothed_axis.GetOutput().GetNumberOfPoints()} balls "
+      f"within {far[1]:.3f} (scale 1.3)")
 
 k = int(sys.argv[1]) if len(sys.argv) > 1 else 50
 jack = medialaxis.vtkMedialShapeSource()  # the demo solid (JACK)

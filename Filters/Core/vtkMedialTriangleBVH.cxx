@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <optional>
 
@@ -33,6 +34,10 @@ constexpr std::int32_t SlabMaximumTriangles = 1 << 14;
 constexpr std::int32_t LeafCodeScale = 8;
 // Build passes over more triangles than this (the top levels) run on every thread.
 constexpr std::int32_t ParallelRange = 1 << 16;
+// Partitions of more triangles than this (the first levels) run on every thread. Each
+// takes four parallel regions, and on a loaded machine a region's join waits until the
+// host runs every thread: below this, a serial partition is cheaper.
+constexpr std::int32_t ParallelPartitionRange = 1 << 18;
 
 template <class T>
 double BoxDistance2(const T lo[3], const T hi[3], const double x[3])
@@ -256,16 +261,38 @@ private:
   float Margin = 0.0f, ConeSin2 = 0.0f, Radius = 0.0f, Reach2 = 0.0f;
 };
 
+// std::nextafter(f, -HUGE_VALF) and std::nextafter(f, HUGE_VALF), the same bits, without
+// a call into the maths library (six per triangle and eight per node in the build).
+float FloatBelow(float f)
+{
+  if (!(f > -HUGE_VALF)) // -inf or NaN
+  {
+    return f;
+  }
+  if (f == 0.0f)
+  {
+    return -std::numeric_limits<float>::denorm_min();
+  }
+  std::uint32_t bits;
+  std::memcpy(&bits, &f, sizeof(bits));
+  bits = f > 0.0f ? bits - 1 : bits + 1;
+  std::memcpy(&f, &bits, sizeof(bits));
+  return f;
+}
+float FloatAbove(float f)
+{
+  return -FloatBelow(-f);
+}
 // Single precision bounds that still hold: `pad` (far above the double rounding
 // of the subtraction that produced v, far below a float step at the mesh's size)
 // and one float step beyond the nearest float.
 float Down(double v, double pad)
 {
-  return std::nextafter(static_cast<float>(v - pad), -HUGE_VALF);
+  return FloatBelow(static_cast<float>(v - pad));
 }
 float Up(double v, double pad)
 {
-  return std::nextafter(static_cast<float>(v + pad), HUGE_VALF);
+  return FloatAbove(static_cast<float>(v + pad));
 }
 
 /**
@@ -558,6 +585,29 @@ static_assert(ItemDoubles * sizeof(double) == sizeof(BuildItem) && alignof(Build
     ItemDoubles >= 9,
   "build items must tile the vertices' storage");
 
+// A hint to fetch the cache line at p; nothing where the compiler has no such builtin.
+inline void Prefetch(const void* p)
+{
+#if defined(__GNUC__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
+}
+
+// Widen(bounds, item's box, its centroid as a point), written out so that the binning
+// loop, the build's hottest, inlines it (a call per item and level before).
+inline void WidenByItem(BuildBounds& bounds, const BuildItem& item)
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    bounds.Lo[k] = std::min(bounds.Lo[k], item.Lo[k]);
+    bounds.Hi[k] = std::max(bounds.Hi[k], item.Hi[k]);
+    bounds.CLo[k] = std::min(bounds.CLo[k], item.Centroid[k]);
+    bounds.CHi[k] = std::max(bounds.CHi[k], item.Centroid[k]);
+  }
+}
+
 // Partitions [first, last) so that the items satisfying `before` come first, by the
 // two-ended exchange (Hoare): scan from the front for an item that must move back and
 // from the back for one that must move forward, swap them. Fixed here rather than left
@@ -596,6 +646,76 @@ BuildItem* PartitionItems(BuildItem* first, BuildItem* last, Before before)
     ++first;
   }
 }
+
+// PartitionItems' result on every thread, for the first levels: the two-ended exchange
+// swaps the k-th item of the front part [first, mid) that must move back with the k-th
+// item, counted from the end, of the back part [mid, last) that must move forward, mid
+// being where the items satisfying `before` end. Chunks count those items, then swap
+// them pairwise: the same items in the same slots, whatever the thread count.
+template <class Before>
+BuildItem* PartitionItemsInParallel(BuildItem* first, BuildItem* last, Before before)
+{
+  const std::int64_t count = last - first;
+  constexpr int Chunks = 64;
+  auto chunkBegin = [](std::int64_t from, std::int64_t to, int c) { return from + (to - from) * c / Chunks; };
+  std::int64_t staying = 0;
+#pragma omp parallel for schedule(static) reduction(+ : staying)
+  for (std::int64_t i = 0; i < count; ++i)
+  {
+    staying += before(first[i]) ? 1 : 0;
+  }
+  const std::int64_t mid = staying;
+  // Per chunk of each part: how many of its items must move (front: !before; back: before).
+  std::int64_t moving[2][Chunks + 1] = {};
+#pragma omp parallel for schedule(static)
+  for (int job = 0; job < 2 * Chunks; ++job)
+  {
+    const int part = job / Chunks, c = job % Chunks;
+    const std::int64_t from = part == 0 ? 0 : mid, to = part == 0 ? mid : count;
+    std::int64_t n = 0;
+    for (std::int64_t i = chunkBegin(from, to, c); i < chunkBegin(from, to, c + 1); ++i)
+    {
+      n += before(first[i]) == (part == 1) ? 1 : 0;
+    }
+    moving[part][c + 1] = n;
+  }
+  for (int part = 0; part < 2; ++part)
+  {
+    for (int c = 0; c < Chunks; ++c)
+    {
+      moving[part][c + 1] += moving[part][c];
+    }
+  }
+  // The back part's moving items, in increasing order; the k-th of the front part's
+  // goes where the k-th from the end of these is.
+  const std::int64_t swaps = moving[0][Chunks];
+  vtkMedialBuffer<std::int64_t> back(static_cast<size_t>(swaps)); // every entry written below
+#pragma omp parallel for schedule(static)
+  for (int c = 0; c < Chunks; ++c)
+  {
+    std::int64_t k = moving[1][c];
+    for (std::int64_t i = chunkBegin(mid, count, c); i < chunkBegin(mid, count, c + 1); ++i)
+    {
+      if (before(first[i]))
+      {
+        back[static_cast<size_t>(k++)] = i;
+      }
+    }
+  }
+#pragma omp parallel for schedule(static)
+  for (int c = 0; c < Chunks; ++c)
+  {
+    std::int64_t k = moving[0][c];
+    for (std::int64_t i = chunkBegin(0, mid, c); i < chunkBegin(0, mid, c + 1); ++i)
+    {
+      if (!before(first[i]))
+      {
+        std::swap(first[i], first[back[static_cast<size_t>(swaps - 1 - k++)]]);
+      }
+    }
+  }
+  return first + mid;
+}
 }
 
 struct vtkMedialTriangleBVH::BuildState
@@ -619,19 +739,17 @@ bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh, const std::f
     extent = std::max({ extent, std::fabs(mesh.Bounds[2 * k]), std::fabs(mesh.Bounds[2 * k + 1]) });
   }
   this->RoundingPad = 1e-14 * extent;
-  vtkMedialBuffer<std::int32_t> order(nt);
-  if (!this->BuildNodes(mesh, order, aborted))
+  if (!this->BuildNodes(mesh, aborted))
   {
     this->Nodes.clear();
     vtkMedialBuffer<double>().swap(this->Vertices);
     return false;
   }
-  this->CopyInLeafOrder(mesh, order);
+  this->CopyInLeafOrder(mesh);
   return this->BuildWideNodes();
 }
 
-bool vtkMedialTriangleBVH::BuildNodes(
-  const vtkMedialTriangleMesh& mesh, vtkMedialBuffer<std::int32_t>& order, const std::function<bool()>& aborted)
+bool vtkMedialTriangleBVH::BuildNodes(const vtkMedialTriangleMesh& mesh, const std::function<bool()>& aborted)
 {
   // Per triangle: its box and its centroid, in the storage of the leaf-order vertices,
   // which CopyInLeafOrder writes over them once the order is known: their pages are
@@ -659,19 +777,18 @@ bool vtkMedialTriangleBVH::BuildNodes(
   vtkMedialBuffer<Node> top(1);
   const std::int32_t all = static_cast<std::int32_t>(nt);
   this->BuildNode(state, top, 0, 0, all, MeasureBounds(state, 0, all), &subtrees, grain);
-  // Each thread builds its subtrees in one scratch buffer that it reuses (a subtree of n
-  // triangles has fewer than 2 n nodes), then moves each into a shared staging buffer,
-  // packed in whatever order they finish; the final array takes them from there in
-  // subtree order. Every page is touched once per buffer, in huge pages: buffers
-  // reserved per subtree at their upper bound were small pages (a touched huge page
-  // is resident whole), a fault per 4 kB, and that was a third of the tree's CPU time.
-  vtkMedialBuffer<Node> staging(2 * static_cast<size_t>(nt)); // address space; filled as packed
-  std::atomic<size_t> packed{ 0 };
-  struct Placed
-  {
-    size_t At, Size;
-  };
-  std::vector<Placed> placed(subtrees.size());
+  // Each thread builds a subtree in one scratch buffer that it reuses (a subtree of n
+  // triangles has fewer than 2 n nodes), then copies it into the node array after the
+  // top levels, packed in the order the subtrees finish; its root goes to the slot its
+  // parent reserved. Only where each subtree's nodes are stored depends on the threads:
+  // the tree, the leaf order and the 4-wide tree are the same, and no query reads a
+  // node's index. Every page is touched once, in huge pages (buffers reserved per
+  // subtree at their bound were 4 kB pages, a fault each: a third of the tree's CPU
+  // time; a staging buffer copied once more in subtree order was 60 MB more to touch).
+  const size_t topNodes = top.size();
+  this->Nodes.resize(topNodes + 2 * static_cast<size_t>(nt)); // address space: touched as filled
+  std::copy(top.begin(), top.end(), this->Nodes.begin());
+  std::atomic<size_t> packed{ topNodes };
   std::atomic<bool> stop{ false };
 #pragma omp parallel
   {
@@ -688,78 +805,82 @@ bool vtkMedialTriangleBVH::BuildNodes(
       }
       scratch.resize(1);
       this->BuildNode(state, scratch, 0, subtrees[i].Begin, subtrees[i].End, subtrees[i].Bounds, nullptr, 0);
-      placed[i] = { packed.fetch_add(scratch.size()), scratch.size() };
-      std::copy(scratch.begin(), scratch.end(), staging.begin() + placed[i].At);
+      // Local node 0 takes the reserved slot; local node j > 0 goes to at + j - 1.
+      const size_t at = packed.fetch_add(scratch.size() - 1);
+      auto global = [&](std::int32_t local) {
+        return local == 0 ? subtrees[i].Node : static_cast<std::int32_t>(at + local - 1);
+      };
+      for (size_t j = 0; j < scratch.size(); ++j)
+      {
+        Node node = scratch[j];
+        if (node.Count == 0)
+        {
+          node.Start = global(node.Start); // children are consecutive locally and globally
+        }
+        this->Nodes[global(static_cast<std::int32_t>(j))] = node;
+      }
     }
   }
   if (stop)
   {
     return false;
   }
-  size_t total = top.size() + packed - subtrees.size();
-  this->Nodes.resize(total);
-  std::copy(top.begin(), top.end(), this->Nodes.begin());
-  std::vector<std::int32_t> offsets(subtrees.size() + 1); // where each part's local node 1 goes
-  offsets[0] = static_cast<std::int32_t>(top.size());
-  for (size_t i = 0; i < subtrees.size(); ++i)
-  {
-    offsets[i + 1] = offsets[i] + static_cast<std::int32_t>(placed[i].Size) - 1;
-  }
-#pragma omp parallel for schedule(dynamic, 1)
-  for (std::int64_t i = 0; i < static_cast<std::int64_t>(subtrees.size()); ++i)
-  {
-    // Local node 0 takes the reserved slot; the others follow the earlier parts.
-    const std::int32_t offset = offsets[i] - 1;
-    auto global = [&](std::int32_t local) { return local == 0 ? subtrees[i].Node : offset + local; };
-    const Node* part = staging.data() + placed[i].At;
-    for (size_t j = 0; j < placed[i].Size; ++j)
-    {
-      Node node = part[j];
-      if (node.Count == 0)
-      {
-        node.Start = global(node.Start); // children are consecutive locally and globally
-      }
-      this->Nodes[global(static_cast<std::int32_t>(j))] = node;
-    }
-  }
-#pragma omp parallel for schedule(static)
-  for (vtkIdType i = 0; i < nt; ++i)
-  {
-    order[i] = state.Items[i].Triangle;
-  }
-  return true;
-}
-
-// The triangles' vertices, planes and boxes in leaf order, and the ranks.
-void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, const vtkMedialBuffer<std::int32_t>& order)
-{
-  const vtkIdType nt = mesh.GetNumberOfTriangles();
-  this->Vertices.resize(9 * static_cast<size_t>(nt));
+  this->Nodes.resize(packed);
+  vtkMedialReleaseSpareCapacity(this->Nodes);
+  // The leaf order, the ranks and each triangle's float box, from the items (before
+  // CopyInLeafOrder writes the vertices over them).
   this->TriangleIds.resize(nt);
   this->LeafRank.resize(nt);
-  this->Planes.resize(4 * static_cast<size_t>(nt));
   this->TriangleBoxes.resize(6 * static_cast<size_t>(nt) + 4); // + 4: read four floats at a time
   std::fill_n(this->TriangleBoxes.end() - 4, 4, 0.0f);
 #pragma omp parallel for schedule(static)
   for (vtkIdType i = 0; i < nt; ++i)
   {
-    const vtkIdType t = order[i];
-    const double* normal = mesh.GetNormal(t);
-    std::copy_n(normal, 3, &this->Planes[4 * i]);
-    this->Planes[4 * i + 3] = G::Dot(normal, mesh.GetPoint(mesh.GetTriangle(t)[0]));
-    this->TriangleIds[i] = static_cast<std::int32_t>(t);
-    this->LeafRank[t] = static_cast<std::int32_t>(i);
-    const vtkIdType* v = mesh.GetTriangle(t);
+    const BuildItem& item = state.Items[i];
+    this->TriangleIds[i] = item.Triangle;
+    this->LeafRank[item.Triangle] = static_cast<std::int32_t>(i);
     for (int k = 0; k < 3; ++k)
     {
-      // The box BuildNodes had for it (freed by now), from the same vertices.
-      const double a = mesh.GetPoint(v[0])[k], b = mesh.GetPoint(v[1])[k], c = mesh.GetPoint(v[2])[k];
-      this->TriangleBoxes[6 * i + k] = Down(std::min({ a, b, c }) - this->Origin[k], this->RoundingPad);
-      this->TriangleBoxes[6 * i + 3 + k] = Up(std::max({ a, b, c }) - this->Origin[k], this->RoundingPad);
+      this->TriangleBoxes[6 * i + k] = Down(item.Lo[k] - this->Origin[k], this->RoundingPad);
+      this->TriangleBoxes[6 * i + 3 + k] = Up(item.Hi[k] - this->Origin[k], this->RoundingPad);
     }
+  }
+  return true;
+}
+
+// The triangles' vertices and planes in leaf order, gathered from the mesh.
+void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh)
+{
+  const vtkIdType nt = mesh.GetNumberOfTriangles();
+  this->Vertices.resize(9 * static_cast<size_t>(nt)); // over the build items, read by now
+  this->Planes.resize(4 * static_cast<size_t>(nt));
+  // Gathers from all over the mesh: each slot's triangle is fetched ahead (its corners and
+  // normal a little less far ahead, once its vertex ids are in).
+  constexpr vtkIdType Ahead = 16;
+#pragma omp parallel for schedule(static)
+  for (vtkIdType i = 0; i < nt; ++i)
+  {
+    if (i + 2 * Ahead < nt)
+    {
+      Prefetch(mesh.GetTriangle(this->TriangleIds[i + 2 * Ahead]));
+    }
+    if (i + Ahead < nt)
+    {
+      const vtkIdType ahead = this->TriangleIds[i + Ahead];
+      const vtkIdType* w = mesh.GetTriangle(ahead);
+      Prefetch(mesh.GetNormal(ahead));
+      Prefetch(mesh.GetPoint(w[0]));
+      Prefetch(mesh.GetPoint(w[1]));
+      Prefetch(mesh.GetPoint(w[2]));
+    }
+    const vtkIdType t = this->TriangleIds[i];
+    const vtkIdType* v = mesh.GetTriangle(t);
+    const double* normal = mesh.GetNormal(t);
+    std::copy_n(normal, 3, &this->Planes[4 * i]);
+    this->Planes[4 * i + 3] = G::Dot(normal, mesh.GetPoint(v[0]));
     for (int j = 0; j < 3; ++j)
     {
-      std::copy_n(mesh.GetPoint(mesh.GetTriangle(t)[j]), 3, &this->Vertices[9 * i + 3 * j]);
+      std::copy_n(mesh.GetPoint(v[j]), 3, &this->Vertices[9 * i + 3 * j]);
     }
   }
   vtkMedialReleaseSpareCapacity(this->Vertices); // the build items' last tenth
@@ -994,8 +1115,7 @@ vtkMedialTriangleBVH::BuildBounds vtkMedialTriangleBVH::MeasureBounds(
   FoldRange(
     begin, end, bounds,
     [&](BuildBounds& part, std::int32_t i) {
-      const BuildItem& item = state.Items[i];
-      Widen(part, item.Lo, item.Hi, item.Centroid, item.Centroid);
+      WidenByItem(part, state.Items[i]);
     },
     MergeBounds, EmptyBounds());
   return bounds;
@@ -1092,7 +1212,7 @@ std::int32_t vtkMedialTriangleBVH::SplitNode(BuildState& state, std::int32_t beg
       [&](Binned& part, std::int32_t i) {
         SahBin& bin = part.Bin[binOf(items[i])];
         ++bin.Count;
-        Widen(bin.Bounds, items[i].Lo, items[i].Hi, items[i].Centroid, items[i].Centroid);
+        WidenByItem(bin.Bounds, items[i]);
       },
       [](Binned& whole, const Binned& part) {
         for (int j = 0; j < Bins; ++j)
@@ -1106,8 +1226,10 @@ std::int32_t vtkMedialTriangleBVH::SplitNode(BuildState& state, std::int32_t beg
     const int bestSplit = CheapestSplit(bins, count);
     if (bestSplit >= 0)
     {
+      auto leftOfSplit = [&](const BuildItem& item) { return binOf(item) <= bestSplit; };
       mid = static_cast<std::int32_t>(
-        PartitionItems(items + begin, items + end, [&](const BuildItem& item) { return binOf(item) <= bestSplit; }) -
+        (count > ParallelPartitionRange ? PartitionItemsInParallel(items + begin, items + end, leftOfSplit)
+                               : PartitionItems(items + begin, items + end, leftOfSplit)) -
         items);
       leftBounds = rightBounds = EmptyBounds();
       for (int j = 0; j < Bins; ++j)

@@ -17,8 +17,9 @@
  *
  * Build: top-down binned SAH (16 bins on the widest centroid axis), leaves of at
  * most 4 triangles, children stored next to each other. The top levels are built
- * first; the subtrees below them are built in parallel (OpenMP) and appended in a
- * fixed order, so the tree and its numbering do not depend on the thread count. Each node has its box
+ * first; the subtrees below them are built in parallel (OpenMP) and appended as they
+ * finish: the tree, its leaf order and the 4-wide tree do not depend on the thread
+ * count, only where a subtree's binary nodes are stored does. Each node has its box
  * and a slab [SlabLo, SlabHi] of m.x over its vertices, m the normalised sum of
  * its triangles' area vectors. Triangle vertices are copied in leaf order so a
  * leaf is read contiguously. The tree depends only on the mesh: deterministic.
@@ -202,11 +203,11 @@ private:
   };
   // Build only: each triangle's box and centroid, and the order being partitioned.
   struct BuildState;
-  // The nodes (Build's first pass): `order` becomes the leaf order. False when aborted.
-  bool BuildNodes(const vtkMedialTriangleMesh& mesh, vtkMedialBuffer<std::int32_t>& order,
-    const std::function<bool()>& aborted);
-  // Build's second pass: Vertices, Planes, TriangleIds, LeafRank.
-  void CopyInLeafOrder(const vtkMedialTriangleMesh& mesh, const vtkMedialBuffer<std::int32_t>& order);
+  // The nodes (Build's first pass), then from the build items the leaf order
+  // (TriangleIds), LeafRank and TriangleBoxes. False when aborted.
+  bool BuildNodes(const vtkMedialTriangleMesh& mesh, const std::function<bool()>& aborted);
+  // Build's second pass: Vertices and Planes, gathered from the mesh in leaf order.
+  void CopyInLeafOrder(const vtkMedialTriangleMesh& mesh);
   // Build's last pass: WideNodes and LeafLane from the binary tree.
   // False when the mesh is too large for the leaf encoding.
   bool BuildWideNodes();

@@ -458,9 +458,23 @@ void vtkMedialTriangleMesh::ImportTriangles(vtkPolyData* input)
     (this->Bounds[3] - this->Bounds[2]) * (this->Bounds[3] - this->Bounds[2]) +
     (this->Bounds[5] - this->Bounds[4]) * (this->Bounds[5] - this->Bounds[4]));
 
-  // Drop the triangles collapsed by the merge, in place.
+  // Drop the triangles collapsed by the merge, in place; usually there are none, and
+  // the ids are written on every thread.
   const vtkIdType cells = static_cast<vtkIdType>(triangles.size() / 3);
   this->SourceCellIds.resize(cells);
+  vtkIdType collapsed = 0;
+#pragma omp parallel for schedule(static) reduction(+ : collapsed)
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    const vtkIdType* pts = &triangles[3 * c];
+    collapsed += (pts[0] == pts[1] || pts[1] == pts[2] || pts[0] == pts[2]) ? 1 : 0;
+    this->SourceCellIds[c] = direct ? firstPoly + c : sourceIds[c];
+  }
+  if (collapsed == 0)
+  {
+    this->Triangles = std::move(triangles);
+    return;
+  }
   vtkIdType kept = 0;
   for (vtkIdType c = 0; c < cells; ++c)
   {

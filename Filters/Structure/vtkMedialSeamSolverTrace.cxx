@@ -19,6 +19,9 @@ using BallVector = vtkMedialSeamSolver::BallVector;
 // bisection steps (the seams traced in all are bounded by MaximumTracedSeams).
 constexpr int MaximumSteps = 200;
 constexpr int MaximumBisections = 64;
+// Features touching a seam's last ball beyond which the end is degenerate: three are the
+// seam's own, one more a junction or a transition; a few more occur at symmetric ends.
+constexpr size_t MaximumTouched = 12;
 
 double Distance4(const BallVector& a, const BallVector& b)
 {
@@ -169,9 +172,22 @@ void vtkMedialSeamSolver::Ends(const int features[3], const BallVector& last, co
   {
     return; // the rim: the radius goes to zero
   }
+  // A bracket that did not close (the seam projections jumped about) says nothing of
+  // what ends the seam; searching within its width would touch every feature near a
+  // large ball (on smoothed noisy surfaces, tens of thousands per end, and gigabytes of
+  // junction candidates).
+  const double bracket = Distance4(lo, hi);
+  if (bracket > tolerance)
+  {
+    return;
+  }
   // What touches the last ball on the seam, within the bracket: the fourth governor
   // (a junction) or the edge or vertex a contact moves onto (a transition).
-  this->Governors.TouchedFeatures(lo.data(), lo[3], tolerance + Distance4(lo, hi), touched);
+  this->Governors.TouchedFeatures(lo.data(), lo[3], tolerance + bracket, touched);
+  if (touched.size() > MaximumTouched)
+  {
+    return; // a degenerate end (many coplanar or cospherical features): no candidate is trusted
+  }
   for (int d : touched)
   {
     if (d == features[0] || d == features[1] || d == features[2])

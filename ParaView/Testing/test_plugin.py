@@ -24,7 +24,7 @@ def check(condition, message):
 
 LoadPlugin(plugin, remote=False, ns=globals())
 check(all(name in globals() for name in (
-    "MedialAxisSampler", "MedialJunctionFilter", "MedialBallUnion", "MedialShapeSource",
+    "MedialAxisSampler", "MedialDenoise", "MedialJunctionFilter", "MedialBallUnion", "MedialShapeSource",
     "MedialReconstructionError", "MedialBallProtrusion", "MedialBallClassifier", "MedialThickness", "MedialMesh", "MedialPrune", "MedialScaleAxis", "MedialSimplify",
     "MedialMeshReader", "MedialOFFReader", "MedialBallPLYReader", "MedialBallCSVReader")),
       "the plugin defines every proxy")
@@ -138,6 +138,14 @@ check(0 < scaled.GetNumberOfPoints() < 3000 and scaled.GetPointData().GetArray("
       and scaled_euler is not None and scaled_euler.GetValue(0) == 0,
       "scale axis: %d of 3000 balls kept, mesh Euler characteristic %s"
       % (scaled.GetNumberOfPoints(), scaled_euler.GetValue(0) if scaled_euler else None))
+
+# Denoise: the same cells, the points moved, its pass band reaching the filter.
+denoised = servermanager.Fetch(MedialDenoise(Input=torus, PassBand=0.05))  # noqa: F821
+torus_surface = servermanager.Fetch(torus)
+moved = max(abs(denoised.GetPoint(i)[k] - torus_surface.GetPoint(i)[k])
+            for i in range(0, torus_surface.GetNumberOfPoints(), 7) for k in range(3))
+check(denoised.GetNumberOfPolys() == torus_surface.GetNumberOfPolys() and 0 < moved,
+      "denoise: %d triangles, points moved up to %g" % (denoised.GetNumberOfPolys(), moved))
 
 # Enumerations take their labels; the values reach the filter.
 sampler.Method = "Bisection"

@@ -12,6 +12,7 @@
 #include "vtkNew.h"
 #include "vtkPLYReader.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
@@ -19,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <random>
 #include <string>
 #include <sys/stat.h>
 #include <vector>
@@ -34,6 +36,29 @@ inline double FieldValue(vtkPolyData* pd, const char* name)
 {
   vtkDataArray* a = pd->GetFieldData()->GetArray(name);
   return a ? a->GetComponent(0, 0) : std::nan("");
+}
+
+/// A copy of `surface` with Gaussian noise of sigma = fraction * diagonal added to every
+/// coordinate of every point (mt19937_64 with `seed`: the same noise on every platform
+/// that has the same standard library).
+inline vtkSmartPointer<vtkPolyData> WithGaussianNoise(vtkPolyData* surface, double fraction, unsigned seed)
+{
+  auto noisy = vtkSmartPointer<vtkPolyData>::New();
+  noisy->DeepCopy(surface);
+  std::mt19937_64 random(seed);
+  std::normal_distribution<double> gauss(0.0, fraction * surface->GetLength());
+  for (vtkIdType i = 0; i < noisy->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    noisy->GetPoint(i, x);
+    for (double& c : x)
+    {
+      c += gauss(random);
+    }
+    noisy->GetPoints()->SetPoint(i, x);
+  }
+  noisy->GetPoints()->Modified();
+  return noisy;
 }
 
 inline double Diagonal(vtkPolyData* pd)

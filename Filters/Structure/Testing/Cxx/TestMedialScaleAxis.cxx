@@ -172,20 +172,9 @@ int NoisySphere()
     source->SetShapeToSphere(); // radius 1 at the origin
     source->SetResolution(4);
     source->Update();
-    vtkNew<vtkPolyData> sphere;
-    sphere->DeepCopy(source->GetOutput());
-    std::mt19937_64 random(3);
-    std::normal_distribution<double> gauss(0.0, noise * sphere->GetLength());
-    for (vtkIdType i = 0; noise > 0.0 && i < sphere->GetNumberOfPoints(); ++i)
-    {
-      double x[3];
-      sphere->GetPoint(i, x);
-      for (double& c : x)
-      {
-        c += gauss(random);
-      }
-      sphere->GetPoints()->SetPoint(i, x);
-    }
+    vtkSmartPointer<vtkPolyData> sphere =
+      noise > 0.0 ? medialtest::WithGaussianNoise(source->GetOutput(), noise, 3)
+                  : vtkSmartPointer<vtkPolyData>(source->GetOutput());
     vtkNew<vtkMedialAxisSampler> sampler;
     sampler->SetInputData(sphere);
     sampler->SetNumberOfSamples(3000);
