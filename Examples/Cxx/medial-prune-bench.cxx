@@ -359,6 +359,7 @@ void NoisyHorseTable(int threads, int resolution)
     vtkSmartPointer<vtkPolyData> mesh = noise > 0.0 ? MeshOf(surface, balls, threads) : cleanMesh;
     vtkSmartPointer<vtkPolyData> smoothed = Denoise(surface);
     vtkSmartPointer<vtkPolyData> smoothedBalls = DefaultBalls(smoothed, threads);
+    vtkSmartPointer<vtkPolyData> smoothedMesh; // at DenoisedPruneScale, pruned again by the last row
     // -1: unpruned; the prune filter's measures on the mesh; then the scale axis on the
     // balls; then on the smoothed surface at both scales, and `--denoise --prune` (its
     // scale, then the mesh pruned by the scale axis measure at the same threshold).
@@ -383,14 +384,18 @@ void NoisyHorseTable(int threads, int resolution)
       }
       else if (m < denoisedLast)
       {
-        const double s = m == scaleOnBalls + 1 ? DenoisedPruneScale : scale;
+        const bool denoisedScale = m == scaleOnBalls + 1;
+        const double s = denoisedScale ? DenoisedPruneScale : scale;
         kept = MeshOf(smoothed, smoothedBalls, threads, s);
+        if (denoisedScale)
+        {
+          smoothedMesh = kept;
+        }
         name = "denoised s=" + std::to_string(s).substr(0, 4);
       }
       else
       {
-        kept = Prune(MeshOf(smoothed, smoothedBalls, threads, DenoisedPruneScale), vtkMedialPruneFilter::SCALE_AXIS,
-          1.0 - 1.0 / DenoisedPruneScale);
+        kept = Prune(smoothedMesh, vtkMedialPruneFilter::SCALE_AXIS, 1.0 - 1.0 / DenoisedPruneScale);
         name = "--denoise --prune";
       }
       const Reconstruction r = Rebuild(kept, clean, resolution, threads);
