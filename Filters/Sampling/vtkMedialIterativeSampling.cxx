@@ -36,6 +36,11 @@ constexpr std::uint64_t FaceStream = 0xFACE5A3B1E0D0C02ull;
 // vtkMedialAxisSampler's Random strategy does).
 constexpr vtkIdType HintChain = 32;
 
+// CLOSEST_NEIGHBOR without a coverage stop ends with face-distance rounds for this
+// fraction (1 / ClosingShare) more samples: its links leave holes where no chain
+// passes, which the worst faces then close.
+constexpr vtkIdType ClosingShare = 16;
+
 double Distance(const double a[3], const double b[3])
 {
   double d[3];
@@ -790,7 +795,7 @@ struct Runner
     }
   }
 
-  void FaceDistance();
+  void FaceDistance(vtkIdType budget);
   void PickFaces(vtkIdType room, unsigned roundIndex, std::vector<vtkIdType>& faces);
   void ClosestNeighbor();
 
@@ -870,7 +875,7 @@ void Runner::PickFaces(vtkIdType room, unsigned roundIndex, std::vector<vtkIdTyp
   }
 }
 
-void Runner::FaceDistance()
+void Runner::FaceDistance(vtkIdType budget)
 {
   const vtkIdType nf = this->Mesh.GetNumberOfTriangles();
   const double tol = this->S.CoverageTolerance;
@@ -884,12 +889,12 @@ void Runner::FaceDistance()
   {
     return;
   }
-  while (this->Count() < this->S.Budget)
+  while (this->Count() < budget)
   {
     // An eighth of what is left, at least RoundSize: the first rounds are large (their
     // samples lie close together, so the solves share caches and hints), the last ones
     // RoundSize, where the choice of the very worst faces matters most.
-    const vtkIdType left = this->S.Budget - this->Count();
+    const vtkIdType left = budget - this->Count();
     const vtkIdType room = std::min<vtkIdType>(std::max<vtkIdType>(this->RoundSize(), left / 8), left);
     this->PickFaces(room, ++roundIndex, faces);
     if (faces.empty())
@@ -1247,17 +1252,19 @@ void vtkMedialRunIterativeSampling(const vtkMedialTriangleMesh& mesh, const vtkM
   if (settings.Strategy == vtkMedialIterativeSettings::CLOSEST_NEIGHBOR)
   {
     runner.ClosestNeighbor();
-    // Coverage asked for, links exhausted, budget left: finish with the faces.
-    if (!result.Aborted && settings.CoverageTolerance > 0.0 && !result.CoverageReached &&
-      runner.Count() < settings.Budget)
+    // Links exhausted, budget left: finish with the faces, until the coverage asked
+    // for, else for 1 / ClosingShare more samples (the closing rounds).
+    if (!result.Aborted && !result.CoverageReached && runner.Count() < settings.Budget)
     {
-      runner.FaceDistance();
+      runner.FaceDistance(settings.CoverageTolerance > 0.0
+          ? settings.Budget
+          : std::min(settings.Budget, runner.Count() + runner.Count() / ClosingShare));
     }
   }
   else
   {
     runner.Coverage.Initialize(result.Records);
-    runner.FaceDistance();
+    runner.FaceDistance(settings.Budget);
   }
   if (!result.Aborted)
   {

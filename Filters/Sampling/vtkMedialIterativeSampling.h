@@ -75,8 +75,10 @@
  * coverage stop CLOSEST_NEIGHBOR does not need the gaps while it runs: its balls
  * are added to the coverage once, at the end, in parallel. When
  * CLOSEST_NEIGHBOR runs out of links (all consecutive balls overlap) before the
- * coverage asked for is reached, it finishes with FACE_DISTANCE rounds (those
- * samples are not linked); with CoverageTolerance 0 it just stops there.
+ * budget, it finishes with FACE_DISTANCE rounds (those samples are not linked): until
+ * the coverage asked for, or with CoverageTolerance 0 for a sixteenth more samples
+ * (the closing rounds: the links leave holes where no chain passes, the one place
+ * where its largest gap could exceed Random's at the same count).
  *
  * Determinism: every choice (seeds, popped entries, sample indices, insertion order)
  * is made on one thread in a fixed order. What runs in parallel writes only its own
