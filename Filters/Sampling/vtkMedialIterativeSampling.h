@@ -11,8 +11,10 @@
  * and centroid, stored cell after cell of a uniform grid, and lowers it ball by
  * ball: a new ball (c, r) can only lower points with |x - c| < r + G, G being an
  * upper bound of every gap, so only the rows of cells within that distance are
- * visited, and of those only the rows and cells that come within r + (their largest
- * gap; a row's bound is refreshed with the maximum, and stays valid since gaps only fall).
+ * visited, and of those only the rows, non-empty cells and blocks of up to 8 points
+ * (a cell's points in a Morton order, each block with its box) that come within
+ * r + (their largest gap; a row's bound is refreshed with the maximum, and stays
+ * valid since gaps only fall).
  * Finding the points a ball lowers is read-only and runs for a round's balls in
  * parallel; applying them is a minimum, so the gaps do not depend on the order the
  * balls are added in; they are applied in sample order, in parallel, each thread on
@@ -35,7 +37,7 @@
  * FACE_DISTANCE. Each round computes every face's gap (in parallel) and takes the
  * worst faces first (ties: lower face id), but no two with a common vertex (a ball
  * covers around its face: a neighbour waits for a later round; at most 4 room faces
- * wait per round). A round takes an eighth of the samples left, at least RoundSize: the
+ * wait per round). A round takes half of the samples left, at least RoundSize: the
  * first rounds are large, so that their samples lie close together in the tree's
  * leaves and their solves share caches and hints; the last ones are small, where
  * the choice of the very worst faces matters most. It draws on each face a random
