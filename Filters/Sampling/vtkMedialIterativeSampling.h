@@ -177,7 +177,7 @@ struct vtkMedialIterativeSettings
   vtkTypeUInt64 Seed = 1;
   int Threads = 1;
   int RoundSize = 0; // samples solved per round; 0: Budget / 64, at least 64 (not the thread count)
-  int MaximumFaceAttempts = 4;  // FACE_DISTANCE: failed samples of a face before giving it up
+  int MaximumFaceAttempts = 8;  // FACE_DISTANCE: failed samples of a face before giving it up
   vtkMedialBallParameters Ball;
 };
 
