@@ -140,12 +140,13 @@ public:
   ///  - CLOSEST_NEIGHBOR: Poisson-disk seeds chained to their closest non-overlapping
   ///    unlinked neighbour, the longest links split at the surface point between
   ///    their ends until consecutive balls overlap; the links are output as lines;
-  ///  - FACE_DISTANCE: Poisson-disk seeds, then the face farthest from the union of
-  ///    balls is sampled next (a max-heap with lazy deletion).
+  ///  - FACE_DISTANCE: Poisson-disk seeds, then the faces farthest from the union of
+  ///    balls are sampled next, round by round.
   /// The two iterative strategies stop at the budget (NumberOfSamples, seeds
   /// included), when CoverageTolerance is reached, or when they run out of work
-  /// (CLOSEST_NEIGHBOR: every link's balls overlap; if a CoverageTolerance is set
-  /// and not reached yet, it then goes on with FACE_DISTANCE rounds). See
+  /// (CLOSEST_NEIGHBOR: every link's balls overlap; it then goes on with FACE_DISTANCE
+  /// rounds, until the CoverageTolerance if one is set, else for a sixteenth more
+  /// samples, which close the holes the links leave). See
   /// vtkMedialIterativeSampling.h for the details. They run in piece 0 only (other
   /// pieces are empty) and are deterministic for a seed, whatever the thread count.
   vtkSetClampMacro(SamplingStrategy, int, RANDOM, FACE_DISTANCE);

@@ -11,18 +11,22 @@
  * and centroid, stored cell after cell of a uniform grid, and lowers it ball by
  * ball: a new ball (c, r) can only lower points with |x - c| < r + G, G being an
  * upper bound of every gap, so only the rows of cells within that distance are
- * visited, and of those only the rows and cells that come within r + (their largest
- * gap; a row's bound is refreshed with the maximum, and stays valid since gaps only fall).
+ * visited, and of those only the rows, non-empty cells and blocks of up to 8 points
+ * (a cell's points in a Morton order, each block with its box) that come within
+ * r + (their largest gap; a row's bound is refreshed with the maximum, and stays
+ * valid since gaps only fall).
  * Finding the points a ball lowers is read-only and runs for a round's balls in
  * parallel; applying them is a minimum, so the gaps do not depend on the order the
- * balls are added in; they are applied in sample order. It starts from the first
- * balls (the seeds): g(x) <= |x - p| for the surface point p of any ball, so the
- * distance to the nearest seed's surface point is a valid start value and G.
+ * balls are added in; they are applied in sample order, in parallel, each thread on
+ * its own range of points. It starts from the first balls (the seeds): any ball
+ * bounds g(x) from above, so the gap to the balls of the seeds whose surface points
+ * are nearest x is a valid start value (and a tight one, which keeps the seeds'
+ * own searches short), and its maximum a valid G.
  *
  * Seeding (every strategy but Random). Poisson-disk dart throwing on the surface:
  * candidates are area-weighted random surface points from the stream
  * (seed ^ constant, k), accepted when no accepted seed lies within
- * rho = sqrt(0.6 A / S) (A the surface area, S = SeedFraction * budget, at most
+ * rho = sqrt(0.5 A / S) (A the surface area, S = SeedFraction * budget, at most
  * one per triangle), found through a uniform grid of cell size 2 rho. Blocks of
  * candidates are drawn and tested against the seeds before the block in parallel;
  * the survivors are tested again in index order, so the seeds are those of a
@@ -30,20 +34,20 @@
  * The seeds touch every region of the surface, so regions without initial
  * samples (the drawback of both strategies in the report) cannot occur.
  *
- * FACE_DISTANCE. A max-heap of (face gap, face, version) orders the faces; when a
- * new ball lowers a face's gap, the face's version is bumped and a new entry is
- * pushed; popped entries whose version is not current are stale and dropped (lazy
- * deletion), so a face has at most one live entry and is never sampled twice for
- * one entry. Each round pops up to RoundSize live faces, the worst first, but no
- * two with a common vertex (a ball covers around its face: a neighbour's entry is
- * put back for a later round; at most 4 RoundSize entries wait per round). It
- * draws on each a random point from the stream (seed ^ constant, sample index),
- * biased toward the face's worst point w (P = w + t (u - w), u uniform on the face,
- * t uniform in [0, 2^-a), a the number of earlier samples of this face that failed
- * to lower it), solves the balls in parallel (hinted with the contact triangle of
- * the ball nearest to w) and inserts them in index order. A face whose own
- * samples fail to lower its gap MaximumFaceAttempts times (e.g. next to a hole, or
- * a vertex no admissible ball can reach) is given up.
+ * FACE_DISTANCE. Each round computes every face's gap (in parallel) and takes the
+ * worst faces first (ties: lower face id), but no two with a common vertex (a ball
+ * covers around its face: a neighbour waits for a later round; at most 4 room faces
+ * wait per round). A round takes half of the samples left, at least RoundSize: the
+ * first rounds are large, so that their samples lie close together in the tree's
+ * leaves and their solves share caches and hints; the last ones are small, where
+ * the choice of the very worst faces matters most. It draws on each face a random
+ * point from the stream (seed ^ constant, sample index), biased toward the face's
+ * worst point w (P = w + t (u - w), u uniform on the face, t uniform in [0, 2^-a),
+ * a the number of failed attempts), solves the balls in parallel (a hint chain's
+ * first solve hinted with the contact triangle of the ball nearest to w) and adds
+ * them in index order. A face whose own samples fail to lower its gap
+ * MaximumFaceAttempts times (e.g. next to a hole, or a vertex no admissible ball
+ * reaches) is given up.
  *
  * CLOSEST_NEIGHBOR. Step 1 chains the seeds: from the first unlinked seed, link to
  * the closest seed that has no link yet and whose ball does not overlap the
@@ -61,25 +65,33 @@
  * The output keeps every final link as a line cell, grouped by the step-1 link
  * they refine, in path order from P to Q.
  *
- * Rounds: RoundSize samples (by default Budget / 64, at least 64), so that a run
- * has few parallel sections; within a round the balls are solved in the leaf
- * order of the tree (cache locality; the order changes no result).
+ * Rounds: RoundSize samples (by default Budget / 64, at least 64; FACE_DISTANCE's
+ * early rounds are larger, see above), so that a run has few parallel sections;
+ * within a round the balls are solved in the leaf order of the tree (cache
+ * locality), in runs of 32 consecutive solves on one thread, each hinted with the
+ * previous one's contact and blockers as in the Random strategy (the runs do not
+ * depend on the thread count; a hint moves a ball only within the query's slack).
  *
- * Stopping: the budget (NumberOfSamples, seeds included), an empty heap, or
- * coverage (checked after every round when CoverageTolerance > 0). When
+ * Stopping: the budget (NumberOfSamples, seeds included), no face or link left, or
+ * coverage (checked after every round when CoverageTolerance > 0). Without a
+ * coverage stop CLOSEST_NEIGHBOR does not need the gaps while it runs: its balls
+ * are added to the coverage once, at the end, in parallel. When
  * CLOSEST_NEIGHBOR runs out of links (all consecutive balls overlap) before the
- * coverage asked for is reached, it finishes with FACE_DISTANCE rounds (those
- * samples are not linked); with CoverageTolerance 0 it just stops there.
+ * budget, it finishes with FACE_DISTANCE rounds (those samples are not linked): until
+ * the coverage asked for, or with CoverageTolerance 0 for a sixteenth more samples
+ * (the closing rounds: the links leave holes where no chain passes, the one place
+ * where its largest gap could exceed Random's at the same count).
  *
  * Determinism: every choice (seeds, popped entries, sample indices, insertion order)
  * is made on one thread in a fixed order. What runs in parallel writes only its own
  * slot: a round's ball solves (with CLOSEST_NEIGHBOR's midpoint projections), the
  * points each new ball lowers (vtkMedialCoverage::FindLowered, against the gaps
  * before the round), the seeds' darts, and the coverage's start values and maximum.
- * The lowerings are then applied in sample order (the seeds' ones by ranges of
- * points, each range in sample order). CLOSEST_NEIGHBOR's step 1 runs on the calling
- * thread while the other threads start the coverage (its passes are worksharing loops
- * of one team). The result does not depend on the thread count.
+ * The lowerings are then applied in sample order, by ranges of points (each range
+ * in sample order), and FACE_DISTANCE's face gaps are computed face by face (the
+ * worst faces are then sorted by a total order). CLOSEST_NEIGHBOR's step 1 runs on
+ * the calling thread while the other threads start the coverage (its passes are
+ * worksharing loops of one team). The result does not depend on the thread count.
  * No two samples share a surface point: exact duplicates are refused.
  */
 #ifndef vtkMedialIterativeSampling_h
@@ -129,9 +141,12 @@ public:
   /// Thread-safe while no Apply runs.
   void FindLowered(const double c[3], double r, std::vector<Lowering>& lowered) const;
   /// Applies FindLowered's result for ball number `ball` (points already lowered
-  /// further are left); appends the faces whose gap changed to `touched` (each face
-  /// once per call) unless null.
-  void Apply(const std::vector<Lowering>& lowered, vtkIdType ball, std::vector<vtkIdType>* touched);
+  /// further are left).
+  void Apply(const std::vector<Lowering>& lowered, vtkIdType ball);
+  /// Applies a round's FindLowered results, lowered[j] as ball number balls[j] (none
+  /// when negative), as if one by one in j order; in parallel, each thread on its own
+  /// range of points.
+  void ApplyRound(const std::vector<std::vector<Lowering>>& lowered, const std::vector<vtkIdType>& balls);
   /// Largest gap of the face's vertices and centroid.
   double FaceGap(vtkIdType face) const;
   /// The face's point (vertex or centroid) of largest gap; returns the ball that set

@@ -8,10 +8,24 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkMedialShapeSource.h"
+#include "vtkSmartPointer.h"
+#include "vtkTriangleFilter.h"
 
 
 namespace medialtest
 {
+/// A vtkMedialShapeSource shape (default settings), triangulated.
+inline vtkSmartPointer<vtkPolyData> TriangulatedShape(int shape)
+{
+  vtkNew<vtkMedialShapeSource> source;
+  source->SetShape(shape);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(source->GetOutputPort());
+  triangles->Update();
+  return triangles->GetOutput();
+}
+
 /// min_i (|x - c_i| - r_i) over every ball of `balls`, by brute force.
 inline double CoverageGap(vtkPolyData* balls, const double x[3])
 {

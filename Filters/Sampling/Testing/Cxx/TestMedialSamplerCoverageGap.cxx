@@ -9,7 +9,6 @@
 
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialShapeSource.h"
-#include "vtkTriangleFilter.h"
 
 #include <cstdlib>
 
@@ -19,12 +18,8 @@ int TestMedialSamplerCoverageGap(int, char*[])
 {
   for (int shape : { vtkMedialShapeSource::JACK, vtkMedialShapeSource::CAPSULE })
   {
-    vtkNew<vtkMedialShapeSource> source;
-    source->SetShape(shape);
-    vtkNew<vtkTriangleFilter> triangles;
-    triangles->SetInputConnection(source->GetOutputPort());
-    triangles->Update();
-    vtkPolyData* surface = triangles->GetOutput();
+    const vtkSmartPointer<vtkPolyData> triangulated = TriangulatedShape(shape);
+    vtkPolyData* surface = triangulated;
     const double diagonal = Diagonal(surface);
     const char* shapeName = shape == vtkMedialShapeSource::JACK ? "jack" : "capsule";
     for (int strategy : { vtkMedialAxisSampler::CLOSEST_NEIGHBOR, vtkMedialAxisSampler::FACE_DISTANCE })

@@ -7,7 +7,8 @@
 //    closer to P; a chain continues from the previous Q, and a new chain starts only
 //    when the previous Q had no candidate left, at the first seed without a link;
 //  - the split points each lie on exactly two lines of the same group, and with the
-//    budget not used up, every final link joins overlapping balls.
+//    budget not used up, every final link joins overlapping balls;
+//  - the closing rounds' samples come last, on no line.
 #include "MedialStrategyTestUtilities.h"
 
 #include "vtkIdTypeArray.h"
@@ -102,7 +103,16 @@ int TestMedialSamplerLinks(int, char*[])
     }
     overlapping += Overlap(balls[ids[0]], balls[ids[1]]) ? 1 : 0;
   }
-  for (vtkIdType i = seeds; i < n; ++i)
+  // The closing rounds' samples (face-distance, after the links ran out) come last, on
+  // no line, a sixteenth of the samples before them at most.
+  vtkIdType closing = n;
+  while (closing > seeds && uses[closing - 1] == 0)
+  {
+    --closing;
+  }
+  MEDIAL_CHECK(n > closing && n - closing <= closing / 16, "%lld closing samples after %lld",
+    static_cast<long long>(n - closing), static_cast<long long>(closing));
+  for (vtkIdType i = seeds; i < closing; ++i)
   {
     MEDIAL_CHECK(uses[i] == 2, "split point %lld is on %d lines", static_cast<long long>(i), uses[i]);
   }

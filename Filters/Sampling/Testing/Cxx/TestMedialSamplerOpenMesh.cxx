@@ -110,6 +110,7 @@ int TestMedialSamplerOpenMesh(int, char*[])
       std::sscanf(stopped.c_str() + at, " is at (%lf, %lf, %lf)", where, where + 1, where + 2) == 3,
     "no place in: %s", stopped.c_str());
   const double norm = std::sqrt(where[0] * where[0] + where[1] * where[1] + where[2] * where[2]);
-  MEDIAL_CHECK(norm > 0.98 && norm < 1.0 + 1e-9, "the worst gap at |x| = %g is not on the sphere", norm);
+  // The message prints 6 significant digits: a vertex on the unit sphere can read as |x| = 1 + 1e-6.
+  MEDIAL_CHECK(norm > 0.98 && norm < 1.0 + 1e-5, "the worst gap at |x| = %g is not on the sphere", norm);
   return EXIT_SUCCESS;
 }
