@@ -62,9 +62,6 @@ namespace
 {
 using Clock = std::chrono::steady_clock;
 
-// --prune's scale axis after --denoise (see Program::ScaleAxisThreshold).
-constexpr double DenoisedPruneScale = 1.3;
-
 double SecondsSince(Clock::time_point start)
 {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -529,7 +526,7 @@ double Program::ScaleAxisThreshold() const
     return this->Opt.PruneThreshold;
   }
   vtkNew<vtkMedialScaleAxisFilter> defaults;
-  const double scale = this->Opt.Denoise ? DenoisedPruneScale : defaults->GetScaleFactor();
+  const double scale = this->Opt.Denoise ? vtkMedialScaleAxisFilter::GetDenoisedScaleFactor() : defaults->GetScaleFactor();
   return 1.0 - 1.0 / scale;
 }
 

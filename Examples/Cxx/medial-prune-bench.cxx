@@ -307,7 +307,7 @@ vtkSmartPointer<vtkPolyData> Prune(vtkPolyData* mesh, int measure, double thresh
 
 // `medial-axis --denoise --prune`'s scale (MedialAxisOptions: the smoothing leaves less
 // noise for the scale axis to cover); --denoise-passband X overrides the filter's default.
-const double DenoisedPruneScale = 1.3;
+const double DenoisedPruneScale = vtkMedialScaleAxisFilter::GetDenoisedScaleFactor();
 double DenoisePassBand = -1.0;
 
 // The surface smoothed as `medial-axis --denoise` smooths it.

@@ -72,13 +72,13 @@ smoothed_balls.SetInputConnection(denoise.GetOutputPort())
 smoothed_balls.SetNumberOfSamples(3000)
 smoothed_axis = medialaxis.vtkMedialScaleAxisFilter()
 smoothed_axis.SetInputConnection(smoothed_balls.GetOutputPort())
-smoothed_axis.SetScaleFactor(1.3)
+smoothed_axis.SetScaleFactor(medialaxis.vtkMedialScaleAxisFilter.GetDenoisedScaleFactor())
 smoothed_axis.Update()
 far = [np.max(np.linalg.norm(vtk_to_numpy(b.GetPoints().GetData()), axis=1))
        for b in (smoothed_balls.GetOutput(), smoothed_axis.GetOutput())]
 print(f"denoised sphere (vertices moved up to {denoise.GetMaximumDisplacement():.4f} of the diagonal): "
       f"balls reaching {far[0]:.3f} from the centre -> {smoothed_axis.GetOutput().GetNumberOfPoints()} balls "
-      f"within {far[1]:.3f} (scale 1.3)")
+      f"within {far[1]:.3f} (scale {smoothed_axis.GetScaleFactor():g})")
 
 k = int(sys.argv[1]) if len(sys.argv) > 1 else 50
 jack = medialaxis.vtkMedialShapeSource()  # the demo solid (JACK)

@@ -114,7 +114,7 @@ int TestMedialDenoisedAxis(int, char*[])
     {
       vtkSmartPointer<vtkPolyData> noisy = medialtest::WithGaussianNoise(clean, noise, 7);
       double moved = 0.0;
-      vtkSmartPointer<vtkPolyData> mesh = PrunedMedialMesh(Denoised(noisy, moved), 1.3);
+      vtkSmartPointer<vtkPolyData> mesh = PrunedMedialMesh(Denoised(noisy, moved), vtkMedialScaleAxisFilter::GetDenoisedScaleFactor());
       MEDIAL_CHECK(moved > noise, "%s, noise %g: the smoothing moved no vertex farther than %g of the diagonal",
         shape.Name, noise, moved);
       const double axis = FarthestFromAxis(shape, source, mesh) / diagonal;
