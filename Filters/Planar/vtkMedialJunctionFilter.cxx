@@ -6,6 +6,7 @@
 #include "vtkMedialPipeline.h"
 #include "vtkMedialPolygon.h"
 #include "vtkMedialProgress.h"
+#include "vtkMedialThreads.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -1224,7 +1225,7 @@ int vtkMedialJunctionFilter::RequestData(
   }
   this->NumberOfPolygons = poly.GetNumberOfPolygons();
   const Solver solver(poly, this->Tolerance);
-  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  const int threads = vtkMedialThreadCount(this->NumberOfThreads);
   JunctionPasses passes(this, poly, solver, threads);
   this->NumberOfBoundarySamples = passes.Walk(this->SamplesPerUnitLength, this->MinimumSamplesPerEdge);
   stages.Begin("Solving the boundary disks", 0.02, 0.5);

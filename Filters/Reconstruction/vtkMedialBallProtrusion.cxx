@@ -6,6 +6,7 @@
 #include "vtkMedialBoundaryDistance.h"
 #include "vtkMedialPieces.h"
 #include "vtkMedialPipeline.h"
+#include "vtkMedialThreads.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -84,7 +85,7 @@ int vtkMedialBallProtrusion::RequestData(
     vtkErrorMacro("Cannot measure the protrusion: the surface: " << error << ".");
     return 0;
   }
-  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  const int threads = vtkMedialThreadCount(this->NumberOfThreads);
   stages.Begin("Measuring the balls", 0.3, 1.0);
   const std::vector<double> distance = boundary.Distances(balls->GetPoints(), threads);
   vtkNew<vtkDoubleArray> protrusion;

@@ -6,6 +6,7 @@
 #include "vtkMedialProgress.h"
 #include "vtkMedialPipeline.h"
 #include "vtkMedialPlane.h"
+#include "vtkMedialThreads.h"
 #include "vtkMedialUniformGrid.h"
 
 #include "vtkCellArray.h"
@@ -1327,7 +1328,7 @@ int vtkMedialBallUnion::RequestData(
   vtkNew<vtkDoubleArray> field;
   field->SetName(vtkMedialArrayNames::Distance);
   field->SetNumberOfTuples(static_cast<vtkIdType>(grid.Dims[0]) * grid.Dims[1] * grid.Dims[2]);
-  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  const int threads = vtkMedialThreadCount(this->NumberOfThreads);
   stages.Begin("Filling the distance field", 0.02, 0.9);
   if (!FillField(this, envelope ? envelope->Bounds : balls, grid, band, slack, threads,
         field->GetPointer(0), envelope.get()))

@@ -6,6 +6,7 @@
 #include "vtkMedialBoundaryDistance.h"
 #include "vtkMedialPieces.h"
 #include "vtkMedialPipeline.h"
+#include "vtkMedialThreads.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -142,7 +143,7 @@ int vtkMedialReconstructionError::RequestData(
     return 0;
   }
   stages.Begin("Measuring from the vertices", 0.2, 0.5);
-  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  const int threads = vtkMedialThreadCount(this->NumberOfThreads);
   const double diagonal = original->GetLength();
 
   // Vertex measure.

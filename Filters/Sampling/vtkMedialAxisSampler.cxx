@@ -13,6 +13,7 @@
 #include "vtkMedialRandom.h"
 #include "vtkMedialSampleRecord.h"
 #include "vtkMedialSurfaceQuery.h"
+#include "vtkMedialThreads.h"
 #include "vtkMedialTriangleMesh.h"
 
 #include "vtkCellArray.h"
@@ -241,7 +242,7 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(vtkMedialTriangleMesh& mesh
   {
     return 0;
   }
-  const int threads = self->NumberOfThreads > 0 ? self->NumberOfThreads : omp_get_num_procs();
+  const int threads = vtkMedialThreadCount(self->NumberOfThreads);
   // Optional coverage stop: checked after fixed blocks of 1024 samples, so the
   // stopping point does not depend on the thread count.
   std::unique_ptr<vtkMedialCoverage> coverage;
@@ -546,7 +547,7 @@ int vtkMedialAxisSampler::vtkInternals::SampleIterative(
   settings.SeedFraction = self->SeedFraction;
   settings.CoverageTolerance = self->CoverageTolerance * mesh.Diagonal;
   settings.Seed = static_cast<std::uint64_t>(self->RandomSeed);
-  settings.Threads = self->NumberOfThreads > 0 ? self->NumberOfThreads : omp_get_num_procs();
+  settings.Threads = vtkMedialThreadCount(self->NumberOfThreads);
   settings.Ball = this->MakeBallParameters(mesh.Diagonal);
   if (!this->CheckMemory(settings.Budget,
         2.0 * sizeof(vtkMedialSampleRecord) + 12 * sizeof(double) + 8 * sizeof(vtkIdType), "use fewer samples"))

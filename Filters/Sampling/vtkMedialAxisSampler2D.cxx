@@ -11,6 +11,7 @@
 #include "vtkMedialProgress.h"
 #include "vtkMedialSampleRecord.h"
 #include "vtkMedialRandom.h"
+#include "vtkMedialThreads.h"
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -195,7 +196,7 @@ int vtkMedialAxisSampler::vtkInternals::Sample2D(
   const double cosMinAngle = self->MinimumSeparationAngle > 0.0
     ? std::cos(self->MinimumSeparationAngle * 3.14159265358979323846 / 180.0)
     : 1.0;
-  const int threads = self->NumberOfThreads > 0 ? self->NumberOfThreads : omp_get_num_procs();
+  const int threads = vtkMedialThreadCount(self->NumberOfThreads);
   const vtkIdType block = 8192;
   stages.Begin("Sampling", 0.05, 1.0);
   for (vtkIdType begin = 0; begin < count && !self->GetAbortExecute(); begin += block)

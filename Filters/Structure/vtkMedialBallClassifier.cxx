@@ -9,6 +9,7 @@
 #include "vtkMedialSeamSolver.h"
 #include "vtkMedialSpatialOrder.h"
 #include "vtkMedialSurfaceQuery.h"
+#include "vtkMedialThreads.h"
 #include "vtkMedialTriangleMesh.h"
 
 #include "vtkCellArray.h"
@@ -155,7 +156,7 @@ int vtkMedialBallClassifier::RequestData(
 
   // 1. Governors of every ball.
   stages.Begin("Classifying the balls", 0.1, this->ComputeExactPoints ? 0.5 : 1.0);
-  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  const int threads = vtkMedialThreadCount(this->NumberOfThreads);
   std::vector<vtkMedialSeamSolver::Ball> records(static_cast<size_t>(n));
   // Balls in a spatially coherent order (nearby balls read the same tree nodes).
   const std::vector<vtkIdType> order = vtkMedialSpatialOrder::Order(n, [&](vtkIdType i) {

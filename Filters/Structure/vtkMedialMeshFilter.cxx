@@ -14,6 +14,7 @@
 #include "vtkMedialSpatialOrder.h"
 #include "vtkMedialProgress.h"
 #include "vtkMedialSurfaceQuery.h"
+#include "vtkMedialThreads.h"
 #include "vtkMedialTriangleMesh.h"
 
 #include "vtkCallbackCommand.h"
@@ -205,7 +206,7 @@ int vtkMedialMeshFilter::RequestData(
   this->RefinementBalls = 0;
   this->EnvelopeProtrusion = 0.0;
   this->MaximumRadiusReduction = 0.0;
-  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  const int threads = vtkMedialThreadCount(this->NumberOfThreads);
   auto aborted = [this]() { return this->GetAbortExecute() != 0; };
 
   // The surface, prepared as the sampler does, for the inside and crossing tests.

@@ -4,6 +4,7 @@
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialPieces.h"
 #include "vtkMedialPipeline.h"
+#include "vtkMedialThreads.h"
 #include "vtkMedialUniformGrid.h"
 
 #include "vtkCellArray.h"
@@ -174,7 +175,7 @@ int vtkMedialScaleAxisFilter::RequestData(
   }
 
   const CoveringScales scales(centres, radii);
-  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  const int threads = vtkMedialThreadCount(this->NumberOfThreads);
   std::vector<double> scale(static_cast<size_t>(n));
   for (vtkIdType begin = 0; begin < n; begin += Block)
   {

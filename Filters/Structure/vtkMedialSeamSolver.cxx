@@ -3,6 +3,7 @@
 
 #include "vtkMedialGeometry.h"
 #include "vtkMedialSurfaceQuery.h"
+#include "vtkMedialThreads.h"
 #include "vtkMedialTriangleMesh.h"
 
 #include "vtkIdList.h"
@@ -956,7 +957,7 @@ bool vtkMedialSeamSolver::Solve(const std::vector<Ball>& balls, const std::vecto
 {
   result = Result();
   result.PairPoint.assign(pairs.size(), -1);
-  threads = threads > 0 ? threads : omp_get_num_procs();
+  threads = vtkMedialThreadCount(threads);
 
   // 1. Seam candidates (triples) and junction candidates (quadruples) from pairs and balls.
   Candidates candidates;

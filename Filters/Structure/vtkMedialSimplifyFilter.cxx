@@ -7,6 +7,7 @@
 #include "vtkMedialQuadricSimplification.h"
 #include "vtkMedialRandom.h"
 #include "vtkMedialSimplicialComplex.h"
+#include "vtkMedialThreads.h"
 #include "vtkMedialTriangleMesh.h"
 
 #include "vtkDataArray.h"
@@ -123,7 +124,7 @@ int vtkMedialSimplifyFilter::RequestData(
     vtkErrorMacro(<< "Cannot simplify by coverage: connect the surface to input 1 (SetSurfaceConnection).");
     return 0;
   }
-  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  const int threads = vtkMedialThreadCount(this->NumberOfThreads);
   if (guarded)
   {
     this->SetGuardPoints(mesh, simplification);

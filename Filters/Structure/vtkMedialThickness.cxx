@@ -9,6 +9,7 @@
 #include "vtkMedialProgress.h"
 #include "vtkMedialSampleRecord.h"
 #include "vtkMedialSurfaceQuery.h"
+#include "vtkMedialThreads.h"
 #include "vtkMedialTriangleMesh.h"
 
 #include "vtkCellData.h"
@@ -268,7 +269,7 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
     }
     return Keep(best, hint, m.Radius, m.Centre);
   };
-  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  const int threads = vtkMedialThreadCount(this->NumberOfThreads);
   return SolveInLeafOrder(this, query, items, threads, solve);
 }
 
@@ -310,7 +311,7 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
     m.Ray = RayLength(query, mesh, p, n, t);
     return Keep(ball, hint, m.Radius, m.Centre);
   };
-  const int threads = this->NumberOfThreads > 0 ? this->NumberOfThreads : omp_get_num_procs();
+  const int threads = vtkMedialThreadCount(this->NumberOfThreads);
   return SolveInLeafOrder(this, query, items, threads, solve);
 }
 
