@@ -204,7 +204,7 @@ public:
       const __m128 gp =
         _mm_max_ps(_mm_sub_ps(_mm_max_ps(_mm_sub_ps(lo, p), _mm_sub_ps(p, hi)), margin), zero);
       sp[k] = _mm_mul_ps(gp, gp);
-      const __m128 far = this->N[k] > 0.0f ? hi : lo;
+      const __m128 far = this->Far[k] ? hi : lo;
       h = _mm_add_ps(h, _mm_mul_ps(this->LaneN[k], _mm_sub_ps(far, p)));
       const __m128 mk = _mm_mul_ps(_mm_load_ps(w.Axis[k]), c);
       m = k == 0 ? mk : _mm_add_ps(m, mk);
