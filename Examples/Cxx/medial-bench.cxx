@@ -167,6 +167,13 @@ double UpdateTimed(vtkMedialAxisSampler* sampler, double& solving)
   sampler->Update();
   const double t1 = Now();
   sampler->RemoveObserver(tag);
+  if (prepared.Time == 0.0)
+  {
+    // The stage was renamed or the run failed early: say so rather than count the
+    // preparation as sampling without a word.
+    std::fprintf(stderr, "medial-bench: no \"Building the surface queries\" stage seen; the row includes the "
+                         "preparation\n");
+  }
   solving = t1 - (prepared.Time > 0.0 ? prepared.Time : t0);
   return t1 - t0;
 }
