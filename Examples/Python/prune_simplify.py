@@ -15,6 +15,7 @@ import numpy as np
 
 import medialaxis
 from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonExecutionModel import vtkTrivialProducer
 
 
 def ends_and_junctions(graph):
@@ -51,14 +52,25 @@ noisy.DeepCopy(sphere.GetOutput())
 points = vtk_to_numpy(noisy.GetPoints().GetData())  # a view: edits change the surface
 points += np.random.default_rng(3).normal(0.0, 0.001 * noisy.GetLength(), points.shape)
 noisy.GetPoints().Modified()
-sphere_balls = medialaxis.vtkMedialAxisSampler()
-sphere_balls.SetInputData(noisy)
-sphere_balls.SetNumberOfSamples(3000)
-scale_axis = medialaxis.vtkMedialScaleAxisFilter()
-scale_axis.SetInputConnection(sphere_balls.GetOutputPort())
-scale_axis.Update()
-far = [np.max(np.linalg.norm(vtk_to_numpy(b.GetPoints().GetData()), axis=1))
-       for b in (sphere_balls.GetOutput(), scale_axis.GetOutput())]
+def scale_axis_of(surface_port, scale):
+    """3000 balls of the surface, the scale axis of them, and how far from the centre
+    the farthest ball of each reaches."""
+    balls = medialaxis.vtkMedialAxisSampler()
+    balls.SetInputConnection(surface_port)
+    balls.SetNumberOfSamples(3000)
+    axis = medialaxis.vtkMedialScaleAxisFilter()
+    axis.SetInputConnection(balls.GetOutputPort())
+    if scale is not None:
+        axis.SetScaleFactor(scale)
+    axis.Update()
+    reach = [np.max(np.linalg.norm(vtk_to_numpy(b.GetPoints().GetData()), axis=1))
+             for b in (balls.GetOutput(), axis.GetOutput())]
+    return balls, axis, reach
+
+
+noisy_source = vtkTrivialProducer()
+noisy_source.SetOutput(noisy)
+sphere_balls, scale_axis, far = scale_axis_of(noisy_source.GetOutputPort(), None)
 print(f"noisy sphere: {sphere_balls.GetOutput().GetNumberOfPoints()} balls reaching {far[0]:.3f} from the "
       f"centre -> {scale_axis.GetOutput().GetNumberOfPoints()} balls within {far[1]:.3f} "
       f"(scale {scale_axis.GetScaleFactor():g}, {scale_axis.GetNumberOfRemovedBalls()} removed)")
@@ -67,15 +79,8 @@ print(f"noisy sphere: {sphere_balls.GetOutput().GetNumberOfPoints()} balls reach
 # then the scale axis at 1.3 (the scale --denoise --prune uses).
 denoise = medialaxis.vtkMedialDenoiseFilter()
 denoise.SetInputData(noisy)
-smoothed_balls = medialaxis.vtkMedialAxisSampler()
-smoothed_balls.SetInputConnection(denoise.GetOutputPort())
-smoothed_balls.SetNumberOfSamples(3000)
-smoothed_axis = medialaxis.vtkMedialScaleAxisFilter()
-smoothed_axis.SetInputConnection(smoothed_balls.GetOutputPort())
-smoothed_axis.SetScaleFactor(medialaxis.vtkMedialScaleAxisFilter.GetDenoisedScaleFactor())
-smoothed_axis.Update()
-far = [np.max(np.linalg.norm(vtk_to_numpy(b.GetPoints().GetData()), axis=1))
-       for b in (smoothed_balls.GetOutput(), smoothed_axis.GetOutput())]
+smoothed_balls, smoothed_axis, far = scale_axis_of(
+    denoise.GetOutputPort(), medialaxis.vtkMedialScaleAxisFilter.GetDenoisedScaleFactor())
 print(f"denoised sphere (vertices moved up to {denoise.GetMaximumDisplacement():.4f} of the diagonal): "
       f"balls reaching {far[0]:.3f} from the centre -> {smoothed_axis.GetOutput().GetNumberOfPoints()} balls "
       f"within {far[1]:.3f} (scale {smoothed_axis.GetScaleFactor():g})")
