@@ -1055,7 +1055,12 @@ bool Overlap(const vtkMedialSampleRecord& a, const vtkMedialSampleRecord& b)
 }
 
 // The seeds' ball centres in a uniform grid, for the closest unlinked,
-// non-overlapping neighbour of step 1; linked seeds are removed as they go.
+// non-overlapping neighbour of step 1. Linked seeds leave their cell's list of
+// remaining ones. Each cell keeps the box and the smallest radius of its seeds: a
+// cell whose farthest point is within r_p + (its smallest radius) of c_p holds only
+// balls that overlap p's (most of the cells a search walks through), one whose
+// nearest point is beyond the best so far holds no closer one; neither is read.
+// The answer is the smallest (distance, index) over the seeds, whatever the grid.
 class CentreGrid
 {
 public:
@@ -1097,10 +1102,20 @@ public:
         add(this->Grid.CellOf(rec[i].Centre));
       }
     });
+    this->BuildCellLists(n);
     this->Empty = false;
   }
 
-  void Remove(vtkIdType i) { this->Grid.Hide(i); }
+  /// Takes seed i out of its cell's remaining ones.
+  void Remove(vtkIdType i)
+  {
+    const vtkIdType cell = this->CellOfItem[i];
+    const vtkIdType last = this->Grid.ItemOffset(cell) + --this->Remaining[cell];
+    const vtkIdType moved = this->Items[last];
+    std::swap(this->Items[this->Position[i]], this->Items[last]);
+    this->Position[moved] = this->Position[i];
+    this->Position[i] = last;
+  }
 
   /// The closest remaining centre to p's whose ball does not overlap p's (smaller
   /// index on a tie), or -1. Searches rings of cells until no closer one can exist.
@@ -1123,6 +1138,7 @@ public:
         best = q;
       }
     };
+    constexpr double Margin = 1e-9; // relative: the cell tests must not drop what the exact test would keep
     for (int ring = 0; ring <= this->Grid.GetMaximumDimension(); ++ring)
     {
       // Every point of ring `ring` is at least (ring - 1) cells away.
@@ -1130,14 +1146,84 @@ public:
       {
         break;
       }
-      this->Grid.ForEachCellInShell(c, ring, [&](const int*, vtkIdType cell) { this->Grid.ForEachItemInCell(cell, visit); });
+      this->Grid.ForEachCellInShell(c, ring, [&](const int*, vtkIdType cell) {
+        if (this->Remaining[cell] == 0)
+        {
+          return;
+        }
+        double nearest, farthest;
+        this->CellRange(cell, a.Centre, nearest, farthest);
+        if (farthest * (1.0 + Margin) <= a.Radius + this->MinimumRadius[cell] ||
+          nearest * (1.0 - Margin) > bestDistance)
+        {
+          return;
+        }
+        const vtkIdType first = this->Grid.ItemOffset(cell);
+        for (vtkIdType k = first; k < first + this->Remaining[cell]; ++k)
+        {
+          visit(this->Items[k]);
+        }
+      });
     }
     return best;
   }
 
 private:
+  // Each cell's seeds (remaining ones first), their box and smallest radius.
+  void BuildCellLists(vtkIdType n)
+  {
+    const vtkIdType cells = this->Grid.GetNumberOfCells();
+    this->Items.assign(this->Grid.CellBegin(0), this->Grid.CellBegin(0) + this->Grid.ItemOffset(cells));
+    this->Position.assign(static_cast<size_t>(n), -1);
+    this->CellOfItem.assign(static_cast<size_t>(n), -1);
+    this->Remaining.resize(static_cast<size_t>(cells));
+    this->MinimumRadius.assign(static_cast<size_t>(cells), HUGE_VAL);
+    this->Box.resize(static_cast<size_t>(6 * cells));
+    for (vtkIdType cell = 0; cell < cells; ++cell)
+    {
+      double* box = &this->Box[6 * cell];
+      std::fill(box, box + 3, HUGE_VAL);
+      std::fill(box + 3, box + 6, -HUGE_VAL);
+      this->Remaining[cell] = this->Grid.ItemOffset(cell + 1) - this->Grid.ItemOffset(cell);
+      for (vtkIdType k = this->Grid.ItemOffset(cell); k < this->Grid.ItemOffset(cell + 1); ++k)
+      {
+        const vtkMedialSampleRecord& r = this->Rec[this->Items[k]];
+        this->Position[this->Items[k]] = k;
+        this->CellOfItem[this->Items[k]] = cell;
+        this->MinimumRadius[cell] = std::min(this->MinimumRadius[cell], r.Radius);
+        for (int axis = 0; axis < 3; ++axis)
+        {
+          box[axis] = std::min(box[axis], r.Centre[axis]);
+          box[3 + axis] = std::max(box[3 + axis], r.Centre[axis]);
+        }
+      }
+    }
+  }
+  // Distances from x to the nearest and the farthest point of the cell's seed box.
+  void CellRange(vtkIdType cell, const double x[3], double& nearest, double& farthest) const
+  {
+    const double* box = &this->Box[6 * cell];
+    double near2 = 0.0, far2 = 0.0;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      const double below = box[axis] - x[axis], above = x[axis] - box[3 + axis];
+      const double d = std::max(std::max(below, above), 0.0);
+      const double f = std::max(std::fabs(below), std::fabs(above));
+      near2 += d * d;
+      far2 += f * f;
+    }
+    nearest = std::sqrt(near2);
+    farthest = std::sqrt(far2);
+  }
+
   const std::vector<vtkMedialSampleRecord>& Rec;
   vtkMedialUniformGrid Grid;
+  std::vector<vtkIdType> Items;      // per cell, from Grid.ItemOffset: its remaining seeds first
+  std::vector<vtkIdType> Remaining;  // per cell
+  std::vector<vtkIdType> Position;   // per seed: its place in Items
+  std::vector<vtkIdType> CellOfItem; // per seed
+  std::vector<double> MinimumRadius; // per cell, over all its seeds
+  std::vector<double> Box;           // per cell: its seeds' box, low then high
   double Size = 1.0;
   bool Empty = true;
 };

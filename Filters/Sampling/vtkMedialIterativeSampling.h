@@ -54,7 +54,9 @@
  * current one (|c_p - c_q| > r_p + r_q), move there and repeat; when no such seed
  * exists the chain ends and the next one starts at the first seed without a link.
  * The closest candidate is found by a ring search in a uniform grid of the seeds'
- * centres from which linked seeds are removed.
+ * centres from which linked seeds are removed; a cell is skipped when all its seeds'
+ * balls must overlap the current one (its farthest point within r_p + its smallest
+ * radius) or when it lies beyond the best so far.
  * Step 2 pushes every link in a max-heap keyed by its length |c_p - c_q|. Step 3
  * pops up to RoundSize links per round; for each, the midpoint of the two surface
  * points is projected to the closest surface point (vtkMedialSurfaceQuery) and its
