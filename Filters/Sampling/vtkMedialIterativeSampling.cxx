@@ -292,7 +292,8 @@ struct vtkMedialCoverage::Internals
   void BuildSlots(const std::vector<double>& points, const std::vector<char>& used);
   void OrderCellsInBlocks(const std::vector<double>& points);
   void BuildBlockBoxes();
-  /// Appends the points of the block that the ball (c, r) lowers.
+  /// Appends the points of the block that the ball (c, r) lowers (FindLowered has
+  /// tested the block's box).
   void FindLoweredInBlock(vtkIdType block, const double c[3], double r, std::vector<Lowering>& lowered) const;
 };
 
@@ -561,7 +562,19 @@ void vtkMedialCoverage::FindLowered(const double c[3], double r, std::vector<Low
       }
       for (vtkIdType b = m.CellBlock[row + i]; b < m.CellBlock[row + i + 1]; ++b)
       {
-        m.FindLoweredInBlock(b, c, r, lowered);
+        // The block's box first (here, not in the call: about 3 of 4 blocks stop here).
+        const double blockTop = r + m.BlockMax[b] + m.Pad;
+        const double* box = &m.BlockBox[6 * b];
+        double b2 = 0.0;
+        for (int axis = 0; axis < 3; ++axis)
+        {
+          const double d = std::max(std::max(box[axis] - c[axis], c[axis] - box[3 + axis]), 0.0);
+          b2 += d * d;
+        }
+        if (blockTop > 0.0 && b2 <= blockTop * blockTop)
+        {
+          m.FindLoweredInBlock(b, c, r, lowered);
+        }
       }
     }
   });
@@ -570,20 +583,7 @@ void vtkMedialCoverage::FindLowered(const double c[3], double r, std::vector<Low
 void vtkMedialCoverage::Internals::FindLoweredInBlock(
   vtkIdType block, const double c[3], double r, std::vector<Lowering>& lowered) const
 {
-  // A point is lowered only within r + its gap of c: the block's box first.
-  const double top = r + this->BlockMax[block] + this->Pad;
-  const double* box = &this->BlockBox[6 * block];
-  double d2 = 0.0;
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    const double d = std::max(std::max(box[axis] - c[axis], c[axis] - box[3 + axis]), 0.0);
-    d2 += d * d;
-  }
-  if (!(top > 0.0) || d2 > top * top)
-  {
-    return;
-  }
-  // Then a square test with a margin (branch-free), the exact gap only for the few that pass.
+  // A square test with a margin (branch-free), the exact gap only for the few that pass.
   const vtkIdType first = this->BlockFirst[block], n = this->BlockFirst[block + 1] - first;
   std::int64_t near[BlockSize];
   if (!MayBeLowered(&this->X[first], &this->Y[first], &this->Z[first], &this->Gap[first], n, c, r, near))
