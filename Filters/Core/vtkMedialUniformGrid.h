@@ -13,8 +13,7 @@
  * Contents:
  *  - static (Build): a counting sort into compressed rows. An item may lie in
  *    several cells (an edge crossing them); each cell lists its items in
- *    increasing id (SortCells reorders them). Items can be hidden afterwards
- *    (Hide): queries then skip them.
+ *    increasing id (SortCells reorders them).
  *  - dynamic (Insert): items added one by one while the grid is queried; a cell
  *    lists these newest first.
  *
@@ -136,7 +135,6 @@ public:
   void Build(vtkIdType count, CellsOf&& cellsOf)
   {
     this->Clear();
-    this->NumberOfItems = count;
     const vtkIdType cells = this->GetNumberOfCells();
     std::vector<std::pair<vtkIdType, vtkIdType>> entries; // (cell, item), items in order
     entries.reserve(static_cast<size_t>(count));
@@ -179,16 +177,7 @@ public:
       std::sort(this->Items.begin() + this->Start[c], this->Items.begin() + this->Start[c + 1], less);
     }
   }
-  /// Queries skip the item (0 <= item < count) from now on (static contents).
-  void Hide(vtkIdType item)
-  {
-    if (this->Hidden.empty())
-    {
-      this->Hidden.assign(static_cast<size_t>(this->NumberOfItems), 0);
-    }
-    this->Hidden[item] = 1;
-  }
-  /// The static items of a cell, hidden ones included, as [first, last).
+  /// The static items of a cell, as [first, last).
   const vtkIdType* CellBegin(vtkIdType cell) const { return this->Items.data() + this->Start[cell]; }
   const vtkIdType* CellEnd(vtkIdType cell) const { return this->Items.data() + this->Start[cell + 1]; }
   ///@}
@@ -222,11 +211,7 @@ public:
     {
       for (vtkIdType s = this->Start[cell]; s < this->Start[cell + 1]; ++s)
       {
-        const vtkIdType item = this->Items[s];
-        if (this->Hidden.empty() || !this->Hidden[item])
-        {
-          f(item);
-        }
+        f(this->Items[s]);
       }
     }
     if (!this->Head.empty())
@@ -448,10 +433,8 @@ private:
 
   void Clear()
   {
-    this->NumberOfItems = 0;
     this->Start.clear();
     this->Items.clear();
-    this->Hidden.clear();
     this->Head.clear();
     this->Next.clear();
   }
@@ -459,9 +442,7 @@ private:
   double Origin[3] = { 0, 0, 0 };
   double CellSize[3] = { 1, 1, 1 };
   int Dims[3] = { 1, 1, 1 };
-  vtkIdType NumberOfItems = 0;
   std::vector<vtkIdType> Start, Items; // static: compressed rows
-  std::vector<char> Hidden;
   std::vector<vtkIdType> Head, Next;   // dynamic: linked lists
 };
 

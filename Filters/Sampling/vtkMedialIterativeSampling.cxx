@@ -1058,8 +1058,8 @@ bool Overlap(const vtkMedialSampleRecord& a, const vtkMedialSampleRecord& b)
 // non-overlapping neighbour of step 1. Linked seeds leave their cell's list of
 // remaining ones. Each cell keeps the box and the smallest radius of its seeds: a
 // cell whose farthest point is within r_p + (its smallest radius) of c_p holds only
-// balls that overlap p's (most of the cells a search walks through), one whose
-// nearest point is beyond the best so far holds no closer one; neither is read.
+// balls that overlap p's, one whose nearest point is beyond the best so far holds no
+// closer one; neither is read.
 // The answer is the smallest (distance, index) over the seeds, whatever the grid.
 class CentreGrid
 {
