@@ -611,6 +611,7 @@ struct BuildItem
 };
 // A build item in doubles: the items live in the leaf-order vertices' storage (9 doubles a triangle).
 constexpr size_t ItemDoubles = (sizeof(BuildItem) + sizeof(double) - 1) / sizeof(double);
+static_assert(sizeof(vtkMedialTriangleBVH::LeafTriangle) == 64, "a leaf triangle is one cache line");
 static_assert(ItemDoubles * sizeof(double) == sizeof(BuildItem) && alignof(BuildItem) <= alignof(double) &&
     ItemDoubles >= 9,
   "build items must tile the vertices' storage");
@@ -859,20 +860,19 @@ bool vtkMedialTriangleBVH::BuildNodes(const vtkMedialTriangleMesh& mesh, const s
   vtkMedialReleaseSpareCapacity(this->Nodes);
   // The leaf order, the ranks and each triangle's float box, from the items (before
   // CopyInLeafOrder writes the vertices over them).
-  this->TriangleIds.resize(nt);
+  this->LeafTriangles.resize(nt);
   this->LeafRank.resize(nt);
-  this->TriangleBoxes.resize(6 * static_cast<size_t>(nt) + 4); // + 4: read four floats at a time
-  std::fill_n(this->TriangleBoxes.end() - 4, 4, 0.0f);
 #pragma omp parallel for schedule(static)
   for (vtkIdType i = 0; i < nt; ++i)
   {
     const BuildItem& item = state.Items[i];
-    this->TriangleIds[i] = item.Triangle;
+    LeafTriangle& leaf = this->LeafTriangles[i];
+    leaf.Triangle = item.Triangle;
     this->LeafRank[item.Triangle] = static_cast<std::int32_t>(i);
     for (int k = 0; k < 3; ++k)
     {
-      this->TriangleBoxes[6 * i + k] = Down(item.Lo[k] - this->Origin[k], this->RoundingPad);
-      this->TriangleBoxes[6 * i + 3 + k] = Up(item.Hi[k] - this->Origin[k], this->RoundingPad);
+      leaf.Lo[k] = Down(item.Lo[k] - this->Origin[k], this->RoundingPad);
+      leaf.Hi[k] = Up(item.Hi[k] - this->Origin[k], this->RoundingPad);
     }
   }
   return true;
@@ -883,7 +883,6 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh)
 {
   const vtkIdType nt = mesh.GetNumberOfTriangles();
   this->Vertices.resize(9 * static_cast<size_t>(nt)); // over the build items, read by now
-  this->Planes.resize(4 * static_cast<size_t>(nt));
   // Gathers from all over the mesh: each slot's triangle is fetched ahead (its corners and
   // normal a little less far ahead, once its vertex ids are in).
   constexpr vtkIdType Ahead = 16;
@@ -892,26 +891,30 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh)
   {
     if (i + 2 * Ahead < nt)
     {
-      Prefetch(mesh.GetTriangle(this->TriangleIds[i + 2 * Ahead]));
+      Prefetch(mesh.GetTriangle(this->LeafTriangles[i + 2 * Ahead].Triangle));
     }
     if (i + Ahead < nt)
     {
-      const vtkIdType ahead = this->TriangleIds[i + Ahead];
+      const vtkIdType ahead = this->LeafTriangles[i + Ahead].Triangle;
       const vtkIdType* w = mesh.GetTriangle(ahead);
       Prefetch(mesh.GetNormal(ahead));
       Prefetch(mesh.GetPoint(w[0]));
       Prefetch(mesh.GetPoint(w[1]));
       Prefetch(mesh.GetPoint(w[2]));
     }
-    const vtkIdType t = this->TriangleIds[i];
-    const vtkIdType* v = mesh.GetTriangle(t);
-    const double* normal = mesh.GetNormal(t);
-    std::copy_n(normal, 3, &this->Planes[4 * i]);
-    this->Planes[4 * i + 3] = G::Dot(normal, mesh.GetPoint(v[0]));
+    LeafTriangle& leaf = this->LeafTriangles[i];
+    const vtkIdType* v = mesh.GetTriangle(leaf.Triangle);
+    const double* normal = mesh.GetNormal(leaf.Triangle);
+    std::copy_n(normal, 3, leaf.Plane);
+    leaf.Plane[3] = G::Dot(normal, mesh.GetPoint(v[0]));
+    double* corners = &this->Vertices[9 * i];
     for (int j = 0; j < 3; ++j)
     {
-      std::copy_n(mesh.GetPoint(v[j]), 3, &this->Vertices[9 * i + 3 * j]);
+      std::copy_n(mesh.GetPoint(v[j]), 3, corners + 3 * j);
     }
+    const double longest = std::max({ G::Distance2(corners, corners + 3),
+      G::Distance2(corners + 3, corners + 6), G::Distance2(corners + 6, corners) });
+    leaf.EdgeThird = FloatAbove(static_cast<float>(longest / 3.0));
   }
   vtkMedialReleaseSpareCapacity(this->Vertices); // the build items' last tenth
 }
@@ -1031,8 +1034,8 @@ std::int32_t vtkMedialTriangleBVH::WideSubtree(std::int32_t binary, std::int32_t
 bool vtkMedialTriangleBVH::BuildWideNodes()
 {
   this->WideNodes.clear();
-  this->LeafLane.resize(this->TriangleIds.size());
-  if (this->Nodes.empty() || this->TriangleIds.size() >= (size_t(1) << 28))
+  this->LeafLane.resize(this->LeafTriangles.size());
+  if (this->Nodes.empty() || this->LeafTriangles.size() >= (size_t(1) << 28))
   {
     return false;
   }
@@ -1420,7 +1423,7 @@ private:
     G::AddScaled(this->PRel, this->Radius, this->N, this->CentreRel);
     this->Fast->SetBall(this->CentreRel, this->Radius);
     G::Copy(q, this->Result.Contact);
-    this->Result.ContactTriangle = this->Tree.TriangleIds[slot];
+    this->Result.ContactTriangle = this->Tree.LeafTriangles[slot].Triangle;
     this->Result.Blockers.Add(this->Result.ContactTriangle);
     ++this->Result.Steps;
   }
@@ -1430,22 +1433,31 @@ private:
   // drops the cap's triangles around p (kept aside for InscribeInCap).
   bool CannotBlock(std::int32_t slot) const
   {
-    const double* plane = &this->Tree.Planes[4 * slot];
-    if (std::fabs(G::Dot(plane, this->Centre) - plane[3]) >= this->Radius)
+    const LeafTriangle& leaf = this->Tree.LeafTriangles[slot];
+    if (std::fabs(G::Dot(leaf.Plane, this->Centre) - leaf.Plane[3]) >= this->Radius)
     {
       return true;
     }
-    const float* lo = &this->Tree.TriangleBoxes[6 * slot];
-    if (this->Fast->BoxMissesBall(lo, lo + 3))
+    if (this->Fast->BoxMissesBall(leaf.Lo, leaf.Hi))
     {
       return true;
     }
-    const FloatNodeTests::Sides side = this->Fast->Side(lo, lo + 3);
+    const FloatNodeTests::Sides side = this->Fast->Side(leaf.Lo, leaf.Hi);
     if (side == FloatNodeTests::OUTSIDE_CONE && this->Inscribe)
     {
       this->Work.CapSlots.push_back(slot); // it may cross the final ball in the cap
     }
     return side != FloatNodeTests::ABOVE;
+  }
+
+  // vtkMedialGeometry::TriangleDistance2Below of the triangle at `slot` from the centre,
+  // with the edge term stored rounded up: never above it, so a skip it allows is sound.
+  double Distance2Below(std::int32_t slot) const
+  {
+    const double* a = &this->Tree.Vertices[9 * slot];
+    const double nearest =
+      std::min({ G::Distance2(this->Centre, a), G::Distance2(this->Centre, a + 3), G::Distance2(this->Centre, a + 6) });
+    return nearest - this->Tree.LeafTriangles[slot].EdgeThird;
   }
 
   // reach^2 and room for the rounding of an exact squared distance, whose closest
@@ -1465,7 +1477,7 @@ private:
     const double* a = &this->Tree.Vertices[9 * slot];
     const double* b = a + 3;
     const double* c = a + 6;
-    if (this->CannotBlock(slot) || G::TriangleDistance2Below(this->Centre, a, b, c) >= this->Clear2)
+    if (this->CannotBlock(slot) || this->Distance2Below(slot) >= this->Clear2)
     {
       return false; // (the second: it misses the ball, as Blocks would find at more cost)
     }
@@ -1553,7 +1565,7 @@ private:
   // only in the cap is set aside for another look.
   void Visit(std::int32_t slot)
   {
-    if (this->Tree.TriangleIds[slot] != this->OwnTriangle && this->ShrinkOn(slot))
+    if (this->Tree.LeafTriangles[slot].Triangle != this->OwnTriangle && this->ShrinkOn(slot))
     {
       this->Work.Deferred.push_back(slot);
       this->Work.DeferredSteps.push_back(this->Result.Steps);
@@ -1672,15 +1684,15 @@ private:
     double clear2 = this->ClearOf(reach); // follows best2
     std::int32_t bestSlot = -1;
     auto test = [&](std::int32_t slot) -> bool {
-      const double* plane = &this->Tree.Planes[4 * slot];
-      const double off = G::Dot(plane, this->Centre) - plane[3];
-      if (this->Tree.TriangleIds[slot] == this->OwnTriangle || off * off >= best2)
+      const LeafTriangle& leaf = this->Tree.LeafTriangles[slot];
+      const double off = G::Dot(leaf.Plane, this->Centre) - leaf.Plane[3];
+      if (leaf.Triangle == this->OwnTriangle || off * off >= best2)
       {
         return false;
       }
       const double* a = &this->Tree.Vertices[9 * slot];
       double q[3];
-      if (G::TriangleDistance2Below(this->Centre, a, a + 3, a + 6) >= clear2 ||
+      if (this->Distance2Below(slot) >= clear2 ||
         G::ClosestPointOnTriangle(this->Centre, a, a + 3, a + 6, q) >= best2)
       {
         return false; // the whole triangle is no closer than its part in the cap
@@ -1754,7 +1766,7 @@ private:
       this->Result.Shrunk = true;
       this->Result.InscribedRadius = std::sqrt(best2);
       std::copy(best, best + 3, this->Result.InscribedContact);
-      this->Result.InscribedTriangle = this->Tree.TriangleIds[bestSlot];
+      this->Result.InscribedTriangle = this->Tree.LeafTriangles[bestSlot].Triangle;
     }
   }
 
@@ -1832,9 +1844,9 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
       for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
       {
         // Cheapest first: the triangle's plane misses the ball.
-        const double* plane = &this->Planes[4 * slot];
-        const double off = G::Dot(plane, x) - plane[3];
-        if (this->TriangleIds[slot] == ownTriangle || off * off >= reach2)
+        const LeafTriangle& leaf = this->LeafTriangles[slot];
+        const double off = G::Dot(leaf.Plane, x) - leaf.Plane[3];
+        if (leaf.Triangle == ownTriangle || off * off >= reach2)
         {
           continue;
         }
@@ -1846,7 +1858,7 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
         {
           d2 = G::ClosestPointOnClippedTriangle(x, a, a + 3, a + 6, w, k, q);
         }
-        if (!visit(d2, q, this->TriangleIds[slot]))
+        if (!visit(d2, q, leaf.Triangle))
         {
           scratch.Stack.clear();
           return;
@@ -2073,11 +2085,11 @@ bool vtkMedialTriangleBVH::IntersectRay(const double origin[3], const double dir
     {
       const double* v = &this->Vertices[9 * static_cast<size_t>(slot)];
       double hit;
-      if (this->TriangleIds[slot] != ignoreTriangle && ray.Hit(v, v + 3, v + 6, tMin, hit) && hit > tMin &&
-        hit < best)
+      const std::int32_t id = this->LeafTriangles[slot].Triangle;
+      if (id != ignoreTriangle && ray.Hit(v, v + 3, v + 6, tMin, hit) && hit > tMin && hit < best)
       {
         best = hit;
-        triangle = this->TriangleIds[slot];
+        triangle = id;
       }
     }
   }
@@ -2117,7 +2129,7 @@ void vtkMedialTriangleBVH::VisitBox(
     }
     for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
     {
-      if (!visit(this->TriangleIds[slot]))
+      if (!visit(this->LeafTriangles[slot].Triangle))
       {
         return;
       }
