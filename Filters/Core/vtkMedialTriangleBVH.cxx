@@ -571,6 +571,30 @@ void FoldRange(std::int32_t begin, std::int32_t end, T& total, Fold fold, Merge 
 
 // Scratch space reused by every query on a thread: no allocation per sample.
 // A lane waiting in the tangent search, with the number of radius updates when it was pushed.
+// A lane reference's wide node and lane. References are never negative, so these
+// are shifts, not signed division (which took a fifth of the walk's own instructions).
+inline std::int32_t WideOf(std::int32_t ref)
+{
+  return static_cast<std::int32_t>(static_cast<std::uint32_t>(ref) / 4u);
+}
+inline int LaneOf(std::int32_t ref)
+{
+  return static_cast<int>(static_cast<std::uint32_t>(ref) % 4u);
+}
+
+// The leaf-order slots [Start, End) of a leaf lane, whose child code is ~(start *
+// LeafCodeScale + count).
+struct LeafSlots
+{
+  std::int32_t Start, End;
+  explicit LeafSlots(std::int32_t child)
+  {
+    const std::uint32_t code = ~static_cast<std::uint32_t>(child);
+    this->Start = static_cast<std::int32_t>(code / static_cast<std::uint32_t>(LeafCodeScale));
+    this->End = this->Start + static_cast<std::int32_t>(code % static_cast<std::uint32_t>(LeafCodeScale));
+  }
+};
+
 struct PendingLane
 {
   std::int32_t Ref, Steps;
@@ -1016,7 +1040,7 @@ std::int32_t vtkMedialTriangleBVH::WideSubtree(std::int32_t binary, std::int32_t
     {
       if (pending.Ref >= 0)
       {
-        this->WideNodes[pending.Ref / 4].Child[pending.Ref % 4] = index;
+        this->WideNodes[WideOf(pending.Ref)].Child[LaneOf(pending.Ref)] = index;
       }
       this->WriteWideNode(index, lanes, count);
     }
@@ -1474,13 +1498,17 @@ private:
   // smaller ball lowers the cap's plane, so it must be looked at again.
   bool ShrinkOn(std::int32_t slot)
   {
+    // The second test: it misses the ball, as Blocks would find at more cost. Most
+    // triangles stop here, so this part is small enough to inline into the walk.
+    return !this->CannotBlock(slot) && !(this->Distance2Below(slot) >= this->Clear2) && this->ShrinkWhileBlocked(slot);
+  }
+
+  // ShrinkOn past the quick tests.
+  bool ShrinkWhileBlocked(std::int32_t slot)
+  {
     const double* a = &this->Tree.Vertices[9 * slot];
     const double* b = a + 3;
     const double* c = a + 6;
-    if (this->CannotBlock(slot) || this->Distance2Below(slot) >= this->Clear2)
-    {
-      return false; // (the second: it misses the ball, as Blocks would find at more cost)
-    }
     double q[3];
     bool touches;
     for (int step = 0; step < StepsBeforeBracketing; ++step)
@@ -1602,7 +1630,7 @@ private:
     const vtkMedialBuffer<WideNode>& wides = this->Tree.WideNodes;
     std::vector<PendingLane>& stack = this->Work.Lanes;
     float d2[4];
-    if (!this->OpenLanes(root / 4, d2, 1 << (root % 4)))
+    if (!this->OpenLanes(WideOf(root), d2, 1 << LaneOf(root)))
     {
       return;
     }
@@ -1620,8 +1648,8 @@ private:
       {
         continue;
       }
-      const WideNode& holder = wides[ref / 4];
-      const int lane = ref % 4;
+      const WideNode& holder = wides[WideOf(ref)];
+      const int lane = LaneOf(ref);
       if (shrunk)
       {
         FloatNodeTests::Lanes lanes;
@@ -1634,9 +1662,8 @@ private:
       const std::int32_t child = holder.Child[lane];
       if (child < 0)
       {
-        const std::int32_t start = ~child / LeafCodeScale;
-        const std::int32_t end = start + ~child % LeafCodeScale;
-        for (std::int32_t slot = start; slot < end; ++slot)
+        const LeafSlots leaf(child);
+        for (std::int32_t slot = leaf.Start; slot < leaf.End; ++slot)
         {
           this->Visit(slot);
         }
@@ -1728,8 +1755,8 @@ private:
       {
         const PendingLane pending = stack.back();
         stack.pop_back();
-        const WideNode& holder = this->Tree.WideNodes[pending.Ref / 4];
-        const int lane = pending.Ref % 4;
+        const WideNode& holder = this->Tree.WideNodes[WideOf(pending.Ref)];
+        const int lane = LaneOf(pending.Ref);
         if (pending.Steps != shrinks &&
           MissesBall(FloatNodeTests::LaneNode(holder, lane), this->CentreRel, std::sqrt(best2)))
         {
@@ -1738,8 +1765,8 @@ private:
         const std::int32_t child = holder.Child[lane];
         if (child < 0)
         {
-          const std::int32_t start = ~child / LeafCodeScale;
-          for (std::int32_t slot = start; slot < start + ~child % LeafCodeScale; ++slot)
+          const LeafSlots leaf(child);
+          for (std::int32_t slot = leaf.Start; slot < leaf.End; ++slot)
           {
             if (test(slot))
             {
@@ -2010,26 +2037,41 @@ private:
 };
 
 // Where the ray (origin o relative to the tree's origin, inverse direction inv) enters
-// the node's box, when it does within [tMin, tMax]. A zero direction component gives
-// NaN at the box's face: comparisons with NaN fail, so the test stays conservative.
-bool RayEntersBox(const Node& node, const double o[3], const double inv[3], double tMin, double tMax, double& tEnter)
+// a node's box from tMin on, and where it leaves it: kept with the node on the stack,
+// so that a node popped after the hit came nearer needs no second box test.
+struct RaySpan
 {
-  double t0 = tMin, t1 = tMax;
-  for (int k = 0; k < 3; ++k)
+  std::int32_t Index; // the node
+  double Enter, Exit;
+  RaySpan(const vtkMedialBuffer<Node>& nodes, std::int32_t index, const double o[3], const double inv[3],
+    double tMin)
+    : Index(index)
+    , Enter(tMin)
+    , Exit(HUGE_VAL)
   {
-    double a = (node.Lo[k] - o[k]) * inv[k];
-    double b = (node.Hi[k] - o[k]) * inv[k];
-    if (a > b)
+    // A zero direction component gives NaN at the box's face: comparisons with NaN
+    // fail, so the span stays conservative.
+    const vtkMedialTriangleBVH::Node& node = nodes[index];
+    for (int k = 0; k < 3; ++k)
     {
-      std::swap(a, b);
+      double a = (node.Lo[k] - o[k]) * inv[k];
+      double b = (node.Hi[k] - o[k]) * inv[k];
+      if (a > b)
+      {
+        std::swap(a, b);
+      }
+      this->Enter = a > this->Enter ? a : this->Enter;
+      this->Exit = b < this->Exit ? b : this->Exit;
     }
-    t0 = a > t0 ? a : t0;
-    t1 = b < t1 ? b : t1;
   }
-  tEnter = t0;
-  // The box is padded outward; the slack covers the rounding of the products.
-  return t0 <= t1 + 1e-12 * std::fabs(t1);
-}
+  // The ray meets the box before tMax. The box is padded outward; the slack covers the
+  // rounding of the products.
+  bool Before(double tMax) const
+  {
+    const double t1 = this->Exit < tMax ? this->Exit : tMax;
+    return this->Enter <= t1 + 1e-12 * std::fabs(t1);
+  }
+};
 }
 
 bool vtkMedialTriangleBVH::IntersectRay(const double origin[3], const double direction[3], double tMin,
@@ -2048,36 +2090,38 @@ bool vtkMedialTriangleBVH::IntersectRay(const double origin[3], const double dir
   }
   double best = tMax;
   triangle = -1;
-  thread_local std::vector<std::int32_t> stack; // own stack: not the per-sample scratch
-  stack.assign(1, 0);
-  double enter;
-  if (!RayEntersBox(this->Nodes[0], o, inv, tMin, best, enter))
+  thread_local std::vector<RaySpan> stack; // own stack: not the per-sample scratch
+  stack.clear();
+  const RaySpan root(this->Nodes, 0, o, inv, tMin);
+  if (!root.Before(best))
   {
     return false;
   }
+  stack.push_back(root);
   while (!stack.empty())
   {
-    const Node& node = this->Nodes[stack.back()];
+    const RaySpan span = stack.back();
     stack.pop_back();
-    if (!RayEntersBox(node, o, inv, tMin, best, enter))
+    if (!span.Before(best))
     {
       continue; // best shrank since the node was pushed
     }
+    const Node& node = this->Nodes[span.Index];
     if (node.Count == 0)
     {
-      double enterLeft, enterRight;
-      const bool left = RayEntersBox(this->Nodes[node.Start], o, inv, tMin, best, enterLeft);
-      const bool right = RayEntersBox(this->Nodes[node.Start + 1], o, inv, tMin, best, enterRight);
-      if (left && right)
+      const RaySpan left(this->Nodes, node.Start, o, inv, tMin);
+      const RaySpan right(this->Nodes, node.Start + 1, o, inv, tMin);
+      const bool inLeft = left.Before(best), inRight = right.Before(best);
+      if (inLeft && inRight)
       {
         // Nearer child on top; ties to the left one.
-        const bool rightFirst = enterRight < enterLeft;
-        stack.push_back(rightFirst ? node.Start : node.Start + 1);
-        stack.push_back(rightFirst ? node.Start + 1 : node.Start);
+        const bool rightFirst = right.Enter < left.Enter;
+        stack.push_back(rightFirst ? left : right);
+        stack.push_back(rightFirst ? right : left);
       }
-      else if (left || right)
+      else if (inLeft || inRight)
       {
-        stack.push_back(left ? node.Start : node.Start + 1);
+        stack.push_back(inLeft ? left : right);
       }
       continue;
     }
