@@ -702,9 +702,24 @@ inline void Prefetch(const void* p)
 }
 
 // Widen(bounds, item's box, its centroid as a point), written out so that the binning
-// loop, the build's hottest, inlines it (a call per item and level before).
+// loop, the build's hottest, inlines it (a call per item and level before), and two
+// coordinates at a time where SSE2 is available: minpd(x, y) is (x < y ? x : y), which
+// is std::min(y, x) to the bit (NaN and signed zeros alike), and maxpd likewise.
 inline void WidenByItem(BuildBounds& bounds, const BuildItem& item)
 {
+#if defined(__SSE2__)
+  const __m128d lo01 = _mm_loadu_pd(item.Lo), lo2 = _mm_load_sd(item.Lo + 2);
+  const __m128d hi01 = _mm_loadu_pd(item.Hi), hi2 = _mm_load_sd(item.Hi + 2);
+  const __m128d c01 = _mm_loadu_pd(item.Centroid), c2 = _mm_load_sd(item.Centroid + 2);
+  _mm_storeu_pd(bounds.Lo, _mm_min_pd(lo01, _mm_loadu_pd(bounds.Lo)));
+  _mm_store_sd(bounds.Lo + 2, _mm_min_sd(lo2, _mm_load_sd(bounds.Lo + 2)));
+  _mm_storeu_pd(bounds.Hi, _mm_max_pd(hi01, _mm_loadu_pd(bounds.Hi)));
+  _mm_store_sd(bounds.Hi + 2, _mm_max_sd(hi2, _mm_load_sd(bounds.Hi + 2)));
+  _mm_storeu_pd(bounds.CLo, _mm_min_pd(c01, _mm_loadu_pd(bounds.CLo)));
+  _mm_store_sd(bounds.CLo + 2, _mm_min_sd(c2, _mm_load_sd(bounds.CLo + 2)));
+  _mm_storeu_pd(bounds.CHi, _mm_max_pd(c01, _mm_loadu_pd(bounds.CHi)));
+  _mm_store_sd(bounds.CHi + 2, _mm_max_sd(c2, _mm_load_sd(bounds.CHi + 2)));
+#else
   for (int k = 0; k < 3; ++k)
   {
     bounds.Lo[k] = std::min(bounds.Lo[k], item.Lo[k]);
@@ -712,6 +727,7 @@ inline void WidenByItem(BuildBounds& bounds, const BuildItem& item)
     bounds.CLo[k] = std::min(bounds.CLo[k], item.Centroid[k]);
     bounds.CHi[k] = std::max(bounds.CHi[k], item.Centroid[k]);
   }
+#endif
 }
 
 // Partitions [first, last) so that the items satisfying `before` come first, by the
