@@ -571,6 +571,81 @@ void FoldRange(std::int32_t begin, std::int32_t end, T& total, Fold fold, Merge 
 
 // Scratch space reused by every query on a thread: no allocation per sample.
 // A lane waiting in the tangent search, with the number of radius updates when it was pushed.
+// A lane reference's wide node and lane. References are never negative, so these
+// are shifts, not signed division (which took a fifth of the walk's own instructions).
+inline std::int32_t WideOf(std::int32_t ref)
+{
+  return static_cast<std::int32_t>(static_cast<std::uint32_t>(ref) / 4u);
+}
+inline int LaneOf(std::int32_t ref)
+{
+  return static_cast<int>(static_cast<std::uint32_t>(ref) % 4u);
+}
+
+// The leaf-order slots [Start, End) of a leaf lane, whose child code is ~(start *
+// LeafCodeScale + count).
+struct LeafSlots
+{
+  std::int32_t Start, End;
+  explicit LeafSlots(std::int32_t child)
+  {
+    const std::uint32_t code = ~static_cast<std::uint32_t>(child);
+    this->Start = static_cast<std::int32_t>(code / static_cast<std::uint32_t>(LeafCodeScale));
+    this->End = this->Start + static_cast<std::int32_t>(code % static_cast<std::uint32_t>(LeafCodeScale));
+  }
+};
+
+// The lanes set in `keep` (bit i: lane i), nearest first by `d2` in order[0, count),
+// count returned; the rest of `order` holds the others. The walk's order only changes
+// its speed, and an insertion sort over data-dependent bits cost more in mispredicted
+// branches than in compares, so this sorts without branches: each key is the
+// distance (a non-negative float) with its two lowest bits replaced by the lane
+// number, dropped lanes keyed near the largest float, in a sorting network. Distances
+// within 2 ulps of each other tie, and ties go to the lower lane.
+inline int NearestLanesFirst(int keep, const float d2[4], int order[4])
+{
+  constexpr int Bits[16] = { 0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4 };
+  alignas(16) std::int32_t key[4];
+#if defined(__SSE2__)
+  const __m128i lane = _mm_set_epi32(3, 2, 1, 0);
+  const __m128i bit = _mm_set_epi32(8, 4, 2, 1);
+  const __m128i kept = _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(keep), bit), bit);
+  const __m128i distance = _mm_or_si128(_mm_and_si128(_mm_castps_si128(_mm_loadu_ps(d2)), _mm_set1_epi32(~3)), lane);
+  const __m128i dropped = _mm_or_si128(_mm_set1_epi32(0x7F7FFFFC), lane);
+  __m128 v = _mm_castsi128_ps(_mm_or_si128(_mm_and_si128(kept, distance), _mm_andnot_si128(kept, dropped)));
+  // (0 1) (2 3), then the smaller pair's and the larger pair's ends, then the middle two.
+  __m128 t = _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1));
+  v = _mm_shuffle_ps(_mm_min_ps(v, t), _mm_max_ps(v, t), _MM_SHUFFLE(2, 0, 2, 0)); // lo01 lo23 hi01 hi23
+  t = _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1));
+  const __m128 low = _mm_min_ps(v, t), high = _mm_max_ps(v, t);
+  v = _mm_shuffle_ps(low, high, _MM_SHUFFLE(2, 0, 2, 0)); // first, two in the middle, last
+  t = _mm_shuffle_ps(v, v, _MM_SHUFFLE(3, 1, 2, 0));
+  v = _mm_shuffle_ps(_mm_min_ps(v, t), _mm_max_ps(v, t), _MM_SHUFFLE(3, 2, 1, 0));
+  _mm_store_si128(reinterpret_cast<__m128i*>(key), _mm_castps_si128(v));
+#else
+  for (int i = 0; i < 4; ++i)
+  {
+    std::int32_t bits;
+    std::memcpy(&bits, &d2[i], sizeof(bits));
+    key[i] = (keep >> i) & 1 ? (bits & ~3) | i : 0x7F7FFFFC | i;
+  }
+  // Non-negative floats order like their bits.
+  const int pairs[5][2] = { { 0, 1 }, { 2, 3 }, { 0, 2 }, { 1, 3 }, { 1, 2 } };
+  for (const auto& pair : pairs)
+  {
+    if (key[pair[1]] < key[pair[0]])
+    {
+      std::swap(key[pair[0]], key[pair[1]]);
+    }
+  }
+#endif
+  for (int i = 0; i < 4; ++i)
+  {
+    order[i] = key[i] & 3;
+  }
+  return Bits[keep & 0xF];
+}
+
 struct PendingLane
 {
   std::int32_t Ref, Steps;
@@ -611,6 +686,7 @@ struct BuildItem
 };
 // A build item in doubles: the items live in the leaf-order vertices' storage (9 doubles a triangle).
 constexpr size_t ItemDoubles = (sizeof(BuildItem) + sizeof(double) - 1) / sizeof(double);
+static_assert(sizeof(vtkMedialTriangleBVH::LeafTriangle) == 64, "a leaf triangle is one cache line");
 static_assert(ItemDoubles * sizeof(double) == sizeof(BuildItem) && alignof(BuildItem) <= alignof(double) &&
     ItemDoubles >= 9,
   "build items must tile the vertices' storage");
@@ -626,9 +702,24 @@ inline void Prefetch(const void* p)
 }
 
 // Widen(bounds, item's box, its centroid as a point), written out so that the binning
-// loop, the build's hottest, inlines it (a call per item and level before).
+// loop, the build's hottest, inlines it (a call per item and level before), and two
+// coordinates at a time where SSE2 is available: minpd(x, y) is (x < y ? x : y), which
+// is std::min(y, x) to the bit (NaN and signed zeros alike), and maxpd likewise.
 inline void WidenByItem(BuildBounds& bounds, const BuildItem& item)
 {
+#if defined(__SSE2__)
+  const __m128d lo01 = _mm_loadu_pd(item.Lo), lo2 = _mm_load_sd(item.Lo + 2);
+  const __m128d hi01 = _mm_loadu_pd(item.Hi), hi2 = _mm_load_sd(item.Hi + 2);
+  const __m128d c01 = _mm_loadu_pd(item.Centroid), c2 = _mm_load_sd(item.Centroid + 2);
+  _mm_storeu_pd(bounds.Lo, _mm_min_pd(lo01, _mm_loadu_pd(bounds.Lo)));
+  _mm_store_sd(bounds.Lo + 2, _mm_min_sd(lo2, _mm_load_sd(bounds.Lo + 2)));
+  _mm_storeu_pd(bounds.Hi, _mm_max_pd(hi01, _mm_loadu_pd(bounds.Hi)));
+  _mm_store_sd(bounds.Hi + 2, _mm_max_sd(hi2, _mm_load_sd(bounds.Hi + 2)));
+  _mm_storeu_pd(bounds.CLo, _mm_min_pd(c01, _mm_loadu_pd(bounds.CLo)));
+  _mm_store_sd(bounds.CLo + 2, _mm_min_sd(c2, _mm_load_sd(bounds.CLo + 2)));
+  _mm_storeu_pd(bounds.CHi, _mm_max_pd(c01, _mm_loadu_pd(bounds.CHi)));
+  _mm_store_sd(bounds.CHi + 2, _mm_max_sd(c2, _mm_load_sd(bounds.CHi + 2)));
+#else
   for (int k = 0; k < 3; ++k)
   {
     bounds.Lo[k] = std::min(bounds.Lo[k], item.Lo[k]);
@@ -636,6 +727,7 @@ inline void WidenByItem(BuildBounds& bounds, const BuildItem& item)
     bounds.CLo[k] = std::min(bounds.CLo[k], item.Centroid[k]);
     bounds.CHi[k] = std::max(bounds.CHi[k], item.Centroid[k]);
   }
+#endif
 }
 
 // Partitions [first, last) so that the items satisfying `before` come first, by the
@@ -859,20 +951,19 @@ bool vtkMedialTriangleBVH::BuildNodes(const vtkMedialTriangleMesh& mesh, const s
   vtkMedialReleaseSpareCapacity(this->Nodes);
   // The leaf order, the ranks and each triangle's float box, from the items (before
   // CopyInLeafOrder writes the vertices over them).
-  this->TriangleIds.resize(nt);
+  this->LeafTriangles.resize(nt);
   this->LeafRank.resize(nt);
-  this->TriangleBoxes.resize(6 * static_cast<size_t>(nt) + 4); // + 4: read four floats at a time
-  std::fill_n(this->TriangleBoxes.end() - 4, 4, 0.0f);
 #pragma omp parallel for schedule(static)
   for (vtkIdType i = 0; i < nt; ++i)
   {
     const BuildItem& item = state.Items[i];
-    this->TriangleIds[i] = item.Triangle;
+    LeafTriangle& leaf = this->LeafTriangles[i];
+    leaf.Triangle = item.Triangle;
     this->LeafRank[item.Triangle] = static_cast<std::int32_t>(i);
     for (int k = 0; k < 3; ++k)
     {
-      this->TriangleBoxes[6 * i + k] = Down(item.Lo[k] - this->Origin[k], this->RoundingPad);
-      this->TriangleBoxes[6 * i + 3 + k] = Up(item.Hi[k] - this->Origin[k], this->RoundingPad);
+      leaf.Lo[k] = Down(item.Lo[k] - this->Origin[k], this->RoundingPad);
+      leaf.Hi[k] = Up(item.Hi[k] - this->Origin[k], this->RoundingPad);
     }
   }
   return true;
@@ -883,7 +974,6 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh)
 {
   const vtkIdType nt = mesh.GetNumberOfTriangles();
   this->Vertices.resize(9 * static_cast<size_t>(nt)); // over the build items, read by now
-  this->Planes.resize(4 * static_cast<size_t>(nt));
   // Gathers from all over the mesh: each slot's triangle is fetched ahead (its corners and
   // normal a little less far ahead, once its vertex ids are in).
   constexpr vtkIdType Ahead = 16;
@@ -892,26 +982,30 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh)
   {
     if (i + 2 * Ahead < nt)
     {
-      Prefetch(mesh.GetTriangle(this->TriangleIds[i + 2 * Ahead]));
+      Prefetch(mesh.GetTriangle(this->LeafTriangles[i + 2 * Ahead].Triangle));
     }
     if (i + Ahead < nt)
     {
-      const vtkIdType ahead = this->TriangleIds[i + Ahead];
+      const vtkIdType ahead = this->LeafTriangles[i + Ahead].Triangle;
       const vtkIdType* w = mesh.GetTriangle(ahead);
       Prefetch(mesh.GetNormal(ahead));
       Prefetch(mesh.GetPoint(w[0]));
       Prefetch(mesh.GetPoint(w[1]));
       Prefetch(mesh.GetPoint(w[2]));
     }
-    const vtkIdType t = this->TriangleIds[i];
-    const vtkIdType* v = mesh.GetTriangle(t);
-    const double* normal = mesh.GetNormal(t);
-    std::copy_n(normal, 3, &this->Planes[4 * i]);
-    this->Planes[4 * i + 3] = G::Dot(normal, mesh.GetPoint(v[0]));
+    LeafTriangle& leaf = this->LeafTriangles[i];
+    const vtkIdType* v = mesh.GetTriangle(leaf.Triangle);
+    const double* normal = mesh.GetNormal(leaf.Triangle);
+    std::copy_n(normal, 3, leaf.Plane);
+    leaf.Plane[3] = G::Dot(normal, mesh.GetPoint(v[0]));
+    double* corners = &this->Vertices[9 * i];
     for (int j = 0; j < 3; ++j)
     {
-      std::copy_n(mesh.GetPoint(v[j]), 3, &this->Vertices[9 * i + 3 * j]);
+      std::copy_n(mesh.GetPoint(v[j]), 3, corners + 3 * j);
     }
+    const double longest = std::max({ G::Distance2(corners, corners + 3),
+      G::Distance2(corners + 3, corners + 6), G::Distance2(corners + 6, corners) });
+    leaf.EdgeThird = FloatAbove(static_cast<float>(longest / 3.0));
   }
   vtkMedialReleaseSpareCapacity(this->Vertices); // the build items' last tenth
 }
@@ -1013,7 +1107,7 @@ std::int32_t vtkMedialTriangleBVH::WideSubtree(std::int32_t binary, std::int32_t
     {
       if (pending.Ref >= 0)
       {
-        this->WideNodes[pending.Ref / 4].Child[pending.Ref % 4] = index;
+        this->WideNodes[WideOf(pending.Ref)].Child[LaneOf(pending.Ref)] = index;
       }
       this->WriteWideNode(index, lanes, count);
     }
@@ -1031,8 +1125,8 @@ std::int32_t vtkMedialTriangleBVH::WideSubtree(std::int32_t binary, std::int32_t
 bool vtkMedialTriangleBVH::BuildWideNodes()
 {
   this->WideNodes.clear();
-  this->LeafLane.resize(this->TriangleIds.size());
-  if (this->Nodes.empty() || this->TriangleIds.size() >= (size_t(1) << 28))
+  this->LeafLane.resize(this->LeafTriangles.size());
+  if (this->Nodes.empty() || this->LeafTriangles.size() >= (size_t(1) << 28))
   {
     return false;
   }
@@ -1420,7 +1514,7 @@ private:
     G::AddScaled(this->PRel, this->Radius, this->N, this->CentreRel);
     this->Fast->SetBall(this->CentreRel, this->Radius);
     G::Copy(q, this->Result.Contact);
-    this->Result.ContactTriangle = this->Tree.TriangleIds[slot];
+    this->Result.ContactTriangle = this->Tree.LeafTriangles[slot].Triangle;
     this->Result.Blockers.Add(this->Result.ContactTriangle);
     ++this->Result.Steps;
   }
@@ -1430,22 +1524,31 @@ private:
   // drops the cap's triangles around p (kept aside for InscribeInCap).
   bool CannotBlock(std::int32_t slot) const
   {
-    const double* plane = &this->Tree.Planes[4 * slot];
-    if (std::fabs(G::Dot(plane, this->Centre) - plane[3]) >= this->Radius)
+    const LeafTriangle& leaf = this->Tree.LeafTriangles[slot];
+    if (std::fabs(G::Dot(leaf.Plane, this->Centre) - leaf.Plane[3]) >= this->Radius)
     {
       return true;
     }
-    const float* lo = &this->Tree.TriangleBoxes[6 * slot];
-    if (this->Fast->BoxMissesBall(lo, lo + 3))
+    if (this->Fast->BoxMissesBall(leaf.Lo, leaf.Hi))
     {
       return true;
     }
-    const FloatNodeTests::Sides side = this->Fast->Side(lo, lo + 3);
+    const FloatNodeTests::Sides side = this->Fast->Side(leaf.Lo, leaf.Hi);
     if (side == FloatNodeTests::OUTSIDE_CONE && this->Inscribe)
     {
       this->Work.CapSlots.push_back(slot); // it may cross the final ball in the cap
     }
     return side != FloatNodeTests::ABOVE;
+  }
+
+  // vtkMedialGeometry::TriangleDistance2Below of the triangle at `slot` from the centre,
+  // with the edge term stored rounded up: never above it, so a skip it allows is sound.
+  double Distance2Below(std::int32_t slot) const
+  {
+    const double* a = &this->Tree.Vertices[9 * slot];
+    const double nearest =
+      std::min({ G::Distance2(this->Centre, a), G::Distance2(this->Centre, a + 3), G::Distance2(this->Centre, a + 6) });
+    return nearest - this->Tree.LeafTriangles[slot].EdgeThird;
   }
 
   // reach^2 and room for the rounding of an exact squared distance, whose closest
@@ -1462,13 +1565,17 @@ private:
   // smaller ball lowers the cap's plane, so it must be looked at again.
   bool ShrinkOn(std::int32_t slot)
   {
+    // The second test: it misses the ball, as Blocks would find at more cost. Most
+    // triangles stop here, so this part is small enough to inline into the walk.
+    return !this->CannotBlock(slot) && !(this->Distance2Below(slot) >= this->Clear2) && this->ShrinkWhileBlocked(slot);
+  }
+
+  // ShrinkOn past the quick tests.
+  bool ShrinkWhileBlocked(std::int32_t slot)
+  {
     const double* a = &this->Tree.Vertices[9 * slot];
     const double* b = a + 3;
     const double* c = a + 6;
-    if (this->CannotBlock(slot) || G::TriangleDistance2Below(this->Centre, a, b, c) >= this->Clear2)
-    {
-      return false; // (the second: it misses the ball, as Blocks would find at more cost)
-    }
     double q[3];
     bool touches;
     for (int step = 0; step < StepsBeforeBracketing; ++step)
@@ -1553,7 +1660,7 @@ private:
   // only in the cap is set aside for another look.
   void Visit(std::int32_t slot)
   {
-    if (this->Tree.TriangleIds[slot] != this->OwnTriangle && this->ShrinkOn(slot))
+    if (this->Tree.LeafTriangles[slot].Triangle != this->OwnTriangle && this->ShrinkOn(slot))
     {
       this->Work.Deferred.push_back(slot);
       this->Work.DeferredSteps.push_back(this->Result.Steps);
@@ -1590,7 +1697,7 @@ private:
     const vtkMedialBuffer<WideNode>& wides = this->Tree.WideNodes;
     std::vector<PendingLane>& stack = this->Work.Lanes;
     float d2[4];
-    if (!this->OpenLanes(root / 4, d2, 1 << (root % 4)))
+    if (!this->OpenLanes(WideOf(root), d2, 1 << LaneOf(root)))
     {
       return;
     }
@@ -1608,8 +1715,8 @@ private:
       {
         continue;
       }
-      const WideNode& holder = wides[ref / 4];
-      const int lane = ref % 4;
+      const WideNode& holder = wides[WideOf(ref)];
+      const int lane = LaneOf(ref);
       if (shrunk)
       {
         FloatNodeTests::Lanes lanes;
@@ -1622,37 +1729,26 @@ private:
       const std::int32_t child = holder.Child[lane];
       if (child < 0)
       {
-        const std::int32_t start = ~child / LeafCodeScale;
-        const std::int32_t end = start + ~child % LeafCodeScale;
-        for (std::int32_t slot = start; slot < end; ++slot)
+        const LeafSlots leaf(child);
+        for (std::int32_t slot = leaf.Start; slot < leaf.End; ++slot)
         {
           this->Visit(slot);
         }
         continue;
       }
-      const int keep = this->OpenLanes(child, d2);
-      // Nearest lane on top (ties: the lower lane): push the others first.
-      int order[4], count = 0;
-      for (int i = 0; i < 4; ++i)
-      {
-        if (keep & (1 << i))
-        {
-          int j = count++;
-          for (; j > 0 && d2[order[j - 1]] > d2[i]; --j)
-          {
-            order[j] = order[j - 1];
-          }
-          order[j] = i;
-        }
-      }
+      int order[4];
+      const int count = NearestLanesFirst(this->OpenLanes(child, d2), d2, order);
       if (top + 4 > stack.size())
       {
         stack.resize(2 * stack.size());
       }
-      for (int j = count - 1; j >= 0; --j)
+      // Nearest lane on top: the others pushed first. All four slots are written (no
+      // branch on count); those past count are left above the top.
+      for (int j = 0; j < 4; ++j)
       {
-        stack[top++] = { 4 * child + order[j], this->Result.Steps };
+        stack[top + j] = { 4 * child + order[(count - 1 - j) & 3], this->Result.Steps };
       }
+      top += count;
     }
   }
 
@@ -1672,15 +1768,15 @@ private:
     double clear2 = this->ClearOf(reach); // follows best2
     std::int32_t bestSlot = -1;
     auto test = [&](std::int32_t slot) -> bool {
-      const double* plane = &this->Tree.Planes[4 * slot];
-      const double off = G::Dot(plane, this->Centre) - plane[3];
-      if (this->Tree.TriangleIds[slot] == this->OwnTriangle || off * off >= best2)
+      const LeafTriangle& leaf = this->Tree.LeafTriangles[slot];
+      const double off = G::Dot(leaf.Plane, this->Centre) - leaf.Plane[3];
+      if (leaf.Triangle == this->OwnTriangle || off * off >= best2)
       {
         return false;
       }
       const double* a = &this->Tree.Vertices[9 * slot];
       double q[3];
-      if (G::TriangleDistance2Below(this->Centre, a, a + 3, a + 6) >= clear2 ||
+      if (this->Distance2Below(slot) >= clear2 ||
         G::ClosestPointOnTriangle(this->Centre, a, a + 3, a + 6, q) >= best2)
       {
         return false; // the whole triangle is no closer than its part in the cap
@@ -1716,8 +1812,8 @@ private:
       {
         const PendingLane pending = stack.back();
         stack.pop_back();
-        const WideNode& holder = this->Tree.WideNodes[pending.Ref / 4];
-        const int lane = pending.Ref % 4;
+        const WideNode& holder = this->Tree.WideNodes[WideOf(pending.Ref)];
+        const int lane = LaneOf(pending.Ref);
         if (pending.Steps != shrinks &&
           MissesBall(FloatNodeTests::LaneNode(holder, lane), this->CentreRel, std::sqrt(best2)))
         {
@@ -1726,8 +1822,8 @@ private:
         const std::int32_t child = holder.Child[lane];
         if (child < 0)
         {
-          const std::int32_t start = ~child / LeafCodeScale;
-          for (std::int32_t slot = start; slot < start + ~child % LeafCodeScale; ++slot)
+          const LeafSlots leaf(child);
+          for (std::int32_t slot = leaf.Start; slot < leaf.End; ++slot)
           {
             if (test(slot))
             {
@@ -1754,7 +1850,7 @@ private:
       this->Result.Shrunk = true;
       this->Result.InscribedRadius = std::sqrt(best2);
       std::copy(best, best + 3, this->Result.InscribedContact);
-      this->Result.InscribedTriangle = this->Tree.TriangleIds[bestSlot];
+      this->Result.InscribedTriangle = this->Tree.LeafTriangles[bestSlot].Triangle;
     }
   }
 
@@ -1832,9 +1928,9 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
       for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
       {
         // Cheapest first: the triangle's plane misses the ball.
-        const double* plane = &this->Planes[4 * slot];
-        const double off = G::Dot(plane, x) - plane[3];
-        if (this->TriangleIds[slot] == ownTriangle || off * off >= reach2)
+        const LeafTriangle& leaf = this->LeafTriangles[slot];
+        const double off = G::Dot(leaf.Plane, x) - leaf.Plane[3];
+        if (leaf.Triangle == ownTriangle || off * off >= reach2)
         {
           continue;
         }
@@ -1846,7 +1942,7 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
         {
           d2 = G::ClosestPointOnClippedTriangle(x, a, a + 3, a + 6, w, k, q);
         }
-        if (!visit(d2, q, this->TriangleIds[slot]))
+        if (!visit(d2, q, leaf.Triangle))
         {
           scratch.Stack.clear();
           return;
@@ -1998,26 +2094,41 @@ private:
 };
 
 // Where the ray (origin o relative to the tree's origin, inverse direction inv) enters
-// the node's box, when it does within [tMin, tMax]. A zero direction component gives
-// NaN at the box's face: comparisons with NaN fail, so the test stays conservative.
-bool RayEntersBox(const Node& node, const double o[3], const double inv[3], double tMin, double tMax, double& tEnter)
+// a node's box from tMin on, and where it leaves it: kept with the node on the stack,
+// so that a node popped after the hit came nearer needs no second box test.
+struct RaySpan
 {
-  double t0 = tMin, t1 = tMax;
-  for (int k = 0; k < 3; ++k)
+  std::int32_t Index; // the node
+  double Enter, Exit;
+  RaySpan(const vtkMedialBuffer<Node>& nodes, std::int32_t index, const double o[3], const double inv[3],
+    double tMin)
+    : Index(index)
+    , Enter(tMin)
+    , Exit(HUGE_VAL)
   {
-    double a = (node.Lo[k] - o[k]) * inv[k];
-    double b = (node.Hi[k] - o[k]) * inv[k];
-    if (a > b)
+    // A zero direction component gives NaN at the box's face: comparisons with NaN
+    // fail, so the span stays conservative.
+    const vtkMedialTriangleBVH::Node& node = nodes[index];
+    for (int k = 0; k < 3; ++k)
     {
-      std::swap(a, b);
+      double a = (node.Lo[k] - o[k]) * inv[k];
+      double b = (node.Hi[k] - o[k]) * inv[k];
+      if (a > b)
+      {
+        std::swap(a, b);
+      }
+      this->Enter = a > this->Enter ? a : this->Enter;
+      this->Exit = b < this->Exit ? b : this->Exit;
     }
-    t0 = a > t0 ? a : t0;
-    t1 = b < t1 ? b : t1;
   }
-  tEnter = t0;
-  // The box is padded outward; the slack covers the rounding of the products.
-  return t0 <= t1 + 1e-12 * std::fabs(t1);
-}
+  // The ray meets the box before tMax. The box is padded outward; the slack covers the
+  // rounding of the products.
+  bool Before(double tMax) const
+  {
+    const double t1 = this->Exit < tMax ? this->Exit : tMax;
+    return this->Enter <= t1 + 1e-12 * std::fabs(t1);
+  }
+};
 }
 
 bool vtkMedialTriangleBVH::IntersectRay(const double origin[3], const double direction[3], double tMin,
@@ -2036,36 +2147,38 @@ bool vtkMedialTriangleBVH::IntersectRay(const double origin[3], const double dir
   }
   double best = tMax;
   triangle = -1;
-  thread_local std::vector<std::int32_t> stack; // own stack: not the per-sample scratch
-  stack.assign(1, 0);
-  double enter;
-  if (!RayEntersBox(this->Nodes[0], o, inv, tMin, best, enter))
+  thread_local std::vector<RaySpan> stack; // own stack: not the per-sample scratch
+  stack.clear();
+  const RaySpan root(this->Nodes, 0, o, inv, tMin);
+  if (!root.Before(best))
   {
     return false;
   }
+  stack.push_back(root);
   while (!stack.empty())
   {
-    const Node& node = this->Nodes[stack.back()];
+    const RaySpan span = stack.back();
     stack.pop_back();
-    if (!RayEntersBox(node, o, inv, tMin, best, enter))
+    if (!span.Before(best))
     {
       continue; // best shrank since the node was pushed
     }
+    const Node& node = this->Nodes[span.Index];
     if (node.Count == 0)
     {
-      double enterLeft, enterRight;
-      const bool left = RayEntersBox(this->Nodes[node.Start], o, inv, tMin, best, enterLeft);
-      const bool right = RayEntersBox(this->Nodes[node.Start + 1], o, inv, tMin, best, enterRight);
-      if (left && right)
+      const RaySpan left(this->Nodes, node.Start, o, inv, tMin);
+      const RaySpan right(this->Nodes, node.Start + 1, o, inv, tMin);
+      const bool inLeft = left.Before(best), inRight = right.Before(best);
+      if (inLeft && inRight)
       {
         // Nearer child on top; ties to the left one.
-        const bool rightFirst = enterRight < enterLeft;
-        stack.push_back(rightFirst ? node.Start : node.Start + 1);
-        stack.push_back(rightFirst ? node.Start + 1 : node.Start);
+        const bool rightFirst = right.Enter < left.Enter;
+        stack.push_back(rightFirst ? left : right);
+        stack.push_back(rightFirst ? right : left);
       }
-      else if (left || right)
+      else if (inLeft || inRight)
       {
-        stack.push_back(left ? node.Start : node.Start + 1);
+        stack.push_back(inLeft ? left : right);
       }
       continue;
     }
@@ -2073,11 +2186,11 @@ bool vtkMedialTriangleBVH::IntersectRay(const double origin[3], const double dir
     {
       const double* v = &this->Vertices[9 * static_cast<size_t>(slot)];
       double hit;
-      if (this->TriangleIds[slot] != ignoreTriangle && ray.Hit(v, v + 3, v + 6, tMin, hit) && hit > tMin &&
-        hit < best)
+      const std::int32_t id = this->LeafTriangles[slot].Triangle;
+      if (id != ignoreTriangle && ray.Hit(v, v + 3, v + 6, tMin, hit) && hit > tMin && hit < best)
       {
         best = hit;
-        triangle = this->TriangleIds[slot];
+        triangle = id;
       }
     }
   }
@@ -2117,7 +2230,7 @@ void vtkMedialTriangleBVH::VisitBox(
     }
     for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
     {
-      if (!visit(this->TriangleIds[slot]))
+      if (!visit(this->LeafTriangles[slot].Triangle))
       {
         return;
       }
