@@ -595,57 +595,6 @@ struct LeafSlots
   }
 };
 
-// The lanes set in `keep` (bit i: lane i), nearest first by `d2` in order[0, count),
-// count returned; the rest of `order` holds the others. The walk's order only changes
-// its speed, and an insertion sort over data-dependent bits cost more in mispredicted
-// branches than in compares, so this sorts without branches: each key is the
-// distance (a non-negative float) with its two lowest bits replaced by the lane
-// number, dropped lanes keyed near the largest float, in a sorting network. Distances
-// within 2 ulps of each other tie, and ties go to the lower lane.
-inline int NearestLanesFirst(int keep, const float d2[4], int order[4])
-{
-  constexpr int Bits[16] = { 0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4 };
-  alignas(16) std::int32_t key[4];
-#if defined(__SSE2__)
-  const __m128i lane = _mm_set_epi32(3, 2, 1, 0);
-  const __m128i bit = _mm_set_epi32(8, 4, 2, 1);
-  const __m128i kept = _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(keep), bit), bit);
-  const __m128i distance = _mm_or_si128(_mm_and_si128(_mm_castps_si128(_mm_loadu_ps(d2)), _mm_set1_epi32(~3)), lane);
-  const __m128i dropped = _mm_or_si128(_mm_set1_epi32(0x7F7FFFFC), lane);
-  __m128 v = _mm_castsi128_ps(_mm_or_si128(_mm_and_si128(kept, distance), _mm_andnot_si128(kept, dropped)));
-  // (0 1) (2 3), then the smaller pair's and the larger pair's ends, then the middle two.
-  __m128 t = _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1));
-  v = _mm_shuffle_ps(_mm_min_ps(v, t), _mm_max_ps(v, t), _MM_SHUFFLE(2, 0, 2, 0)); // lo01 lo23 hi01 hi23
-  t = _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1));
-  const __m128 low = _mm_min_ps(v, t), high = _mm_max_ps(v, t);
-  v = _mm_shuffle_ps(low, high, _MM_SHUFFLE(2, 0, 2, 0)); // first, two in the middle, last
-  t = _mm_shuffle_ps(v, v, _MM_SHUFFLE(3, 1, 2, 0));
-  v = _mm_shuffle_ps(_mm_min_ps(v, t), _mm_max_ps(v, t), _MM_SHUFFLE(3, 2, 1, 0));
-  _mm_store_si128(reinterpret_cast<__m128i*>(key), _mm_castps_si128(v));
-#else
-  for (int i = 0; i < 4; ++i)
-  {
-    std::int32_t bits;
-    std::memcpy(&bits, &d2[i], sizeof(bits));
-    key[i] = (keep >> i) & 1 ? (bits & ~3) | i : 0x7F7FFFFC | i;
-  }
-  // Non-negative floats order like their bits.
-  const int pairs[5][2] = { { 0, 1 }, { 2, 3 }, { 0, 2 }, { 1, 3 }, { 1, 2 } };
-  for (const auto& pair : pairs)
-  {
-    if (key[pair[1]] < key[pair[0]])
-    {
-      std::swap(key[pair[0]], key[pair[1]]);
-    }
-  }
-#endif
-  for (int i = 0; i < 4; ++i)
-  {
-    order[i] = key[i] & 3;
-  }
-  return Bits[keep & 0xF];
-}
-
 struct PendingLane
 {
   std::int32_t Ref, Steps;
@@ -1736,19 +1685,29 @@ private:
         }
         continue;
       }
-      int order[4];
-      const int count = NearestLanesFirst(this->OpenLanes(child, d2), d2, order);
+      const int keep = this->OpenLanes(child, d2);
+      // Nearest lane on top (ties: the lower lane): push the others first.
+      int order[4], count = 0;
+      for (int i = 0; i < 4; ++i)
+      {
+        if (keep & (1 << i))
+        {
+          int j = count++;
+          for (; j > 0 && d2[order[j - 1]] > d2[i]; --j)
+          {
+            order[j] = order[j - 1];
+          }
+          order[j] = i;
+        }
+      }
       if (top + 4 > stack.size())
       {
         stack.resize(2 * stack.size());
       }
-      // Nearest lane on top: the others pushed first. All four slots are written (no
-      // branch on count); those past count are left above the top.
-      for (int j = 0; j < 4; ++j)
+      for (int j = count - 1; j >= 0; --j)
       {
-        stack[top + j] = { 4 * child + order[(count - 1 - j) & 3], this->Result.Steps };
+        stack[top++] = { 4 * child + order[j], this->Result.Steps };
       }
-      top += count;
     }
   }
 
