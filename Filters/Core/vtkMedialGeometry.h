@@ -78,6 +78,18 @@ inline double SegmentDistance2(const double p[3], const double a[3], const doubl
   return Distance2(p, q);
 }
 
+/// TriangleDistance2Below's first term: the squared distance from p to the nearest of a, b, c.
+inline double NearestVertexDistance2(const double p[3], const double a[3], const double b[3], const double c[3])
+{
+  return std::min({ Distance2(p, a), Distance2(p, b), Distance2(p, c) });
+}
+
+/// TriangleDistance2Below's second term before the division by 3: the longest edge's square.
+inline double LongestEdge2(const double a[3], const double b[3], const double c[3])
+{
+  return std::max({ Distance2(a, b), Distance2(b, c), Distance2(c, a) });
+}
+
 /**
  * A lower bound of the squared distance from p to triangle (a, b, c): the nearest
  * vertex's squared distance less a third of the longest edge's square. For a point
@@ -88,9 +100,7 @@ inline double SegmentDistance2(const double p[3], const double a[3], const doubl
  */
 inline double TriangleDistance2Below(const double p[3], const double a[3], const double b[3], const double c[3])
 {
-  const double nearest = std::min({ Distance2(p, a), Distance2(p, b), Distance2(p, c) });
-  const double longest = std::max({ Distance2(a, b), Distance2(b, c), Distance2(c, a) });
-  return nearest - longest / 3.0;
+  return NearestVertexDistance2(p, a, b, c) - LongestEdge2(a, b, c) / 3.0;
 }
 
 /// Closest point to p on triangle (a, b, c); returns the squared distance.

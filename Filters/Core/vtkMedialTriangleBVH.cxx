@@ -569,8 +569,6 @@ void FoldRange(std::int32_t begin, std::int32_t end, T& total, Fold fold, Merge 
   }
 }
 
-// Scratch space reused by every query on a thread: no allocation per sample.
-// A lane waiting in the tangent search, with the number of radius updates when it was pushed.
 // A lane reference's wide node and lane. References are never negative, so these
 // are shifts, not signed division (which took a fifth of the walk's own instructions).
 inline std::int32_t WideOf(std::int32_t ref)
@@ -595,11 +593,13 @@ struct LeafSlots
   }
 };
 
+// A lane waiting in the tangent search, with the number of radius updates when it was pushed.
 struct PendingLane
 {
   std::int32_t Ref, Steps;
 };
 
+// Scratch space reused by every query on a thread: no allocation per sample.
 struct Scratch
 {
   std::vector<PendingLane> Lanes; // the tangent search's stack (sized, not cleared: its top is local)
@@ -952,9 +952,7 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh)
     {
       std::copy_n(mesh.GetPoint(v[j]), 3, corners + 3 * j);
     }
-    const double longest = std::max({ G::Distance2(corners, corners + 3),
-      G::Distance2(corners + 3, corners + 6), G::Distance2(corners + 6, corners) });
-    leaf.EdgeThird = FloatAbove(static_cast<float>(longest / 3.0));
+    leaf.EdgeThird = FloatAbove(static_cast<float>(G::LongestEdge2(corners, corners + 3, corners + 6) / 3.0));
   }
   vtkMedialReleaseSpareCapacity(this->Vertices); // the build items' last tenth
 }
@@ -1495,9 +1493,7 @@ private:
   double Distance2Below(std::int32_t slot) const
   {
     const double* a = &this->Tree.Vertices[9 * slot];
-    const double nearest =
-      std::min({ G::Distance2(this->Centre, a), G::Distance2(this->Centre, a + 3), G::Distance2(this->Centre, a + 6) });
-    return nearest - this->Tree.LeafTriangles[slot].EdgeThird;
+    return G::NearestVertexDistance2(this->Centre, a, a + 3, a + 6) - this->Tree.LeafTriangles[slot].EdgeThird;
   }
 
   // reach^2 and room for the rounding of an exact squared distance, whose closest
