@@ -41,6 +41,21 @@ constexpr vtkIdType HintChain = 32;
 // passes, which the worst faces then close.
 constexpr vtkIdType ClosingShare = 16;
 
+// A box as 6 doubles, low then high corner: EmptyBox holds nothing, AddToBox widens it to x.
+void EmptyBox(double box[6])
+{
+  std::fill(box, box + 3, HUGE_VAL);
+  std::fill(box + 3, box + 6, -HUGE_VAL);
+}
+void AddToBox(double box[6], const double x[3])
+{
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    box[axis] = std::min(box[axis], x[axis]);
+    box[3 + axis] = std::max(box[3 + axis], x[axis]);
+  }
+}
+
 double Distance(const double a[3], const double b[3])
 {
   double d[3];
@@ -406,16 +421,11 @@ void vtkMedialCoverage::Internals::BuildBlockBoxes()
   for (vtkIdType b = 0; b < blocks; ++b)
   {
     double* box = &this->BlockBox[6 * b];
-    std::fill(box, box + 3, HUGE_VAL);
-    std::fill(box + 3, box + 6, -HUGE_VAL);
+    EmptyBox(box);
     for (vtkIdType s = this->BlockFirst[b]; s < this->BlockFirst[b + 1]; ++s)
     {
       const double x[3] = { this->X[s], this->Y[s], this->Z[s] };
-      for (int axis = 0; axis < 3; ++axis)
-      {
-        box[axis] = std::min(box[axis], x[axis]);
-        box[3 + axis] = std::max(box[3 + axis], x[axis]);
-      }
+      AddToBox(box, x);
     }
   }
 }
@@ -880,7 +890,6 @@ struct Runner
         double* p = &round.Points[3 * j];
         vtkIdType hint = -1;
         round.Used[j] = prepare(j, round.Triangles[j], p, hint);
-
         round.Lowered[j].clear();
         if (!round.Used[j])
         {
@@ -1182,8 +1191,7 @@ private:
     for (vtkIdType cell = 0; cell < cells; ++cell)
     {
       double* box = &this->Box[6 * cell];
-      std::fill(box, box + 3, HUGE_VAL);
-      std::fill(box + 3, box + 6, -HUGE_VAL);
+      EmptyBox(box);
       this->Remaining[cell] = this->Grid.ItemOffset(cell + 1) - this->Grid.ItemOffset(cell);
       for (vtkIdType k = this->Grid.ItemOffset(cell); k < this->Grid.ItemOffset(cell + 1); ++k)
       {
@@ -1191,11 +1199,7 @@ private:
         this->Position[this->Items[k]] = k;
         this->CellOfItem[this->Items[k]] = cell;
         this->MinimumRadius[cell] = std::min(this->MinimumRadius[cell], r.Radius);
-        for (int axis = 0; axis < 3; ++axis)
-        {
-          box[axis] = std::min(box[axis], r.Centre[axis]);
-          box[3 + axis] = std::max(box[3 + axis], r.Centre[axis]);
-        }
+        AddToBox(box, r.Centre);
       }
     }
   }
