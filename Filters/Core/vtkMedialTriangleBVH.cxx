@@ -2086,6 +2086,62 @@ struct RaySpan
 };
 }
 
+#if defined(__SSE2__)
+namespace
+{
+// The ray against the four lanes of a wide node at once, in float, on the lanes'
+// boxes padded by Pad on every side. Pad (1e-5 of the tree's extent) is far above
+// the rounding of the float slab products for an origin within a few extents and a
+// direction of about unit length, so a lane whose padded span misses [tMin, tMax]
+// misses the box in exact arithmetic too: the walk visits every leaf the double walk
+// would, and maybe a few more.
+class WideRay
+{
+public:
+  WideRay(const double o[3], const double direction[3], float pad)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      // A zero (or denormal) component: a huge finite inverse instead of inf, so no
+      // 0 * inf makes a NaN; exits stay beyond any t the tree can reach.
+      const double inv = direction[k] != 0.0 ? 1.0 / direction[k] : HUGE_VAL;
+      const float clamped = static_cast<float>(std::max(-1e30, std::min(1e30, inv)));
+      this->O[k] = _mm_set1_ps(static_cast<float>(o[k]));
+      this->Inv[k] = _mm_set1_ps(clamped);
+    }
+    this->Pad = _mm_set1_ps(pad);
+  }
+
+  // Bit i: lane i's padded box meets the ray within [tMin, tMax]; enter[i] its entry.
+  int Test(const vtkMedialTriangleBVH::WideNode& w, float tMin, float tMax, float enter[4]) const
+  {
+    __m128 t0 = _mm_set1_ps(tMin), t1 = _mm_set1_ps(tMax);
+    for (int k = 0; k < 3; ++k)
+    {
+      const __m128 a = _mm_mul_ps(_mm_sub_ps(_mm_sub_ps(_mm_load_ps(w.Lo[k]), this->Pad), this->O[k]), this->Inv[k]);
+      const __m128 b = _mm_mul_ps(_mm_sub_ps(_mm_add_ps(_mm_load_ps(w.Hi[k]), this->Pad), this->O[k]), this->Inv[k]);
+      t0 = _mm_max_ps(t0, _mm_min_ps(a, b));
+      t1 = _mm_min_ps(t1, _mm_max_ps(a, b));
+    }
+    _mm_store_ps(enter, t0);
+    // An empty lane's box is inverted: the swap above would hide that.
+    const __m128 filled = _mm_cmple_ps(_mm_load_ps(w.Lo[0]), _mm_load_ps(w.Hi[0]));
+    return _mm_movemask_ps(_mm_and_ps(_mm_cmple_ps(t0, t1), filled));
+  }
+
+private:
+  __m128 O[3], Inv[3], Pad;
+};
+
+// A lane waiting in the ray walk: its child code and where the ray enters its box.
+struct RayLane
+{
+  std::int32_t Child;
+  float Enter;
+};
+}
+#endif
+
 bool vtkMedialTriangleBVH::IntersectRay(const double origin[3], const double direction[3], double tMin,
   double tMax, vtkIdType ignoreTriangle, double& t, vtkIdType& triangle) const
 {
@@ -2094,14 +2150,94 @@ bool vtkMedialTriangleBVH::IntersectRay(const double origin[3], const double dir
     return false;
   }
   const WatertightRay ray(origin, direction);
-  double o[3], inv[3];
+  double o[3];
   G::Sub(origin, this->Origin, o);
+  double best = tMax;
+  triangle = -1;
+  // The nearest hit, ties to the lower mesh id: the same answer for any walk order.
+  auto hitLeaf = [&](std::int32_t start, std::int32_t end) {
+    for (std::int32_t slot = start; slot < end; ++slot)
+    {
+      const double* v = &this->Vertices[9 * static_cast<size_t>(slot)];
+      double hit;
+      const std::int32_t id = this->LeafTriangles[slot].Triangle;
+      if (id != ignoreTriangle && ray.Hit(v, v + 3, v + 6, tMin, hit) && hit > tMin &&
+        (hit < best || (hit == best && triangle >= 0 && id < triangle)))
+      {
+        best = hit;
+        triangle = id;
+      }
+    }
+  };
+#if defined(__SSE2__)
+  const Node& top = this->Nodes[0];
+  double extent = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    extent = std::max({ extent, std::fabs(static_cast<double>(top.Lo[k])), std::fabs(static_cast<double>(top.Hi[k])) });
+  }
+  const double length2 = G::Dot(direction, direction);
+  const bool near = std::fabs(o[0]) <= 4.0 * extent && std::fabs(o[1]) <= 4.0 * extent &&
+    std::fabs(o[2]) <= 4.0 * extent;
+  if (extent > 0.0 && near && length2 >= 0.25 && length2 <= 4.0 && !this->WideNodes.empty())
+  {
+    // Four lanes at once, nearest entry first.
+    const WideRay wide(o, direction, static_cast<float>(1e-5 * extent));
+    const float from = FloatBelow(static_cast<float>(tMin));
+    float until = FloatAbove(static_cast<float>(best));
+    thread_local std::vector<RayLane> lanes;
+    lanes.clear();
+    alignas(16) float enter[4];
+    if (wide.Test(this->WideNodes[0], from, until, enter) & 1)
+    {
+      lanes.push_back({ this->WideNodes[0].Child[0], enter[0] });
+    }
+    while (!lanes.empty())
+    {
+      const RayLane lane = lanes.back();
+      lanes.pop_back();
+      if (lane.Enter > until)
+      {
+        continue; // the hit came nearer since the lane was pushed
+      }
+      if (lane.Child < 0)
+      {
+        const LeafSlots leaf(lane.Child);
+        hitLeaf(leaf.Start, leaf.End);
+        until = FloatAbove(static_cast<float>(best));
+        continue;
+      }
+      const WideNode& node = this->WideNodes[lane.Child];
+      const int met = wide.Test(node, from, until, enter);
+      // Nearest lane on top (ties: the lower lane): push the others first.
+      int order[4], count = 0;
+      for (int i = 0; i < 4; ++i)
+      {
+        if (met & (1 << i))
+        {
+          int j = count++;
+          for (; j > 0 && enter[order[j - 1]] > enter[i]; --j)
+          {
+            order[j] = order[j - 1];
+          }
+          order[j] = i;
+        }
+      }
+      for (int j = count - 1; j >= 0; --j)
+      {
+        lanes.push_back({ node.Child[order[j]], enter[order[j]] });
+      }
+    }
+    t = best;
+    return triangle >= 0;
+  }
+#endif
+  // In double over the binary tree: far origins, odd directions, no SSE2.
+  double inv[3];
   for (int k = 0; k < 3; ++k)
   {
     inv[k] = 1.0 / direction[k];
   }
-  double best = tMax;
-  triangle = -1;
   thread_local std::vector<RaySpan> stack; // own stack: not the per-sample scratch
   stack.clear();
   const RaySpan root(this->Nodes, 0, o, inv, tMin);
@@ -2137,17 +2273,7 @@ bool vtkMedialTriangleBVH::IntersectRay(const double origin[3], const double dir
       }
       continue;
     }
-    for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
-    {
-      const double* v = &this->Vertices[9 * static_cast<size_t>(slot)];
-      double hit;
-      const std::int32_t id = this->LeafTriangles[slot].Triangle;
-      if (id != ignoreTriangle && ray.Hit(v, v + 3, v + 6, tMin, hit) && hit > tMin && hit < best)
-      {
-        best = hit;
-        triangle = id;
-      }
-    }
+    hitLeaf(node.Start, node.Start + node.Count);
   }
   t = best;
   return triangle >= 0;

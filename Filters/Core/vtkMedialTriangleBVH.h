@@ -133,8 +133,11 @@ public:
    * First triangle other than ignoreTriangle met by the ray origin + t direction,
    * tMin < t < tMax: its t (in units of direction) and mesh id. Watertight in double
    * precision (Woop, Benthin and Wald 2013): a ray through an edge or a vertex meets
-   * at least one triangle around it. Ties go to the first triangle in traversal
-   * order (deterministic for a given mesh). False when the ray meets nothing.
+   * at least one triangle around it. Ties go to the lower mesh id, so the answer
+   * does not depend on the walk: the four-lane nodes in float on padded boxes for a
+   * direction of about unit length from within a few extents of the mesh (every
+   * ray the sampler casts), the binary nodes in double otherwise. False when the
+   * ray meets nothing.
    */
   bool IntersectRay(const double origin[3], const double direction[3], double tMin, double tMax,
     vtkIdType ignoreTriangle, double& t, vtkIdType& triangle) const;
