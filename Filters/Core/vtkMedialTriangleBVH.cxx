@@ -109,6 +109,7 @@ public:
       this->LaneN[k] = _mm_set1_ps(this->N[k]);
     }
     this->LaneMargin = _mm_set1_ps(this->Margin);
+    this->FarMask = _mm_castsi128_ps(_mm_set_epi32(0, -this->Far[2], -this->Far[1], -this->Far[0]));
     this->LaneConeSin2 = _mm_set1_ps(this->ConeSin2);
 #endif
   }
@@ -163,12 +164,20 @@ public:
   Sides Side(const float* lo, const float* hi) const
   {
     // Largest n.(q - p) over the box, plus the margin: an upper bound.
+#if defined(__SSE2__)
+    // The far corner's three terms at once, summed in the scalar order below.
+    const __m128 far = _mm_or_ps(_mm_and_ps(this->FarMask, _mm_loadu_ps(hi)), _mm_andnot_ps(this->FarMask, _mm_loadu_ps(lo)));
+    alignas(16) float terms[4];
+    _mm_store_ps(terms, _mm_mul_ps(_mm_load_ps(this->N), _mm_sub_ps(far, _mm_load_ps(this->P))));
+    const float h = ((this->Margin + terms[0]) + terms[1]) + terms[2];
+#else
     const float* corners[2] = { lo, hi };
     float h = this->Margin;
     for (int k = 0; k < 3; ++k)
     {
       h += this->N[k] * (corners[this->Far[k]][k] - this->P[k]);
     }
+#endif
     if (!(h > 0.0f))
     {
       return BELOW;
@@ -286,6 +295,7 @@ private:
   // The same, broadcast to four lanes once per ball rather than once per node.
   __m128 LaneC[3], LaneP[3], LaneN[3];
   __m128 LaneMargin, LaneConeSin2, LaneRadius, LaneReach2;
+  __m128 FarMask; // all ones in the components where Far is 1
 #endif
 };
 
