@@ -1779,10 +1779,14 @@ private:
         stack.pop_back();
         const WideNode& holder = this->Tree.WideNodes[WideOf(pending.Ref)];
         const int lane = LaneOf(pending.Ref);
-        if (pending.Steps != shrinks &&
-          MissesBall(FloatNodeTests::LaneNode(holder, lane), this->CentreRel, std::sqrt(best2)))
+        if (pending.Steps != shrinks)
         {
-          continue;
+          // In float, as the children's tests (Fast follows best2): a looser test, never a wrong drop.
+          const Node node = FloatNodeTests::LaneNode(holder, lane);
+          if (this->Fast->MissesBall(node, this->Fast->CentreDistance2(node)))
+          {
+            continue;
+          }
         }
         const std::int32_t child = holder.Child[lane];
         if (child < 0)
