@@ -1846,6 +1846,91 @@ void vtkMedialTriangleBVH::MaximalTangentBall(const double p[3], const double n[
   TangentSearch(*this, p, n, ownTriangle, cosMinAngle, slack, allowed, result).Run();
 }
 
+double vtkMedialTriangleBVH::Extent() const
+{
+  double extent = 0.0;
+  for (int k = 0; k < 3 && !this->Nodes.empty(); ++k)
+  {
+    extent = std::max({ extent, std::fabs(static_cast<double>(this->Nodes[0].Lo[k])),
+      std::fabs(static_cast<double>(this->Nodes[0].Hi[k])) });
+  }
+  return extent;
+}
+
+namespace
+{
+// A lane waiting in a wide walk: its child code and its key (a ray's entry, a
+// ball's squared box distance), for skipping it once the query has narrowed.
+struct WaitingLane
+{
+  std::int32_t Child;
+  float Key;
+};
+
+#if defined(__SSE2__)
+// A ball (centre relative to the tree's origin) and optionally a half-space w.q <= k
+// against the four lanes of a wide node at once, in float. Every bound is widened by
+// Pad (1e-5 of the tree's extent), far above the float rounding for a centre within a
+// few extents: a lane is dropped only where the double tests of the binary walk would
+// drop it too.
+class WideBall
+{
+public:
+  WideBall(const double centreRel[3], double extent, const double* w, double kRel)
+    : Pad(static_cast<float>(1e-5 * extent))
+    , HalfSpace(w != nullptr)
+  {
+    double w1 = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      this->C[k] = _mm_set1_ps(static_cast<float>(centreRel[k]));
+      this->W[k] = _mm_set1_ps(w ? static_cast<float>(w[k]) : 0.0f);
+      this->Positive[k] = w && w[k] > 0.0;
+      w1 += w ? std::fabs(w[k]) : 0.0;
+    }
+    // A box lies past the plane when w.q - k > 0 at its lowest corner; in float that
+    // sum is off by a few float steps of w1 * extent + |k|, so the bound is raised by
+    // 1e-6 of that (the boxes' corners are floats: no pad in space is needed).
+    this->K = _mm_set1_ps(FloatAbove(static_cast<float>(kRel + 1e-6 * (w1 * extent + std::fabs(kRel)))));
+  }
+
+  // Bit i: lane i may hold points within `reach` (already widened by the pad) of the
+  // centre on the kept side of the half-space; d2[i] its box's squared distance.
+  int Test(const vtkMedialTriangleBVH::WideNode& n, float reach, float d2[4]) const
+  {
+    const __m128 zero = _mm_setzero_ps();
+    __m128 sum = zero, m = zero, lowest = zero;
+    for (int k = 0; k < 3; ++k)
+    {
+      const __m128 lo = _mm_load_ps(n.Lo[k]), hi = _mm_load_ps(n.Hi[k]);
+      const __m128 g = _mm_max_ps(_mm_max_ps(_mm_sub_ps(lo, this->C[k]), _mm_sub_ps(this->C[k], hi)), zero);
+      sum = _mm_add_ps(sum, _mm_mul_ps(g, g));
+      m = _mm_add_ps(m, _mm_mul_ps(_mm_load_ps(n.Axis[k]), this->C[k]));
+      lowest = _mm_add_ps(lowest, _mm_mul_ps(this->W[k], this->Positive[k] ? lo : hi));
+    }
+    _mm_store_ps(d2, sum);
+    const __m128 r = _mm_set1_ps(reach);
+    __m128 miss = _mm_or_ps(_mm_cmpge_ps(sum, _mm_mul_ps(r, r)),
+      _mm_or_ps(_mm_cmpge_ps(_mm_sub_ps(m, r), _mm_load_ps(n.SlabHi)), _mm_cmple_ps(_mm_add_ps(m, r), _mm_load_ps(n.SlabLo))));
+    if (this->HalfSpace)
+    {
+      miss = _mm_or_ps(miss, _mm_cmpgt_ps(lowest, this->K));
+    }
+    // An empty lane's box is inverted.
+    miss = _mm_or_ps(miss, _mm_cmpgt_ps(_mm_load_ps(n.Lo[0]), _mm_load_ps(n.Hi[0])));
+    return ~_mm_movemask_ps(miss) & 0xF;
+  }
+
+  const float Pad;
+
+private:
+  __m128 C[3], W[3], K;
+  bool Positive[3];
+  const bool HalfSpace;
+};
+#endif
+}
+
 template <class Visit>
 void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTriangle,
   const double samplePoint[3], double cosMinAngle, bool capOnly, double& reach2, Visit visit) const
@@ -1869,6 +1954,92 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
   }
   double xRel[3]; // x relative to the origin, for the node bounds
   G::Sub(x, this->Origin, xRel);
+  // A leaf's triangles, cheapest test first; false when visit asked to stop.
+  auto visitLeaf = [&](std::int32_t start, std::int32_t end) {
+    for (std::int32_t slot = start; slot < end; ++slot)
+    {
+      // The triangle's plane misses the ball.
+      const LeafTriangle& leaf = this->LeafTriangles[slot];
+      const double off = G::Dot(leaf.Plane, x) - leaf.Plane[3];
+      if (leaf.Triangle == ownTriangle || off * off >= reach2)
+      {
+        continue;
+      }
+      // Then the whole triangle: cheaper, and never farther than its admissible part.
+      const double* a = &this->Vertices[9 * slot];
+      double q[3];
+      double d2 = G::ClosestPointOnTriangle(x, a, a + 3, a + 6, q);
+      if (capped && d2 < reach2)
+      {
+        d2 = G::ClosestPointOnClippedTriangle(x, a, a + 3, a + 6, w, k, q);
+      }
+      if (!visit(d2, q, leaf.Triangle))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+#if defined(__SSE2__)
+  const double extent = this->Extent();
+  if (extent > 0.0 && std::fabs(xRel[0]) <= 4.0 * extent && std::fabs(xRel[1]) <= 4.0 * extent &&
+    std::fabs(xRel[2]) <= 4.0 * extent && !this->WideNodes.empty())
+  {
+    // Four lanes at once in float, nearest box first.
+    const WideBall ball(xRel, extent, capped ? w : nullptr,
+      capped ? k - G::Dot(w, this->Origin) : 0.0);
+    auto reach = [&]() { return FloatAbove(static_cast<float>(std::sqrt(reach2))) + ball.Pad; };
+    thread_local std::vector<WaitingLane> lanes;
+    lanes.clear();
+    alignas(16) float d2[4];
+    float r = reach();
+    if (ball.Test(this->WideNodes[0], r, d2) & 1)
+    {
+      lanes.push_back({ this->WideNodes[0].Child[0], d2[0] });
+    }
+    while (!lanes.empty())
+    {
+      const WaitingLane lane = lanes.back();
+      lanes.pop_back();
+      r = reach();
+      if (lane.Key >= r * r)
+      {
+        continue; // the reach shrank since the lane was pushed
+      }
+      if (lane.Child < 0)
+      {
+        const LeafSlots leaf(lane.Child);
+        if (!visitLeaf(leaf.Start, leaf.End))
+        {
+          return;
+        }
+        continue;
+      }
+      const WideNode& node = this->WideNodes[lane.Child];
+      const int kept = ball.Test(node, r, d2);
+      // Nearest lane on top (ties: the lower lane): push the others first.
+      int order[4], count = 0;
+      for (int i = 0; i < 4; ++i)
+      {
+        if (kept & (1 << i))
+        {
+          int j = count++;
+          for (; j > 0 && d2[order[j - 1]] > d2[i]; --j)
+          {
+            order[j] = order[j - 1];
+          }
+          order[j] = i;
+        }
+      }
+      for (int j = count - 1; j >= 0; --j)
+      {
+        lanes.push_back({ node.Child[order[j]], d2[order[j]] });
+      }
+    }
+    return;
+  }
+#endif
+  // In double over the binary tree: far points, no SSE2.
   Scratch& scratch = ThreadScratch();
   scratch.Stack.push_back(0);
   while (!scratch.Stack.empty())
@@ -1894,28 +2065,10 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
     }
     if (node.Count > 0)
     {
-      for (std::int32_t slot = node.Start; slot < node.Start + node.Count; ++slot)
+      if (!visitLeaf(node.Start, node.Start + node.Count))
       {
-        // Cheapest first: the triangle's plane misses the ball.
-        const LeafTriangle& leaf = this->LeafTriangles[slot];
-        const double off = G::Dot(leaf.Plane, x) - leaf.Plane[3];
-        if (leaf.Triangle == ownTriangle || off * off >= reach2)
-        {
-          continue;
-        }
-        // Then the whole triangle: cheaper, and never farther than its admissible part.
-        const double* a = &this->Vertices[9 * slot];
-        double q[3];
-        double d2 = G::ClosestPointOnTriangle(x, a, a + 3, a + 6, q);
-        if (capped && d2 < reach2)
-        {
-          d2 = G::ClosestPointOnClippedTriangle(x, a, a + 3, a + 6, w, k, q);
-        }
-        if (!visit(d2, q, leaf.Triangle))
-        {
-          scratch.Stack.clear();
-          return;
-        }
+        scratch.Stack.clear();
+        return;
       }
       continue;
     }
@@ -2147,12 +2300,6 @@ private:
   __m128 O[3], Inv[3], Pad;
 };
 
-// A lane waiting in the ray walk: its child code and where the ray enters its box.
-struct RayLane
-{
-  std::int32_t Child;
-  float Enter;
-};
 }
 #endif
 
@@ -2184,12 +2331,7 @@ bool vtkMedialTriangleBVH::IntersectRay(const double origin[3], const double dir
     }
   };
 #if defined(__SSE2__)
-  const Node& top = this->Nodes[0];
-  double extent = 0.0;
-  for (int k = 0; k < 3; ++k)
-  {
-    extent = std::max({ extent, std::fabs(static_cast<double>(top.Lo[k])), std::fabs(static_cast<double>(top.Hi[k])) });
-  }
+  const double extent = this->Extent();
   const double length2 = G::Dot(direction, direction);
   const bool near = std::fabs(o[0]) <= 4.0 * extent && std::fabs(o[1]) <= 4.0 * extent &&
     std::fabs(o[2]) <= 4.0 * extent;
@@ -2199,7 +2341,7 @@ bool vtkMedialTriangleBVH::IntersectRay(const double origin[3], const double dir
     const WideRay wide(o, direction, static_cast<float>(1e-5 * extent));
     const float from = FloatBelow(static_cast<float>(tMin));
     float until = FloatAbove(static_cast<float>(best));
-    thread_local std::vector<RayLane> lanes;
+    thread_local std::vector<WaitingLane> lanes;
     lanes.clear();
     alignas(16) float enter[4];
     if (wide.Test(this->WideNodes[0], from, until, enter) & 1)
@@ -2208,9 +2350,9 @@ bool vtkMedialTriangleBVH::IntersectRay(const double origin[3], const double dir
     }
     while (!lanes.empty())
     {
-      const RayLane lane = lanes.back();
+      const WaitingLane lane = lanes.back();
       lanes.pop_back();
-      if (lane.Enter > until)
+      if (lane.Key > until)
       {
         continue; // the hit came nearer since the lane was pushed
       }

@@ -251,6 +251,10 @@ private:
   // whose admissible part may lie within sqrt(reach2) of x. visit(d2, q, triangle)
   // gets each one's closest admissible point q and returns false to stop; it may
   // lower reach2 to narrow the search. Used by ClosestPoint and ContainsBall.
+  // The largest coordinate of the root's box relative to Origin: the scale of the
+  // float bounds' rounding.
+  double Extent() const;
+
   template <class Visit>
   void VisitAdmissible(const double x[3], vtkIdType ownTriangle, const double samplePoint[3],
     double cosMinAngle, bool capOnly, double& reach2, Visit visit) const;
