@@ -1867,6 +1867,30 @@ struct WaitingLane
   float Key;
 };
 
+// Pushes the lanes of `node` set in `mask` with their keys, the smallest key on top
+// (ties: the lower lane), so that a depth-first walk takes the nearest first.
+void PushNearestOnTop(
+  const vtkMedialTriangleBVH::WideNode& node, int mask, const float key[4], std::vector<WaitingLane>& lanes)
+{
+  int order[4], count = 0;
+  for (int i = 0; i < 4; ++i)
+  {
+    if (mask & (1 << i))
+    {
+      int j = count++;
+      for (; j > 0 && key[order[j - 1]] > key[i]; --j)
+      {
+        order[j] = order[j - 1];
+      }
+      order[j] = i;
+    }
+  }
+  for (int j = count - 1; j >= 0; --j)
+  {
+    lanes.push_back({ node.Child[order[j]], key[order[j]] });
+  }
+}
+
 #if defined(__SSE2__)
 // A ball (centre relative to the tree's origin) and optionally a half-space w.q <= k
 // against the four lanes of a wide node at once, in float. Every bound is widened by
@@ -2017,24 +2041,7 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
       }
       const WideNode& node = this->WideNodes[lane.Child];
       const int kept = ball.Test(node, r, d2);
-      // Nearest lane on top (ties: the lower lane): push the others first.
-      int order[4], count = 0;
-      for (int i = 0; i < 4; ++i)
-      {
-        if (kept & (1 << i))
-        {
-          int j = count++;
-          for (; j > 0 && d2[order[j - 1]] > d2[i]; --j)
-          {
-            order[j] = order[j - 1];
-          }
-          order[j] = i;
-        }
-      }
-      for (int j = count - 1; j >= 0; --j)
-      {
-        lanes.push_back({ node.Child[order[j]], d2[order[j]] });
-      }
+      PushNearestOnTop(node, kept, d2, lanes);
     }
     return;
   }
@@ -2365,24 +2372,7 @@ bool vtkMedialTriangleBVH::IntersectRay(const double origin[3], const double dir
       }
       const WideNode& node = this->WideNodes[lane.Child];
       const int met = wide.Test(node, from, until, enter);
-      // Nearest lane on top (ties: the lower lane): push the others first.
-      int order[4], count = 0;
-      for (int i = 0; i < 4; ++i)
-      {
-        if (met & (1 << i))
-        {
-          int j = count++;
-          for (; j > 0 && enter[order[j - 1]] > enter[i]; --j)
-          {
-            order[j] = order[j - 1];
-          }
-          order[j] = i;
-        }
-      }
-      for (int j = count - 1; j >= 0; --j)
-      {
-        lanes.push_back({ node.Child[order[j]], enter[order[j]] });
-      }
+      PushNearestOnTop(node, met, enter, lanes);
     }
     t = best;
     return triangle >= 0;

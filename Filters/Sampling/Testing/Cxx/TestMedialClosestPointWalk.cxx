@@ -9,13 +9,12 @@
 // above the distance (at it to within rounding, the answer depends on the rounding of
 // the plane prefilter's squared distance against the exact test's: not asked).
 #include "MedialTestUtilities.h"
+#include "MedialTreeTestUtilities.h"
 
 #include "vtkMedialGeometry.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkMedialTriangleBVH.h"
 #include "vtkMedialTriangleMesh.h"
-
-#include "vtkNew.h"
 
 #include <cmath>
 #include <random>
@@ -68,24 +67,12 @@ double BruteForce(const vtkMedialTriangleMesh& mesh, const double x[3], vtkIdTyp
 // EXIT_SUCCESS when every query agrees (MEDIAL_CHECK returns EXIT_FAILURE).
 int CheckShape(int shape, const char* name, int resolution)
 {
-  vtkNew<vtkMedialShapeSource> source;
-  source->SetShape(shape);
-  source->SetResolution(resolution);
-  source->Update();
   vtkMedialTriangleMesh mesh;
   std::string error;
-  MEDIAL_CHECK(mesh.Build(source->GetOutput(), error), "%s: %s", name, error.c_str());
+  double lo[3], hi[3];
+  MEDIAL_CHECK(BuildShapeMesh(shape, resolution, mesh, lo, hi, error), "%s: %s", name, error.c_str());
   vtkMedialTriangleBVH tree;
   MEDIAL_CHECK(tree.Build(mesh), "%s: no tree", name);
-  double lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
-  for (vtkIdType i = 0; i < mesh.GetNumberOfPoints(); ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      lo[k] = std::min(lo[k], mesh.GetPoint(i)[k]);
-      hi[k] = std::max(hi[k], mesh.GetPoint(i)[k]);
-    }
-  }
   std::mt19937_64 random(11);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const vtkIdType nt = mesh.GetNumberOfTriangles();

@@ -7,13 +7,12 @@
 // with both walks, t within a factor of exactly 4, and agree with a brute force over
 // every triangle: no hit nearer than the one found, and the point found on its triangle.
 #include "MedialTestUtilities.h"
+#include "MedialTreeTestUtilities.h"
 
 #include "vtkMedialGeometry.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkMedialTriangleBVH.h"
 #include "vtkMedialTriangleMesh.h"
-
-#include "vtkNew.h"
 
 #include <cmath>
 #include <random>
@@ -114,24 +113,12 @@ bool CheckRay(const vtkMedialTriangleMesh& mesh, const vtkMedialTriangleBVH& tre
 // EXIT_SUCCESS when every ray agrees (MEDIAL_CHECK returns EXIT_FAILURE).
 int CheckShape(int shape, const char* name, int resolution)
 {
-  vtkNew<vtkMedialShapeSource> source;
-  source->SetShape(shape);
-  source->SetResolution(resolution);
-  source->Update();
   vtkMedialTriangleMesh mesh;
   std::string error;
-  MEDIAL_CHECK(mesh.Build(source->GetOutput(), error), "%s: %s", name, error.c_str());
+  double lo[3], hi[3];
+  MEDIAL_CHECK(BuildShapeMesh(shape, resolution, mesh, lo, hi, error), "%s: %s", name, error.c_str());
   vtkMedialTriangleBVH tree;
   MEDIAL_CHECK(tree.Build(mesh), "%s: no tree", name);
-  double lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
-  for (vtkIdType i = 0; i < mesh.GetNumberOfPoints(); ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      lo[k] = std::min(lo[k], mesh.GetPoint(i)[k]);
-      hi[k] = std::max(hi[k], mesh.GetPoint(i)[k]);
-    }
-  }
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::normal_distribution<double> gauss;
