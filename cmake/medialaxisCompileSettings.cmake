@@ -10,3 +10,11 @@ set(CMAKE_POSITION_INDEPENDENT_CODE ON)
 if (NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
   set(CMAKE_BUILD_TYPE Release CACHE STRING "Build type" FORCE)
 endif ()
+# Never fuse a * b + c into one rounding (GCC fuses by default wherever the target
+# has FMA: -march=native, x86-64-v3, every aarch64). The watertight ray test needs a
+# shared edge's two edge functions to be exact negatives, and the distance bounds
+# and the sampler's "same bits" promise need every CPU to round alike.
+# TestMedialNoContraction fails if this goes.
+if (CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+  add_compile_options(-ffp-contract=off)
+endif ()
