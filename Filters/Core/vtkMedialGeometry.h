@@ -14,6 +14,14 @@
 #ifndef vtkMedialGeometry_h
 #define vtkMedialGeometry_h
 
+// The exact tests need IEEE arithmetic: -ffinite-math-only deletes the NaN checks that
+// refuse bad input, and -ffast-math reorders the roundings the bounds rely on (built
+// with it, several tests ran for minutes instead of seconds). Fusing a * b + c is
+// turned off by the build instead (cmake/medialaxisCompileSettings.cmake).
+#if defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__) || defined(_M_FP_FAST)
+#error "medialaxis needs IEEE floating point: build it without -ffast-math, -ffinite-math-only or /fp:fast"
+#endif
+
 #include <algorithm>
 #include <cmath>
 
