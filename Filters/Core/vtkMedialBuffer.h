@@ -17,17 +17,22 @@
  *  - blocks of 2 MiB or more are aligned to 2 MiB and advised for transparent huge pages
  *    (madvise MADV_HUGEPAGE): 512 times fewer page faults on first touch and fewer
  *    TLB misses in the random accesses of the tree build. Only whole huge pages
- *    inside the block are advised, so the resident size does not grow.
+ *    inside the block are advised, so the resident size does not grow. The
+ *    environment variable MEDIALAXIS_HUGE_PAGES=0 turns the advice off (read once).
  * Measured on 1.55M triangles (issue 18): about a third of the preparation's CPU time
- * was page faults and zero fills. On this project's virtual machine a first touch
- * costs about 15 us per 4 kB page, 50 times a huge page's cost per byte, so large
- * buffers of the preparation should all be vtkMedialBuffer, not std::vector.
+ * was page faults and zero fills. Which page size is faster depends on the machine:
+ * on one of this project's virtual machines a first touch cost about 15 us per 4 kB
+ * page, 50 times a huge page's cost per byte; on another, a huge page that the host
+ * had taken back cost about 6 ms and 512 fresh 4 kB pages 1.2 ms, and the preparation
+ * was faster without the advice (README, "Huge pages"). Large buffers of the
+ * preparation should all be vtkMedialBuffer, not std::vector, either way.
  */
 #ifndef vtkMedialBuffer_h
 #define vtkMedialBuffer_h
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <new>
 #include <utility>
 #include <vector>
@@ -35,6 +40,17 @@
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
+
+/// False when the environment sets MEDIALAXIS_HUGE_PAGES=0: large buffers are then
+/// left in the system's default pages. Read once per process.
+inline bool vtkMedialBufferHugePages()
+{
+  static const bool enabled = [] {
+    const char* value = std::getenv("MEDIALAXIS_HUGE_PAGES");
+    return !(value && value[0] == '0' && value[1] == '\0');
+  }();
+  return enabled;
+}
 
 template <class T, bool HugePages = true>
 class vtkMedialBufferAllocator
@@ -120,7 +136,7 @@ private:
   static void* Map(std::size_t bytes)
   {
     const std::size_t size = RoundUp(bytes, Page);
-    const bool huge = HugePages && bytes >= HugePage;
+    const bool huge = HugePages && bytes >= HugePage && vtkMedialBufferHugePages();
     const std::size_t mapped = huge ? size + HugePage : size;
     void* p = mmap(nullptr, mapped, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if (p == MAP_FAILED)
