@@ -56,14 +56,11 @@ inline vtkIdType vtkMedialPickSampleTriangle(
   return mesh.PickTriangleByArea(random.Uniform());
 }
 
-/// Surface point of sample `index` of stream `seed`: a triangle picked by area, a uniform
-/// point on it. The vertex order of the triangle does not matter (vertices are taken in
-/// id order), so re-wound input gives the same point.
-inline void vtkMedialDrawSurfacePoint(const vtkMedialTriangleMesh& mesh, std::uint64_t seed,
-  vtkIdType index, vtkIdType& triangle, double p[3])
+/// The point of vtkMedialDrawSurfacePoint on `triangle`, drawn from `random` after the
+/// pick's draw (the vertices are taken in id order, so re-wound input gives the same point).
+inline void vtkMedialDrawPointOnTriangle(
+  const vtkMedialTriangleMesh& mesh, vtkMedialSampleRandom& random, vtkIdType triangle, double p[3])
 {
-  vtkMedialSampleRandom random(seed, static_cast<std::uint64_t>(index));
-  triangle = mesh.PickTriangleByArea(random.Uniform()); // as vtkMedialPickSampleTriangle
   vtkIdType v[3] = { mesh.GetTriangle(triangle)[0], mesh.GetTriangle(triangle)[1],
     mesh.GetTriangle(triangle)[2] };
   std::sort(v, v + 3);
@@ -78,6 +75,28 @@ inline void vtkMedialDrawSurfacePoint(const vtkMedialTriangleMesh& mesh, std::ui
   {
     p[k] = wa * a[k] + wb * b[k] + wc * c[k];
   }
+}
+
+/// Surface point of sample `index` of stream `seed`: a triangle picked by area, a uniform
+/// point on it. The vertex order of the triangle does not matter (vertices are taken in
+/// id order), so re-wound input gives the same point.
+inline void vtkMedialDrawSurfacePoint(const vtkMedialTriangleMesh& mesh, std::uint64_t seed,
+  vtkIdType index, vtkIdType& triangle, double p[3])
+{
+  vtkMedialSampleRandom random(seed, static_cast<std::uint64_t>(index));
+  triangle = mesh.PickTriangleByArea(random.Uniform()); // as vtkMedialPickSampleTriangle
+  vtkMedialDrawPointOnTriangle(mesh, random, triangle, p);
+}
+
+/// The same point when the triangle is known: `triangle` must be
+/// vtkMedialPickSampleTriangle(mesh, seed, index) (the pick is a binary search over
+/// the areas, a cache miss per step on a large mesh).
+inline void vtkMedialDrawSurfacePointOnPicked(
+  const vtkMedialTriangleMesh& mesh, std::uint64_t seed, vtkIdType index, vtkIdType triangle, double p[3])
+{
+  vtkMedialSampleRandom random(seed, static_cast<std::uint64_t>(index));
+  random.Next(); // the pick's draw
+  vtkMedialDrawPointOnTriangle(mesh, random, triangle, p);
 }
 
 #endif

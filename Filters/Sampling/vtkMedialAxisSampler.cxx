@@ -251,9 +251,12 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(vtkMedialTriangleMesh& mesh
     coverage.reset(new vtkMedialCoverage(mesh, threads));
   }
   std::vector<vtkIdType> index, order;
+  std::vector<vtkIdType> triangles; // picked by SelectSamples, except with a coverage stop
+  // Picking and ordering the samples is per-sample work, not the surface's preparation.
+  stages.Begin("Drawing the samples", 0.1, 0.15);
   try
   {
-    this->SelectSamples(mesh, query, pieces, coverage != nullptr, threads, index, order);
+    this->SelectSamples(mesh, query, pieces, coverage != nullptr, threads, index, order, triangles);
   }
   catch (const std::bad_alloc&)
   {
@@ -261,9 +264,9 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(vtkMedialTriangleMesh& mesh
     return 0;
   }
   const vtkIdType count = static_cast<vtkIdType>(index.size());
-  std::vector<vtkIdType> triangles;
+  const bool picked = !triangles.empty() || count == 0;
   std::vector<double> points; // 3 per sample
-  if (!this->Allocate(count, triangles) || !this->Allocate(3 * count, points))
+  if ((!picked && !this->Allocate(count, triangles)) || !this->Allocate(3 * count, points))
   {
     return 0;
   }
@@ -276,8 +279,7 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(vtkMedialTriangleMesh& mesh
   // enough that threads rarely wait at the block's end, short enough (about
   // 30 ms on a 1.5M-triangle mesh) that an abort is honoured at once.
   const vtkIdType block = coverage ? 1024 : 1024 * threads;
-  stages.Begin("Drawing the samples", 0.1, 0.15);
-  this->DrawSamples(mesh, index, threads, triangles, points);
+  this->DrawSamples(mesh, index, threads, picked, triangles, points);
   if (self->GetAbortExecute())
   {
     return 1;
@@ -330,7 +332,7 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(vtkMedialTriangleMesh& mesh
 
 void vtkMedialAxisSampler::vtkInternals::SelectSamples(const vtkMedialTriangleMesh& mesh,
   const vtkMedialSurfaceQuery& query, const vtkMedialPieces& pieces, bool coverage, int threads,
-  std::vector<vtkIdType>& index, std::vector<vtkIdType>& order) const
+  std::vector<vtkIdType>& index, std::vector<vtkIdType>& order, std::vector<vtkIdType>& triangles) const
 {
   const vtkIdType total = this->Self->NumberOfSamples;
   if (coverage)
@@ -345,33 +347,61 @@ void vtkMedialAxisSampler::vtkInternals::SelectSamples(const vtkMedialTriangleMe
   // HintChain, so every piece forms the same hint chains as a one-piece run and the
   // union of the pieces is that run bit for bit.
   std::vector<vtkIdType> leafOrder;
-  {
-    const std::uint64_t seed = static_cast<std::uint64_t>(this->Self->RandomSeed);
-    std::vector<vtkIdType> allTriangles(static_cast<size_t>(total));
+  const std::uint64_t seed = static_cast<std::uint64_t>(this->Self->RandomSeed);
+  std::vector<vtkIdType> allTriangles(static_cast<size_t>(total));
 #pragma omp parallel for num_threads(threads) schedule(static)
-    for (vtkIdType i = 0; i < total; ++i)
-    {
-      allTriangles[i] = vtkMedialPickSampleTriangle(mesh, seed, i);
-    }
-    leafOrder.resize(allTriangles.size());
-    SortByLeaf(query, allTriangles, 0, leafOrder);
+  for (vtkIdType i = 0; i < total; ++i)
+  {
+    allTriangles[i] = vtkMedialPickSampleTriangle(mesh, seed, i);
   }
+  leafOrder.resize(allTriangles.size());
+  SortByLeaf(query, allTriangles, 0, leafOrder);
   vtkIdType firstChain = 0;
   vtkIdType chains = 0;
   pieces.GetShare((total + HintChain - 1) / HintChain, firstChain, chains);
   const vtkIdType begin = std::min(total, firstChain * HintChain);
   const vtkIdType end = std::min(total, (firstChain + chains) * HintChain);
-  index.assign(leafOrder.begin() + begin, leafOrder.begin() + end);
-  std::sort(index.begin(), index.end()); // the output keeps sample order
+  if (begin == 0 && end == total)
+  {
+    // One piece holds every sample: index is 0 .. total - 1, so the leaf order is the
+    // solve order, and the picks are the triangles as they are.
+    index.resize(static_cast<size_t>(total));
+    std::iota(index.begin(), index.end(), 0);
+    order = std::move(leafOrder);
+    triangles = std::move(allTriangles);
+    return;
+  }
+  // The piece's samples in increasing index (the output keeps sample order), and for
+  // each the position in that list, by a mark per sample: linear, no sort.
+  std::vector<vtkIdType> position(static_cast<size_t>(total), -1);
+  for (vtkIdType k = begin; k < end; ++k)
+  {
+    position[leafOrder[k]] = 0;
+  }
+  index.clear();
+  index.reserve(static_cast<size_t>(end - begin));
+  for (vtkIdType i = 0; i < total; ++i)
+  {
+    if (position[i] == 0)
+    {
+      position[i] = static_cast<vtkIdType>(index.size());
+      index.push_back(i);
+    }
+  }
   order.resize(index.size());
   for (vtkIdType k = begin; k < end; ++k)
   {
-    order[k - begin] = std::lower_bound(index.begin(), index.end(), leafOrder[k]) - index.begin();
+    order[k - begin] = position[leafOrder[k]];
+  }
+  triangles.resize(index.size());
+  for (size_t i = 0; i < index.size(); ++i)
+  {
+    triangles[i] = allTriangles[index[i]];
   }
 }
 
 void vtkMedialAxisSampler::vtkInternals::DrawSamples(const vtkMedialTriangleMesh& mesh,
-  const std::vector<vtkIdType>& index, int threads, std::vector<vtkIdType>& triangles,
+  const std::vector<vtkIdType>& index, int threads, bool picked, std::vector<vtkIdType>& triangles,
   std::vector<double>& points) const
 {
   vtkMedialAxisSampler* self = this->Self;
@@ -385,7 +415,14 @@ void vtkMedialAxisSampler::vtkInternals::DrawSamples(const vtkMedialTriangleMesh
 #pragma omp parallel for num_threads(threads) schedule(static)
     for (vtkIdType i = begin; i < end; ++i)
     {
-      vtkMedialDrawSurfacePoint(mesh, seed, index[i], triangles[i], &points[3 * i]);
+      if (picked)
+      {
+        vtkMedialDrawSurfacePointOnPicked(mesh, seed, index[i], triangles[i], &points[3 * i]);
+      }
+      else
+      {
+        vtkMedialDrawSurfacePoint(mesh, seed, index[i], triangles[i], &points[3 * i]);
+      }
     }
     self->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
   }
