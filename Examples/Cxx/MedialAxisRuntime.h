@@ -27,6 +27,8 @@
 #define MedialAxisRuntime_h
 
 #include <cstdlib> // first: it defines __GLIBC__
+
+#include "vtkMedialBuffer.h" // vtkMedialBufferHugePages: MEDIALAXIS_HUGE_PAGES read in one place
 #if defined(__linux__) && defined(__GLIBC__)
 #include <unistd.h>
 #endif
@@ -37,9 +39,7 @@ inline void RestartWithRuntimeSettings(char* argv[])
 {
 #if defined(__linux__) && defined(__GLIBC__)
   bool changed = false;
-  const char* hugePages = std::getenv("MEDIALAXIS_HUGE_PAGES");
-  const bool hugePagesOff = hugePages && hugePages[0] == '0' && hugePages[1] == '\0';
-  if (!std::getenv("GLIBC_TUNABLES") && !hugePagesOff)
+  if (!std::getenv("GLIBC_TUNABLES") && vtkMedialBufferHugePages())
   {
     changed = setenv("GLIBC_TUNABLES", "glibc.malloc.hugetlb=1", 1) == 0 || changed;
   }

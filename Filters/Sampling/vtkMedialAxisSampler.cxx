@@ -251,7 +251,7 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(vtkMedialTriangleMesh& mesh
     coverage.reset(new vtkMedialCoverage(mesh, threads));
   }
   std::vector<vtkIdType> index, order;
-  std::vector<vtkIdType> triangles; // picked by SelectSamples, except with a coverage stop
+  std::vector<vtkIdType> triangles; // each sample's pick, from SelectSamples
   // Picking and ordering the samples is per-sample work, not the surface's preparation.
   stages.Begin("Drawing the samples", 0.1, 0.15);
   try
@@ -264,9 +264,8 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(vtkMedialTriangleMesh& mesh
     return 0;
   }
   const vtkIdType count = static_cast<vtkIdType>(index.size());
-  const bool picked = !triangles.empty() || count == 0;
   std::vector<double> points; // 3 per sample
-  if ((!picked && !this->Allocate(count, triangles)) || !this->Allocate(3 * count, points))
+  if (!this->Allocate(3 * count, points))
   {
     return 0;
   }
@@ -279,7 +278,7 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(vtkMedialTriangleMesh& mesh
   // enough that threads rarely wait at the block's end, short enough (about
   // 30 ms on a 1.5M-triangle mesh) that an abort is honoured at once.
   const vtkIdType block = coverage ? 1024 : 1024 * threads;
-  this->DrawSamples(mesh, index, threads, picked, triangles, points);
+  this->DrawSamples(mesh, index, threads, triangles, points);
   if (self->GetAbortExecute())
   {
     return 1;
@@ -335,18 +334,8 @@ void vtkMedialAxisSampler::vtkInternals::SelectSamples(const vtkMedialTriangleMe
   std::vector<vtkIdType>& index, std::vector<vtkIdType>& order, std::vector<vtkIdType>& triangles) const
 {
   const vtkIdType total = this->Self->NumberOfSamples;
-  if (coverage)
-  {
-    index.resize(static_cast<size_t>(total));
-    std::iota(index.begin(), index.end(), 0);
-    order.resize(index.size()); // set by SortByLeaf once the triangles are drawn
-    return;
-  }
-  // All samples in the leaf order of their triangles (a triangle pick is cheap next to
-  // a ball); the piece takes a contiguous run of that order cut at multiples of
-  // HintChain, so every piece forms the same hint chains as a one-piece run and the
-  // union of the pieces is that run bit for bit.
-  std::vector<vtkIdType> leafOrder;
+  // Every sample's triangle, picked once (a binary search over the areas): the
+  // order comes from it, and DrawSamples takes it from here.
   const std::uint64_t seed = static_cast<std::uint64_t>(this->Self->RandomSeed);
   std::vector<vtkIdType> allTriangles(static_cast<size_t>(total));
 #pragma omp parallel for num_threads(threads) schedule(static)
@@ -354,7 +343,19 @@ void vtkMedialAxisSampler::vtkInternals::SelectSamples(const vtkMedialTriangleMe
   {
     allTriangles[i] = vtkMedialPickSampleTriangle(mesh, seed, i);
   }
-  leafOrder.resize(allTriangles.size());
+  if (coverage)
+  {
+    index.resize(static_cast<size_t>(total));
+    std::iota(index.begin(), index.end(), 0);
+    triangles = std::move(allTriangles);
+    order.resize(index.size()); // set by SortByLeaf once the points are drawn
+    return;
+  }
+  // All samples in the leaf order of their triangles (a triangle pick is cheap next to
+  // a ball); the piece takes a contiguous run of that order cut at multiples of
+  // HintChain, so every piece forms the same hint chains as a one-piece run and the
+  // union of the pieces is that run bit for bit.
+  std::vector<vtkIdType> leafOrder(allTriangles.size());
   SortByLeaf(query, allTriangles, 0, leafOrder);
   vtkIdType firstChain = 0;
   vtkIdType chains = 0;
@@ -401,7 +402,7 @@ void vtkMedialAxisSampler::vtkInternals::SelectSamples(const vtkMedialTriangleMe
 }
 
 void vtkMedialAxisSampler::vtkInternals::DrawSamples(const vtkMedialTriangleMesh& mesh,
-  const std::vector<vtkIdType>& index, int threads, bool picked, std::vector<vtkIdType>& triangles,
+  const std::vector<vtkIdType>& index, int threads, const std::vector<vtkIdType>& triangles,
   std::vector<double>& points) const
 {
   vtkMedialAxisSampler* self = this->Self;
@@ -415,14 +416,7 @@ void vtkMedialAxisSampler::vtkInternals::DrawSamples(const vtkMedialTriangleMesh
 #pragma omp parallel for num_threads(threads) schedule(static)
     for (vtkIdType i = begin; i < end; ++i)
     {
-      if (picked)
-      {
-        vtkMedialDrawSurfacePointOnPicked(mesh, seed, index[i], triangles[i], &points[3 * i]);
-      }
-      else
-      {
-        vtkMedialDrawSurfacePoint(mesh, seed, index[i], triangles[i], &points[3 * i]);
-      }
+      vtkMedialDrawSurfacePointOnPicked(mesh, seed, index[i], triangles[i], &points[3 * i]);
     }
     self->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
   }

@@ -77,14 +77,14 @@ private:
   // The samples a piece solves and their order (see SampleRandom): `index` gets the
   // piece's sample indices in increasing order, `order` positions in `index` in leaf
   // order, `triangles` the triangle each one picked. With a coverage stop, all
-  // samples, ordered by leaf within blocks once drawn, and `triangles` left empty.
+  // samples, ordered by leaf within blocks once drawn.
   void SelectSamples(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
     const vtkMedialPieces& pieces, bool coverage, int threads, std::vector<vtkIdType>& index,
     std::vector<vtkIdType>& order, std::vector<vtkIdType>& triangles) const;
-  // Sample points of the RANDOM strategy: sample index[i] on triangles[i] at points[3 i]
-  // (with `picked`, triangles[i] is already sample index[i]'s pick; otherwise it is set).
+  // Sample points of the RANDOM strategy: sample index[i] on triangles[i] (its pick,
+  // from SelectSamples) at points[3 i].
   void DrawSamples(const vtkMedialTriangleMesh& mesh, const std::vector<vtkIdType>& index, int threads,
-    bool picked, std::vector<vtkIdType>& triangles, std::vector<double>& points) const;
+    const std::vector<vtkIdType>& triangles, std::vector<double>& points) const;
   // Order of items by BVH leaf of their triangle (within blocks of `block` items when a
   // coverage stop needs prefixes, else a global, stable counting sort).
   static void SortByLeaf(const vtkMedialSurfaceQuery& query, const std::vector<vtkIdType>& triangles,
