@@ -250,6 +250,24 @@ public:
 #endif
   }
 
+  /// MissesBall for lane i of a wide node, read in place (a copy to a Node costs a
+  /// stalled reload when the box is then read four floats at a time).
+  bool LaneMissesBall(const WideNode& w, int i) const
+  {
+    float d2[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const float d = std::max(std::max(w.Lo[k][i] - this->C[k], this->C[k] - w.Hi[k][i]), 0.0f);
+      d2[k] = d * d;
+    }
+    if ((d2[0] + d2[2]) + d2[1] >= this->Reach2) // summed as Distance2 does
+    {
+      return true;
+    }
+    const float m = w.Axis[0][i] * this->C[0] + w.Axis[1][i] * this->C[1] + w.Axis[2][i] * this->C[2];
+    return m - this->Radius >= w.SlabHi[i] || m + this->Radius <= w.SlabLo[i];
+  }
+
   /// Lane i of a wide node as a binary node (bounds only).
   static Node LaneNode(const WideNode& w, int i)
   {
@@ -1525,12 +1543,34 @@ private:
     return !this->CannotBlock(slot) && !(this->Distance2Below(slot) >= this->Clear2) && this->ShrinkWhileBlocked(slot);
   }
 
+  // All three vertices (so the whole triangle) lie below the plane of the cap at the
+  // current radius, n.(q - p) < r (1 - cos theta), where no point is admissible; with
+  // room for the rounding of the heights, so that a triangle near the plane is left to
+  // Blocks.
+  bool BelowCapPlane(const double* a, const double* b, const double* c) const
+  {
+    const double plane = this->Radius * this->Lift;
+    double top = -HUGE_VAL, size = 0.0;
+    for (const double* v : { a, b, c })
+    {
+      double u[3];
+      G::Sub(v, this->P, u);
+      top = std::max(top, G::Dot(this->N, u));
+      size = std::max({ size, std::fabs(u[0]), std::fabs(u[1]), std::fabs(u[2]) });
+    }
+    return top < plane - 1e-12 * (size + plane) - 4.0 * this->Tree.RoundingPad;
+  }
+
   // ShrinkOn past the quick tests.
   bool ShrinkWhileBlocked(std::int32_t slot)
   {
     const double* a = &this->Tree.Vertices[9 * slot];
     const double* b = a + 3;
     const double* c = a + 6;
+    if (this->Capped && this->BelowCapPlane(a, b, c))
+    {
+      return true; // wholly in the cap at this radius: only a smaller ball can see it
+    }
     double q[3];
     bool touches;
     for (int step = 0; step < StepsBeforeBracketing; ++step)
@@ -1770,20 +1810,25 @@ private:
     int shrinks = 0;
     this->Fast->SetBall(this->CentreRel, std::sqrt(best2));
     std::vector<PendingLane>& stack = this->Work.CapLanes;
+    // (The root goes in without a trip through the stack, and a lane is read from it
+    // field by field: an 8-byte load of two fresh 4-byte stores cannot be forwarded.)
     for (std::int32_t root : this->Work.CapNodes)
     {
-      stack.push_back({ root, -1 }); // tested against an earlier, larger ball
-      while (!stack.empty())
+      std::int32_t ref = root, steps = -1; // tested against an earlier, larger ball
+      for (bool first = true; first || !stack.empty(); first = false)
       {
-        const PendingLane pending = stack.back();
-        stack.pop_back();
-        const WideNode& holder = this->Tree.WideNodes[WideOf(pending.Ref)];
-        const int lane = LaneOf(pending.Ref);
-        if (pending.Steps != shrinks)
+        if (!first)
+        {
+          ref = stack.back().Ref;
+          steps = stack.back().Steps;
+          stack.pop_back();
+        }
+        const WideNode& holder = this->Tree.WideNodes[WideOf(ref)];
+        const int lane = LaneOf(ref);
+        if (steps != shrinks)
         {
           // In float, as the children's tests (Fast follows best2): a looser test, never a wrong drop.
-          const Node node = FloatNodeTests::LaneNode(holder, lane);
-          if (this->Fast->MissesBall(node, this->Fast->CentreDistance2(node)))
+          if (this->Fast->LaneMissesBall(holder, lane))
           {
             continue;
           }
