@@ -81,6 +81,8 @@ bool MissesBall(const Node& node, const double centre[3], double radius)
  * A box kept that exact arithmetic would drop costs time, never correctness: its
  * triangles are tested exactly.
  */
+float FloatBelow(float f);
+
 class FloatNodeTests
 {
 public:
@@ -160,6 +162,20 @@ public:
     BELOW = 1,     // wholly on or below the tangent plane at p
     OUTSIDE_CONE = 2 // above it, but outside the cone where blockers can lie: the cap's surface
   };
+#if !defined(__SSE2__)
+  /// Side's upper bound of n.(q - p) over the box.
+  float Height(const float* lo, const float* hi) const
+  {
+    const float* corners[2] = { lo, hi };
+    float h = this->Margin;
+    for (int k = 0; k < 3; ++k)
+    {
+      h += this->N[k] * (corners[this->Far[k]][k] - this->P[k]);
+    }
+    return h;
+  }
+#endif
+
   /// Where the box (lo, hi; four floats readable at each) lies.
   Sides Side(const float* lo, const float* hi) const
   {
@@ -193,8 +209,21 @@ public:
   struct Lanes
   {
     int Miss, Keep, Cap;
+    int Low; // among Keep: wholly below the cap's plane (SetCapPlane), for now
     alignas(16) float D2[4];
+    alignas(16) float H[4]; // an upper bound of n.(q - p) over each lane's box
   };
+
+  /// The height of the cap's plane above p, n.(q - p) = r (1 - cos theta) (a float no
+  /// higher than the exact one): a box wholly below it holds nothing admissible yet.
+  void SetCapPlane(double height)
+  {
+    this->CapPlane = FloatBelow(static_cast<float>(height));
+#if defined(__SSE2__)
+    this->LaneCapPlane = _mm_set1_ps(this->CapPlane);
+#endif
+  }
+  float GetCapPlane() const { return this->CapPlane; }
   void TestLanes(const WideNode& w, Lanes& out) const
   {
 #if defined(__SSE2__)
@@ -232,12 +261,15 @@ public:
     out.Miss = _mm_movemask_ps(miss);
     out.Keep = ~out.Miss & above & ~outside & 0xF;
     out.Cap = ~out.Miss & above & outside & 0xF;
+    _mm_store_ps(out.H, h);
+    out.Low = out.Keep & _mm_movemask_ps(_mm_cmplt_ps(h, this->LaneCapPlane));
 #else
-    out.Miss = out.Keep = out.Cap = 0;
+    out.Miss = out.Keep = out.Cap = out.Low = 0;
     for (int i = 0; i < 4; ++i)
     {
       const Node node = LaneNode(w, i);
       out.D2[i] = this->CentreDistance2(node);
+      out.H[i] = this->Height(node.Lo, node.Hi);
       if (this->MissesBall(node, out.D2[i]))
       {
         out.Miss |= 1 << i;
@@ -246,6 +278,7 @@ public:
       const Sides side = this->Side(node.Lo, node.Hi);
       out.Keep |= side == ABOVE ? 1 << i : 0;
       out.Cap |= side == OUTSIDE_CONE ? 1 << i : 0;
+      out.Low |= side == ABOVE && out.H[i] < this->CapPlane ? 1 << i : 0;
     }
 #endif
   }
@@ -308,11 +341,13 @@ private:
 
   alignas(16) float P[4] = { 0, 0, 0, 0 }, N[4] = { 0, 0, 0, 0 }, C[4] = { 0, 0, 0, 0 };
   float Margin = 0.0f, ConeSin2 = 0.0f, Radius = 0.0f, Reach2 = 0.0f;
+  float CapPlane = -HUGE_VALF; // SetCapPlane: nothing is below it until set
   int Far[3] = { 0, 0, 0 }; // 1 where n points up the axis: the box's far corner takes hi there
 #if defined(__SSE2__)
   // The same, broadcast to four lanes once per ball rather than once per node.
   __m128 LaneC[3], LaneP[3], LaneN[3];
   __m128 LaneMargin, LaneConeSin2, LaneRadius, LaneReach2;
+  __m128 LaneCapPlane = _mm_set1_ps(-HUGE_VALF);
   __m128 FarMask; // all ones in the components where Far is 1
 #endif
 };
@@ -637,6 +672,8 @@ struct Scratch
   std::vector<std::int32_t> CapNodes; // dropped for the cone while reaching into the ball
   std::vector<std::int32_t> CapSlots; // the same, triangles
   std::vector<PendingLane> CapLanes; // InscribeInCap's stack
+  std::vector<std::int32_t> LowNodes; // lanes wholly below the cap's plane when met
+  std::vector<float> LowHeights;      // the top of each (an upper bound of n.(q - p))
 };
 Scratch& ThreadScratch()
 {
@@ -647,6 +684,8 @@ Scratch& ThreadScratch()
   scratch.CapNodes.clear();
   scratch.CapSlots.clear();
   scratch.CapLanes.clear();
+  scratch.LowNodes.clear();
+  scratch.LowHeights.clear();
   return scratch;
 }}
 
@@ -1386,6 +1425,10 @@ public:
     G::AddScaled(this->PRel, this->Radius, n, this->CentreRel);
     this->Fast.emplace(bvh.Nodes[0], this->PRel, n, this->ConeSin);
     this->Fast->SetBall(this->CentreRel, this->Radius);
+    if (this->Capped)
+    {
+      this->Fast->SetCapPlane(this->Radius * this->Lift);
+    }
     this->Clear2 = this->ClearOf(this->Radius - this->Slack);
   }
 
@@ -1396,7 +1439,8 @@ public:
   // is often near, and a ball that is small early culls most of the rest of the
   // tree. (Larger seed subtrees, or seeds at the far hit and at p, cost more than
   // they save.) Then the whole tree without that leaf. Then the triangles that only
-  // reached into the cap, until the radius settles. Last, with an allowed
+  // reached into the cap, and the lanes that lay wholly below the cap's plane (which a
+  // smaller ball lowers: most never rise above it), until the radius settles. Last, with an allowed
   // protrusion, the cap's surface set aside on the way.
   void Run()
   {
@@ -1413,8 +1457,11 @@ public:
       this->Traverse(seed, -1);
     }
     this->Traverse(0, seed);
-    // A triangle set aside needs another look only if the ball shrank since its last one.
+    // A triangle set aside needs another look only if the ball shrank since its last one;
+    // a lane set aside below the cap's plane, once the plane has come down past its top.
     std::vector<std::int32_t>& lookedAt = this->Work.DeferredSteps;
+    std::vector<float>& lowTop = this->Work.LowHeights;
+    constexpr float Walked = -HUGE_VALF;
     for (bool changed = true; changed;)
     {
       changed = false;
@@ -1426,6 +1473,27 @@ public:
           this->ShrinkOn(this->Work.Deferred[i]);
           lookedAt[i] = this->Result.Steps;
           changed = changed || this->Radius < before;
+        }
+      }
+      for (size_t i = 0; i < this->Work.LowNodes.size(); ++i) // grows as lanes are walked
+      {
+        if (lowTop[i] != Walked && !(lowTop[i] < this->Fast->GetCapPlane()))
+        {
+          lowTop[i] = Walked;
+          const double before = this->Radius;
+          this->Traverse(this->Work.LowNodes[i], -1);
+          changed = changed || this->Radius < before;
+        }
+      }
+    }
+    if (this->Inscribe)
+    {
+      // Below the final cap's plane: only cap surface there.
+      for (size_t i = 0; i < this->Work.LowNodes.size(); ++i)
+      {
+        if (lowTop[i] != Walked)
+        {
+          this->Work.CapNodes.push_back(this->Work.LowNodes[i]);
         }
       }
     }
@@ -1488,6 +1556,10 @@ private:
     G::AddScaled(this->P, this->Radius, this->N, this->Centre);
     G::AddScaled(this->PRel, this->Radius, this->N, this->CentreRel);
     this->Fast->SetBall(this->CentreRel, this->Radius);
+    if (this->Capped)
+    {
+      this->Fast->SetCapPlane(this->Radius * this->Lift);
+    }
     G::Copy(q, this->Result.Contact);
     this->Result.ContactTriangle = this->Tree.LeafTriangles[slot].Triangle;
     this->Result.Blockers.Add(this->Result.ContactTriangle);
@@ -1679,9 +1751,21 @@ private:
         }
       }
     }
+    // In the cone but wholly below the cap's plane: nothing there blocks this ball. Run
+    // walks it once the plane has come down past its top, or hands it to InscribeInCap.
+    const int low = lanes.Low & within;
+    for (int i = 0; low && i < 4; ++i)
+    {
+      if (low & (1 << i))
+      {
+        this->Work.LowNodes.push_back(4 * index + i);
+        this->Work.LowHeights.push_back(lanes.H[i]);
+      }
+    }
     std::copy_n(lanes.D2, 4, d2);
-    return lanes.Keep & within;
+    return lanes.Keep & ~low & within;
   }
+
 
   // Depth first, nearer lane first, from lane `root` without lane `skip`. A wide
   // node's lanes are tested in full when it is opened and pushed with the number of

@@ -10,7 +10,9 @@
  *  - the ball tangent at P shrinks *and moves* (its centre is P + r n), so the
  *    culling sphere must follow the current radius;
  *  - contacts within the separation angle theta of P never count, so whole
- *    subtrees outside the cone n.(q - P) > sin(theta / 2) |q - P| can be skipped;
+ *    subtrees outside the cone n.(q - P) > sin(theta / 2) |q - P| can be skipped,
+ *    and subtrees below the plane n.(q - P) = r (1 - cos theta) of the current
+ *    ball's cap are set aside until the ball has shrunk past them;
  *  - near the medial axis a smooth surface lies all around the ball at almost
  *    the same distance. A box around a curved patch bulges into the ball; a slab
  *    along the patch's mean normal does not, so every node also keeps one.
