@@ -104,7 +104,11 @@ public:
    * r = |q - p|^2 / (2 n.(q - p)) (Ma et al. 2012), within a single traversal.
    * Each step moves only through radii that the triangle blocks, so the result is
    * the largest unblocked radius below the bound whichever triangles come first:
-   * hints (HintTriangle, Blockers) change the speed, not the ball.
+   * hints (HintTriangle, Blockers) change the speed, not the ball, except within
+   * the slack where contacts tie (a few times `slack` in the radius: a point that
+   * enters by less than the slack does not block, and which radius a tie is met at
+   * depends on the order). The order is fixed per query, so the answer does not
+   * depend on the thread count.
    * With cosMinAngle < 1 and a finite `allowed` depth, the cap's surface that the
    * traversal set aside is then searched for points deeper than `allowed` inside the
    * final ball (result.Shrunk and the inscribed ball about the same centre).
