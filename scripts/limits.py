@@ -15,6 +15,7 @@ import resource
 import signal
 import subprocess
 import sys
+import tempfile
 import time
 
 
@@ -49,8 +50,12 @@ def main():
                "peak_rss_mib": round(peak, 1), "stats": run.stdout.strip()}
         print(row, flush=True)
         results.append(row)
+    # An interrupted run still needs an output to ask for (the program refuses to run
+    # without one); it never gets to write it.
+    scratch = tempfile.TemporaryDirectory()
+    interrupted = command + ["-o", os.path.join(scratch.name, "interrupted.vtp")]
     for delay in delays:
-        child = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+        child = subprocess.Popen(interrupted, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
         time.sleep(delay)
         sent = time.monotonic()
         child.send_signal(signal.SIGINT)
@@ -65,9 +70,14 @@ def main():
         print(row, flush=True)
         results.append(row)
     print(json.dumps(results))
-    latencies = [r["latency_s"] for r in results if r["run"] == "interrupt"]
+    interrupts = [r for r in results if r["run"] == "interrupt"]
+    latencies = [r["latency_s"] for r in interrupts if r["exit"] == 130]
     if latencies:
         print("max SIGINT-to-exit latency: %.3f s over %d trials" % (max(latencies), len(latencies)))
+    if len(latencies) < len(interrupts):
+        # A run that ended otherwise (an error, or done before the signal) has no latency.
+        print("limits.py: %d of %d interrupted runs did not exit with 130" % (len(interrupts) - len(latencies), len(interrupts)))
+        sys.exit(1)
 
 
 if __name__ == "__main__":
