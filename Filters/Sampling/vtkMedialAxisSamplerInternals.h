@@ -89,8 +89,9 @@ private:
   // coverage stop needs prefixes, else a global, stable counting sort).
   static void SortByLeaf(const vtkMedialSurfaceQuery& query, const std::vector<vtkIdType>& triangles,
     vtkIdType block, std::vector<vtkIdType>& order);
-  // Solves the samples block by block; with `coverage`, stops after the first block
-  // that reaches it. Returns the samples used (a prefix).
+  // Solves the samples in hint chains: with `coverage`, block by block, stopping after
+  // the first block that reaches it; without, in one loop (`block` unused). Returns the
+  // samples used (a prefix).
   vtkIdType SolveBlocks(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int threads,
     vtkIdType block, const std::vector<vtkIdType>& triangles, const std::vector<double>& points,
     const std::vector<vtkIdType>& order, std::vector<vtkMedialSampleRecord>& results, vtkMedialCoverage* coverage);
