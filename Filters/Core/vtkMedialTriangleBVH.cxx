@@ -162,30 +162,16 @@ public:
     BELOW = 1,     // wholly on or below the tangent plane at p
     OUTSIDE_CONE = 2 // above it, but outside the cone where blockers can lie: the cap's surface
   };
-#if !defined(__SSE2__)
-  /// Side's upper bound of n.(q - p) over the box.
+  /// Largest n.(q - p) over the box (lo, hi; four floats readable at each), plus the
+  /// margin: an upper bound.
   float Height(const float* lo, const float* hi) const
   {
-    const float* corners[2] = { lo, hi };
-    float h = this->Margin;
-    for (int k = 0; k < 3; ++k)
-    {
-      h += this->N[k] * (corners[this->Far[k]][k] - this->P[k]);
-    }
-    return h;
-  }
-#endif
-
-  /// Where the box (lo, hi; four floats readable at each) lies.
-  Sides Side(const float* lo, const float* hi) const
-  {
-    // Largest n.(q - p) over the box, plus the margin: an upper bound.
 #if defined(__SSE2__)
     // The far corner's three terms at once, summed in the scalar order below.
     const __m128 far = _mm_or_ps(_mm_and_ps(this->FarMask, _mm_loadu_ps(hi)), _mm_andnot_ps(this->FarMask, _mm_loadu_ps(lo)));
     alignas(16) float terms[4];
     _mm_store_ps(terms, _mm_mul_ps(_mm_load_ps(this->N), _mm_sub_ps(far, _mm_load_ps(this->P))));
-    const float h = ((this->Margin + terms[0]) + terms[1]) + terms[2];
+    return ((this->Margin + terms[0]) + terms[1]) + terms[2];
 #else
     const float* corners[2] = { lo, hi };
     float h = this->Margin;
@@ -193,7 +179,14 @@ public:
     {
       h += this->N[k] * (corners[this->Far[k]][k] - this->P[k]);
     }
+    return h;
 #endif
+  }
+
+  /// Where the box (lo, hi; four floats readable at each) lies.
+  Sides Side(const float* lo, const float* hi) const
+  {
+    const float h = this->Height(lo, hi);
     if (!(h > 0.0f))
     {
       return BELOW;
@@ -1424,11 +1417,7 @@ public:
     G::Sub(p, bvh.Origin, this->PRel);
     G::AddScaled(this->PRel, this->Radius, n, this->CentreRel);
     this->Fast.emplace(bvh.Nodes[0], this->PRel, n, this->ConeSin);
-    this->Fast->SetBall(this->CentreRel, this->Radius);
-    if (this->Capped)
-    {
-      this->Fast->SetCapPlane(this->Radius * this->Lift);
-    }
+    this->FastFollowsBall();
     this->Clear2 = this->ClearOf(this->Radius - this->Slack);
   }
 
@@ -1440,8 +1429,8 @@ public:
   // tree. (Larger seed subtrees, or seeds at the far hit and at p, cost more than
   // they save.) Then the whole tree without that leaf. Then the triangles that only
   // reached into the cap, and the lanes that lay wholly below the cap's plane (which a
-  // smaller ball lowers: most never rise above it), until the radius settles. Last, with an allowed
-  // protrusion, the cap's surface set aside on the way.
+  // smaller ball lowers: most never rise above it), until the radius settles. Last,
+  // with an allowed protrusion, the cap's surface set aside on the way.
   void Run()
   {
     const BlockerChain replay = this->Result.Blockers;
@@ -1549,17 +1538,23 @@ private:
   // or it would not have got this far).
   bool InCap(bool touches) const { return this->Capped && touches; }
 
+  // The float tests follow the current ball and, with theta > 0, its cap's plane.
+  void FastFollowsBall()
+  {
+    this->Fast->SetBall(this->CentreRel, this->Radius);
+    if (this->Capped)
+    {
+      this->Fast->SetCapPlane(this->Radius * this->Lift);
+    }
+  }
+
   void Accept(double r, const double q[3], std::int32_t slot)
   {
     this->Radius = r;
     this->Clear2 = this->ClearOf(r - this->Slack);
     G::AddScaled(this->P, this->Radius, this->N, this->Centre);
     G::AddScaled(this->PRel, this->Radius, this->N, this->CentreRel);
-    this->Fast->SetBall(this->CentreRel, this->Radius);
-    if (this->Capped)
-    {
-      this->Fast->SetCapPlane(this->Radius * this->Lift);
-    }
+    this->FastFollowsBall();
     G::Copy(q, this->Result.Contact);
     this->Result.ContactTriangle = this->Tree.LeafTriangles[slot].Triangle;
     this->Result.Blockers.Add(this->Result.ContactTriangle);
@@ -1765,7 +1760,6 @@ private:
     std::copy_n(lanes.D2, 4, d2);
     return lanes.Keep & ~low & within;
   }
-
 
   // Depth first, nearer lane first, from lane `root` without lane `skip`. A wide
   // node's lanes are tested in full when it is opened and pushed with the number of
