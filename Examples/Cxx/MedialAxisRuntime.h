@@ -7,9 +7,11 @@
  *    output) with malloc, which maps large blocks in 4 kB pages. Where the system gives
  *    huge pages only on request (the default "madvise" setting), each 4 kB page costs a
  *    fault on first touch: on one of this project's 2-core virtual machines about 15 us,
- *    so reading a 68 MB surface took 0.3 to 0.5 s instead of 0.05 s (issue 18). Not set
- *    when MEDIALAXIS_HUGE_PAGES=0 (which also keeps vtkMedialBuffer in 4 kB pages): on
- *    a machine whose host backs huge pages slowly, 4 kB pages are faster;
+ *    so reading a 68 MB surface took 0.3 to 0.5 s instead of 0.05 s (issue 18). Set only
+ *    when vtkMedialBuffer uses huge pages (vtkMedialBufferHugePages: MEDIALAXIS_HUGE_PAGES,
+ *    else a measurement): on a machine whose host backs huge pages slowly, 4 kB pages
+ *    are faster. The restarted program gets that decision as MEDIALAXIS_HUGE_PAGES=0
+ *    or 1, so that it does not measure again;
  *  - OMP_WAIT_POLICY=passive: an OpenMP thread that waits at a barrier sleeps instead of
  *    spinning for a while first. On a machine whose cores are shared, a spinning thread
  *    takes the core its late partner needs: at load 7 on 2 cores, the preparation (mesh
@@ -39,7 +41,8 @@ inline void RestartWithRuntimeSettings(char* argv[])
 {
 #if defined(__linux__) && defined(__GLIBC__)
   bool changed = false;
-  if (!std::getenv("GLIBC_TUNABLES") && vtkMedialBufferHugePages())
+  const bool hugePages = vtkMedialBufferHugePages();
+  if (!std::getenv("GLIBC_TUNABLES") && hugePages)
   {
     changed = setenv("GLIBC_TUNABLES", "glibc.malloc.hugetlb=1", 1) == 0 || changed;
   }
@@ -49,6 +52,7 @@ inline void RestartWithRuntimeSettings(char* argv[])
   }
   if (changed)
   {
+    setenv("MEDIALAXIS_HUGE_PAGES", hugePages ? "1" : "0", 1);
     execv("/proc/self/exe", argv); // returns only on failure
   }
 #else

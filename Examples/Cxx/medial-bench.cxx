@@ -16,6 +16,7 @@
 // Prints a table, or one JSON object with --json. Not a test: it checks nothing.
 #include "MedialAxisRuntime.h"
 #include "vtkMedialArrayNames.h"
+#include "vtkMedialBuffer.h"
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialFileReader.h"
 #include "vtkMedialBallClassifier.h"
@@ -663,6 +664,19 @@ void PrintJson(const BenchFigures& f, const BenchOptions& options, const std::ve
   std::printf("%s\n", js.str().c_str());
 }
 
+// Which page size the large buffers used, and what a first touch costs now in each
+// (vtkMedialBuffer.h). The restart passes the first process's decision on as
+// MEDIALAXIS_HUGE_PAGES, so this process measures again, for the record only.
+void PrintPages()
+{
+  const char* value = std::getenv("MEDIALAXIS_HUGE_PAGES");
+  const vtkMedialFirstTouchCosts costs = vtkMedialFirstTouchProbe();
+  std::printf("pages: %s for the large buffers (MEDIALAXIS_HUGE_PAGES=%s); first touch measured at the end: "
+              "huge pages %.3f ms per MiB, 4 kB pages %.3f ms per MiB\n",
+    vtkMedialBufferHugePages() ? "huge pages" : "4 kB pages", value ? value : "(unset)", costs.HugePages,
+    costs.SmallPages);
+}
+
 void PrintTables(const BenchFigures& f, const BenchOptions& options, const std::vector<StructureRow>& structure,
   const std::string& structureLabel)
 {
@@ -700,6 +714,7 @@ void PrintTables(const BenchFigures& f, const BenchOptions& options, const std::
               "(%.1fx the horse)\n",
     static_cast<long long>(f.SphereTriangles), f.SphereMicro, f.SphereMicro / f.DefaultMicro);
   std::printf("peak RSS: %.0f MiB\n", f.PeakRss);
+  PrintPages();
   std::ostringstream unused;
   PrintStructure(structure, structureLabel, false, unused);
 }
@@ -803,6 +818,7 @@ int RunPreparation(const std::string& file)
   }
   std::printf("ray (2 threads, 200000 rays): %.3f us\n", MeasureRays(*kept, *keptQuery));
   std::printf("peak RSS: %.0f MiB\n", PeakRssMiB());
+  PrintPages();
   return 0;
 }
 

@@ -17,23 +17,28 @@
  *  - blocks of 2 MiB or more are aligned to 2 MiB and advised for transparent huge pages
  *    (madvise MADV_HUGEPAGE): 512 times fewer page faults on first touch and fewer
  *    TLB misses in the random accesses of the tree build. Only whole huge pages
- *    inside the block are advised, so the resident size does not grow. The
- *    environment variable MEDIALAXIS_HUGE_PAGES=0 turns the advice off (read once).
+ *    inside the block are advised, so the resident size does not grow. Whether they
+ *    are is decided once per process (vtkMedialBufferHugePages): by the environment
+ *    variable MEDIALAXIS_HUGE_PAGES (0 or 1), else by measuring what a first touch
+ *    of a 4 kB page costs on this machine.
  * Measured on 1.55M triangles (issue 18): about a third of the preparation's CPU time
  * was page faults and zero fills. Which page size is faster depends on the machine:
  * on one of this project's virtual machines a first touch cost about 15 us per 4 kB
  * page, 50 times a huge page's cost per byte; on another, a huge page that the host
  * had taken back cost about 6 ms and 512 fresh 4 kB pages 1.2 ms, and the preparation
- * was faster without the advice (README, "Huge pages"). Large buffers of the
+ * was faster without it (README, "Huge pages"). Large buffers of the
  * preparation should all be vtkMedialBuffer, not std::vector, either way.
  */
 #ifndef vtkMedialBuffer_h
 #define vtkMedialBuffer_h
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <fstream>
 #include <new>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -41,13 +46,96 @@
 #include <sys/mman.h>
 #endif
 
-/// False when the environment sets MEDIALAXIS_HUGE_PAGES=0: large buffers are then
-/// left in the system's default pages. Read once per process.
+/// What one process measured of the first touch of fresh memory, in milliseconds per
+/// MiB, with and without the huge-page advice (vtkMedialFirstTouchProbe).
+struct vtkMedialFirstTouchCosts
+{
+  double HugePages = 0.0; // -1 when not measured
+  double SmallPages = 0.0;
+};
+
+#if defined(__linux__)
+/// Milliseconds per MiB to write fresh anonymous memory once: `bytes` mapped on a
+/// 2 MiB boundary, advised for huge pages or kept in 4 kB pages, one write per 4 kB.
+inline double vtkMedialFirstTouchMilliseconds(std::size_t bytes, bool huge)
+{
+  const std::size_t hugePage = std::size_t(1) << 21;
+  void* p = mmap(nullptr, bytes + hugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (p == MAP_FAILED)
+  {
+    return -1.0;
+  }
+  char* aligned =
+    reinterpret_cast<char*>((reinterpret_cast<std::uintptr_t>(p) + hugePage - 1) / hugePage * hugePage);
+#if defined(MADV_HUGEPAGE) && defined(MADV_NOHUGEPAGE)
+  madvise(aligned, bytes, huge ? MADV_HUGEPAGE : MADV_NOHUGEPAGE);
+#else
+  (void)huge;
+#endif
+  const auto start = std::chrono::steady_clock::now();
+  for (std::size_t i = 0; i < bytes; i += 4096)
+  {
+    static_cast<volatile char*>(aligned)[i] = 1;
+  }
+  const std::chrono::duration<double, std::milli> spent = std::chrono::steady_clock::now() - start;
+  munmap(p, bytes + hugePage);
+  return spent.count() / (static_cast<double>(bytes) / (1 << 20));
+}
+#endif
+
+/// Measures once per process what a first touch costs in huge pages (4 MiB advised)
+/// and in 4 kB pages (2 MiB): 1 to 20 ms, paid at the first large buffer. The probe's
+/// memory is freed at once, and the next buffers get it. HugePages is -1 where
+/// transparent huge pages are off, or not on Linux.
+inline vtkMedialFirstTouchCosts vtkMedialFirstTouchProbe()
+{
+  static const vtkMedialFirstTouchCosts costs = [] {
+    vtkMedialFirstTouchCosts measured;
+    measured.HugePages = -1.0;
+#if defined(__linux__)
+    std::ifstream setting("/sys/kernel/mm/transparent_hugepage/enabled");
+    std::string modes;
+    std::getline(setting, modes);
+    if (modes.empty() || modes.find("[never]") != std::string::npos)
+    {
+      return measured;
+    }
+    measured.SmallPages = vtkMedialFirstTouchMilliseconds(std::size_t(1) << 21, false);
+    measured.HugePages = vtkMedialFirstTouchMilliseconds(std::size_t(1) << 22, true);
+#endif
+    return measured;
+  }();
+  return costs;
+}
+
+/// What a huge page costs, in milliseconds per MiB, when the host has to back it afresh:
+/// 2 to 3 on both of this project's virtual machines that were measured (issue 18).
+/// Such a host keeps a few recently freed huge pages backed (14 MiB on one), so a small
+/// sample cannot see this cost, and a sample large enough to get past them costs
+/// 50 ms; hence a constant, from those measurements.
+constexpr double vtkMedialFreshHugePageCost = 2.0;
+
+/// Whether vtkMedialBuffer advises its large blocks for transparent huge pages, decided
+/// once per process: MEDIALAXIS_HUGE_PAGES=0 says no, =1 says yes; otherwise (unset or
+/// "auto") yes when 4 kB pages cost more per byte on first touch than a huge page
+/// that the host has to back afresh (vtkMedialFreshHugePageCost) and than the huge
+/// pages the probe got. Why: it goes both ways. On one of this project's virtual
+/// machines a 4 kB page cost about 15 us (3.5 to 7.5 ms per MiB) and huge pages were
+/// the faster even when fresh; on another a 4 kB page cost about 2 us (0.4 to 0.6 ms
+/// per MiB), and the preparation of the 1.55 M horse took 0.8 to 1.0 s in 4 kB pages,
+/// 1.45 to 1.6 s in huge pages, most of which the host backed afresh at 4.4 to 6.6 ms.
 inline bool vtkMedialBufferHugePages()
 {
   static const bool enabled = [] {
     const char* value = std::getenv("MEDIALAXIS_HUGE_PAGES");
-    return !(value && value[0] == '0' && value[1] == '\0');
+    const std::string setting = value ? value : "";
+    if (setting == "0" || setting == "1")
+    {
+      return setting == "1";
+    }
+    const vtkMedialFirstTouchCosts costs = vtkMedialFirstTouchProbe();
+    return costs.HugePages >= 0.0 && costs.SmallPages > costs.HugePages &&
+      costs.SmallPages > vtkMedialFreshHugePageCost;
   }();
   return enabled;
 }

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// vtkMedialBuffer advises its large blocks for transparent huge pages unless the
-// environment sets MEDIALAXIS_HUGE_PAGES=0. The test runs twice (see CMakeLists.txt):
-// as is, and with that variable. It finds the mapping of a 16 MiB buffer in
-// /proc/self/smaps and checks its "hg" flag (VM_HUGEPAGE, set by madvise) against
-// the setting. Skipped where there is no
-// /proc/self/smaps or the kernel has no transparent huge pages.
+// vtkMedialBuffer advises its large blocks for transparent huge pages when the
+// environment sets MEDIALAXIS_HUGE_PAGES=1, not when it sets 0, and otherwise when its
+// probe found 4 kB pages dearer to touch first than huge pages, fresh or probed. The
+// test runs three times (see CMakeLists.txt): as is, with 0 and with 1. It finds the
+// mapping of a 16 MiB buffer in /proc/self/smaps and checks its "hg" flag (VM_HUGEPAGE,
+// set by madvise) against the setting. Skipped where there is no /proc/self/smaps or
+// the kernel has no transparent huge pages.
 #include "vtkMedialBuffer.h"
 
 #include <cstdint>
@@ -45,7 +46,22 @@ std::string FlagsOfMapping(const void* address)
 int TestMedialBufferPages(int, char*[])
 {
   const char* value = std::getenv("MEDIALAXIS_HUGE_PAGES");
-  const bool expected = !(value && std::string(value) == "0");
+  const std::string setting = value ? value : "";
+  bool expected = setting == "1";
+  if (setting != "0" && setting != "1")
+  {
+    // The probe decides: both costs measured (or huge pages off), and the rule applied.
+    const vtkMedialFirstTouchCosts costs = vtkMedialFirstTouchProbe();
+    std::printf("first touch: huge pages %.3f ms per MiB, 4 kB pages %.3f ms per MiB\n", costs.HugePages,
+      costs.SmallPages);
+    if (costs.HugePages >= 0.0 && !(costs.HugePages > 0.0 && costs.SmallPages > 0.0))
+    {
+      std::printf("the probe did not measure both page sizes\n");
+      return 1;
+    }
+    expected = costs.HugePages >= 0.0 && costs.SmallPages > costs.HugePages &&
+      costs.SmallPages > vtkMedialFreshHugePageCost;
+  }
   if (vtkMedialBufferHugePages() != expected)
   {
     std::printf("MEDIALAXIS_HUGE_PAGES=%s, but vtkMedialBufferHugePages() is %d\n", value ? value : "(unset)",
