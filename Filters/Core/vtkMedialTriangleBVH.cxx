@@ -877,7 +877,7 @@ bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh, const std::f
     return false;
   }
   this->CopyInLeafOrder(mesh);
-  return this->BuildWideNodes();
+  return this->BuildWideNodes(mesh);
 }
 
 bool vtkMedialTriangleBVH::BuildNodes(const vtkMedialTriangleMesh& mesh, const std::function<bool()>& aborted)
@@ -1061,7 +1061,8 @@ int vtkMedialTriangleBVH::WideLanes(std::int32_t binary, bool root, std::int32_t
   return count;
 }
 
-void vtkMedialTriangleBVH::WriteWideNode(std::int32_t index, const std::int32_t lanes[4], int count)
+void vtkMedialTriangleBVH::WriteWideNode(
+  std::int32_t index, const std::int32_t lanes[4], int count, const vtkMedialTriangleMesh& mesh)
 {
   WideNode& wide = this->WideNodes[index];
   for (int i = 0; i < 4; ++i)
@@ -1077,7 +1078,9 @@ void vtkMedialTriangleBVH::WriteWideNode(std::int32_t index, const std::int32_t 
   }
   for (int i = 0; i < count; ++i)
   {
-    const Node& node = this->Nodes[lanes[i]];
+    // Each binary node is one wide node's lane at most: no other thread writes it.
+    Node& node = this->Nodes[lanes[i]];
+    this->MeasureSlab(node, mesh);
     for (int k = 0; k < 3; ++k)
     {
       wide.Lo[k][i] = node.Lo[k];
@@ -1094,7 +1097,8 @@ void vtkMedialTriangleBVH::WriteWideNode(std::int32_t index, const std::int32_t 
   }
 }
 
-std::int32_t vtkMedialTriangleBVH::WideSubtree(std::int32_t binary, std::int32_t first, bool write)
+std::int32_t vtkMedialTriangleBVH::WideSubtree(
+  std::int32_t binary, std::int32_t first, const vtkMedialTriangleMesh* write)
 {
   // Depth first, lane 0's subtree next: a subtree's wide nodes are stored together.
   struct Pending
@@ -1116,7 +1120,7 @@ std::int32_t vtkMedialTriangleBVH::WideSubtree(std::int32_t binary, std::int32_t
       {
         this->WideNodes[WideOf(pending.Ref)].Child[LaneOf(pending.Ref)] = index;
       }
-      this->WriteWideNode(index, lanes, count);
+      this->WriteWideNode(index, lanes, count, *write);
     }
     for (int i = count - 1; i >= 0; --i)
     {
@@ -1129,7 +1133,7 @@ std::int32_t vtkMedialTriangleBVH::WideSubtree(std::int32_t binary, std::int32_t
   return next - first;
 }
 
-bool vtkMedialTriangleBVH::BuildWideNodes()
+bool vtkMedialTriangleBVH::BuildWideNodes(const vtkMedialTriangleMesh& mesh)
 {
   this->WideNodes.clear();
   this->LeafLane.resize(this->LeafTriangles.size());
@@ -1176,7 +1180,7 @@ bool vtkMedialTriangleBVH::BuildWideNodes()
   {
     if (top[t].Below)
     {
-      top[t].Size = this->WideSubtree(top[t].Binary, 0, false);
+      top[t].Size = this->WideSubtree(top[t].Binary, 0, nullptr);
     }
   }
   std::int32_t total = 0;
@@ -1191,7 +1195,7 @@ bool vtkMedialTriangleBVH::BuildWideNodes()
     if (!node.Below)
     {
       std::int32_t lanes[4];
-      this->WriteWideNode(node.Index, lanes, this->WideLanes(node.Binary, node.Parent < 0, lanes));
+      this->WriteWideNode(node.Index, lanes, this->WideLanes(node.Binary, node.Parent < 0, lanes), mesh);
     }
     if (node.Parent >= 0)
     {
@@ -1203,7 +1207,7 @@ bool vtkMedialTriangleBVH::BuildWideNodes()
   {
     if (top[t].Below)
     {
-      this->WideSubtree(top[t].Binary, top[t].Index, true);
+      this->WideSubtree(top[t].Binary, top[t].Index, &mesh);
     }
   }
   return true;
@@ -1218,7 +1222,7 @@ void vtkMedialTriangleBVH::BuildNode(BuildState& state, vtkMedialBuffer<Node>& n
     later->push_back({ nodeIndex, begin, end, bounds });
     return;
   }
-  Node node = this->BoundNode(state, begin, end, bounds);
+  Node node = this->BoundNode(begin, end, bounds);
   const std::int32_t count = end - begin;
   node.Start = begin;
   node.Count = count;
@@ -1253,60 +1257,66 @@ vtkMedialTriangleBVH::BuildBounds vtkMedialTriangleBVH::MeasureBounds(
 }
 
 vtkMedialTriangleBVH::Node vtkMedialTriangleBVH::BoundNode(
-  const BuildState& state, std::int32_t begin, std::int32_t end, const BuildBounds& bounds) const
+  std::int32_t begin, std::int32_t end, const BuildBounds& bounds) const
 {
-  // The slab along the area-weighted mean normal; the box from `bounds`.
-  const vtkMedialTriangleMesh& mesh = state.Mesh;
-  const BuildItem* items = state.Items;
+  // The box from `bounds`; the slab is measured later, and only for the nodes that a
+  // wide node holds (MeasureSlab).
   Node node{};
-  double area[3] = { 0, 0, 0 }, totalArea = 0.0;
-  // Large nodes are never culled by a slab (their boxes decide), so they skip it.
-  const bool slab = end - begin <= SlabMaximumTriangles;
-  if (slab)
-  {
-    for (std::int32_t i = begin; i < end; ++i)
-    {
-      const std::int32_t t = items[i].Triangle;
-      totalArea += mesh.Areas[t];
-      for (int k = 0; k < 3; ++k)
-      {
-        area[k] += mesh.Areas[t] * mesh.GetNormal(t)[k];
-      }
-    }
-  }
-  // Skipped when the normals (nearly) cancel out.
-  const double areaNorm = std::sqrt(G::Dot(area, area));
-  if (slab && areaNorm > 0.25 * totalArea && areaNorm > 0.0)
-  {
-    // The slab is measured along the axis as stored (float), so it bounds exactly that.
-    double axis[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      node.Axis[k] = static_cast<float>(area[k] / areaNorm);
-      axis[k] = node.Axis[k];
-    }
-    double slabLo = HUGE_VAL, slabHi = -HUGE_VAL;
-    for (std::int32_t i = begin; i < end; ++i)
-    {
-      const vtkIdType* v = mesh.GetTriangle(items[i].Triangle);
-      for (int j = 0; j < 3; ++j)
-      {
-        double x[3];
-        G::Sub(mesh.GetPoint(v[j]), this->Origin, x);
-        const double m = G::Dot(axis, x);
-        slabLo = std::min(slabLo, m);
-        slabHi = std::max(slabHi, m);
-      }
-    }
-    node.SlabLo = Down(slabLo, this->RoundingPad);
-    node.SlabHi = Up(slabHi, this->RoundingPad);
-  }
   for (int k = 0; k < 3; ++k)
   {
     node.Lo[k] = Down(bounds.Lo[k] - this->Origin[k], this->RoundingPad);
     node.Hi[k] = Up(bounds.Hi[k] - this->Origin[k], this->RoundingPad);
   }
+  node.Begin = begin;
+  node.End = end;
   return node;
+}
+
+void vtkMedialTriangleBVH::MeasureSlab(Node& node, const vtkMedialTriangleMesh& mesh) const
+{
+  // The slab along the area-weighted mean normal, from the leaf-order copies (read in
+  // sequence; the normals are the planes' own). Large nodes are never culled by a
+  // slab (their boxes decide), so they skip it.
+  if (node.End - node.Begin > SlabMaximumTriangles)
+  {
+    return;
+  }
+  double area[3] = { 0, 0, 0 }, totalArea = 0.0;
+  for (std::int32_t i = node.Begin; i < node.End; ++i)
+  {
+    const LeafTriangle& leaf = this->LeafTriangles[i];
+    const double a = mesh.Areas[leaf.Triangle];
+    totalArea += a;
+    for (int k = 0; k < 3; ++k)
+    {
+      area[k] += a * leaf.Plane[k];
+    }
+  }
+  // Skipped when the normals (nearly) cancel out.
+  const double areaNorm = std::sqrt(G::Dot(area, area));
+  if (!(areaNorm > 0.25 * totalArea && areaNorm > 0.0))
+  {
+    return;
+  }
+  // The slab is measured along the axis as stored (float), so it bounds exactly that.
+  double axis[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    node.Axis[k] = static_cast<float>(area[k] / areaNorm);
+    axis[k] = node.Axis[k];
+  }
+  double slabLo = HUGE_VAL, slabHi = -HUGE_VAL;
+  for (const double* v = &this->Vertices[9 * static_cast<size_t>(node.Begin)];
+       v < &this->Vertices[0] + 9 * static_cast<size_t>(node.End); v += 3)
+  {
+    double x[3];
+    G::Sub(v, this->Origin, x);
+    const double m = G::Dot(axis, x);
+    slabLo = std::min(slabLo, m);
+    slabHi = std::max(slabHi, m);
+  }
+  node.SlabLo = Down(slabLo, this->RoundingPad);
+  node.SlabHi = Up(slabHi, this->RoundingPad);
 }
 
 std::int32_t vtkMedialTriangleBVH::SplitNode(BuildState& state, std::int32_t begin, std::int32_t end,

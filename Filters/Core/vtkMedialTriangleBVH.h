@@ -15,19 +15,23 @@
  *    ball's cap are set aside until the ball has shrunk past them;
  *  - near the medial axis a smooth surface lies all around the ball at almost
  *    the same distance. A box around a curved patch bulges into the ball; a slab
- *    along the patch's mean normal does not, so every node also keeps one.
+ *    along the patch's mean normal does not, so the nodes also keep one.
  *
  * Build: top-down binned SAH (16 bins on the widest centroid axis), leaves of at
  * most 4 triangles, children stored next to each other. The top levels are built
  * first; the subtrees below them are built in parallel (OpenMP) and appended as they
  * finish: the tree, its leaf order and the 4-wide tree do not depend on the thread
- * count, only where a subtree's binary nodes are stored does. Each node has its box
- * and a slab [SlabLo, SlabHi] of m.x over its vertices, m the normalised sum of
- * its triangles' area vectors. Triangle vertices are copied in leaf order so a
- * leaf is read contiguously. The tree depends only on the mesh: deterministic.
+ * count, only where a subtree's binary nodes are stored does. Each node has its box.
+ * Triangle vertices are copied in leaf order so a leaf is read contiguously. The
+ * tree depends only on the mesh: deterministic.
  * A last pass collapses the binary tree into a 4-wide one (WideNode: four child
  * boxes and slabs side by side) that MaximalTangentBall walks, testing four
- * children at once with SSE2; the other queries walk the binary tree.
+ * children at once with SSE2; the other queries walk it too, and the binary tree
+ * for far points or without SSE2. Each binary node that a wide node holds gets a
+ * slab [SlabLo, SlabHi] of m.x over its vertices, m the normalised sum of its
+ * triangles' area vectors, measured from the leaf-order copies; the nodes that the
+ * collapse opens have none (a quarter of the nodes on the 1.55 M horse, the inner
+ * ones whose slabs cost the most to measure; only the binary walk misses them).
  *
  * Every decision is made in double precision on the mesh's own coordinates.
  * Node bounds are stored in single precision relative to the bounding-box
@@ -177,10 +181,11 @@ public:
   struct alignas(64) Node
   {
     float Lo[3], Hi[3]; // axis-aligned box
-    float Axis[3];      // slab normal, about unit; zero when the normals cancel out
+    float Axis[3];      // slab normal, about unit; zero when there is no slab
     float SlabLo, SlabHi; // range of Axis.(x - Origin) over the node's vertices
     std::int32_t Start; // leaf: first triangle in leaf order; inner: left child (right is Start + 1)
     std::int32_t Count; // leaf: number of triangles; inner: 0
+    std::int32_t Begin, End; // its triangles, in leaf order
   };
 
   // Four nodes of the binary tree side by side (structure of arrays), for the tangent
@@ -228,24 +233,30 @@ private:
   // Build's second pass: Vertices and LeafTriangles' planes and edges, gathered from
   // the mesh in leaf order.
   void CopyInLeafOrder(const vtkMedialTriangleMesh& mesh);
-  // Build's last pass: WideNodes and LeafLane from the binary tree.
-  // False when the mesh is too large for the leaf encoding.
-  bool BuildWideNodes();
+  // Build's last pass: WideNodes and LeafLane from the binary tree, and the slabs of
+  // the binary nodes that they hold. False when the mesh is too large for the leaf
+  // encoding.
+  bool BuildWideNodes(const vtkMedialTriangleMesh& mesh);
   // The binary nodes that the wide node over `binary` holds (its children, opened two
   // levels down or so; `root`: wide node 0, the binary root alone); returns how many.
   int WideLanes(std::int32_t binary, bool root, std::int32_t lanes[4]) const;
-  // Wide node `index` over the binary nodes `lanes`, and LeafLane for its leaves.
-  void WriteWideNode(std::int32_t index, const std::int32_t lanes[4], int count);
+  // Wide node `index` over the binary nodes `lanes` (whose slabs it measures first),
+  // and LeafLane for its leaves.
+  void WriteWideNode(std::int32_t index, const std::int32_t lanes[4], int count, const vtkMedialTriangleMesh& mesh);
   // The wide subtree over inner binary node `binary`, numbered from `first`: its size,
-  // and with `write` its nodes (the root's parent lane is left to the caller).
-  std::int32_t WideSubtree(std::int32_t binary, std::int32_t first, bool write);
+  // and with the mesh (`write`) its nodes (the root's parent lane is left to the caller).
+  std::int32_t WideSubtree(std::int32_t binary, std::int32_t first, const vtkMedialTriangleMesh* write);
   // Builds the subtree of triangles order[begin, end), whose bounds are `bounds`,
   // into nodes[node]. With `later`, ranges of at most `grain` triangles are only
   // recorded there, to be built in parallel.
   void BuildNode(BuildState& state, vtkMedialBuffer<Node>& nodes, std::int32_t node, std::int32_t begin,
     std::int32_t end, const BuildBounds& bounds, std::vector<Subtree>* later, std::int32_t grain) const;
-  // The node over order[begin, end) with the given bounds: its float box and its slab.
-  Node BoundNode(const BuildState& state, std::int32_t begin, std::int32_t end, const BuildBounds& bounds) const;
+  // The node over order[begin, end) with the given bounds: its float box, no slab yet.
+  Node BoundNode(std::int32_t begin, std::int32_t end, const BuildBounds& bounds) const;
+  // The node's slab [SlabLo, SlabHi] along its triangles' area-weighted mean normal,
+  // from the leaf-order vertices and planes (after CopyInLeafOrder); left empty (Axis
+  // zero) above SlabMaximumTriangles or where the normals cancel out.
+  void MeasureSlab(Node& node, const vtkMedialTriangleMesh& mesh) const;
   // The bounds of order[begin, end), by a pass over its triangles.
   static BuildBounds MeasureBounds(const BuildState& state, std::int32_t begin, std::int32_t end);
   // Partitions order[begin, end) for the two children (binned SAH, else the median);
