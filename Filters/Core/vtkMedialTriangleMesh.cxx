@@ -1174,6 +1174,29 @@ bool vtkMedialTriangleMesh::BuildAreaCdf(std::string& error)
     c /= sum;
   }
   this->AreaCdf.back() = 1.0;
+  // About one entry per guide (a power of two, so that u * guides is exact).
+  const size_t n = this->AreaCdf.size();
+  if (n >= (size_t(1) << 32))
+  {
+    this->AreaGuide.clear(); // indices beyond 32 bits: the plain binary search
+    return true;
+  }
+  size_t guides = 1;
+  while (2 * guides <= n && guides < (size_t(1) << 30))
+  {
+    guides *= 2;
+  }
+  this->AreaGuide.resize(guides + 1);
+  size_t at = 0;
+  for (size_t j = 0; j <= guides; ++j)
+  {
+    const double step = static_cast<double>(j) / static_cast<double>(guides);
+    while (at < n && this->AreaCdf[at] <= step)
+    {
+      ++at;
+    }
+    this->AreaGuide[j] = static_cast<std::uint32_t>(at);
+  }
   return true;
 }
 
@@ -1184,6 +1207,7 @@ void vtkMedialTriangleMesh::ReleaseGeometry()
   vtkMedialBuffer<double>().swap(this->Normals);
   vtkMedialBuffer<double>().swap(this->Areas);
   vtkMedialBuffer<double>().swap(this->AreaCdf);
+  vtkMedialBuffer<std::uint32_t>().swap(this->AreaGuide);
 }
 
 std::string vtkMedialTriangleMesh::ShellName(int shell) const
@@ -1260,8 +1284,19 @@ std::vector<std::string> vtkMedialTriangleMesh::Warnings() const
 vtkIdType vtkMedialTriangleMesh::PickTriangleByArea(double u) const
 {
   // First entry strictly greater than u: zero-area triangles repeat the previous
-  // CDF value and so are never picked.
-  auto it = std::upper_bound(this->AreaCdf.begin(), this->AreaCdf.end(), u);
+  // CDF value and so are never picked. For u in [j, j + 1) / guides it lies between
+  // guides j and j + 1 (the same search for the two ends), so only that run is
+  // searched; when no entry of the run is above u, guide j + 1 is the answer, which
+  // is where the search then stops.
+  auto first = this->AreaCdf.begin(), last = this->AreaCdf.end();
+  if (u >= 0.0 && u < 1.0 && this->AreaGuide.size() > 1)
+  {
+    const size_t guides = this->AreaGuide.size() - 1;
+    const size_t j = static_cast<size_t>(u * static_cast<double>(guides));
+    first = this->AreaCdf.begin() + this->AreaGuide[j];
+    last = this->AreaCdf.begin() + this->AreaGuide[j + 1];
+  }
+  auto it = std::upper_bound(first, last, u);
   if (it == this->AreaCdf.end())
   {
     --it;
