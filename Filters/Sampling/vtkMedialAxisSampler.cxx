@@ -44,13 +44,25 @@ vtkStandardNewMacro(vtkMedialAxisSampler);
 namespace
 {
 // Consecutive samples in leaf order that run on one thread, each hinted with the
-// previous one's contact and blockers. Chains start at multiples of HintChain
-// whatever the thread count and the piece, so the output depends on neither. (A hint
-// changes the visiting order only: the ball is the same up to the 1e-12 slack, which
-// can decide nearly flat contacts either way.) Only a chain's first sample searches
-// cold: 32 (against 8) cuts the search's work on the 1.55M-triangle horse by about
-// 6%, and still gives 31 chains per 1000 samples to spread over the threads.
-constexpr vtkIdType HintChain = 32;
+// previous one's contact and blockers. (A hint changes the visiting order only: the
+// ball is the same up to the search's slack, which can decide nearly flat contacts
+// either way.) Only a chain's first sample searches cold: chains of 32 (against 8) cut
+// the search's work on the 1.55M-triangle horse by about 6%, and longer ones cut it
+// further on large runs (1 M samples: sampling 8.89, 9.25, 9.65 s with 32, 8.24, 8.17,
+// 8.86 s with 512, alternating). So a run of N samples uses chains of N / 1024 rounded
+// down to a power of two, from 32 to 512: at least 1024 chains to spread over the
+// threads. A coverage stop keeps 32 (its blocks of 1024 samples hold whole chains).
+// Chains start at multiples of the length, which depends on N and the coverage stop
+// only, so the output depends neither on the thread count nor on the piece.
+vtkIdType HintChainLength(vtkIdType samples, bool coverageStop)
+{
+  vtkIdType chain = 32;
+  while (!coverageStop && chain < 512 && 2 * chain * 1024 <= samples)
+  {
+    chain *= 2;
+  }
+  return chain;
+}
 }
 
 vtkMedialAxisSampler::vtkMedialAxisSampler() = default;
@@ -232,9 +244,9 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(vtkMedialTriangleMesh& mesh
   const vtkIdType total = self->NumberOfSamples;
   // This piece's share, at most total / pieces rounded up to whole hint chains; sample
   // indices stay global so that the union of the pieces is a one-piece run.
+  const vtkIdType chain = HintChainLength(self->NumberOfSamples, self->CoverageTolerance > 0.0);
   const vtkIdType share = self->CoverageTolerance > 0.0 ? total
-    : std::min(total, ((total + HintChain - 1) / HintChain + pieces.NumberOfPieces - 1) /
-        pieces.NumberOfPieces * HintChain);
+    : std::min(total, ((total + chain - 1) / chain + pieces.NumberOfPieces - 1) / pieces.NumberOfPieces * chain);
   // The per-sample results plus the output arrays, and the leaf order of all samples.
   const double bytesPerSample = sizeof(vtkMedialSampleRecord) + 12 * sizeof(double) + 3 * sizeof(vtkIdType) +
     2.0 * sizeof(vtkIdType) * static_cast<double>(total) / std::max<vtkIdType>(share, 1);
@@ -352,15 +364,16 @@ void vtkMedialAxisSampler::vtkInternals::SelectSamples(const vtkMedialTriangleMe
   }
   // All samples in the leaf order of their triangles (a triangle pick is cheap next to
   // a ball); the piece takes a contiguous run of that order cut at multiples of
-  // HintChain, so every piece forms the same hint chains as a one-piece run and the
+  // the chain length, so every piece forms the same hint chains as a one-piece run and the
   // union of the pieces is that run bit for bit.
   std::vector<vtkIdType> leafOrder(allTriangles.size());
   SortByLeaf(query, allTriangles, 0, leafOrder);
   vtkIdType firstChain = 0;
   vtkIdType chains = 0;
-  pieces.GetShare((total + HintChain - 1) / HintChain, firstChain, chains);
-  const vtkIdType begin = std::min(total, firstChain * HintChain);
-  const vtkIdType end = std::min(total, (firstChain + chains) * HintChain);
+  const vtkIdType chain = HintChainLength(total, this->Self->CoverageTolerance > 0.0);
+  pieces.GetShare((total + chain - 1) / chain, firstChain, chains);
+  const vtkIdType begin = std::min(total, firstChain * chain);
+  const vtkIdType end = std::min(total, (firstChain + chains) * chain);
   if (begin == 0 && end == total)
   {
     // One piece holds every sample: index is 0 .. total - 1, so the leaf order is the
@@ -468,6 +481,7 @@ vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangl
   const double coverageTolerance = self->CoverageTolerance * mesh.Diagonal;
   const vtkIdType count = static_cast<vtkIdType>(results.size());
   // A hint chain: samples first .. last - 1 in leaf order, each hinted with the previous one.
+  const vtkIdType chain = HintChainLength(self->NumberOfSamples, self->CoverageTolerance > 0.0);
   auto solveChain = [&](vtkIdType first, vtkIdType last) {
     vtkMedialTriangleBVH::BlockerChain blockers; // the previous sample's
     for (vtkIdType k = first; k < last; ++k)
@@ -484,8 +498,8 @@ vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangl
     // sampling). The calling thread (the team's first) reports the progress and polls
     // the abort flag after each of its own chains; once it is set, no thread starts
     // another chain.
-    const vtkIdType groups = (count + HintChain - 1) / HintChain;
-    const vtkIdType progressStep = std::max<vtkIdType>(HintChain, count / 256);
+    const vtkIdType groups = (count + chain - 1) / chain;
+    const vtkIdType progressStep = std::max<vtkIdType>(chain, count / 256);
     std::atomic<vtkIdType> solved{ 0 };
     std::atomic<bool> stop{ false };
     vtkIdType reported = 0;
@@ -496,7 +510,7 @@ vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangl
       {
         continue;
       }
-      const vtkIdType first = g * HintChain, last = std::min(count, first + HintChain);
+      const vtkIdType first = g * chain, last = std::min(count, first + chain);
       solveChain(first, last);
       const vtkIdType now = solved.fetch_add(last - first, std::memory_order_relaxed) + (last - first);
       if (omp_get_thread_num() == 0)
@@ -519,12 +533,12 @@ vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangl
   for (vtkIdType begin = 0; begin < count && !self->GetAbortExecute(); begin += block)
   {
     const vtkIdType end = std::min(count, begin + block);
-    const vtkIdType groups = (end - begin + HintChain - 1) / HintChain;
+    const vtkIdType groups = (end - begin + chain - 1) / chain;
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
     for (vtkIdType g = 0; g < groups; ++g)
     {
-      const vtkIdType first = begin + g * HintChain;
-      solveChain(first, std::min(end, first + HintChain));
+      const vtkIdType first = begin + g * chain;
+      solveChain(first, std::min(end, first + chain));
     }
     self->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
     if (begin == 0)

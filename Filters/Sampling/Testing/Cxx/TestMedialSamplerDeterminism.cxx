@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The same seed gives bit-identical output with 1 and 2 threads, and a mesh with
 // every triangle's winding reversed (all normals flipped), or with every other
-// triangle reversed (mixed orientation), gives the same output.
+// triangle reversed (mixed orientation), gives the same output. Also with 140,001
+// samples, whose hint chains are longer (128 samples).
 #include "MedialTestUtilities.h"
 
 #include "vtkCellArray.h"
@@ -76,5 +77,21 @@ int TestMedialSamplerDeterminism(int, char*[])
     one->Update();
     MEDIAL_CHECK(BitDifferences(one->GetOutput(), two->GetOutput()) != 0, "%s: seed ignored", m);
   }
+
+  vtkNew<vtkMedialAxisSampler> one, two;
+  for (vtkMedialAxisSampler* s : { one.Get(), two.Get() })
+  {
+    s->SetNumberOfSamples(140001);
+    s->SetInputConnection(jack->GetOutputPort());
+  }
+  one->SetNumberOfThreads(1);
+  two->SetNumberOfThreads(2);
+  one->Update();
+  two->Update();
+  const long long threads = BitDifferences(one->GetOutput(), two->GetOutput());
+  std::printf("one-pass, 140001 samples: values differing 1 vs 2 threads: %lld\n", threads);
+  MEDIAL_CHECK(one->GetOutput()->GetNumberOfPoints() > 139000, "long chains: only %lld points",
+    static_cast<long long>(one->GetOutput()->GetNumberOfPoints()));
+  MEDIAL_CHECK(threads == 0, "long chains: thread count changed %lld values", threads);
   return EXIT_SUCCESS;
 }

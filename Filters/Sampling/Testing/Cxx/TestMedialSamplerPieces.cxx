@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Pieces (as ParaView and pvbatch ask for them, one per MPI rank): the R pieces of a
 // RANDOM run, put together, are the one-piece balls bit for bit, for R = 2, 3 and 7,
-// in 3D and 2D. The iterative strategies and a coverage stop are sequential: piece 0
+// in 3D (3001 samples, and 140,001, whose hint chains are longer) and 2D. The iterative strategies and a coverage stop are sequential: piece 0
 // of R is the one-piece run and the other pieces are empty.
 #include "MedialPieceTestUtilities.h"
 
@@ -95,6 +95,13 @@ int TestMedialSamplerPieces(int, char*[])
   sampler->SetNumberOfSamples(3001); // not a multiple of the pieces or of the hint chains
   sampler->SetNumberOfThreads(2);
   if (CheckSplit(sampler, "3D one-pass", 3000) != EXIT_SUCCESS)
+  {
+    return EXIT_FAILURE;
+  }
+  // Large runs use longer hint chains (128 samples at this count): the pieces still cut
+  // the leaf order at whole chains.
+  sampler->SetNumberOfSamples(140001);
+  if (CheckSplit(sampler, "3D one-pass, long chains", 140000) != EXIT_SUCCESS)
   {
     return EXIT_FAILURE;
   }
