@@ -115,11 +115,18 @@ inline vtkMedialFirstTouchCosts vtkMedialFirstTouchProbe()
 /// 50 ms; hence a constant, from those measurements.
 constexpr double vtkMedialFreshHugePageCost = 2.0;
 
+/// The rule for measured costs: huge pages when 4 kB pages cost more per byte on first
+/// touch than a huge page that the host has to back afresh (vtkMedialFreshHugePageCost)
+/// and than the huge pages the probe got.
+inline bool vtkMedialHugePagesAreCheaper(const vtkMedialFirstTouchCosts& costs)
+{
+  return costs.HugePages >= 0.0 && costs.SmallPages > costs.HugePages &&
+    costs.SmallPages > vtkMedialFreshHugePageCost;
+}
+
 /// Whether vtkMedialBuffer advises its large blocks for transparent huge pages, decided
 /// once per process: MEDIALAXIS_HUGE_PAGES=0 says no, =1 says yes; otherwise (unset or
-/// "auto") yes when 4 kB pages cost more per byte on first touch than a huge page
-/// that the host has to back afresh (vtkMedialFreshHugePageCost) and than the huge
-/// pages the probe got. Why: it goes both ways. On one of this project's virtual
+/// "auto") vtkMedialHugePagesAreCheaper on the probe's costs. Why: it goes both ways. On one of this project's virtual
 /// machines a 4 kB page cost about 15 us (3.5 to 7.5 ms per MiB) and huge pages were
 /// the faster even when fresh; on another a 4 kB page cost about 2 us (0.4 to 0.6 ms
 /// per MiB), and the preparation of the 1.55 M horse took 0.8 to 1.0 s in 4 kB pages,
@@ -133,9 +140,7 @@ inline bool vtkMedialBufferHugePages()
     {
       return setting == "1";
     }
-    const vtkMedialFirstTouchCosts costs = vtkMedialFirstTouchProbe();
-    return costs.HugePages >= 0.0 && costs.SmallPages > costs.HugePages &&
-      costs.SmallPages > vtkMedialFreshHugePageCost;
+    return vtkMedialHugePagesAreCheaper(vtkMedialFirstTouchProbe());
   }();
   return enabled;
 }

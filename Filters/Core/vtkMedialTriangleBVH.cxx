@@ -1098,7 +1098,7 @@ void vtkMedialTriangleBVH::WriteWideNode(
 }
 
 std::int32_t vtkMedialTriangleBVH::WideSubtree(
-  std::int32_t binary, std::int32_t first, const vtkMedialTriangleMesh* write)
+  std::int32_t binary, std::int32_t first, const vtkMedialTriangleMesh& mesh, bool write)
 {
   // Depth first, lane 0's subtree next: a subtree's wide nodes are stored together.
   struct Pending
@@ -1120,7 +1120,7 @@ std::int32_t vtkMedialTriangleBVH::WideSubtree(
       {
         this->WideNodes[WideOf(pending.Ref)].Child[LaneOf(pending.Ref)] = index;
       }
-      this->WriteWideNode(index, lanes, count, *write);
+      this->WriteWideNode(index, lanes, count, mesh);
     }
     for (int i = count - 1; i >= 0; --i)
     {
@@ -1180,7 +1180,7 @@ bool vtkMedialTriangleBVH::BuildWideNodes(const vtkMedialTriangleMesh& mesh)
   {
     if (top[t].Below)
     {
-      top[t].Size = this->WideSubtree(top[t].Binary, 0, nullptr);
+      top[t].Size = this->WideSubtree(top[t].Binary, 0, mesh, false);
     }
   }
   std::int32_t total = 0;
@@ -1207,7 +1207,7 @@ bool vtkMedialTriangleBVH::BuildWideNodes(const vtkMedialTriangleMesh& mesh)
   {
     if (top[t].Below)
     {
-      this->WideSubtree(top[t].Binary, top[t].Index, &mesh);
+      this->WideSubtree(top[t].Binary, top[t].Index, mesh, true);
     }
   }
   return true;

@@ -244,8 +244,8 @@ private:
   // and LeafLane for its leaves.
   void WriteWideNode(std::int32_t index, const std::int32_t lanes[4], int count, const vtkMedialTriangleMesh& mesh);
   // The wide subtree over inner binary node `binary`, numbered from `first`: its size,
-  // and with the mesh (`write`) its nodes (the root's parent lane is left to the caller).
-  std::int32_t WideSubtree(std::int32_t binary, std::int32_t first, const vtkMedialTriangleMesh* write);
+  // and with `write` its nodes (the root's parent lane is left to the caller).
+  std::int32_t WideSubtree(std::int32_t binary, std::int32_t first, const vtkMedialTriangleMesh& mesh, bool write);
   // Builds the subtree of triangles order[begin, end), whose bounds are `bounds`,
   // into nodes[node]. With `later`, ranges of at most `grain` triangles are only
   // recorded there, to be built in parallel.

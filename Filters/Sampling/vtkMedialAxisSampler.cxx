@@ -54,10 +54,11 @@ namespace
 // threads. A coverage stop keeps 32 (its blocks of 1024 samples hold whole chains).
 // Chains start at multiples of the length, which depends on N and the coverage stop
 // only, so the output depends neither on the thread count nor on the piece.
-vtkIdType HintChainLength(vtkIdType samples, bool coverageStop)
+vtkIdType HintChainLength(vtkMedialAxisSampler* self)
 {
+  const bool coverageStop = self->GetCoverageTolerance() > 0.0;
   vtkIdType chain = 32;
-  while (!coverageStop && chain < 512 && 2 * chain * 1024 <= samples)
+  while (!coverageStop && chain < 512 && 2 * chain * 1024 <= self->GetNumberOfSamples())
   {
     chain *= 2;
   }
@@ -244,7 +245,7 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(vtkMedialTriangleMesh& mesh
   const vtkIdType total = self->NumberOfSamples;
   // This piece's share, at most total / pieces rounded up to whole hint chains; sample
   // indices stay global so that the union of the pieces is a one-piece run.
-  const vtkIdType chain = HintChainLength(self->NumberOfSamples, self->CoverageTolerance > 0.0);
+  const vtkIdType chain = HintChainLength(self);
   const vtkIdType share = self->CoverageTolerance > 0.0 ? total
     : std::min(total, ((total + chain - 1) / chain + pieces.NumberOfPieces - 1) / pieces.NumberOfPieces * chain);
   // The per-sample results plus the output arrays, and the leaf order of all samples.
@@ -370,7 +371,7 @@ void vtkMedialAxisSampler::vtkInternals::SelectSamples(const vtkMedialTriangleMe
   SortByLeaf(query, allTriangles, 0, leafOrder);
   vtkIdType firstChain = 0;
   vtkIdType chains = 0;
-  const vtkIdType chain = HintChainLength(total, this->Self->CoverageTolerance > 0.0);
+  const vtkIdType chain = HintChainLength(this->Self);
   pieces.GetShare((total + chain - 1) / chain, firstChain, chains);
   const vtkIdType begin = std::min(total, firstChain * chain);
   const vtkIdType end = std::min(total, (firstChain + chains) * chain);
@@ -481,7 +482,7 @@ vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangl
   const double coverageTolerance = self->CoverageTolerance * mesh.Diagonal;
   const vtkIdType count = static_cast<vtkIdType>(results.size());
   // A hint chain: samples first .. last - 1 in leaf order, each hinted with the previous one.
-  const vtkIdType chain = HintChainLength(self->NumberOfSamples, self->CoverageTolerance > 0.0);
+  const vtkIdType chain = HintChainLength(self);
   auto solveChain = [&](vtkIdType first, vtkIdType last) {
     vtkMedialTriangleBVH::BlockerChain blockers; // the previous sample's
     for (vtkIdType k = first; k < last; ++k)

@@ -2,7 +2,7 @@
 // vtkMedialTriangleMesh::PickTriangleByArea searches only the run of the area CDF between
 // two guide entries. It must pick exactly the triangle of a binary search over the whole
 // CDF (the first entry above u, the last one for u past the end): checked on a
-// 90,000-triangle sphere (pole triangles far smaller than the others) and an
+// 90,000-triangle sphere (pole triangles far smaller than the others) and a
 // 6-triangle one, for 200,000 random u, for every CDF value and its neighbours on
 // either side, for every guide boundary j / guides and the double just below it, and
 // for 0 and the largest double below 1.

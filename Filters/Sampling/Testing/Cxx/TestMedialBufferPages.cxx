@@ -59,8 +59,7 @@ int TestMedialBufferPages(int, char*[])
       std::printf("the probe did not measure both page sizes\n");
       return 1;
     }
-    expected = costs.HugePages >= 0.0 && costs.SmallPages > costs.HugePages &&
-      costs.SmallPages > vtkMedialFreshHugePageCost;
+    expected = vtkMedialHugePagesAreCheaper(costs);
   }
   if (vtkMedialBufferHugePages() != expected)
   {
