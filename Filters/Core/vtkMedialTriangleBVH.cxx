@@ -1885,6 +1885,10 @@ private:
       }
       return false;
     };
+    if (this->Result.Blockers.Deepest >= 0)
+    {
+      test(this->Tree.LeafRank[this->Result.Blockers.Deepest]);
+    }
     for (const std::vector<std::int32_t>* slots : { &this->Work.CapSlots, &this->Work.Deferred })
     {
       for (std::int32_t slot : *slots)
@@ -1953,6 +1957,7 @@ private:
       this->Result.InscribedRadius = std::sqrt(best2);
       std::copy(best, best + 3, this->Result.InscribedContact);
       this->Result.InscribedTriangle = this->Tree.LeafTriangles[bestSlot].Triangle;
+      this->Result.Blockers.Deepest = this->Result.InscribedTriangle;
     }
   }
 

@@ -63,6 +63,9 @@ public:
     static constexpr int Capacity = 16;
     vtkIdType Triangles[Capacity];
     int Count = 0;
+    // In: where a nearby ball's cap entered it deepest (-1: none), looked at first when
+    // this ball's cap is searched. Out: this ball's, else the same.
+    vtkIdType Deepest = -1;
     void Add(vtkIdType triangle)
     {
       if (this->Count > 0 && this->Triangles[this->Count - 1] == triangle)
@@ -115,7 +118,11 @@ public:
    * depend on the thread count.
    * With cosMinAngle < 1 and a finite `allowed` depth, the cap's surface that the
    * traversal set aside is then searched for points deeper than `allowed` inside the
-   * final ball (result.Shrunk and the inscribed ball about the same centre).
+   * final ball (result.Shrunk and the inscribed ball about the same centre), starting
+   * with Blockers.Deepest (a nearby ball's deepest cap triangle): a deep point found
+   * first culls the rest of the search. Like the other hints it changes the speed,
+   * not the inscribed radius; of cap points at exactly the same distance (two
+   * triangles that share the deepest vertex or edge) it decides which is reported.
    */
   void MaximalTangentBall(const double p[3], const double n[3], vtkIdType ownTriangle,
     double cosMinAngle, double slack, double allowed, TangentBall& result) const;

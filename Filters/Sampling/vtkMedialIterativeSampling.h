@@ -71,8 +71,9 @@
  * early rounds are larger, see above), so that a run has few parallel sections;
  * within a round the balls are solved in the leaf order of the tree (cache
  * locality), in runs of 32 consecutive solves on one thread, each hinted with the
- * previous one's contact and blockers as in the Random strategy (the runs do not
- * depend on the thread count; a hint moves a ball only within the query's slack).
+ * previous one's contact, blockers and deepest cap triangle as in the Random strategy
+ * (the runs do not depend on the thread count; a hint moves a ball only within the
+ * query's slack, and a contact point only among equally deep ones).
  *
  * Stopping: the budget (NumberOfSamples, seeds included), no face or link left, or
  * coverage (checked after every round when CoverageTolerance > 0). Without a
