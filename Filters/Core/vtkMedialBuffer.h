@@ -55,18 +55,43 @@ struct vtkMedialFirstTouchCosts
 };
 
 #if defined(__linux__)
-/// Milliseconds per MiB to write fresh anonymous memory once: `bytes` mapped on a
-/// 2 MiB boundary, advised for huge pages or kept in 4 kB pages, one write per 4 kB.
-inline double vtkMedialFirstTouchMilliseconds(std::size_t bytes, bool huge)
+/// A private anonymous mapping of `size` bytes (a multiple of 4 kB) that starts on a
+/// 2 MiB boundary, so that its whole huge pages can be advised: mapped 2 MiB larger,
+/// then trimmed. Null when the system refuses the mapping.
+inline char* vtkMedialMapOnHugePageBoundary(std::size_t size)
 {
   const std::size_t hugePage = std::size_t(1) << 21;
-  void* p = mmap(nullptr, bytes + hugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  const std::size_t mapped = size + hugePage;
+  void* p = mmap(nullptr, mapped, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (p == MAP_FAILED)
+  {
+    return nullptr;
+  }
+  char* begin = static_cast<char*>(p);
+  char* aligned =
+    reinterpret_cast<char*>((reinterpret_cast<std::uintptr_t>(begin) + hugePage - 1) / hugePage * hugePage);
+  if (aligned > begin)
+  {
+    munmap(begin, static_cast<std::size_t>(aligned - begin));
+  }
+  const std::size_t tail = mapped - static_cast<std::size_t>(aligned - begin) - size;
+  if (tail > 0)
+  {
+    munmap(aligned + size, tail);
+  }
+  return aligned;
+}
+
+/// Milliseconds per MiB to write fresh anonymous memory once: `bytes` (a multiple of
+/// 4 kB) mapped on a 2 MiB boundary, advised for huge pages or kept in 4 kB pages, one
+/// write per 4 kB.
+inline double vtkMedialFirstTouchMilliseconds(std::size_t bytes, bool huge)
+{
+  char* aligned = vtkMedialMapOnHugePageBoundary(bytes);
+  if (!aligned)
   {
     return -1.0;
   }
-  char* aligned =
-    reinterpret_cast<char*>((reinterpret_cast<std::uintptr_t>(p) + hugePage - 1) / hugePage * hugePage);
 #if defined(MADV_HUGEPAGE) && defined(MADV_NOHUGEPAGE)
   madvise(aligned, bytes, huge ? MADV_HUGEPAGE : MADV_NOHUGEPAGE);
 #else
@@ -78,7 +103,7 @@ inline double vtkMedialFirstTouchMilliseconds(std::size_t bytes, bool huge)
     static_cast<volatile char*>(aligned)[i] = 1;
   }
   const std::chrono::duration<double, std::milli> spent = std::chrono::steady_clock::now() - start;
-  munmap(p, bytes + hugePage);
+  munmap(aligned, bytes);
   return spent.count() / (static_cast<double>(bytes) / (1 << 20));
 }
 #endif
@@ -126,8 +151,8 @@ inline bool vtkMedialHugePagesAreCheaper(const vtkMedialFirstTouchCosts& costs)
 
 /// Whether vtkMedialBuffer advises its large blocks for transparent huge pages, decided
 /// once per process: MEDIALAXIS_HUGE_PAGES=0 says no, =1 says yes; otherwise (unset or
-/// "auto") vtkMedialHugePagesAreCheaper on the probe's costs. Why: it goes both ways. On one of this project's virtual
-/// machines a 4 kB page cost about 15 us (3.5 to 7.5 ms per MiB) and huge pages were
+/// "auto") vtkMedialHugePagesAreCheaper on the probe's costs. Why: it goes both ways.
+/// On one of this project's virtual machines a 4 kB page cost about 15 us (3.5 to 7.5 ms per MiB) and huge pages were
 /// the faster even when fresh; on another a 4 kB page cost about 2 us (0.4 to 0.6 ms
 /// per MiB), and the preparation of the 1.55 M horse took 0.8 to 1.0 s in 4 kB pages,
 /// 1.4 to 1.6 s in huge pages, most of which the host backed afresh at 4.3 to 6.6 ms.
@@ -224,32 +249,25 @@ private:
 
 #if defined(__linux__)
   // A private anonymous mapping of `bytes` (rounded up to whole pages). With huge
-  // pages, at least 2 MiB, it starts on a 2 MiB boundary (over-mapped, then trimmed)
+  // pages, at least 2 MiB, it starts on a 2 MiB boundary (vtkMedialMapOnHugePageBoundary)
   // and its whole huge pages are advised.
   static void* Map(std::size_t bytes)
   {
     const std::size_t size = RoundUp(bytes, Page);
     const bool huge = HugePages && bytes >= HugePage && vtkMedialBufferHugePages();
-    const std::size_t mapped = huge ? size + HugePage : size;
-    void* p = mmap(nullptr, mapped, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    if (p == MAP_FAILED)
-    {
-      throw std::bad_alloc();
-    }
     if (!huge)
     {
+      void* p = mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+      if (p == MAP_FAILED)
+      {
+        throw std::bad_alloc();
+      }
       return p;
     }
-    char* begin = static_cast<char*>(p);
-    char* aligned = reinterpret_cast<char*>(RoundUp(reinterpret_cast<std::uintptr_t>(begin), HugePage));
-    if (aligned > begin)
+    char* aligned = vtkMedialMapOnHugePageBoundary(size);
+    if (!aligned)
     {
-      munmap(begin, static_cast<std::size_t>(aligned - begin));
-    }
-    const std::size_t tail = mapped - static_cast<std::size_t>(aligned - begin) - size;
-    if (tail > 0)
-    {
-      munmap(aligned + size, tail);
+      throw std::bad_alloc();
     }
 #if defined(MADV_HUGEPAGE)
     // Advice only: ignored where transparent huge pages are off.
