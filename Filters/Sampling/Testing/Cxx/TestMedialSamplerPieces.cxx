@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Pieces (as ParaView and pvbatch ask for them, one per MPI rank): the R pieces of a
 // RANDOM run, put together, are the one-piece balls bit for bit, for R = 2, 3 and 7,
-// in 3D (3001 samples, and 140,001, whose hint chains are longer) and 2D. The iterative strategies and a coverage stop are sequential: piece 0
-// of R is the one-piece run and the other pieces are empty.
+// in 3D (3001 samples, and 140,001, whose hint chains are longer) and 2D. The
+// iterative strategies and a coverage stop are sequential: piece 0 of R is the
+// one-piece run and the other pieces are empty.
 #include "MedialPieceTestUtilities.h"
 
 #include "vtkMedialAxisSampler.h"
