@@ -601,7 +601,9 @@ void vtkMedialAxisSampler::vtkInternals::WarnStoppedEarly(const vtkMedialTriangl
     << "face-distance stopped after " << evaluated << " of " << settings.Budget
     << " samples without reaching the coverage: " << result.GivenUpFaces << " faces were given up ("
     << (result.GivenUpFaces == 1 ? "its" : "their") << " own samples failed " << settings.MaximumFaceAttempts
-    << " times to cover them: next to a hole, or where no admissible ball reaches). The largest gap, "
+    << " times to cover them"
+    << (settings.CoverageTolerance > 0.0 ? ", and further layers of seeds covered no more faces" : "")
+    << ": next to a hole, or where no admissible ball reaches). The largest gap, "
     << result.MaxGap / mesh.Diagonal << " of the diagonal, is at (" << result.WorstPoint[0] << ", "
     << result.WorstPoint[1] << ", " << result.WorstPoint[2] << ") on input cell "
     << mesh.SourceCellIds[result.WorstFace] << ".");

@@ -165,17 +165,22 @@ public:
   /// off, the whole budget is used). The surface is covered when every face's three
   /// vertices and centroid x satisfy min_i (|x - c_i| - r_i) <= tolerance, i.e. lie
   /// within the tolerance of the union of balls. The iterative strategies check it
-  /// after every round of 64 samples; RANDOM (3D), when it is above 0, checks it
-  /// after every block of 1024 samples and stops there: its output is then a prefix
-  /// of the full run. With a tolerance above 0, the output's field data holds
-  /// CoverageReached and MaxCoverageGap (the iterative strategies always add them).
+  /// after every round; with it, NumberOfSamples is a cap, not their plan: they plan
+  /// for 10,000 samples (or fewer, if so capped), double the plan whenever it is used
+  /// up, and add a layer of seeds when the faces left have all been given up, so any
+  /// budget of 10,000 or more that is not reached gives the same output.
+  /// RANDOM (3D), when it is above 0, checks it after every block of 1024 samples and
+  /// stops there: its output is then a prefix of the full run. With a tolerance above
+  /// 0, the output's field data holds CoverageReached and MaxCoverageGap (the
+  /// iterative strategies always add them).
   vtkSetClampMacro(CoverageTolerance, double, 0.0, 1.0);
   vtkGetMacro(CoverageTolerance, double);
   ///@}
 
   ///@{
   /// Share of NumberOfSamples spent on the Poisson-disk seeds of the iterative
-  /// strategies (default 0.25), at most one seed per triangle.
+  /// strategies (default 0.25), at most one seed per triangle; with a
+  /// CoverageTolerance, the share of their plan (see there).
   vtkSetClampMacro(SeedFraction, double, 0.001, 1.0);
   vtkGetMacro(SeedFraction, double);
   ///@}

@@ -41,6 +41,20 @@ constexpr vtkIdType HintChain = 32;
 // passes, which the worst faces then close.
 constexpr vtkIdType ClosingShare = 16;
 
+// With a coverage stop the budget is only a cap: the run plans for this many samples
+// (or the budget, if smaller) and doubles the plan whenever it is used up before the
+// coverage is reached. Seeds and round sizes follow the plan, not the budget, so a
+// budget of at least this many that is not reached changes nothing (a quarter of a
+// generous cap spent on seeds took face-distance on horse.ply to 96,966 samples for a
+// gap that 2,643 reach now).
+constexpr vtkIdType CoveragePlanStart = 10000;
+constexpr vtkIdType LargestPlan = vtkIdType(1) << 40;
+// Seed layers in a row that may leave as many faces above the stop, and the largest
+// gap within 1%, before the run gives up: on spot.obj, asked for the gap Random leaves
+// at 20k samples, two such layers in a row came before the one that reached it (random
+// seed 2), and the runs that cannot reach it stop after three.
+constexpr int FruitlessLayerLimit = 3;
+
 // A box as 6 doubles, low then high corner: EmptyBox holds nothing, AddToBox widens it to x.
 void EmptyBox(double box[6])
 {
@@ -129,20 +143,32 @@ bool MayBeLowered(const double* xs, const double* ys, const double* zs, const do
 }
 
 // Poisson-disk seeds by dart throwing (see the header); returns their surface points.
+// A later layer (`layer` > 0) throws its own darts, at the spacing of `spacingCount`
+// seeds, and keeps away from the surface points in `existing` (3 per point); it
+// accepts at most `wanted` new seeds.
 void ThrowDarts(const vtkMedialTriangleMesh& mesh, const vtkMedialIterativeSettings& s,
-  vtkIdType wanted, std::vector<vtkIdType>& triangles, std::vector<double>& points)
+  vtkIdType wanted, std::vector<vtkIdType>& triangles, std::vector<double>& points, unsigned layer = 0,
+  vtkIdType spacingCount = 0, const std::vector<double>& existing = {})
 {
   triangles.clear();
-  points.clear();
+  points.assign(existing.begin(), existing.end());
+  const vtkIdType kept = static_cast<vtkIdType>(existing.size() / 3);
   if (wanted <= 0 || mesh.TotalArea <= 0.0)
   {
+    points.clear();
     return;
   }
-  const double rho = std::sqrt(0.5 * mesh.TotalArea / static_cast<double>(wanted));
-  // Accepted seeds by cell; a dart is tested against those in the cells within rho.
+  const double rho = std::sqrt(0.5 * mesh.TotalArea / static_cast<double>(std::max(wanted, spacingCount)));
+  // Accepted seeds (and the points kept away from) by cell; a dart is tested against
+  // those in the cells within rho.
   vtkMedialUniformGrid accepted;
   accepted.InitializeCubic(mesh.Bounds, vtkMedialUniformGrid::CubicCellSize(mesh.Bounds, 2.0 * rho));
+  for (vtkIdType i = 0; i < kept; ++i)
+  {
+    accepted.Insert(i, accepted.CellOf(&points[3 * i]));
+  }
   const vtkIdType maximumDarts = 30 * wanted;
+  const std::uint64_t firstDart = static_cast<std::uint64_t>(layer) << 40;
   // Darts are drawn in parallel blocks, each from its own index of the stream, and
   // tested against the seeds accepted before the block; the survivors are tested
   // again in index order, so the seeds are those of one dart after another.
@@ -161,7 +187,7 @@ void ThrowDarts(const vtkMedialTriangleMesh& mesh, const vtkMedialIterativeSetti
 #pragma omp parallel for num_threads(s.Threads) schedule(static)
     for (vtkIdType j = 0; j < n; ++j)
     {
-      vtkMedialDrawSurfacePoint(mesh, s.Seed ^ DartStream, first + j, dartTriangles[j], &darts[3 * j]);
+      vtkMedialDrawSurfacePoint(mesh, s.Seed ^ DartStream, firstDart + first + j, dartTriangles[j], &darts[3 * j]);
       survives[j] = !taken(&darts[3 * j]);
     }
     for (vtkIdType j = 0; j < n && static_cast<vtkIdType>(triangles.size()) < wanted; ++j)
@@ -169,12 +195,13 @@ void ThrowDarts(const vtkMedialTriangleMesh& mesh, const vtkMedialIterativeSetti
       const double* p = &darts[3 * j];
       if (survives[j] && !taken(p))
       {
-        accepted.Insert(static_cast<vtkIdType>(triangles.size()), accepted.CellOf(p));
+        accepted.Insert(kept + static_cast<vtkIdType>(triangles.size()), accepted.CellOf(p));
         triangles.push_back(dartTriangles[j]);
         points.insert(points.end(), p, p + 3);
       }
     }
   }
+  points.erase(points.begin(), points.begin() + 3 * kept);
 }
 }
 
@@ -782,6 +809,12 @@ struct Runner
   std::vector<double> FaceGaps; // FACE_DISTANCE: per face, its gap before the round
   std::vector<vtkIdType> Candidates;
   std::vector<unsigned> Picked; // FACE_DISTANCE: per vertex, the last round a face of it was picked
+  vtkIdType Plan; // the samples the run plans for: the budget, or with a coverage stop see CoveragePlanStart
+  std::vector<double> SeedPoints; // the seeds' surface points, every layer (3 per seed)
+  unsigned SeedLayers = 0;   // layers after the first (AddSeedLayer)
+  vtkIdType OpenFacesAtLastLayer = 0; // faces above the coverage stop when the last layer was added
+  double GapAtLastLayer = HUGE_VAL;   // and the largest gap then
+  int FruitlessLayers = 0;            // layers in a row after which neither fell
 
   Runner(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
     const vtkMedialIterativeSettings& s, const std::function<bool(double)>& progress,
@@ -792,7 +825,17 @@ struct Runner
     , Progress(progress)
     , R(r)
     , Coverage(mesh, s.Threads)
+    , Plan(s.CoverageTolerance > 0.0 ? std::min(s.Budget, CoveragePlanStart) : s.Budget)
   {
+  }
+
+  // With a coverage stop, doubles the plan until it exceeds the samples taken.
+  void GrowPlan()
+  {
+    while (this->S.CoverageTolerance > 0.0 && this->Count() >= this->Plan && this->Plan < LargestPlan)
+    {
+      this->Plan *= 2;
+    }
   }
 
   vtkIdType Count() const { return static_cast<vtkIdType>(this->R.Records.size()); }
@@ -804,7 +847,7 @@ struct Runner
   }
   vtkIdType RoundSize() const
   {
-    return this->S.RoundSize > 0 ? this->S.RoundSize : std::max<vtkIdType>(64, this->S.Budget / 64);
+    return this->S.RoundSize > 0 ? this->S.RoundSize : std::max<vtkIdType>(64, this->Plan / 64);
   }
 
   // Checks coverage, reports progress; true when the run must stop. Without a
@@ -834,9 +877,9 @@ struct Runner
 
   void Seed()
   {
-    // SeedFraction of the budget, at most one per triangle (a coarse mesh is a simple shape).
-    const vtkIdType wanted = std::min(std::min(this->S.Budget, this->Mesh.GetNumberOfTriangles()),
-      std::max<vtkIdType>(1, static_cast<vtkIdType>(std::llround(this->S.SeedFraction * this->S.Budget))));
+    // SeedFraction of the plan, at most one per triangle (a coarse mesh is a simple shape).
+    const vtkIdType wanted = std::min(std::min(this->Plan, this->Mesh.GetNumberOfTriangles()),
+      std::max<vtkIdType>(1, static_cast<vtkIdType>(std::llround(this->S.SeedFraction * this->Plan))));
     std::vector<vtkIdType> triangles;
     std::vector<double> points;
     ThrowDarts(this->Mesh, this->S, wanted, triangles, points);
@@ -852,6 +895,68 @@ struct Runner
       this->Taken.Insert(&points[3 * i]);
     }
     this->R.Seeds = this->Count();
+    this->SeedPoints = std::move(points);
+  }
+
+  // With a coverage stop, when every face still above it has been given up: the faces'
+  // own samples cannot reach their worst points (where balls are shrunk to stay
+  // inside, they no longer touch their own sample point), but balls from elsewhere may,
+  // as a denser seeding showed. Doubles the plan, adds Poisson-disk seeds up to
+  // SeedFraction of it (the darts keep the new, smaller spacing from every seed so
+  // far), and gives the faces given up another MaximumFaceAttempts. False at the budget,
+  // or after FruitlessLayerLimit layers in a row after which neither the faces above
+  // the stop became fewer nor the largest gap 1% smaller (next to a hole, say, where no
+  // ball can cover: seeds elsewhere still bring its gap down by a few parts in 1e5). Reads FaceGaps, fresh from PickFaces, and the largest gap of the
+  // last EndOfRound.
+  bool AddSeedLayer(vtkIdType budget)
+  {
+    if (!(this->S.CoverageTolerance > 0.0) || this->Count() >= budget)
+    {
+      return false;
+    }
+    const vtkIdType open = std::count_if(
+      this->FaceGaps.begin(), this->FaceGaps.end(), [&](double gap) { return gap > this->S.CoverageTolerance; });
+    const bool fruitless =
+      this->SeedLayers > 0 && open >= this->OpenFacesAtLastLayer && !(this->R.MaxGap < 0.99 * this->GapAtLastLayer);
+    this->FruitlessLayers = fruitless ? this->FruitlessLayers + 1 : 0;
+    if (this->FruitlessLayers >= FruitlessLayerLimit)
+    {
+      return false;
+    }
+    this->OpenFacesAtLastLayer = open;
+    this->GapAtLastLayer = this->R.MaxGap;
+    this->Plan = std::min(LargestPlan, 2 * std::max(this->Plan, this->Count()));
+    const vtkIdType spacing = std::max<vtkIdType>(1, std::llround(this->S.SeedFraction * this->Plan));
+    const vtkIdType seeds = static_cast<vtkIdType>(this->SeedPoints.size() / 3);
+    const vtkIdType wanted = std::min(budget - this->Count(), std::max<vtkIdType>(1, spacing - seeds));
+    std::vector<vtkIdType> triangles;
+    std::vector<double> points;
+    ThrowDarts(this->Mesh, this->S, wanted, triangles, points, ++this->SeedLayers, spacing, this->SeedPoints);
+    const vtkIdType n = static_cast<vtkIdType>(triangles.size());
+    this->SeedPoints.insert(this->SeedPoints.end(), points.begin(), points.end());
+    this->SolveRound(n, true, triangles, [&](vtkIdType j, vtkIdType& t, double p[3], vtkIdType&) {
+      t = triangles[j];
+      std::copy(&points[3 * j], &points[3 * j] + 3, p);
+      return true;
+    });
+    std::vector<vtkIdType>& balls = this->Balls;
+    balls.assign(static_cast<size_t>(n), -1);
+    for (vtkIdType j = 0; j < n; ++j)
+    {
+      if (this->Taken.Insert(&this->Current.Points[3 * j]))
+      {
+        balls[j] = this->Count();
+        this->R.Records.push_back(this->Current.Balls[j]);
+      }
+    }
+    this->Coverage.ApplyRound(this->Current.Lowered, balls);
+    bool retried = false;
+    for (int& attempts : this->Attempts)
+    {
+      retried = retried || attempts >= this->S.MaximumFaceAttempts;
+      attempts = attempts >= this->S.MaximumFaceAttempts ? 0 : attempts;
+    }
+    return n > 0 || retried;
   }
 
   // Fills this->Current's n slots in parallel, in the order of near[j] (a triangle
@@ -1003,15 +1108,25 @@ void Runner::FaceDistance(vtkIdType budget)
   }
   while (this->Count() < budget)
   {
-    // Half of what is left, at least RoundSize: the first rounds are large (their
-    // samples lie close together, so the solves share caches and hints, and the team
-    // wakes up less often), the last ones RoundSize, where the choice of the very
+    // Half of what is left of the plan, at least RoundSize: the first rounds are large
+    // (their samples lie close together, so the solves share caches and hints, and the
+    // team wakes up less often), the last ones RoundSize, where the choice of the very
     // worst faces matters most.
-    const vtkIdType left = budget - this->Count();
-    const vtkIdType room = std::min<vtkIdType>(std::max<vtkIdType>(this->RoundSize(), left / 2), left);
+    this->GrowPlan();
+    const vtkIdType left = (this->S.CoverageTolerance > 0.0 ? this->Plan : budget) - this->Count();
+    const vtkIdType room = std::min(
+      std::min<vtkIdType>(std::max<vtkIdType>(this->RoundSize(), left / 2), left), budget - this->Count());
     this->PickFaces(room, ++roundIndex, faces);
     if (faces.empty())
     {
+      if (this->AddSeedLayer(budget))
+      {
+        if (this->EndOfRound())
+        {
+          break;
+        }
+        continue;
+      }
       break;
     }
     const vtkIdType firstDraw = drawn;
@@ -1051,6 +1166,7 @@ void Runner::FaceDistance(vtkIdType budget)
       break;
     }
   }
+  this->R.SeedLayers = static_cast<int>(this->SeedLayers);
   this->R.GivenUpFaces = 0;
   for (vtkIdType f = 0; f < nf; ++f)
   {
@@ -1324,6 +1440,7 @@ void Runner::SplitLinks(std::vector<Segment>& segments)
   while (!stop && this->Count() < this->S.Budget && !heap.empty())
   {
     popped.clear();
+    this->GrowPlan();
     const vtkIdType room = std::min<vtkIdType>(this->RoundSize(), this->S.Budget - this->Count());
     while (static_cast<vtkIdType>(popped.size()) < room && !heap.empty())
     {

@@ -26,8 +26,9 @@
  * Seeding (every strategy but Random). Poisson-disk dart throwing on the surface:
  * candidates are area-weighted random surface points from the stream
  * (seed ^ constant, k), accepted when no accepted seed lies within
- * rho = sqrt(0.5 A / S) (A the surface area, S = SeedFraction * budget, at most
- * one per triangle), found through a uniform grid of cell size 2 rho. Blocks of
+ * rho = sqrt(0.5 A / S) (A the surface area, S = SeedFraction * plan, at most
+ * one per triangle; the plan is the budget, see Stopping), found through a uniform
+ * grid of cell size 2 rho. Blocks of
  * candidates are drawn and tested against the seeds before the block in parallel;
  * the survivors are tested again in index order, so the seeds are those of a
  * one-by-one throw. It stops at S seeds or 30 S candidates.
@@ -67,7 +68,7 @@
  * The output keeps every final link as a line cell, grouped by the step-1 link
  * they refine, in path order from P to Q.
  *
- * Rounds: RoundSize samples (by default Budget / 64, at least 64; FACE_DISTANCE's
+ * Rounds: RoundSize samples (by default plan / 64, at least 64; FACE_DISTANCE's
  * early rounds are larger, see above), so that a run has few parallel sections;
  * within a round the balls are solved in the leaf order of the tree (cache
  * locality), in runs of 32 consecutive solves on one thread, each hinted with the
@@ -76,7 +77,19 @@
  * query's slack, and a contact point only among equally deep ones).
  *
  * Stopping: the budget (NumberOfSamples, seeds included), no face or link left, or
- * coverage (checked after every round when CoverageTolerance > 0). Without a
+ * coverage (checked after every round when CoverageTolerance > 0). With a coverage
+ * stop the budget is only a cap: the plan (which sizes the seeds and the rounds)
+ * starts at 10,000 samples, or the budget if smaller, and doubles whenever the
+ * samples taken reach it. When FACE_DISTANCE (or CLOSEST_NEIGHBOR's closing rounds)
+ * has given up every face still above the stop, it doubles the plan and adds a
+ * layer of seeds: darts from the layer's own part of the stream, kept the new
+ * spacing (for SeedFraction of the doubled plan) from every seed so far, solved and
+ * added as a round; the faces given up get MaximumFaceAttempts more. (Where a ball
+ * shrunk to stay inside no longer touches the face's worst point, the face's own
+ * samples cannot cover it, but balls from elsewhere can.) Three layers in a row
+ * after which neither fewer faces are above the stop nor the largest gap is 1%
+ * smaller end the run. So the output is the same for any budget of at least 10,000
+ * that is not reached. Without a
  * coverage stop CLOSEST_NEIGHBOR does not need the gaps while it runs: its balls
  * are added to the coverage once, at the end, in parallel. When
  * CLOSEST_NEIGHBOR runs out of links (all consecutive balls overlap) before the
@@ -175,11 +188,11 @@ struct vtkMedialIterativeSettings
   };
   int Strategy = FACE_DISTANCE;
   vtkIdType Budget = 0;           // total samples, seeds included
-  double SeedFraction = 0.25;     // of the budget, for the Poisson-disk seeds
+  double SeedFraction = 0.25;     // of the plan (the budget without a coverage stop), for the Poisson-disk seeds
   double CoverageTolerance = 0.0; // absolute; 0: run to the budget
   vtkTypeUInt64 Seed = 1;
   int Threads = 1;
-  int RoundSize = 0; // samples solved per round; 0: Budget / 64, at least 64 (not the thread count)
+  int RoundSize = 0; // samples solved per round; 0: plan / 64, at least 64 (not the thread count)
   int MaximumFaceAttempts = 8;  // FACE_DISTANCE: failed samples of a face before giving it up
   vtkMedialBallParameters Ball;
 };
@@ -196,6 +209,7 @@ struct vtkMedialIterativeResult
   vtkIdType WorstFace = -1;  // the face of MaxGap
   double WorstPoint[3] = { 0, 0, 0 }; // its least covered point (vertex or centroid)
   vtkIdType GivenUpFaces = 0; // FACE_DISTANCE: faces left uncovered after MaximumFaceAttempts
+  int SeedLayers = 0;         // with a coverage stop: seed layers added after the first
   bool Aborted = false;
 };
 
