@@ -298,62 +298,126 @@ struct StrategyRow
   double RatioToRandom;
 };
 
+// The same rounds also compare at equal coverage, what a user who asks for a coverage
+// waits for: the target is the largest gap Random leaves with the samples asked (the
+// row above that keeps the coverage), and each strategy runs with that coverage stop
+// (a cap of 40 times the samples asked). Random's time is taken with the stop (what
+// the user runs) and without it at exactly the count the stop needed (the least Random
+// could cost, knowing the count in advance); each ratio is the strategy's wall time
+// over Random's in the same round (median of 3).
+struct EqualCoverageRow
+{
+  std::string Name;
+  vtkIdType Evaluated;
+  bool Reached;
+  double Seconds; // without the preparation
+  double RatioToStop, RatioToPlain;
+};
+
+struct StrategyFigures
+{
+  std::vector<StrategyRow> Rows;
+  double TargetGap = 0.0;   // relative to the diagonal
+  double RandomPlainSeconds = 0.0; // Random without a stop, at the count its stop needed
+  std::vector<EqualCoverageRow> EqualCoverage;
+};
+
 double Median3(std::vector<double> v)
 {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
 }
 
-std::vector<StrategyRow> RunStrategies(vtkPolyData* mesh, vtkIdType samples)
+StrategyFigures RunStrategies(vtkPolyData* mesh, vtkIdType samples)
 {
   constexpr int Rows = 4;
   const int strategies[Rows] = { vtkMedialAxisSampler::RANDOM, vtkMedialAxisSampler::CLOSEST_NEIGHBOR,
     vtkMedialAxisSampler::FACE_DISTANCE, vtkMedialAxisSampler::RANDOM };
   const double coverageStop[Rows] = { 0.0, 0.0, 0.0, 1e-12 };
-  auto timed = [&](int row, vtkIdType n, vtkIdType& evaluated) {
-    const int strategy = strategies[row];
+  struct Run
+  {
+    double Seconds = 0.0, Gap = -1.0;
+    vtkIdType Evaluated = 0;
+    bool Reached = false;
+  };
+  auto timed = [&](int strategy, double stop, vtkIdType n) {
     vtkNew<vtkMedialAxisSampler> sampler;
     sampler->SetInputData(mesh);
     sampler->SetSamplingStrategy(strategy);
-    sampler->SetCoverageTolerance(coverageStop[row]);
+    sampler->SetCoverageTolerance(stop);
     sampler->SetNumberOfThreads(2);
     sampler->SetNumberOfSamples(n);
-    double solving = 0.0;
-    UpdateTimed(sampler, solving);
-    evaluated = sampler->GetEvaluatedSamples(); // a coverage stop may end a Random run early
-    return solving;
+    Run run;
+    UpdateTimed(sampler, run.Seconds);
+    run.Evaluated = sampler->GetEvaluatedSamples(); // a coverage stop may end a run early
+    run.Gap = sampler->GetMaxCoverageGap();
+    run.Reached = sampler->GetCoverageReached();
+    return run;
   };
   std::vector<double> micro[Rows], ratio[Rows];
   vtkIdType evaluated[Rows] = { 0, 0, 0, 0 };
+  constexpr int Equal = 3; // random, closest-neighbor, face-distance (strategies[0..2])
+  std::vector<double> equalSeconds[Equal], toStop[Equal], toPlain[Equal], plainSeconds;
+  Run equal[Equal];
+  StrategyFigures figures;
   for (int round = 0; round < 3; ++round)
   {
+    Run runs[Rows];
     for (int k = 0; k < Rows; ++k)
     {
-      const double seconds = timed(k, samples, evaluated[k]);
-      micro[k].push_back(1e6 * seconds / std::max<vtkIdType>(evaluated[k], 1));
+      runs[k] = timed(strategies[k], coverageStop[k], samples);
+      evaluated[k] = runs[k].Evaluated;
+      micro[k].push_back(1e6 * runs[k].Seconds / std::max<vtkIdType>(evaluated[k], 1));
       ratio[k].push_back(micro[k].back() / micro[0].back());
     }
+    figures.TargetGap = runs[3].Gap; // the same every round: the runs are deterministic
+    for (int k = 0; k < Equal; ++k)
+    {
+      equal[k] = timed(strategies[k], figures.TargetGap, 40 * samples);
+    }
+    const Run plain = timed(vtkMedialAxisSampler::RANDOM, 0.0, equal[0].Evaluated);
+    plainSeconds.push_back(plain.Seconds);
+    for (int k = 0; k < Equal; ++k)
+    {
+      equalSeconds[k].push_back(equal[k].Seconds);
+      toStop[k].push_back(equal[k].Seconds / equal[0].Seconds);
+      toPlain[k].push_back(equal[k].Seconds / plain.Seconds);
+    }
   }
-  std::vector<StrategyRow> rows;
   for (int k = 0; k < Rows; ++k)
   {
     const std::string name = vtkMedialAxisSampler::GetSamplingStrategyName(strategies[k]);
-    rows.push_back({ coverageStop[k] > 0.0 ? name + "-keeping-coverage" : name, evaluated[k], Median3(micro[k]),
-      Median3(ratio[k]) });
+    figures.Rows.push_back({ coverageStop[k] > 0.0 ? name + "-keeping-coverage" : name, evaluated[k],
+      Median3(micro[k]), Median3(ratio[k]) });
   }
-  return rows;
+  figures.RandomPlainSeconds = Median3(plainSeconds);
+  for (int k = 0; k < Equal; ++k)
+  {
+    figures.EqualCoverage.push_back({ vtkMedialAxisSampler::GetSamplingStrategyName(strategies[k]),
+      equal[k].Evaluated, equal[k].Reached, Median3(equalSeconds[k]), Median3(toStop[k]), Median3(toPlain[k]) });
+  }
+  return figures;
 }
 
-void PrintStrategies(const std::vector<StrategyRow>& rows, const std::string& label, vtkIdType samples, bool json,
+void PrintStrategies(const StrategyFigures& figures, const std::string& label, vtkIdType samples, bool json,
   std::ostringstream& js)
 {
   if (json)
   {
     js << ", \"strategies_mesh\": \"" << label << "\", \"strategies_samples\": " << samples;
-    for (const StrategyRow& r : rows)
+    for (const StrategyRow& r : figures.Rows)
     {
       js << ", \"strategy_" << r.Name << "\": {\"evaluated\": " << r.Evaluated
          << ", \"us_per_sample\": " << r.MicrosecondsPerSample << ", \"ratio_to_random\": " << r.RatioToRandom
+         << "}";
+    }
+    js << ", \"equal_coverage_gap\": " << figures.TargetGap
+       << ", \"equal_coverage_random_plain_seconds\": " << figures.RandomPlainSeconds;
+    for (const EqualCoverageRow& r : figures.EqualCoverage)
+    {
+      js << ", \"equal_coverage_" << r.Name << "\": {\"evaluated\": " << r.Evaluated
+         << ", \"reached\": " << (r.Reached ? "true" : "false") << ", \"seconds\": " << r.Seconds
+         << ", \"ratio_to_random\": " << r.RatioToStop << ", \"ratio_to_random_plain\": " << r.RatioToPlain
          << "}";
     }
     return;
@@ -363,10 +427,22 @@ void PrintStrategies(const std::vector<StrategyRow>& rows, const std::string& la
     label.c_str(), static_cast<long long>(samples));
   std::printf("| strategy | samples evaluated | us per sample | ratio to random |\n");
   std::printf("|---|---|---|---|\n");
-  for (const StrategyRow& r : rows)
+  for (const StrategyRow& r : figures.Rows)
   {
     std::printf("| %s | %lld | %.2f | %.2f |\n", r.Name.c_str(), static_cast<long long>(r.Evaluated),
       r.MicrosecondsPerSample, r.RatioToRandom);
+  }
+  std::printf("\nAt equal coverage, same rounds: each strategy with a coverage stop at %.6g of the diagonal (the "
+              "largest gap Random leaves with %lld samples), wall seconds without the preparation; ratio to Random "
+              "with the same stop, and to Random without it at the count its stop needed (%.3f s) (medians):\n",
+    figures.TargetGap, static_cast<long long>(samples), figures.RandomPlainSeconds);
+  std::printf("| strategy | samples evaluated | coverage reached | seconds | ratio to random | "
+              "ratio to random without the stop |\n");
+  std::printf("|---|---|---|---|---|---|\n");
+  for (const EqualCoverageRow& r : figures.EqualCoverage)
+  {
+    std::printf("| %s | %lld | %s | %.3f | %.2f | %.2f |\n", r.Name.c_str(), static_cast<long long>(r.Evaluated),
+      r.Reached ? "yes" : "no", r.Seconds, r.RatioToStop, r.RatioToPlain);
   }
 }
 
@@ -385,6 +461,7 @@ double RunSampler(vtkPolyData* mesh, int method, int threads, vtkIdType samples,
   }
   return 1e6 * solving / samples;
 }
+
 
 struct BenchOptions
 {
@@ -850,8 +927,8 @@ int main(int argc, char* argv[])
   vtkSmartPointer<vtkPolyData> structureMesh = LoadBenchMesh(options.SharedDir, 0, 16, structureLabel);
   // The strategy rows (same mesh).
   std::ostringstream strategiesJson;
-  const std::vector<StrategyRow> strategyRows =
-    options.StructureOnly ? std::vector<StrategyRow>() : RunStrategies(structureMesh, options.StrategySamples);
+  const StrategyFigures strategyRows =
+    options.StructureOnly ? StrategyFigures() : RunStrategies(structureMesh, options.StrategySamples);
   if (options.StrategiesOnly)
   {
     PrintStrategies(strategyRows, structureLabel, options.StrategySamples, options.Json, strategiesJson);
