@@ -906,8 +906,8 @@ struct Runner
   // far), and gives the faces given up another MaximumFaceAttempts. False at the budget,
   // or after FruitlessLayerLimit layers in a row after which neither the faces above
   // the stop became fewer nor the largest gap 1% smaller (next to a hole, say, where no
-  // ball can cover: seeds elsewhere still bring its gap down by a few parts in 1e5). Reads FaceGaps, fresh from PickFaces, and the largest gap of the
-  // last EndOfRound.
+  // ball can cover: seeds elsewhere still bring its gap down by a few parts in 1e5).
+  // Reads FaceGaps, fresh from PickFaces, and the largest gap of the last EndOfRound.
   bool AddSeedLayer(vtkIdType budget)
   {
     if (!(this->S.CoverageTolerance > 0.0) || this->Count() >= budget)
@@ -1166,7 +1166,6 @@ void Runner::FaceDistance(vtkIdType budget)
       break;
     }
   }
-  this->R.SeedLayers = static_cast<int>(this->SeedLayers);
   this->R.GivenUpFaces = 0;
   for (vtkIdType f = 0; f < nf; ++f)
   {

@@ -209,7 +209,6 @@ struct vtkMedialIterativeResult
   vtkIdType WorstFace = -1;  // the face of MaxGap
   double WorstPoint[3] = { 0, 0, 0 }; // its least covered point (vertex or centroid)
   vtkIdType GivenUpFaces = 0; // FACE_DISTANCE: faces left uncovered after MaximumFaceAttempts
-  int SeedLayers = 0;         // with a coverage stop: seed layers added after the first
   bool Aborted = false;
 };
 
