@@ -815,6 +815,7 @@ struct Runner
   vtkIdType OpenFacesAtLastLayer = 0; // faces above the coverage stop when the last layer was added
   double GapAtLastLayer = HUGE_VAL;   // and the largest gap then
   int FruitlessLayers = 0;            // layers in a row after which neither fell
+  bool Stopped = false;               // EndOfRound said stop within a seed layer
 
   Runner(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
     const vtkMedialIterativeSettings& s, const std::function<bool(double)>& progress,
@@ -934,22 +935,35 @@ struct Runner
     ThrowDarts(this->Mesh, this->S, wanted, triangles, points, ++this->SeedLayers, spacing, this->SeedPoints);
     const vtkIdType n = static_cast<vtkIdType>(triangles.size());
     this->SeedPoints.insert(this->SeedPoints.end(), points.begin(), points.end());
-    this->SolveRound(n, true, triangles, [&](vtkIdType j, vtkIdType& t, double p[3], vtkIdType&) {
-      t = triangles[j];
-      std::copy(&points[3 * j], &points[3 * j] + 3, p);
-      return true;
-    });
-    std::vector<vtkIdType>& balls = this->Balls;
-    balls.assign(static_cast<size_t>(n), -1);
-    for (vtkIdType j = 0; j < n; ++j)
+    // In rounds of an eighth of the layer (at least RoundSize), in dart order, each
+    // checked for the stop: a layer doubles the seeds, and the stop may come early in it.
+    const vtkIdType round = std::max(this->RoundSize(), (n + 7) / 8);
+    for (vtkIdType first = 0; first < n; first += round)
     {
-      if (this->Taken.Insert(&this->Current.Points[3 * j]))
+      const vtkIdType count = std::min(round, n - first);
+      this->Near.assign(triangles.begin() + first, triangles.begin() + first + count);
+      this->SolveRound(count, true, this->Near, [&](vtkIdType j, vtkIdType& t, double p[3], vtkIdType&) {
+        t = triangles[first + j];
+        std::copy(&points[3 * (first + j)], &points[3 * (first + j)] + 3, p);
+        return true;
+      });
+      std::vector<vtkIdType>& balls = this->Balls;
+      balls.assign(static_cast<size_t>(count), -1);
+      for (vtkIdType j = 0; j < count; ++j)
       {
-        balls[j] = this->Count();
-        this->R.Records.push_back(this->Current.Balls[j]);
+        if (this->Taken.Insert(&this->Current.Points[3 * j]))
+        {
+          balls[j] = this->Count();
+          this->R.Records.push_back(this->Current.Balls[j]);
+        }
+      }
+      this->Coverage.ApplyRound(this->Current.Lowered, balls);
+      if (first + count < n && this->EndOfRound())
+      {
+        this->Stopped = true;
+        return true;
       }
     }
-    this->Coverage.ApplyRound(this->Current.Lowered, balls);
     bool retried = false;
     for (int& attempts : this->Attempts)
     {
@@ -1121,7 +1135,7 @@ void Runner::FaceDistance(vtkIdType budget)
     {
       if (this->AddSeedLayer(budget))
       {
-        if (this->EndOfRound())
+        if (this->Stopped || this->EndOfRound())
         {
           break;
         }
