@@ -84,7 +84,8 @@
  * has given up every face still above the stop, it doubles the plan and adds a
  * layer of seeds: darts from the layer's own part of the stream, kept the new
  * spacing (for SeedFraction of the doubled plan) from every seed so far, solved and
- * added as a round; the faces given up get MaximumFaceAttempts more. (Where a ball
+ * added in rounds of an eighth of the layer (at least RoundSize, in dart order), each
+ * checked for the stop; the faces given up get MaximumFaceAttempts more. (Where a ball
  * shrunk to stay inside no longer touches the face's worst point, the face's own
  * samples cannot cover it, but balls from elsewhere can.) Three layers in a row
  * after which neither fewer faces are above the stop nor the largest gap is 1%
