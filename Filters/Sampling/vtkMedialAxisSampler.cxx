@@ -600,7 +600,7 @@ void vtkMedialAxisSampler::vtkInternals::WarnStoppedEarly(const vtkMedialTriangl
   vtkWarningWithObjectMacro(this->Self,
     << "face-distance stopped after " << evaluated << " of " << settings.Budget
     << " samples without reaching the coverage: " << result.GivenUpFaces << " faces were given up ("
-    << (result.GivenUpFaces == 1 ? "its" : "their") << " own samples failed " << settings.MaximumFaceAttempts
+    << (result.GivenUpFaces == 1 ? "its" : "their") << " own samples failed " << vtkMedialFaceAttempts(settings)
     << " times to cover them"
     << (settings.CoverageTolerance > 0.0 ? ", and further layers of seeds covered no more faces" : "")
     << ": next to a hole, or where no admissible ball reaches). The largest gap, "

@@ -54,6 +54,12 @@ constexpr vtkIdType LargestPlan = vtkIdType(1) << 40;
 // at 20k samples, two such layers in a row came before the one that reached it (random
 // seed 2), and the runs that cannot reach it stop after three.
 constexpr int FruitlessLayerLimit = 3;
+// With a coverage stop a face is given up after this many failed samples (at most
+// MaximumFaceAttempts): a seed layer gives it as many again, and on the smooth, finely
+// faceted shapes (capsule, torus, sphere) a face's own further samples were wasted
+// (vtkMedialShapeSource's sphere: 31,498 to 56,877 samples to Random's 20k-sample gap
+// with 8, 21,701 to 30,456 with 3).
+constexpr int CoverageStopFaceAttempts = 3;
 
 // A box as 6 doubles, low then high corner: EmptyBox holds nothing, AddToBox widens it to x.
 void EmptyBox(double box[6])
@@ -816,6 +822,7 @@ struct Runner
   double GapAtLastLayer = HUGE_VAL;   // and the largest gap then
   int FruitlessLayers = 0;            // layers in a row after which neither fell
   bool Stopped = false;               // EndOfRound said stop within a seed layer
+  const int FaceAttempts;             // vtkMedialFaceAttempts(S)
 
   Runner(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
     const vtkMedialIterativeSettings& s, const std::function<bool(double)>& progress,
@@ -827,6 +834,7 @@ struct Runner
     , R(r)
     , Coverage(mesh, s.Threads)
     , Plan(s.CoverageTolerance > 0.0 ? std::min(s.Budget, CoveragePlanStart) : s.Budget)
+    , FaceAttempts(vtkMedialFaceAttempts(s))
   {
   }
 
@@ -904,7 +912,7 @@ struct Runner
   // inside, they no longer touch their own sample point), but balls from elsewhere may,
   // as a denser seeding showed. Doubles the plan, adds Poisson-disk seeds up to
   // SeedFraction of it (the darts keep the new, smaller spacing from every seed so
-  // far), and gives the faces given up another MaximumFaceAttempts. False at the budget,
+  // far), and gives the faces given up another FaceAttempts. False at the budget,
   // or after FruitlessLayerLimit layers in a row after which neither the faces above
   // the stop became fewer nor the largest gap 1% smaller (next to a hole, say, where no
   // ball can cover: seeds elsewhere still bring its gap down by a few parts in 1e5).
@@ -967,8 +975,8 @@ struct Runner
     bool retried = false;
     for (int& attempts : this->Attempts)
     {
-      retried = retried || attempts >= this->S.MaximumFaceAttempts;
-      attempts = attempts >= this->S.MaximumFaceAttempts ? 0 : attempts;
+      retried = retried || attempts >= this->FaceAttempts;
+      attempts = attempts >= this->FaceAttempts ? 0 : attempts;
     }
     return n > 0 || retried;
   }
@@ -1076,7 +1084,7 @@ void Runner::PickFaces(vtkIdType room, unsigned roundIndex, std::vector<vtkIdTyp
     for (vtkIdType f = 0; f < nf; ++f)
     {
       gap[f] = this->Coverage.FaceGap(f);
-      if (gap[f] > this->S.CoverageTolerance && this->Attempts[f] < this->S.MaximumFaceAttempts)
+      if (gap[f] > this->S.CoverageTolerance && this->Attempts[f] < this->FaceAttempts)
       {
         mine.push_back(f);
       }
@@ -1183,7 +1191,7 @@ void Runner::FaceDistance(vtkIdType budget)
   this->R.GivenUpFaces = 0;
   for (vtkIdType f = 0; f < nf; ++f)
   {
-    this->R.GivenUpFaces += this->Attempts[f] >= this->S.MaximumFaceAttempts && this->Coverage.FaceGap(f) > tol ? 1 : 0;
+    this->R.GivenUpFaces += this->Attempts[f] >= this->FaceAttempts && this->Coverage.FaceGap(f) > tol ? 1 : 0;
   }
 }
 
@@ -1560,6 +1568,12 @@ void Runner::CollectLinks(const std::vector<Segment>& segments, vtkIdType initia
     }
   }
 }
+}
+
+int vtkMedialFaceAttempts(const vtkMedialIterativeSettings& settings)
+{
+  return settings.CoverageTolerance > 0.0 ? std::min(settings.MaximumFaceAttempts, CoverageStopFaceAttempts)
+                                          : settings.MaximumFaceAttempts;
 }
 
 void vtkMedialRunIterativeSampling(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,

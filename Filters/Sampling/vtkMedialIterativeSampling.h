@@ -47,8 +47,8 @@
  * a the number of failed attempts), solves the balls in parallel (a hint chain's
  * first solve hinted with the contact triangle of the ball nearest to w) and adds
  * them in index order. A face whose own samples fail to lower its gap
- * MaximumFaceAttempts times (e.g. next to a hole, or a vertex no admissible ball
- * reaches) is given up.
+ * MaximumFaceAttempts times (3 with a coverage stop; e.g. next to a hole, or a
+ * vertex no admissible ball reaches) is given up.
  *
  * CLOSEST_NEIGHBOR. Step 1 chains the seeds: from the first unlinked seed, link to
  * the closest seed that has no link yet and whose ball does not overlap the
@@ -85,7 +85,8 @@
  * layer of seeds: darts from the layer's own part of the stream, kept the new
  * spacing (for SeedFraction of the doubled plan) from every seed so far, solved and
  * added in rounds of an eighth of the layer (at least RoundSize, in dart order), each
- * checked for the stop; the faces given up get MaximumFaceAttempts more. (Where a ball
+ * checked for the stop; the faces given up get as many tries again (with a coverage
+ * stop a face is given up after 3 failed samples: vtkMedialFaceAttempts). (Where a ball
  * shrunk to stay inside no longer touches the face's worst point, the face's own
  * samples cannot cover it, but balls from elsewhere can.) Three layers in a row
  * after which neither fewer faces are above the stop nor the largest gap is 1%
@@ -212,6 +213,10 @@ struct vtkMedialIterativeResult
   vtkIdType GivenUpFaces = 0; // FACE_DISTANCE: faces left uncovered after MaximumFaceAttempts
   bool Aborted = false;
 };
+
+/// Failed samples of a face before FACE_DISTANCE gives it up: MaximumFaceAttempts, or
+/// with a coverage stop at most 3 (a seed layer then gives it as many again).
+int vtkMedialFaceAttempts(const vtkMedialIterativeSettings& settings);
 
 /// Runs a strategy. `progress(fraction)` is called on the calling thread between
 /// rounds and returns true to abort.

@@ -4,8 +4,8 @@
 // budget of 30,000 and of 60,000 samples must both reach it, with the same samples and
 // the same balls: the seeds and rounds follow the run's own plan (2,500 seeds), not the
 // budget. The faces' own samples cannot cover some of the jack's points (their balls
-// are shrunk to stay inside and no longer touch them): planned for 10,000 samples
-// alone, face-distance gave 37 faces up at 3,481 samples; only the seed layers added
+// are shrunk to stay inside and no longer touch them): before the seed layers, with 8
+// tries a face, face-distance gave 37 faces up at 3,481 samples; only the layers added
 // when faces are given up reach the stop. The reported gap is the brute-force one.
 #include "MedialStrategyTestUtilities.h"
 
