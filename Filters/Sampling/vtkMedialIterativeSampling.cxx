@@ -821,7 +821,6 @@ struct Runner
   vtkIdType OpenFacesAtLastLayer = 0; // faces above the coverage stop when the last layer was added
   double GapAtLastLayer = HUGE_VAL;   // and the largest gap then
   int FruitlessLayers = 0;            // layers in a row after which neither fell
-  bool Stopped = false;               // EndOfRound said stop within a seed layer
   const int FaceAttempts;             // vtkMedialFaceAttempts(S)
 
   Runner(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
@@ -892,19 +891,41 @@ struct Runner
     std::vector<vtkIdType> triangles;
     std::vector<double> points;
     ThrowDarts(this->Mesh, this->S, wanted, triangles, points);
-    Round& seeds = this->Current;
-    this->SolveRound(static_cast<vtkIdType>(triangles.size()), false, triangles, [&](vtkIdType j, vtkIdType& t, double p[3], vtkIdType&) {
-      t = triangles[j];
-      std::copy(&points[3 * j], &points[3 * j] + 3, p);
-      return true;
-    });
-    this->R.Records.assign(seeds.Balls.begin(), seeds.Balls.end());
+    this->SolveSeeds(triangles, points, 0, static_cast<vtkIdType>(triangles.size()), false);
+    this->R.Records.assign(this->Current.Balls.begin(), this->Current.Balls.end());
     for (size_t i = 0; i < triangles.size(); ++i)
     {
       this->Taken.Insert(&points[3 * i]);
     }
     this->R.Seeds = this->Count();
     this->SeedPoints = std::move(points);
+  }
+
+  // Solves seeds [first, first + count) of `triangles` and `points` (3 a seed) as a round.
+  void SolveSeeds(const std::vector<vtkIdType>& triangles, const std::vector<double>& points, vtkIdType first,
+    vtkIdType count, bool lowered)
+  {
+    this->Near.assign(triangles.begin() + first, triangles.begin() + first + count);
+    this->SolveRound(count, lowered, this->Near, [&](vtkIdType j, vtkIdType& t, double p[3], vtkIdType&) {
+      t = triangles[first + j];
+      std::copy(&points[3 * (first + j)], &points[3 * (first + j)] + 3, p);
+      return true;
+    });
+  }
+
+  // The round's first n samples that are new surface points become records, in slot
+  // order; balls[j] gets slot j's record index, or -1.
+  void KeepRound(vtkIdType n, std::vector<vtkIdType>& balls)
+  {
+    balls.assign(static_cast<size_t>(n), -1);
+    for (vtkIdType j = 0; j < n; ++j)
+    {
+      if (this->Taken.Insert(&this->Current.Points[3 * j]))
+      {
+        balls[j] = this->Count();
+        this->R.Records.push_back(this->Current.Balls[j]);
+      }
+    }
   }
 
   // With a coverage stop, when every face still above it has been given up: the faces'
@@ -949,27 +970,12 @@ struct Runner
     for (vtkIdType first = 0; first < n; first += round)
     {
       const vtkIdType count = std::min(round, n - first);
-      this->Near.assign(triangles.begin() + first, triangles.begin() + first + count);
-      this->SolveRound(count, true, this->Near, [&](vtkIdType j, vtkIdType& t, double p[3], vtkIdType&) {
-        t = triangles[first + j];
-        std::copy(&points[3 * (first + j)], &points[3 * (first + j)] + 3, p);
-        return true;
-      });
-      std::vector<vtkIdType>& balls = this->Balls;
-      balls.assign(static_cast<size_t>(count), -1);
-      for (vtkIdType j = 0; j < count; ++j)
+      this->SolveSeeds(triangles, points, first, count, true);
+      this->KeepRound(count, this->Balls);
+      this->Coverage.ApplyRound(this->Current.Lowered, this->Balls);
+      if (this->EndOfRound())
       {
-        if (this->Taken.Insert(&this->Current.Points[3 * j]))
-        {
-          balls[j] = this->Count();
-          this->R.Records.push_back(this->Current.Balls[j]);
-        }
-      }
-      this->Coverage.ApplyRound(this->Current.Lowered, balls);
-      if (first + count < n && this->EndOfRound())
-      {
-        this->Stopped = true;
-        return true;
+        return true; // covered, or aborted: FaceDistance reads which from R
       }
     }
     bool retried = false;
@@ -1141,12 +1147,9 @@ void Runner::FaceDistance(vtkIdType budget)
     this->PickFaces(room, ++roundIndex, faces);
     if (faces.empty())
     {
-      if (this->AddSeedLayer(budget))
+      // A layer ends with EndOfRound's check (its rounds each make one).
+      if (this->AddSeedLayer(budget) && !this->R.Aborted && !this->R.CoverageReached)
       {
-        if (this->Stopped || this->EndOfRound())
-        {
-          break;
-        }
         continue;
       }
       break;
@@ -1160,15 +1163,7 @@ void Runner::FaceDistance(vtkIdType budget)
       return true;
     });
     // The balls in sample order (numbered as they are kept), then their lowerings at once.
-    balls.assign(faces.size(), -1);
-    for (size_t j = 0; j < faces.size(); ++j)
-    {
-      if (this->Taken.Insert(&this->Current.Points[3 * j]))
-      {
-        balls[j] = this->Count();
-        this->R.Records.push_back(this->Current.Balls[j]);
-      }
-    }
+    this->KeepRound(static_cast<vtkIdType>(faces.size()), balls);
     before.resize(faces.size());
     for (size_t j = 0; j < faces.size(); ++j)
     {
