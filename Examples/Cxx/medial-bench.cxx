@@ -462,7 +462,6 @@ double RunSampler(vtkPolyData* mesh, int method, int threads, vtkIdType samples,
   return 1e6 * solving / samples;
 }
 
-
 struct BenchOptions
 {
   bool Json = false;
@@ -927,11 +926,11 @@ int main(int argc, char* argv[])
   vtkSmartPointer<vtkPolyData> structureMesh = LoadBenchMesh(options.SharedDir, 0, 16, structureLabel);
   // The strategy rows (same mesh).
   std::ostringstream strategiesJson;
-  const StrategyFigures strategyRows =
+  const StrategyFigures strategyFigures =
     options.StructureOnly ? StrategyFigures() : RunStrategies(structureMesh, options.StrategySamples);
   if (options.StrategiesOnly)
   {
-    PrintStrategies(strategyRows, structureLabel, options.StrategySamples, options.Json, strategiesJson);
+    PrintStrategies(strategyFigures, structureLabel, options.StrategySamples, options.Json, strategiesJson);
     if (options.Json)
     {
       std::printf("{%s}\n", strategiesJson.str().substr(2).c_str());
@@ -963,13 +962,13 @@ int main(int argc, char* argv[])
   MeasureMethods(mesh, options, figures);
   if (options.Json)
   {
-    PrintStrategies(strategyRows, structureLabel, options.StrategySamples, true, strategiesJson);
+    PrintStrategies(strategyFigures, structureLabel, options.StrategySamples, true, strategiesJson);
     PrintJson(figures, options, structure, structureLabel, strategiesJson.str());
   }
   else
   {
     PrintTables(figures, options, structure, structureLabel);
-    PrintStrategies(strategyRows, structureLabel, options.StrategySamples, false, strategiesJson);
+    PrintStrategies(strategyFigures, structureLabel, options.StrategySamples, false, strategiesJson);
   }
   return 0;
 }

@@ -152,10 +152,11 @@ inline bool vtkMedialHugePagesAreCheaper(const vtkMedialFirstTouchCosts& costs)
 /// Whether vtkMedialBuffer advises its large blocks for transparent huge pages, decided
 /// once per process: MEDIALAXIS_HUGE_PAGES=0 says no, =1 says yes; otherwise (unset or
 /// "auto") vtkMedialHugePagesAreCheaper on the probe's costs. Why: it goes both ways.
-/// On one of this project's virtual machines a 4 kB page cost about 15 us (3.5 to 7.5 ms per MiB) and huge pages were
-/// the faster even when fresh; on another a 4 kB page cost about 2 us (0.4 to 0.6 ms
-/// per MiB), and the preparation of the 1.55 M horse took 0.8 to 1.0 s in 4 kB pages,
-/// 1.4 to 1.6 s in huge pages, most of which the host backed afresh at 4.3 to 6.6 ms.
+/// On one of this project's virtual machines a 4 kB page cost about 15 us (3.5 to 7.5
+/// ms per MiB) and huge pages were the faster even when fresh; on another a 4 kB page
+/// cost about 2 us (0.4 to 0.6 ms per MiB), and the preparation of the 1.55 M horse
+/// took 0.8 to 1.0 s in 4 kB pages, 1.4 to 1.6 s in huge pages, most of which the host
+/// backed afresh at 4.3 to 6.6 ms.
 inline bool vtkMedialBufferHugePages()
 {
   static const bool enabled = [] {

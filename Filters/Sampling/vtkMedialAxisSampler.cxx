@@ -46,7 +46,8 @@ namespace
 // Consecutive samples in leaf order that run on one thread, each hinted with the
 // previous one's contact, blockers and deepest cap triangle. (A hint changes the
 // visiting order only: the ball is the same up to the search's slack, which can decide
-// nearly flat contacts either way, and of equally deep cap points which one is reported.) Only a chain's first sample searches cold: chains of 32 (against 8) cut
+// nearly flat contacts either way, and of equally deep cap points which one is
+// reported.) Only a chain's first sample searches cold: chains of 32 (against 8) cut
 // the search's work on the 1.55M-triangle horse by about 6%, and longer ones cut it
 // further on large runs (1 M samples: sampling 8.89, 9.25, 9.65 s with 32, 8.24, 8.17,
 // 8.86 s with 512, alternating). So a run of N samples uses chains of N / 1024 rounded

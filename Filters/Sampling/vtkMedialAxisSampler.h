@@ -54,8 +54,8 @@
  * in double precision. Samples are solved in the BVH's leaf order, for cache
  * locality, in hint chains (each sample hinted with the previous one's contact,
  * blockers and deepest cap triangle; 32 to 512 samples, set by NumberOfSamples
- * alone); each result keeps its
- * own index, and the output depends neither on the thread count nor on the piece.
+ * alone); each result keeps its own index, and the output depends neither on the
+ * thread count nor on the piece.
  *
  * Input: vtkPolyData with polygons or strips (a closed surface). Open meshes are
  * accepted with a warning: samples whose ray escapes through a hole are discarded

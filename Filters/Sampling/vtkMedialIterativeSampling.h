@@ -28,10 +28,9 @@
  * (seed ^ constant, k), accepted when no accepted seed lies within
  * rho = sqrt(0.5 A / S) (A the surface area, S = SeedFraction * plan, at most
  * one per triangle; the plan is the budget, see Stopping), found through a uniform
- * grid of cell size 2 rho. Blocks of
- * candidates are drawn and tested against the seeds before the block in parallel;
- * the survivors are tested again in index order, so the seeds are those of a
- * one-by-one throw. It stops at S seeds or 30 S candidates.
+ * grid of cell size 2 rho. Blocks of candidates are drawn and tested against the
+ * seeds before the block in parallel; the survivors are tested again in index
+ * order, so the seeds are those of a one-by-one throw. It stops at S seeds or 30 S candidates.
  * The seeds touch every region of the surface, so regions without initial
  * samples (the drawback of both strategies in the report) cannot occur.
  *
@@ -86,14 +85,14 @@
  * spacing (for SeedFraction of the doubled plan) from every seed so far, solved and
  * added in rounds of an eighth of the layer (at least RoundSize, in dart order), each
  * checked for the stop; the faces given up get as many tries again (with a coverage
- * stop a face is given up after 3 failed samples: vtkMedialFaceAttempts). (Where a ball
- * shrunk to stay inside no longer touches the face's worst point, the face's own
+ * stop a face is given up after 3 failed samples: vtkMedialFaceAttempts). (Where a
+ * ball shrunk to stay inside no longer touches the face's worst point, the face's own
  * samples cannot cover it, but balls from elsewhere can.) Three layers in a row
  * after which neither fewer faces are above the stop nor the largest gap is 1%
  * smaller end the run. So the output is the same for any budget of at least 10,000
- * that is not reached. Without a
- * coverage stop CLOSEST_NEIGHBOR does not need the gaps while it runs: its balls
- * are added to the coverage once, at the end, in parallel. When
+ * that is not reached. Without a coverage stop CLOSEST_NEIGHBOR does not need the
+ * gaps while it runs: its balls are added to the coverage once, at the end, in
+ * parallel. When
  * CLOSEST_NEIGHBOR runs out of links (all consecutive balls overlap) before the
  * budget, it finishes with FACE_DISTANCE rounds (those samples are not linked): until
  * the coverage asked for, or with CoverageTolerance 0 for a sixteenth more samples
