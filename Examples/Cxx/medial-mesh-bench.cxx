@@ -11,11 +11,21 @@
 // the same (inscribed) balls, each against the original with vtkMedialReconstructionError
 // (vertex to surface, both directions, and the two-sided area measure; % of the
 // diagonal).
+//
+// --check-solids: instead, whether each mesh bounds a valid solid by CGAL's predicates
+// (vtkMedialSolidCheck: manifold and oriented, closed, outward, collapsed triangles,
+// intersecting triangle pairs) beside its surface's and solid's Euler characteristics.
+//
+// --sweep: instead, for every sample count of --counts and every seed of --seeds, the
+// sampling time, the medial mesh time and their ratio (the target: at most 4, or a mesh
+// time of at most 0.5 s), and the mesh's Euler characteristic and components against
+// the solid's (the expected values; "ok" when equal), measured in the same run.
 // Not a test: it checks nothing.
 //
 // usage: medial-mesh-bench [--threads T] [--samples N] [--resolution N] [--protrusion E] [MESH...]
 //        [--no-classifier] (--protrusion: the filter's ProtrusionTolerance; -1 turns the
 //        pruning off; --no-classifier: no governors, exact junctions or point types from them)
+//        [--check-solids] [--sweep [--counts N1,N2,...] [--seeds S1,S2,...]]
 //        (MESH: a file, or generated:sphere|box|torus|hollow-sphere|rings1|rings2|rings3)
 
 #include "vtkMedialArrayNames.h"
@@ -25,6 +35,8 @@
 #include "vtkMedialMeshFilter.h"
 #include "vtkMedialReconstructionError.h"
 #include "vtkMedialShapeSource.h"
+#include "vtkMedialSolidCheck.h"
+#include "vtkMedialTriangleMesh.h"
 
 #include "vtkDataArray.h"
 #include "vtkNew.h"
@@ -37,6 +49,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -109,8 +122,25 @@ struct BenchOptions
   int Resolution = 128;
   double Protrusion = -2.0; // below -1: the filter's default
   bool Classify = true;
+  bool CheckSolids = false;
+  bool Sweep = false;
+  std::vector<long long> Counts = { 10000, 20000, 50000, 100000, 200000 };
+  std::vector<long long> Seeds = { 1, 7, 42 };
   std::vector<std::string> Meshes;
 };
+
+// "1,2,3" as numbers.
+std::vector<long long> ParseList(const char* text)
+{
+  std::vector<long long> values;
+  for (const char* p = text; *p;)
+  {
+    char* end = nullptr;
+    values.push_back(std::strtoll(p, &end, 10));
+    p = *end == ',' ? end + 1 : end + std::strlen(end);
+  }
+  return values;
+}
 
 // False when the program should stop at once with `exitCode` (help or usage, printed).
 bool ParseArgs(int argc, char* argv[], BenchOptions& options, int& exitCode)
@@ -138,10 +168,26 @@ bool ParseArgs(int argc, char* argv[], BenchOptions& options, int& exitCode)
     {
       options.Classify = false;
     }
+    else if (a == "--check-solids")
+    {
+      options.CheckSolids = true;
+    }
+    else if (a == "--sweep")
+    {
+      options.Sweep = true;
+    }
+    else if (a == "--counts" && i + 1 < argc)
+    {
+      options.Counts = ParseList(argv[++i]);
+    }
+    else if (a == "--seeds" && i + 1 < argc)
+    {
+      options.Seeds = ParseList(argv[++i]);
+    }
     else if (!a.empty() && a[0] == '-')
     {
       std::printf("usage: medial-mesh-bench [--threads T] [--samples N] [--resolution N] [--protrusion E] "
-                  "[--no-classifier] [MESH...]\n");
+                  "[--no-classifier] [--check-solids] [--sweep [--counts N1,N2,...] [--seeds S1,S2,...]] [MESH...]\n");
       exitCode = a == "-h" || a == "--help" ? 0 : 1;
       return false;
     }
@@ -173,8 +219,8 @@ std::vector<std::string> DefaultMeshes()
   return meshes;
 }
 
-// The settings line (with the load average) and the medial mesh table's column names.
-void PrintHeader(const BenchOptions& options)
+// The settings line (with the load average).
+void PrintSettings(const BenchOptions& options)
 {
   double load[3] = { -1, -1, -1 };
   if (FILE* f = std::fopen("/proc/loadavg", "r"))
@@ -189,6 +235,11 @@ void PrintHeader(const BenchOptions& options)
               "%.2f; times in seconds (wall)\n",
     options.Classify ? "on" : "off", options.Threads, static_cast<long long>(options.Samples), load[0], load[1],
     load[2]);
+}
+
+// The medial mesh table's column names.
+void PrintHeader()
+{
   std::printf("%-20s %6s %6s %6s %4s %5s %8s %5s %6s %6s %7s %9s %8s %8s %8s\n", "mesh", "V", "E", "F",
     "chi", "comp", "solid_chi", "solid", "seams", "junct", "dropped", "shrink%", "sample_s", "mesh_s",
     "total_s");
@@ -231,6 +282,93 @@ void BenchMedialMesh(
     static_cast<long long>(filter->GetDroppedBalls()), 100 * filter->GetMaximumRadiusReduction(),
     sampleSeconds, meshSeconds, sampleSeconds + meshSeconds);
   std::fflush(stdout);
+}
+
+// --check-solids: the valid-solid verdict of CGAL's predicates on the prepared surface.
+void CheckSolid(vtkPolyData* surface, const std::string& name)
+{
+  vtkMedialTriangleMesh mesh;
+  std::string error;
+  if (!mesh.Build(surface, error))
+  {
+    std::printf("%-20s cannot be prepared: %s\n", name.c_str(), error.c_str());
+    return;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const vtkMedialSolidCheck::Result r = vtkMedialSolidCheck::Check(mesh);
+  const double seconds = Seconds(start);
+  const vtkIdType chi = mesh.GetEulerCharacteristic();
+  std::printf("%-20s %9lld %8s %6s %8s %9lld %10lld %9lld %9s %-5s %7.2f\n", name.c_str(),
+    static_cast<long long>(mesh.GetNumberOfTriangles()), r.PolygonMesh ? "yes" : "no",
+    r.PolygonMesh ? (r.Closed ? "yes" : "no") : "-",
+    r.Closed && r.IntersectingPairs == 0 && r.CollapsedTriangles == 0 ? (r.OutwardOriented ? "yes" : "no") : "-",
+    static_cast<long long>(r.CollapsedTriangles), static_cast<long long>(r.IntersectingPairs),
+    static_cast<long long>(chi), chi % 2 == 0 ? std::to_string(chi / 2).c_str() : "-",
+    r.IsValidSolid() ? "yes" : "NO", seconds);
+  std::fflush(stdout);
+}
+
+// Peak resident memory of this process so far (MiB), from /proc/self/status.
+double PeakResidentMiB()
+{
+  double kib = -1.0;
+  if (FILE* f = std::fopen("/proc/self/status", "r"))
+  {
+    char line[256];
+    while (std::fgets(line, sizeof(line), f))
+    {
+      if (std::strncmp(line, "VmHWM:", 6) == 0)
+      {
+        kib = std::atof(line + 6);
+      }
+    }
+    std::fclose(f);
+  }
+  return kib / 1024.0;
+}
+
+// --sweep: one row per sample count and seed: the times and their ratio, the topology
+// against the solid's.
+void Sweep(vtkPolyData* surface, const std::string& name, const BenchOptions& options)
+{
+  for (long long count : options.Counts)
+  {
+    for (long long seed : options.Seeds)
+    {
+      vtkNew<vtkMedialAxisSampler> sampler;
+      sampler->SetInputData(surface);
+      sampler->SetNumberOfSamples(count);
+      sampler->SetNumberOfThreads(options.Threads);
+      sampler->SetRandomSeed(seed);
+      auto start = std::chrono::steady_clock::now();
+      sampler->Update();
+      const double sampleSeconds = Seconds(start);
+      vtkNew<vtkMedialMeshFilter> filter;
+      filter->SetInputData(surface);
+      filter->SetBallsConnection(sampler->GetOutputPort());
+      filter->SetNumberOfThreads(options.Threads);
+      if (!options.Classify)
+      {
+        filter->SetClassifier(nullptr);
+      }
+      start = std::chrono::steady_clock::now();
+      filter->Update();
+      const double meshSeconds = Seconds(start);
+      const double ratio = meshSeconds / sampleSeconds;
+      const bool fast = ratio <= 4.0 || meshSeconds <= 0.5;
+      const bool solid = filter->GetHasSolidTopology();
+      const bool right = solid && filter->GetEulerCharacteristic() == filter->GetSolidEulerCharacteristic() &&
+        filter->GetNumberOfComponents() == filter->GetSolidComponents();
+      std::printf("%-20s %7lld %5lld %8.2f %8.2f %6.2f %-4s %5lld %5s %5lld %5s %-4s %8.0f\n", name.c_str(), count,
+        seed, sampleSeconds, meshSeconds, ratio, fast ? "ok" : "SLOW",
+        static_cast<long long>(filter->GetEulerCharacteristic()),
+        solid ? std::to_string(filter->GetSolidEulerCharacteristic()).c_str() : "-",
+        static_cast<long long>(filter->GetNumberOfComponents()),
+        solid ? std::to_string(filter->GetSolidComponents()).c_str() : "-", solid ? (right ? "ok" : "BAD") : "-",
+        PeakResidentMiB());
+      std::fflush(stdout);
+    }
+  }
 }
 
 struct Error
@@ -306,7 +444,23 @@ int main(int argc, char* argv[])
   {
     options.Meshes = DefaultMeshes();
   }
-  PrintHeader(options);
+  if (options.CheckSolids)
+  {
+    std::printf("CGAL's predicates on the prepared surface (vtkMedialSolidCheck); seconds for the check\n");
+    std::printf("%-20s %9s %8s %6s %8s %9s %10s %9s %9s %-5s %7s\n", "mesh", "triangles", "manifold", "closed",
+      "outward", "collapsed", "intersect", "surf_chi", "solid_chi", "valid", "seconds");
+  }
+  else if (options.Sweep)
+  {
+    PrintSettings(options);
+    std::printf("%-20s %7s %5s %8s %8s %6s %-4s %5s %5s %5s %5s %-4s %8s\n", "mesh", "samples", "seed", "sample_s",
+      "mesh_s", "ratio", "<=4x", "chi", "want", "comp", "want", "topo", "peak_MiB");
+  }
+  else
+  {
+    PrintSettings(options);
+    PrintHeader();
+  }
   std::vector<ErrorRow> errors;
   for (const std::string& path : options.Meshes)
   {
@@ -319,10 +473,23 @@ int main(int argc, char* argv[])
       surface = reader->GetOutput();
     }
     const std::string name = path.substr(path.find_last_of("/:") + 1);
+    if (options.CheckSolids)
+    {
+      CheckSolid(surface, name);
+      continue;
+    }
+    if (options.Sweep)
+    {
+      Sweep(surface, name, options);
+      continue;
+    }
     vtkNew<vtkMedialMeshFilter> filter;
     BenchMedialMesh(surface, name, filter, options);
     errors.push_back(MeasureReconstruction(surface, filter->GetOutput(), name, options));
   }
-  PrintErrors(errors, options.Resolution);
+  if (!errors.empty())
+  {
+    PrintErrors(errors, options.Resolution);
+  }
   return 0;
 }
