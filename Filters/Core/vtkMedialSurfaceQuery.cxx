@@ -185,20 +185,32 @@ bool vtkMedialSurfaceQuery::IsInside(const double x[3]) const
 bool vtkMedialSurfaceQuery::SegmentCrossesSurface(const double p[3], const double q[3]) const
 {
   const double* ends[2] = { p, q };
-  return this->CrossesSurface(ends, 2);
+  return this->CrossesSurface(ends, 2, nullptr);
 }
 
 bool vtkMedialSurfaceQuery::TriangleCrossesSurface(
   const double a[3], const double b[3], const double c[3]) const
 {
   const double* corners[3] = { a, b, c };
-  return this->CrossesSurface(corners, 3);
+  return this->CrossesSurface(corners, 3, nullptr);
 }
 
-bool vtkMedialSurfaceQuery::CrossesSurface(const double* const points[], int n) const
+bool vtkMedialSurfaceQuery::CrossesSurface(const double* const points[], int n, CrossingTest test) const
 {
-  // Candidates: the triangles within the smallest ball about the centroid that holds
-  // the points (a crossing point lies in it).
+  bool crosses = false;
+  this->VisitNear(points, n, [&](const double* const u[3]) {
+    crosses = test ? test(points, n, u)
+                   : n == 2 ? G::SegmentCrossesTriangle(points[0], points[1], u[0], u[1], u[2])
+                            : G::TrianglesCross(points, u);
+    return crosses;
+  });
+  return crosses;
+}
+
+void vtkMedialSurfaceQuery::VisitNear(
+  const double* const points[], int n, const std::function<bool(const double* const corners[3])>& visit) const
+{
+  // A point where they meet lies in the smallest ball about the centroid that holds the points.
   double centre[3] = { 0, 0, 0 }, reach2 = 0.0;
   for (int j = 0; j < n; ++j)
   {
@@ -209,18 +221,15 @@ bool vtkMedialSurfaceQuery::CrossesSurface(const double* const points[], int n) 
     reach2 = std::max(reach2, G::Distance2(centre, points[j]));
   }
   const double reach = std::sqrt(reach2) * (1.0 + 1e-9) + this->Slack;
-  bool crosses = false;
+  bool stop = false;
   this->Tree.VisitWithin(centre, reach, nullptr, 1.0, [&](double, const double*, vtkIdType t) {
-    if (crosses)
+    if (!stop)
     {
-      return;
+      const double* v = this->Tree.GetTriangleVertices(t);
+      const double* u[3] = { v, v + 3, v + 6 };
+      stop = visit(u);
     }
-    const double* v = this->Tree.GetTriangleVertices(t);
-    const double* u[3] = { v, v + 3, v + 6 };
-    crosses = n == 2 ? G::SegmentCrossesTriangle(points[0], points[1], u[0], u[1], u[2])
-                     : G::TrianglesCross(points, u);
   });
-  return crosses;
 }
 
 void vtkMedialSurfaceQuery::TrianglesWithin(

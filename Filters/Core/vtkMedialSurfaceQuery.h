@@ -138,6 +138,20 @@ public:
   /// (vtkMedialGeometry::TrianglesCross; touching does not count).
   bool TriangleCrossesSurface(const double a[3], const double b[3], const double c[3]) const;
 
+  /// Whether a segment (n = 2 points) or a triangle (n = 3) crosses surface triangle
+  /// `corners`: the decision of the two tests above, which callers may replace (e.g. by
+  /// exact predicates: the double-precision signs are noise where a simplex is coplanar
+  /// with a surface edge, as medial sheets are with the convex edges they end at).
+  using CrossingTest = bool (*)(const double* const points[], int n, const double* const corners[3]);
+  /// SegmentCrossesSurface (n = 2) or TriangleCrossesSurface (n = 3) with `test`
+  /// deciding each surface triangle near the points.
+  bool CrossesSurface(const double* const points[], int n, CrossingTest test) const;
+
+  /// Calls visit(corners) for the surface triangles that may meet the segment (n = 2
+  /// points) or triangle (n = 3): those within the smallest ball about the points'
+  /// centroid that holds them. Stops when visit returns true.
+  void VisitNear(const double* const points[], int n, const std::function<bool(const double* const corners[3])>& visit) const;
+
   /// Unit outward normal of mesh triangle t, from the tree (the same values as the
   /// mesh's, which a caller that only queries may then release: ReleaseNormals).
   const double* GetNormal(vtkIdType t) const { return this->Tree.GetPlane(t); }
@@ -154,8 +168,6 @@ public:
   const vtkMedialTriangleMesh* GetMesh() const { return this->Mesh; }
 
 private:
-  // Segment (n = 2) or triangle (n = 3) against the triangles near it.
-  bool CrossesSurface(const double* const points[], int n) const;
   bool IntersectFrom(const double rayOrigin[3], const double origin[3], const double direction[3],
     double tMin, double tMax, vtkIdType ignoreTriangle, RayHit& hit) const;
 

@@ -2,6 +2,8 @@
 #include "vtkMedialMeshComplex.h"
 
 #include "vtkMedialDisjointSets.h"
+#include "vtkMedialEnvelope.h"
+#include "vtkMedialExactPredicates.h"
 #include "vtkMedialGeometry.h"
 #include "vtkMedialPowerComplex.h"
 #include "vtkMedialSpatialOrder.h"
@@ -84,7 +86,8 @@ bool vtkMedialMeshComplex::EdgeInside(vtkIdType e)
   if (this->EdgeState[e] == UNKNOWN)
   {
     const auto& v = this->Power->EdgeVertices[e];
-    this->EdgeState[e] = this->Query->SegmentCrossesSurface(this->Centre(v[0]), this->Centre(v[1])) ? CROSSES : INSIDE;
+    const double* ends[2] = { this->Centre(v[0]), this->Centre(v[1]) };
+    this->EdgeState[e] = this->Query->CrossesSurface(ends, 2, vtkMedialExactPredicates::Crosses) ? CROSSES : INSIDE;
   }
   return this->EdgeState[e] == INSIDE;
 }
@@ -95,8 +98,9 @@ bool vtkMedialMeshComplex::TriangleInside(vtkIdType t)
   {
     const auto& edges = this->Power->TriangleEdges[t];
     const auto& v = this->Power->TriangleVertices[t];
+    const double* corners[3] = { this->Centre(v[0]), this->Centre(v[1]), this->Centre(v[2]) };
     const bool inside = this->EdgeInside(edges[0]) && this->EdgeInside(edges[1]) && this->EdgeInside(edges[2]) &&
-      !this->Query->TriangleCrossesSurface(this->Centre(v[0]), this->Centre(v[1]), this->Centre(v[2]));
+      !this->Query->CrossesSurface(corners, 3, vtkMedialExactPredicates::Crosses);
     this->TriangleState[t] = inside ? INSIDE : CROSSES;
   }
   return this->TriangleState[t] == INSIDE;
