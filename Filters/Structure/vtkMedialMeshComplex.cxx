@@ -32,8 +32,6 @@ std::vector<vtkIdType> OrderByBall(const std::vector<std::uint64_t>& ballKeys, v
 {
   return vtkMedialSpatialOrder::Order(n, [&](vtkIdType i) { return ballKeys[ballOf(i)]; });
 }
-
-
 }
 
 bool vtkMedialMeshComplex::Build(const vtkMedialPowerComplex& power, const vtkMedialSurfaceQuery& query,
@@ -127,7 +125,9 @@ void vtkMedialMeshComplex::SelectCandidates()
     this->TetCandidate[t] = p.TetInUnion[t] || this->Query->IsInside(&p.PowerCentres[3 * t]);
   }
   // A triangle's dual: the segment between its tetrahedra's power centres, or on the
-  // convex hull the ray from the inner one along the face's outward normal.
+  // convex hull the ray from the inner one away from its apex; taken along the line
+  // through the triangle's own power centre (GetTriangleDual), which keeps its digits
+  // near the shape when those power centres are far off.
   const std::vector<vtkIdType> triangleOrder =
     OrderByBall(this->BallKeys, nf, [&](vtkIdType f) { return p.TriangleVertices[f][0]; });
 #pragma omp parallel for schedule(dynamic, 256) num_threads(this->Threads)
@@ -140,50 +140,15 @@ void vtkMedialMeshComplex::SelectCandidates()
       this->TriangleCandidate[f] = 1;
       continue;
     }
-    const double* from = &p.PowerCentres[3 * tets[0]];
-    double direction[3], length = HUGE_VAL;
-    if (tets[1] >= 0)
-    {
-      G::Sub(&p.PowerCentres[3 * tets[1]], from, direction);
-      length = std::sqrt(G::Dot(direction, direction));
-    }
-    else
-    {
-      const auto& v = p.TriangleVertices[f];
-      const auto& tv = p.TetVertices[tets[0]];
-      const vtkIdType apex = tv[0] + tv[1] + tv[2] + tv[3] - v[0] - v[1] - v[2];
-      double ab[3], ac[3], ad[3];
-      G::Sub(this->Centre(v[1]), this->Centre(v[0]), ab);
-      G::Sub(this->Centre(v[2]), this->Centre(v[0]), ac);
-      G::Sub(this->Centre(apex), this->Centre(v[0]), ad);
-      G::Cross(ab, ac, direction);
-      const double sign = G::Dot(direction, ad) > 0.0 ? -1.0 : 1.0;
-      const double norm = std::sqrt(G::Dot(direction, direction));
-      for (double& d : direction)
-      {
-        d *= norm > 0.0 ? sign / norm : 0.0;
-      }
-      length = norm > 0.0 ? HUGE_VAL : 0.0;
-    }
-    if (!(length > 0.0))
-    {
-      continue;
-    }
-    if (std::isfinite(length))
-    {
-      for (double& d : direction)
-      {
-        d /= length;
-      }
-    }
-    // Only near the shape, where single-precision rays are accurate.
-    double t0 = 0.0, t1 = length;
-    if (!G::ClipRayToBox(lo, hi, from, direction, 3, t0, t1))
+    double origin[3], direction[3], t0 = 0.0, t1 = 0.0;
+    p.GetTriangleDual(f, origin, direction, t0, t1);
+    // Only near the shape (its box): its power centres are outside the solid.
+    if (!(t0 < t1) || !G::ClipRayToBox(lo, hi, origin, direction, 3, t0, t1))
     {
       continue;
     }
     double start[3];
-    G::AddScaled(from, t0, direction, start);
+    G::AddScaled(origin, t0, direction, start);
     vtkMedialSurfaceQuery::RayHit hit;
     this->TriangleCandidate[f] = this->Query->Intersect(start, direction, 0.0, t1 - t0, -1, hit);
   }

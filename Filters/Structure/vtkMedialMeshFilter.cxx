@@ -280,7 +280,7 @@ int vtkMedialMeshFilter::RequestData(
   // 3. The regular triangulation and the union's dual complex.
   stages.Begin("Building the regular triangulation", 0.7, 0.75);
   vtkMedialPowerComplex power;
-  if (!power.Build(set.Centres, set.Radii, error))
+  if (!power.Build(set.Centres, set.Radii, threads, error))
   {
     vtkErrorMacro(<< "Cannot build the medial mesh: " << error << " (" << set.Radii.size()
                   << " balls); a medial mesh needs balls spanning three dimensions.");

@@ -2,14 +2,13 @@
 #include "vtkMedialPowerComplex.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Fixed_alpha_shape_3.h>
-#include <CGAL/Fixed_alpha_shape_cell_base_3.h>
-#include <CGAL/Fixed_alpha_shape_vertex_base_3.h>
+#include <CGAL/Exact_rational.h>
 #include <CGAL/Regular_triangulation_3.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <numeric>
 #include <utility>
@@ -17,36 +16,23 @@
 namespace
 {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using VertexBase = CGAL::Fixed_alpha_shape_vertex_base_3<Kernel,
-  CGAL::Triangulation_vertex_base_with_info_3<vtkIdType, Kernel,
-    CGAL::Regular_triangulation_vertex_base_3<Kernel>>>;
-using CellBase = CGAL::Fixed_alpha_shape_cell_base_3<Kernel,
-  CGAL::Triangulation_cell_base_with_info_3<vtkIdType, Kernel,
-    CGAL::Regular_triangulation_cell_base_3<Kernel>>>;
+using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<vtkIdType, Kernel,
+  CGAL::Regular_triangulation_vertex_base_3<Kernel>>;
+using CellBase = CGAL::Triangulation_cell_base_with_info_3<vtkIdType, Kernel,
+  CGAL::Regular_triangulation_cell_base_3<Kernel>>;
 using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase>;
 using Triangulation = CGAL::Regular_triangulation_3<Kernel, Tds>;
-using AlphaShape = CGAL::Fixed_alpha_shape_3<Triangulation>;
 using WeightedPoint = Kernel::Weighted_point_3;
+using Cell = Triangulation::Cell_handle;
 
-// Sorts `keys` and returns the permutation: order[k] is the raw index of the k-th smallest.
+// The permutation that sorts `keys`: order[k] is the index of the k-th smallest.
 template <class Key>
-std::vector<vtkIdType> CanonicalOrder(const std::vector<Key>& keys)
+std::vector<vtkIdType> SortedOrder(const std::vector<Key>& keys)
 {
   std::vector<vtkIdType> order(keys.size());
   std::iota(order.begin(), order.end(), vtkIdType(0));
   std::sort(order.begin(), order.end(), [&keys](vtkIdType a, vtkIdType b) { return keys[a] < keys[b]; });
   return order;
-}
-
-template <class T>
-std::vector<T> Permute(const std::vector<T>& raw, const std::vector<vtkIdType>& order)
-{
-  std::vector<T> out(raw.size());
-  for (size_t k = 0; k < order.size(); ++k)
-  {
-    out[k] = raw[order[k]];
-  }
-  return out;
 }
 
 std::vector<vtkIdType> Inverse(const std::vector<vtkIdType>& order)
@@ -59,175 +45,137 @@ std::vector<vtkIdType> Inverse(const std::vector<vtkIdType>& order)
   return inverse;
 }
 
-using Cell = Triangulation::Cell_handle;
+// Power centres that keep their digits on near-flat simplices. The double formulas
+// divide by a determinant (a tetrahedron's volume, a triangle's squared area) that
+// cancels when the simplex is nearly flat, as thousands are where balls sample a flat
+// medial sheet densely: the centre then lands far off, even on the wrong side of the
+// simplex, and every test made with it is wrong. Below a relative size of 1e-6 of that
+// determinant (relative error above about 1e-9) the same formula is evaluated in exact
+// rational arithmetic on the input doubles and rounded once.
+constexpr double FlatSimplex = 1e-6;
 
-// The finite tetrahedra: raw index (CGAL's order, stored in each cell's info, -1 for
-// infinite cells), sorted vertices, and the canonical order of those keys.
-struct TetIndex
+template <class T>
+void CrossT(const T a[3], const T b[3], T out[3])
 {
-  std::vector<std::array<vtkIdType, 4>> Keys; // by raw index
-  std::vector<Cell> Cells;                    // by raw index
-  std::vector<vtkIdType> Order;               // canonical -> raw
-  std::vector<vtkIdType> Rank;                // raw -> canonical
-
-  vtkIdType size() const { return static_cast<vtkIdType>(this->Cells.size()); }
-  vtkIdType CanonicalOf(Cell c) const { return c->info() < 0 ? -1 : this->Rank[c->info()]; }
-};
-
-TetIndex IndexTetrahedra(AlphaShape& shape)
-{
-  vtkIdType rawTets = 0;
-  for (auto c = shape.all_cells_begin(); c != shape.all_cells_end(); ++c)
-  {
-    c->info() = shape.is_infinite(c) ? -1 : rawTets++;
-  }
-  TetIndex tets;
-  tets.Keys.resize(rawTets);
-  tets.Cells.resize(rawTets);
-  for (auto c = shape.finite_cells_begin(); c != shape.finite_cells_end(); ++c)
-  {
-    auto& key = tets.Keys[c->info()];
-    for (int j = 0; j < 4; ++j)
-    {
-      key[j] = c->vertex(j)->info();
-    }
-    std::sort(key.begin(), key.end());
-    tets.Cells[c->info()] = c;
-  }
-  tets.Order = CanonicalOrder(tets.Keys);
-  tets.Rank = Inverse(tets.Order);
-  return tets;
+  out[0] = a[1] * b[2] - a[2] * b[1];
+  out[1] = a[2] * b[0] - a[0] * b[2];
+  out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-// The triangles in raw order (found from the finite side with the smaller raw index).
-struct RawTriangles
+template <class T>
+T DotT(const T a[3], const T b[3])
 {
-  std::vector<std::array<vtkIdType, 3>> Keys;
-  std::vector<std::array<vtkIdType, 2>> Tets; // canonical tetrahedra on either side
-  std::vector<char> InUnion;
-  std::vector<vtkIdType> FacetTriangle; // raw triangle of (raw cell, CGAL index)
-};
-
-RawTriangles IndexTriangles(const AlphaShape& shape, const TetIndex& tets)
-{
-  RawTriangles tris;
-  tris.FacetTriangle.assign(4 * tets.size(), -1);
-  for (vtkIdType raw = 0; raw < tets.size(); ++raw)
-  {
-    const Cell c = tets.Cells[raw];
-    for (int j = 0; j < 4; ++j)
-    {
-      const Cell n = c->neighbor(j);
-      if (n->info() >= 0 && n->info() < raw)
-      {
-        continue; // done from n
-      }
-      const vtkIdType t = static_cast<vtkIdType>(tris.Keys.size());
-      std::array<vtkIdType, 3> key;
-      for (int m = 0, k = 0; m < 4; ++m)
-      {
-        if (m != j)
-        {
-          key[k++] = c->vertex(m)->info();
-        }
-      }
-      std::sort(key.begin(), key.end());
-      tris.Keys.push_back(key);
-      tris.Tets.push_back({ tets.CanonicalOf(c), tets.CanonicalOf(n) });
-      tris.InUnion.push_back(shape.classify(AlphaShape::Facet(c, j)) != AlphaShape::EXTERIOR);
-      tris.FacetTriangle[4 * raw + j] = t;
-      if (n->info() >= 0)
-      {
-        tris.FacetTriangle[4 * n->info() + n->index(c)] = t;
-      }
-    }
-  }
-  return tris;
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-// Tetrahedra in canonical order; neighbours and faces follow the sorted vertices.
-void CopyTetrahedra(const AlphaShape& shape, const TetIndex& tets, const RawTriangles& tris,
-  const std::vector<vtkIdType>& triRank, vtkMedialPowerComplex& complex)
+// The point of equal power to the 4 weighted points (x[k], w[k]) (their orthogonal
+// sphere's centre): x0 + (A b x c + B c x a + C a x b) / (2 a . (b x c)), with a, b, c the
+// edges from x0 and A = |a|^2 - w1 + w0, etc.
+template <class T>
+void PowerCentre4T(const double* const x[4], const double w[4], double out[3])
 {
-  const vtkIdType rawTets = tets.size();
-  complex.TetVertices.resize(rawTets);
-  complex.TetNeighbours.resize(rawTets);
-  complex.TetTriangles.resize(rawTets);
-  complex.PowerCentres.resize(3 * rawTets);
-  complex.TetInUnion.resize(rawTets);
-  for (vtkIdType k = 0; k < rawTets; ++k)
+  T e[3][3], lifted[3];
+  for (int k = 0; k < 3; ++k)
   {
-    const vtkIdType raw = tets.Order[k];
-    const Cell c = tets.Cells[raw];
-    const std::array<vtkIdType, 4>& key = tets.Keys[raw];
-    complex.TetVertices[k] = key;
-    for (int j = 0; j < 4; ++j)
+    for (int d = 0; d < 3; ++d)
     {
-      const vtkIdType slot = std::find(key.begin(), key.end(), c->vertex(j)->info()) - key.begin();
-      complex.TetNeighbours[k][slot] = tets.CanonicalOf(c->neighbor(j));
-      complex.TetTriangles[k][slot] = triRank[tris.FacetTriangle[4 * raw + j]];
+      e[k][d] = T(x[k + 1][d]) - T(x[0][d]);
     }
-    const Kernel::Point_3 w = shape.dual(c);
-    complex.PowerCentres[3 * k] = w.x();
-    complex.PowerCentres[3 * k + 1] = w.y();
-    complex.PowerCentres[3 * k + 2] = w.z();
-    complex.TetInUnion[k] = shape.classify(c) == AlphaShape::INTERIOR;
+    lifted[k] = DotT(e[k], e[k]) - T(w[k + 1]) + T(w[0]);
+  }
+  T bc[3], ca[3], ab[3];
+  CrossT(e[1], e[2], bc);
+  CrossT(e[2], e[0], ca);
+  CrossT(e[0], e[1], ab);
+  const T den = T(2) * DotT(e[0], bc);
+  for (int d = 0; d < 3; ++d)
+  {
+    out[d] = CGAL::to_double(T(x[0][d]) + (lifted[0] * bc[d] + lifted[1] * ca[d] + lifted[2] * ab[d]) / den);
   }
 }
 
-// Edges: the sides of the (canonical) triangles (every finite edge is one), sorted and
-// made unique; each is classified through a cell of the first triangle that has it.
-void IndexEdges(const AlphaShape& shape, const TetIndex& tets, const RawTriangles& tris,
-  const std::vector<vtkIdType>& triOrder, vtkMedialPowerComplex& complex)
+void PowerCentre4(const double* const x[4], const double w[4], double out[3])
 {
-  struct EdgeUse
+  double e[3][3];
+  for (int k = 0; k < 3; ++k)
   {
-    std::array<vtkIdType, 2> Key;
-    vtkIdType Triangle; // canonical triangle index
-    int Side;           // 0: v0 v1, 1: v0 v2, 2: v1 v2
-    bool operator<(const EdgeUse& other) const
+    for (int d = 0; d < 3; ++d)
     {
-      return this->Key < other.Key || (this->Key == other.Key && this->Triangle < other.Triangle);
+      e[k][d] = x[k + 1][d] - x[0][d];
     }
-  };
-  const vtkIdType nf = static_cast<vtkIdType>(complex.TriangleVertices.size());
-  std::vector<EdgeUse> uses(3 * nf);
-  for (vtkIdType t = 0; t < nf; ++t)
-  {
-    const auto& v = complex.TriangleVertices[t];
-    uses[3 * t] = { { v[0], v[1] }, t, 0 };
-    uses[3 * t + 1] = { { v[0], v[2] }, t, 1 };
-    uses[3 * t + 2] = { { v[1], v[2] }, t, 2 };
   }
-  std::sort(uses.begin(), uses.end());
-  complex.TriangleEdges.resize(nf);
-  complex.EdgeVertices.clear();
-  complex.EdgeInUnion.clear();
-  for (size_t k = 0; k < uses.size(); ++k)
+  double bc[3];
+  CrossT(e[1], e[2], bc);
+  const double scale = std::sqrt(DotT(e[0], e[0]) * DotT(e[1], e[1]) * DotT(e[2], e[2]));
+  if (std::fabs(DotT(e[0], bc)) > FlatSimplex * scale)
   {
-    if (k == 0 || uses[k].Key != uses[k - 1].Key)
+    PowerCentre4T<double>(x, w, out);
+  }
+  else
+  {
+    PowerCentre4T<CGAL::Exact_rational>(x, w, out);
+  }
+}
+
+// The point of the plane of 3 weighted points with equal power to them, and the plane's
+// normal a x b (not unit): x0 + (A b x n + B n x a) / (2 |n|^2), n = a x b.
+template <class T>
+void PowerCentre3T(const double* const x[3], const double w[3], double out[3], double normal[3])
+{
+  T e[2][3], lifted[2];
+  for (int k = 0; k < 2; ++k)
+  {
+    for (int d = 0; d < 3; ++d)
     {
-      const vtkIdType rawTriangle = triOrder[uses[k].Triangle];
-      const std::array<vtkIdType, 2>& triTets = tris.Tets[rawTriangle];
-      const Cell c = tets.Cells[tets.Order[triTets[0]]];
-      int i = -1, j = -1;
-      for (int m = 0; m < 4; ++m)
-      {
-        i = c->vertex(m)->info() == uses[k].Key[0] ? m : i;
-        j = c->vertex(m)->info() == uses[k].Key[1] ? m : j;
-      }
-      complex.EdgeVertices.push_back(uses[k].Key);
-      complex.EdgeInUnion.push_back(shape.classify(AlphaShape::Edge(c, i, j)) != AlphaShape::EXTERIOR);
+      e[k][d] = T(x[k + 1][d]) - T(x[0][d]);
     }
-    complex.TriangleEdges[uses[k].Triangle][uses[k].Side] = static_cast<vtkIdType>(complex.EdgeVertices.size() - 1);
+    lifted[k] = DotT(e[k], e[k]) - T(w[k + 1]) + T(w[0]);
   }
+  T n[3], bn[3], na[3];
+  CrossT(e[0], e[1], n);
+  CrossT(e[1], n, bn);
+  CrossT(n, e[0], na);
+  const T den = T(2) * DotT(n, n);
+  for (int d = 0; d < 3; ++d)
+  {
+    out[d] = CGAL::to_double(T(x[0][d]) + (lifted[0] * bn[d] + lifted[1] * na[d]) / den);
+    normal[d] = CGAL::to_double(n[d]);
+  }
+}
+
+void PowerCentre3(const double* const x[3], const double w[3], double out[3], double normal[3])
+{
+  double a[3], b[3], n[3];
+  for (int d = 0; d < 3; ++d)
+  {
+    a[d] = x[1][d] - x[0][d];
+    b[d] = x[2][d] - x[0][d];
+  }
+  CrossT(a, b, n);
+  if (DotT(n, n) > FlatSimplex * FlatSimplex * DotT(a, a) * DotT(b, b))
+  {
+    PowerCentre3T<double>(x, w, out, normal);
+  }
+  else
+  {
+    PowerCentre3T<CGAL::Exact_rational>(x, w, out, normal);
+  }
+}
+
+// Power of x with respect to ball b (|x - c|^2 - r^2).
+inline double PowerOf(const double x[3], const double* c, double r)
+{
+  const double d[3] = { x[0] - c[0], x[1] - c[1], x[2] - c[2] };
+  return DotT(d, d) - r * r;
 }
 }
 
 bool vtkMedialPowerComplex::Build(
-  const std::vector<double>& centres, const std::vector<double>& radii, std::string& error)
+  const std::vector<double>& centres, const std::vector<double>& radii, int threads, std::string& error)
 {
   const vtkIdType nb = static_cast<vtkIdType>(radii.size());
+  this->Centres = &centres;
+  this->Radii = &radii;
   if (nb < 4)
   {
     error = "fewer than four balls";
@@ -241,29 +189,281 @@ bool vtkMedialPowerComplex::Build(
     points.emplace_back(WeightedPoint(Kernel::Point_3(c[0], c[1], c[2]), radii[i] * radii[i]), i);
   }
   Triangulation triangulation(points.begin(), points.end());
+  points = {};
   if (triangulation.dimension() < 3)
   {
     error = "the ball centres are coplanar";
     return false;
   }
-  AlphaShape shape(triangulation, 0.0); // takes over the triangulation
-
   this->BallIsVertex.assign(nb, 0);
-  this->VertexInUnion.assign(nb, 0);
-  for (auto v = shape.finite_vertices_begin(); v != shape.finite_vertices_end(); ++v)
+  for (auto v = triangulation.finite_vertices_begin(); v != triangulation.finite_vertices_end(); ++v)
   {
     this->BallIsVertex[v->info()] = 1;
-    this->VertexInUnion[v->info()] = shape.classify(v) != AlphaShape::EXTERIOR;
   }
-
-  const TetIndex tets = IndexTetrahedra(shape);
-  const RawTriangles tris = IndexTriangles(shape, tets);
-  const std::vector<vtkIdType> triOrder = CanonicalOrder(tris.Keys);
-  const std::vector<vtkIdType> triRank = Inverse(triOrder);
-  this->TriangleVertices = Permute(tris.Keys, triOrder);
-  this->TriangleTets = Permute(tris.Tets, triOrder);
-  this->TriangleInUnion = Permute(tris.InUnion, triOrder);
-  CopyTetrahedra(shape, tets, tris, triRank, *this);
-  IndexEdges(shape, tets, tris, triOrder, *this);
+  // Every simplex from here on is in a canonical order (sorted by its sorted ball ids),
+  // so that nothing depends on CGAL's internal order.
+  this->IndexTetrahedra(&triangulation);
+  this->IndexTriangles();
+  this->IndexEdges();
+  this->ClassifyUnion(threads);
   return true;
 }
+
+void vtkMedialPowerComplex::IndexTetrahedra(void* cgalTriangulation)
+{
+  Triangulation& triangulation = *static_cast<Triangulation*>(cgalTriangulation);
+  vtkIdType raw = 0;
+  for (auto c = triangulation.all_cells_begin(); c != triangulation.all_cells_end(); ++c)
+  {
+    c->info() = triangulation.is_infinite(c) ? -1 : raw++;
+  }
+  std::vector<Cell> cells(raw);
+  std::vector<std::array<vtkIdType, 4>> keys(raw);
+  for (auto c = triangulation.finite_cells_begin(); c != triangulation.finite_cells_end(); ++c)
+  {
+    cells[c->info()] = c;
+    auto& key = keys[c->info()];
+    for (int j = 0; j < 4; ++j)
+    {
+      key[j] = c->vertex(j)->info();
+    }
+    std::sort(key.begin(), key.end());
+  }
+  const std::vector<vtkIdType> order = SortedOrder(keys);
+  const std::vector<vtkIdType> rank = Inverse(order);
+  this->TetVertices.resize(raw);
+  this->TetNeighbours.resize(raw);
+  for (vtkIdType k = 0; k < raw; ++k)
+  {
+    const Cell c = cells[order[k]];
+    const std::array<vtkIdType, 4>& key = keys[order[k]];
+    this->TetVertices[k] = key;
+    for (int j = 0; j < 4; ++j)
+    {
+      const vtkIdType slot = std::find(key.begin(), key.end(), c->vertex(j)->info()) - key.begin();
+      const vtkIdType n = c->neighbor(j)->info();
+      this->TetNeighbours[k][slot] = n < 0 ? -1 : rank[n];
+    }
+  }
+}
+
+void vtkMedialPowerComplex::IndexTriangles()
+{
+  // Each triangle once, from the tetrahedron with the smaller index (or the finite one).
+  const vtkIdType nt = this->GetNumberOfTetrahedra();
+  std::vector<std::array<vtkIdType, 3>> keys;
+  std::vector<std::array<vtkIdType, 2>> sides; // (tetrahedron, slot of the opposite vertex)
+  keys.reserve(2 * nt + 16);
+  sides.reserve(2 * nt + 16);
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    const auto& v = this->TetVertices[t];
+    for (int s = 0; s < 4; ++s)
+    {
+      const vtkIdType n = this->TetNeighbours[t][s];
+      if (n >= 0 && n < t)
+      {
+        continue;
+      }
+      std::array<vtkIdType, 3> key;
+      for (int m = 0, k = 0; m < 4; ++m)
+      {
+        if (m != s)
+        {
+          key[k++] = v[m]; // sorted, as v is
+        }
+      }
+      keys.push_back(key);
+      sides.push_back({ t, s });
+    }
+  }
+  const std::vector<vtkIdType> order = SortedOrder(keys);
+  const vtkIdType nf = static_cast<vtkIdType>(keys.size());
+  this->TriangleVertices.resize(nf);
+  this->TriangleTets.resize(nf);
+  this->TetTriangles.resize(nt);
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    const auto& side = sides[order[f]];
+    const vtkIdType t = side[0], n = this->TetNeighbours[t][side[1]];
+    this->TriangleVertices[f] = keys[order[f]];
+    this->TriangleTets[f] = { t, n };
+    this->TetTriangles[t][side[1]] = f;
+    if (n >= 0)
+    {
+      const auto& nv = this->TetVertices[n];
+      // The slot of n's vertex opposite the shared face: the one not in the triangle.
+      const vtkIdType apex = nv[0] + nv[1] + nv[2] + nv[3] - keys[order[f]][0] - keys[order[f]][1] -
+        keys[order[f]][2];
+      this->TetTriangles[n][std::find(nv.begin(), nv.end(), apex) - nv.begin()] = f;
+    }
+  }
+}
+
+void vtkMedialPowerComplex::IndexEdges()
+{
+  // The sides of the triangles, grouped by their first ball (a counting sort), then
+  // sorted by the second within each group: the edges in canonical order, and for
+  // each the triangles on it.
+  const vtkIdType nf = this->GetNumberOfTriangles();
+  const vtkIdType nb = static_cast<vtkIdType>(this->BallIsVertex.size());
+  std::vector<vtkIdType> start(nb + 1, 0);
+  for (const auto& v : this->TriangleVertices)
+  {
+    start[v[0] + 1] += 2;
+    start[v[1] + 1] += 1;
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  struct Use
+  {
+    vtkIdType Second, Triangle;
+    int Side; // 0: v0 v1, 1: v0 v2, 2: v1 v2
+    bool operator<(const Use& o) const
+    {
+      return this->Second < o.Second || (this->Second == o.Second && this->Triangle < o.Triangle);
+    }
+  };
+  std::vector<Use> uses(3 * nf);
+  {
+    std::vector<vtkIdType> fill(start.begin(), start.end() - 1);
+    for (vtkIdType f = 0; f < nf; ++f)
+    {
+      const auto& v = this->TriangleVertices[f];
+      uses[fill[v[0]]++] = { v[1], f, 0 };
+      uses[fill[v[0]]++] = { v[2], f, 1 };
+      uses[fill[v[1]]++] = { v[2], f, 2 };
+    }
+  }
+  this->TriangleEdges.resize(nf);
+  this->EdgeVertices.clear();
+  this->EdgeTriangleStart.clear();
+  this->EdgeTriangleList.resize(3 * nf);
+  for (vtkIdType a = 0; a < nb; ++a)
+  {
+    std::sort(uses.begin() + start[a], uses.begin() + start[a + 1]);
+    for (vtkIdType k = start[a]; k < start[a + 1]; ++k)
+    {
+      const Use& u = uses[k];
+      if (k == start[a] || u.Second != uses[k - 1].Second)
+      {
+        this->EdgeVertices.push_back({ a, u.Second });
+        this->EdgeTriangleStart.push_back(k);
+      }
+      this->TriangleEdges[u.Triangle][u.Side] = static_cast<vtkIdType>(this->EdgeVertices.size() - 1);
+      this->EdgeTriangleList[k] = u.Triangle;
+    }
+  }
+  this->EdgeTriangleStart.push_back(3 * nf);
+}
+
+void vtkMedialPowerComplex::ClassifyUnion(int threads)
+{
+  const std::vector<double>& centres = *this->Centres;
+  const std::vector<double>& radii = *this->Radii;
+  const vtkIdType nt = this->GetNumberOfTetrahedra(), nf = this->GetNumberOfTriangles();
+  const vtkIdType ne = this->GetNumberOfEdges();
+  // Tetrahedra: the power centre, in the union when its power is at most 0.
+  this->PowerCentres.resize(3 * nt);
+  this->TetInUnion.resize(nt);
+#pragma omp parallel for schedule(static, 1024) num_threads(threads)
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    const auto& v = this->TetVertices[t];
+    const double* x[4];
+    double w[4];
+    for (int j = 0; j < 4; ++j)
+    {
+      x[j] = &centres[3 * v[j]];
+      w[j] = radii[v[j]] * radii[v[j]];
+    }
+    double* p = &this->PowerCentres[3 * t];
+    PowerCentre4(x, w, p);
+    this->TetInUnion[t] = PowerOf(p, x[0], radii[v[0]]) <= 0.0;
+  }
+  // Triangles: the dual segment meets the union where its point of least power (its
+  // own power centre, t = 0, or the nearer end) has power at most 0.
+  this->TriangleInUnion.resize(nf);
+#pragma omp parallel for schedule(static, 1024) num_threads(threads)
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    const auto& tets = this->TriangleTets[f];
+    if (this->TetInUnion[tets[0]] || (tets[1] >= 0 && this->TetInUnion[tets[1]]))
+    {
+      this->TriangleInUnion[f] = 1;
+      continue;
+    }
+    double origin[3], normal[3], tLow, tHigh;
+    this->GetTriangleDual(f, origin, normal, tLow, tHigh);
+    const vtkIdType b = this->TriangleVertices[f][0];
+    this->TriangleInUnion[f] = tLow <= 0.0 && 0.0 <= tHigh && PowerOf(origin, &centres[3 * b], radii[b]) <= 0.0;
+  }
+  // Edges: likewise over the dual polygon, in the radical plane: its point of least
+  // power is the edge's own power centre m when the polygon holds it (no ball of the
+  // link has less power there), otherwise a point of its boundary, the dual of a
+  // triangle on the edge.
+  this->EdgeInUnion.resize(ne);
+#pragma omp parallel for schedule(static, 1024) num_threads(threads)
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    bool in = false;
+    for (vtkIdType k = this->EdgeTriangleStart[e]; k < this->EdgeTriangleStart[e + 1] && !in; ++k)
+    {
+      in = this->TriangleInUnion[this->EdgeTriangleList[k]];
+    }
+    if (!in)
+    {
+      const auto& v = this->EdgeVertices[e];
+      const double *a = &centres[3 * v[0]], *b = &centres[3 * v[1]];
+      const double ra = radii[v[0]], rb = radii[v[1]];
+      const double d[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+      const double d2 = DotT(d, d);
+      const double s = (d2 + ra * ra - rb * rb) / (2.0 * d2);
+      const double m[3] = { a[0] + s * d[0], a[1] + s * d[1], a[2] + s * d[2] };
+      const double power = PowerOf(m, a, ra);
+      in = power <= 0.0;
+      for (vtkIdType k = this->EdgeTriangleStart[e]; k < this->EdgeTriangleStart[e + 1] && in; ++k)
+      {
+        const auto& tv = this->TriangleVertices[this->EdgeTriangleList[k]];
+        const vtkIdType c = tv[0] + tv[1] + tv[2] - v[0] - v[1];
+        in = PowerOf(m, &centres[3 * c], radii[c]) >= power;
+      }
+    }
+    this->EdgeInUnion[e] = in;
+  }
+  this->VertexInUnion = this->BallIsVertex;
+}
+
+void vtkMedialPowerComplex::GetTriangleDual(
+  vtkIdType f, double origin[3], double normal[3], double& tLow, double& tHigh) const
+{
+  const std::array<vtkIdType, 3>& v = this->TriangleVertices[f];
+  const std::array<vtkIdType, 2>& tets = this->TriangleTets[f];
+  const std::array<vtkIdType, 4>& tv = this->TetVertices[tets[0]];
+  const vtkIdType apex = tv[0] + tv[1] + tv[2] + tv[3] - v[0] - v[1] - v[2];
+  const double* x[3];
+  double weights[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    x[k] = &(*this->Centres)[3 * v[k]];
+    weights[k] = (*this->Radii)[v[k]] * (*this->Radii)[v[k]];
+  }
+  PowerCentre3(x, weights, origin, normal);
+  // Towards the apex: the exact orientation of the (positively oriented) tetrahedron.
+  const double* a = &(*this->Centres)[3 * apex];
+  const CGAL::Orientation side = CGAL::orientation(Kernel::Point_3(x[0][0], x[0][1], x[0][2]),
+    Kernel::Point_3(x[1][0], x[1][1], x[1][2]), Kernel::Point_3(x[2][0], x[2][1], x[2][2]),
+    Kernel::Point_3(a[0], a[1], a[2]));
+  const double norm = std::sqrt(DotT(normal, normal));
+  for (int d = 0; d < 3; ++d)
+  {
+    normal[d] *= (side == CGAL::NEGATIVE ? -1.0 : 1.0) / norm;
+  }
+  auto along = [&](vtkIdType tet) {
+    const double* w = &this->PowerCentres[3 * tet];
+    const double d[3] = { w[0] - origin[0], w[1] - origin[1], w[2] - origin[2] };
+    return DotT(d, normal);
+  };
+  tHigh = along(tets[0]);
+  tLow = tets[1] >= 0 ? along(tets[1]) : -HUGE_VAL;
+}
+

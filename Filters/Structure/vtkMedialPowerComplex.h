@@ -2,24 +2,35 @@
 /**
  * @class vtkMedialPowerComplex
  * @brief Internal: the regular (weighted Delaunay) triangulation of a set of balls,
- * indexed, with the alpha complex at alpha = 0 marked on it.
+ * indexed, with the dual complex of their union marked on it.
  *
  * Build() triangulates the centres with weights r^2 (CGAL's Regular_triangulation_3,
- * exact predicates) and classifies every simplex with CGAL's Fixed_alpha_shape_3 at
- * alpha = 0: a simplex is "in the union" when its dual power face meets the union of
- * the balls, i.e. it belongs to the dual complex of the union (Edelsbrunner 1995),
- * which is homotopy equivalent to the union. The convex hull of such a simplex lies
- * in the union of its own balls (they share a point of equal power <= 0, and the
- * power function averaged over the simplex's barycentric weights is below the one
- * at that point).
+ * exact predicates) and copies every simplex into plain arrays in a canonical order
+ * (simplices sorted by their sorted ball ids), so that nothing depends on CGAL's
+ * internal order; the edges come with the triangles on each. Balls hidden by the
+ * others (an empty power cell) are not vertices; their ball is covered by the union of
+ * the others.
  *
- * Everything is then copied into plain arrays in a canonical order (simplices sorted
- * by their sorted ball ids), so that the result does not depend on CGAL's internal
- * order. Balls hidden by the others (an empty power cell) are not vertices; their
- * ball is covered by the union of the others.
+ * Each simplex is then marked "in the union" when its dual power face meets the union
+ * of the balls: the dual complex of the union (the alpha complex at alpha = 0,
+ * Edelsbrunner 1995), homotopy equivalent to the union. The power function of the
+ * simplex's balls, restricted to its dual face, is least at the simplex's own power
+ * centre when the face holds it and otherwise on the face's boundary (the dual of a
+ * coface), so: a tetrahedron is in when its power centre has power <= 0; a triangle
+ * when a tetrahedron on it is, or its own power centre (in its plane) lies on its dual
+ * segment with power <= 0; an edge when a triangle on it is, or its power centre on
+ * the segment has power <= 0 and no ball of its link has less power there. The convex
+ * hull of such a simplex lies in the union of its own balls (they share a point of
+ * equal power <= 0, and the power function averaged over the simplex's barycentric
+ * weights is below the one at that point).
  *
- * This is the only class that includes CGAL (a private, header-only dependency of
- * MedialAxis::Structure); this header does not.
+ * Power centres are exact up to one rounding, also on near-flat simplices, where the
+ * double formula loses every digit (see PowerCentre4 in the .cxx); dual segments are
+ * taken from the triangle's own power centre (GetTriangleDual), which stays accurate
+ * when its tetrahedra's are far off.
+ *
+ * This class and vtkMedialSolidCheck are the only ones that include CGAL (a private,
+ * header-only dependency of MedialAxis::Structure); this header does not.
  */
 #ifndef vtkMedialPowerComplex_h
 #define vtkMedialPowerComplex_h
@@ -33,9 +44,19 @@
 class vtkMedialPowerComplex
 {
 public:
-  /// Triangulates the balls (3 coordinates per centre, one radius each). Returns false
-  /// with a reason when there are fewer than four balls or the centres are coplanar.
-  bool Build(const std::vector<double>& centres, const std::vector<double>& radii, std::string& error);
+  /// Triangulates the balls (3 coordinates per centre, one radius each; both must
+  /// outlive this object), with `threads` OpenMP threads for the classification (the
+  /// result does not depend on it). Returns false with a reason when there are fewer
+  /// than four balls or the centres are coplanar.
+  bool Build(const std::vector<double>& centres, const std::vector<double>& radii, int threads, std::string& error);
+
+  /// The line dual to triangle f (its points of equal power to the triangle's three
+  /// balls) as origin + t normal: origin is the triangle's own power centre, in its
+  /// plane; normal is unit, towards the apex of TriangleTets[f][0]; the dual segment
+  /// (or ray, on the convex hull: tLow = -inf) is t in [tLow, tHigh]. Unlike the segment
+  /// between its tetrahedra's power centres, it stays accurate near the shape when those
+  /// are far off (near-flat tetrahedra).
+  void GetTriangleDual(vtkIdType f, double origin[3], double normal[3], double& tLow, double& tHigh) const;
 
   vtkIdType GetNumberOfTetrahedra() const { return static_cast<vtkIdType>(this->TetVertices.size()); }
   vtkIdType GetNumberOfTriangles() const { return static_cast<vtkIdType>(this->TriangleVertices.size()); }
@@ -43,8 +64,8 @@ public:
 
   // Finite tetrahedra: ball ids (sorted); the tetrahedron across the face opposite
   // vertex j (-1: the infinite side, outside the convex hull) and that face's
-  // triangle; the power centre (the point of equal power to its four balls) and
-  // whether it lies in the union (power <= 0).
+  // triangle; the power centre (the point of equal power to its four balls; exact up
+  // to one rounding on near-flat tetrahedra) and whether it lies in the union (power <= 0).
   std::vector<std::array<vtkIdType, 4>> TetVertices;
   std::vector<std::array<vtkIdType, 4>> TetNeighbours;
   std::vector<std::array<vtkIdType, 4>> TetTriangles;
@@ -58,13 +79,24 @@ public:
   std::vector<std::array<vtkIdType, 3>> TriangleEdges;
   std::vector<char> TriangleInUnion;
 
-  // Finite edges: ball ids (sorted), in the union.
+  // Finite edges: ball ids (sorted), in the union; the triangles on edge e are
+  // EdgeTriangleList[EdgeTriangleStart[e] .. EdgeTriangleStart[e + 1]).
   std::vector<std::array<vtkIdType, 2>> EdgeVertices;
   std::vector<char> EdgeInUnion;
+  std::vector<vtkIdType> EdgeTriangleStart, EdgeTriangleList;
 
   // Per ball: a vertex of the triangulation (not hidden), in the union.
   std::vector<char> BallIsVertex;
   std::vector<char> VertexInUnion;
+
+private:
+  void IndexTetrahedra(void* cgalTriangulation);
+  void IndexTriangles();
+  void IndexEdges();
+  void ClassifyUnion(int threads);
+
+  const std::vector<double>* Centres = nullptr;
+  const std::vector<double>* Radii = nullptr;
 };
 
 #endif
