@@ -53,6 +53,22 @@ inline double Dot3(const double a[3], const double b[3])
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
+/// An upper bound of how far the ball (c, r), interpolated from n vertex balls
+/// (centres[j], radii[j]) each at most as large as its centre's distance to the surface
+/// (inscribed), reaches through the surface: that distance is 1-Lipschitz, so at c it is
+/// at least radii[j] - |c - centres[j]| for every j. A probe whose bound is within a
+/// tolerance needs no surface query (on dense meshes, most of them).
+inline double ProtrusionBound(const double c[3], double r, const double* const centres[], const double radii[], int n)
+{
+  double reach = -HUGE_VAL;
+  for (int j = 0; j < n; ++j)
+  {
+    const double d[3] = { c[0] - centres[j][0], c[1] - centres[j][1], c[2] - centres[j][2] };
+    reach = std::max(reach, radii[j] - std::sqrt(Dot3(d, d)));
+  }
+  return r - reach;
+}
+
 /// |x - c| - r: a sphere.
 inline double BallField(const double x[3], const double c[3], double r)
 {

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialEnvelopeRefinement.h"
 
+#include "vtkMedialEnvelope.h"
 #include "vtkMedialSpatialOrder.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <unordered_map>
 #include <utility>
 
@@ -19,6 +21,11 @@ Edge Sorted(vtkIdType a, vtkIdType b)
   return { std::min(a, b), std::max(a, b) };
 }
 
+struct EdgeHash
+{
+  size_t operator()(const Edge& e) const { return std::hash<vtkIdType>()(e[0]) * 1000003u ^ std::hash<vtkIdType>()(e[1]); }
+};
+
 // Probe weights: the barycentric points of step 1/4 of a triangle, corners excepted.
 constexpr int Steps = 4;
 }
@@ -28,15 +35,24 @@ double vtkMedialEnvelopeRefinement::Probe(
 {
   // `ids` holds n balls, followed by n weights (in Steps) packed as ids[n + j].
   double c[3] = { 0, 0, 0 }, r = 0.0;
+  const double* centres[3];
+  double radii[3];
   for (int j = 0; j < n; ++j)
   {
     const double w = static_cast<double>(ids[n + j]) / Steps;
-    const double* x = &(*mesh.Centres)[3 * ids[j]];
+    centres[j] = &(*mesh.Centres)[3 * ids[j]];
+    radii[j] = (*mesh.Radii)[ids[j]];
     for (int k = 0; k < 3; ++k)
     {
-      c[k] += w * x[k];
+      c[k] += w * centres[j][k];
     }
-    r += w * (*mesh.Radii)[ids[j]];
+    r += w * radii[j];
+  }
+  // Within the tolerance by the vertex balls alone: no query (the bound stands for it).
+  const double bound = vtkMedialEnvelope::ProtrusionBound(c, r, centres, radii, n);
+  if (bound <= this->Tolerance)
+  {
+    return std::max(0.0, bound);
   }
   vtkMedialSurfaceQuery::ClosestHit hit;
   return r > 0.0 && query.ClosestPoint(c, r, hit) ? r - hit.Distance : 0.0;
@@ -116,52 +132,88 @@ public:
   double Get(const Edge& e) const { return this->Known.at(e); }
 
 private:
-  struct Hash
+  std::unordered_map<Edge, double, EdgeHash> Known;
+};
+
+// The triangles on each edge, kept through the splits without re-sorting every side each
+// round: the sides as they were at the start (sorted once; an entry counts while its
+// triangle still has both ends) and the sides that splits made since.
+class vtkMedialEnvelopeRefinement::SideIndex
+{
+public:
+  explicit SideIndex(const std::vector<std::array<vtkIdType, 3>>& triangles)
   {
-    size_t operator()(const Edge& e) const
+    this->Base.reserve(3 * triangles.size());
+    for (vtkIdType t = 0; t < static_cast<vtkIdType>(triangles.size()); ++t)
     {
-      return std::hash<vtkIdType>()(e[0]) * 1000003u ^ std::hash<vtkIdType>()(e[1]);
+      for (int k = 0; k < 3; ++k)
+      {
+        this->Base.push_back({ Sorted(triangles[t][k], triangles[t][(k + 1) % 3]), t });
+      }
     }
-  };
-  std::unordered_map<Edge, double, Hash> Known;
+    std::sort(this->Base.begin(), this->Base.end());
+  }
+  // The triangles that have e as a side now, in increasing order.
+  void Find(const Edge& e, const std::vector<std::array<vtkIdType, 3>>& triangles, std::vector<vtkIdType>& out) const
+  {
+    out.clear();
+    auto has = [&](vtkIdType t) {
+      const auto& v = triangles[t];
+      return std::find(v.begin(), v.end(), e[0]) != v.end() && std::find(v.begin(), v.end(), e[1]) != v.end();
+    };
+    for (auto s = std::lower_bound(this->Base.begin(), this->Base.end(), std::make_pair(e, vtkIdType(-1)));
+         s != this->Base.end() && s->first == e; ++s)
+    {
+      if (has(s->second))
+      {
+        out.push_back(s->second);
+      }
+    }
+    const auto added = this->Added.find(e);
+    if (added != this->Added.end())
+    {
+      for (vtkIdType t : added->second)
+      {
+        if (has(t))
+        {
+          out.push_back(t);
+        }
+      }
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+  }
+  void Add(vtkIdType a, vtkIdType b, vtkIdType t) { this->Added[Sorted(a, b)].push_back(t); }
+
+private:
+  std::vector<std::pair<Edge, vtkIdType>> Base;
+  std::unordered_map<Edge, std::vector<vtkIdType>, EdgeHash> Added;
 };
 
 vtkIdType vtkMedialEnvelopeRefinement::SplitEdges(const Mesh& mesh, const vtkMedialSurfaceQuery& query,
-  std::vector<Edge>& marked, std::vector<Edge>& free, std::vector<char>& touched)
+  SideIndex& index, std::vector<Edge>& marked, std::vector<Edge>& free, std::vector<vtkIdType>& touched)
 {
   std::vector<std::array<vtkIdType, 3>>& triangles = *mesh.Triangles;
-  // The triangles on each side, and the edges of no triangle.
-  std::vector<std::pair<Edge, vtkIdType>> sides;
-  sides.reserve(3 * triangles.size());
-  for (vtkIdType t = 0; t < static_cast<vtkIdType>(triangles.size()); ++t)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      sides.push_back({ Sorted(triangles[t][k], triangles[t][(k + 1) % 3]), t });
-    }
-  }
-  std::sort(sides.begin(), sides.end());
-  touched.assign(triangles.size(), 0);
+  std::vector<char> split(triangles.size(), 0); // in this round
+  touched.clear();
   const size_t freeCount = free.size(); // sorted up to here; split halves are appended
   std::sort(marked.begin(), marked.end());
   marked.erase(std::unique(marked.begin(), marked.end()), marked.end());
   const double far = 2.0 * query.GetMesh()->Diagonal;
   vtkIdType added = 0;
-  for (const Edge& e : marked)
+  // The triangles on each marked edge as the round starts (a triangle split through
+  // another edge first may no longer have it, but must still hold it back).
+  std::vector<std::vector<vtkIdType>> onEdge(marked.size());
+  for (size_t k = 0; k < marked.size(); ++k)
   {
-    auto first = std::lower_bound(sides.begin(), sides.end(), std::make_pair(e, vtkIdType(-1)));
-    auto last = first;
-    bool noTriangle = true;
-    while (last != sides.end() && last->first == e)
-    {
-      noTriangle = false;
-      if (touched[last->second])
-      {
-        break;
-      }
-      ++last;
-    }
-    if (last != sides.end() && last->first == e)
+    index.Find(marked[k], triangles, onEdge[k]);
+  }
+  std::vector<std::pair<size_t, Edge>> halves; // free edges split: replaced after the round
+  for (size_t k = 0; k < marked.size(); ++k)
+  {
+    const Edge& e = marked[k];
+    const std::vector<vtkIdType>& on = onEdge[k];
+    if (std::any_of(on.begin(), on.end(), [&split](vtkIdType t) { return split[t] != 0; }))
     {
       continue; // a triangle on it was split in this round
     }
@@ -180,29 +232,43 @@ vtkIdType vtkMedialEnvelopeRefinement::SplitEdges(const Mesh& mesh, const vtkMed
     mesh.Radii->push_back(radius);
     mesh.Vertices->push_back(m);
     ++added;
-    if (noTriangle)
+    if (on.empty())
     {
-      // An edge of no triangle: (a, b) becomes (a, m) and (m, b).
+      // An edge of no triangle: (a, b) becomes (a, m) and (m, b); the sorted part of
+      // `free` stays as it is until the round's searches are done.
       auto at = std::lower_bound(free.begin(), free.begin() + freeCount, e);
       if (at != free.begin() + freeCount && *at == e)
       {
-        *at = { e[0], m };
+        halves.push_back({ static_cast<size_t>(at - free.begin()), Edge{ e[0], m } });
         free.push_back({ e[1], m });
       }
       continue;
     }
-    for (auto s = first; s != last; ++s)
+    for (vtkIdType s : on)
     {
       // (a, b, c) becomes (a, m, c) and (m, b, c), in the same orientation.
-      std::array<vtkIdType, 3> t = triangles[s->second];
+      std::array<vtkIdType, 3> t = triangles[s];
       std::array<vtkIdType, 3> other = t;
       std::replace(t.begin(), t.end(), e[1], m);
       std::replace(other.begin(), other.end(), e[0], m);
-      triangles[s->second] = t;
+      const vtkIdType u = static_cast<vtkIdType>(triangles.size());
+      const vtkIdType apex = t[0] + t[1] + t[2] - e[0] - m;
+      triangles[s] = t;
       triangles.push_back(other);
-      touched[s->second] = 1;
-      touched.push_back(1);
+      split[s] = 1;
+      split.push_back(1);
+      touched.push_back(s);
+      touched.push_back(u);
+      index.Add(e[0], m, s);
+      index.Add(m, apex, s);
+      index.Add(m, apex, u);
+      index.Add(m, e[1], u);
+      index.Add(e[1], apex, u);
     }
+  }
+  for (const auto& half : halves)
+  {
+    free[half.first] = half.second;
   }
   return added;
 }
@@ -212,6 +278,7 @@ vtkIdType vtkMedialEnvelopeRefinement::Refine(const Mesh& mesh, const vtkMedialS
 {
   this->WorstProtrusion = 0.0;
   this->Rounds = 0;
+  this->Tolerance = tolerance;
   std::vector<std::array<vtkIdType, 3>>& triangles = *mesh.Triangles;
   std::vector<Edge>& edges = *mesh.Edges;
   const vtkIdType limit = static_cast<vtkIdType>(mesh.Vertices->size());
@@ -229,9 +296,11 @@ vtkIdType vtkMedialEnvelopeRefinement::Refine(const Mesh& mesh, const vtkMedialS
   // Each triangle's protrusion, kept between rounds: only the triangles a split made or
   // changed are probed again (the balls of the others did not move). A triangle's
   // probes on its sides are its edges' probes (see EdgeProbes), kept per edge.
-  std::vector<char> triangleDirty(triangles.size(), 1);
-  std::vector<double> triangleProtrusion;
+  std::vector<vtkIdType> dirty(triangles.size());
+  std::iota(dirty.begin(), dirty.end(), vtkIdType(0));
+  std::vector<double> triangleProtrusion(triangles.size(), 0.0);
   EdgeProbes sides;
+  SideIndex index(triangles);
   for (; this->Rounds < MaximumRounds && added < limit; ++this->Rounds)
   {
     if (aborted && aborted())
@@ -240,35 +309,28 @@ vtkIdType vtkMedialEnvelopeRefinement::Refine(const Mesh& mesh, const vtkMedialS
     }
     const vtkIdType nt = static_cast<vtkIdType>(triangles.size());
     const vtkIdType nf = static_cast<vtkIdType>(free.size());
+    const vtkIdType nd = static_cast<vtkIdType>(dirty.size());
     std::vector<Edge> probed(free.begin(), free.end());
-    for (vtkIdType t = 0; t < nt; ++t)
+    for (vtkIdType t : dirty)
     {
-      for (int k = 0; k < 3 && triangleDirty[t]; ++k)
+      for (int k = 0; k < 3; ++k)
       {
         probed.push_back(Sorted(triangles[t][k], triangles[t][(k + 1) % 3]));
       }
     }
     sides.Probe(*this, mesh, query, probed, threads);
     triangleProtrusion.resize(nt, 0.0);
-    std::vector<double> edgeProtrusion(nf, 0.0);
-    const std::vector<vtkIdType> order = SpatialOrder(mesh, query, nt, [&](vtkIdType t) { return triangles[t][0]; });
+    const std::vector<vtkIdType> order = SpatialOrder(mesh, query, nd, [&](vtkIdType i) { return triangles[dirty[i]][0]; });
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
-    for (vtkIdType k = 0; k < nt; ++k)
+    for (vtkIdType k = 0; k < nd; ++k)
     {
-      const vtkIdType t = order[k];
-      if (triangleDirty[t])
+      const vtkIdType t = dirty[order[k]];
+      double worst = this->ProbeInterior(mesh, query, triangles[t]);
+      for (int j = 0; j < 3; ++j)
       {
-        double worst = this->ProbeInterior(mesh, query, triangles[t]);
-        for (int k = 0; k < 3; ++k)
-        {
-          worst = std::max(worst, sides.Get(Sorted(triangles[t][k], triangles[t][(k + 1) % 3])));
-        }
-        triangleProtrusion[t] = worst;
+        worst = std::max(worst, sides.Get(Sorted(triangles[t][j], triangles[t][(j + 1) % 3])));
       }
-    }
-    for (vtkIdType e = 0; e < nf; ++e)
-    {
-      edgeProtrusion[e] = sides.Get(free[e]);
+      triangleProtrusion[t] = worst;
     }
     std::vector<Edge> marked;
     double worst = 0.0;
@@ -297,8 +359,9 @@ vtkIdType vtkMedialEnvelopeRefinement::Refine(const Mesh& mesh, const vtkMedialS
     }
     for (vtkIdType e = 0; e < nf; ++e)
     {
-      worst = std::max(worst, edgeProtrusion[e]);
-      if (edgeProtrusion[e] > tolerance)
+      const double protrusion = sides.Get(free[e]);
+      worst = std::max(worst, protrusion);
+      if (protrusion > tolerance)
       {
         marked.push_back(free[e]);
       }
@@ -308,7 +371,7 @@ vtkIdType vtkMedialEnvelopeRefinement::Refine(const Mesh& mesh, const vtkMedialS
     {
       break;
     }
-    added += this->SplitEdges(mesh, query, marked, free, triangleDirty);
+    added += this->SplitEdges(mesh, query, index, marked, free, dirty);
     std::sort(free.begin(), free.end());
   }
   // Every edge again: the sides of the triangles and the edges of no triangle.
