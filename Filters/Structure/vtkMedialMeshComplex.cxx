@@ -70,7 +70,9 @@ bool vtkMedialMeshComplex::Build(const vtkMedialPowerComplex& power, const vtkMe
     return false;
   }
   this->DropDetachedComponents(*balls.SolidComponents);
+  this->FillLoops();
   this->Collapse();
+  this->TrimAdded();
   if (protrusionTolerance >= 0.0)
   {
     this->PruneProtrusions(protrusionTolerance);
@@ -497,13 +499,23 @@ void vtkMedialMeshComplex::Collapse()
   this->Stats.RemainingTetrahedra = std::count(this->TetIn.begin(), this->TetIn.end(), 1);
 }
 
-double vtkMedialMeshComplex::Protrusion(const vtkIdType* ids, const double* weights, int n) const
+double vtkMedialMeshComplex::Protrusion(const vtkIdType* ids, const double* weights, int n, double tolerance) const
 {
   double c[3] = { 0, 0, 0 }, r = 0.0;
+  const double* centres[3];
+  double radii[3];
   for (int j = 0; j < n; ++j)
   {
-    G::AddScaled(c, weights[j], this->Centre(ids[j]), c);
-    r += weights[j] * (*this->BallData.Radii)[ids[j]];
+    centres[j] = this->Centre(ids[j]);
+    radii[j] = (*this->BallData.Radii)[ids[j]];
+    G::AddScaled(c, weights[j], centres[j], c);
+    r += weights[j] * radii[j];
+  }
+  // Within the tolerance by the (inscribed) vertex balls alone: no query.
+  const double bound = vtkMedialEnvelope::ProtrusionBound(c, r, centres, radii, n);
+  if (bound <= tolerance)
+  {
+    return std::max(0.0, bound);
   }
   vtkMedialSurfaceQuery::ClosestHit hit;
   return r > 0.0 && this->Query->ClosestPoint(c, r, hit) ? r - hit.Distance : 0.0;
@@ -562,12 +574,12 @@ private:
   double ProbeEdge(vtkIdType e) const
   {
     const double half[2] = { 0.5, 0.5 };
-    return this->Complex.Protrusion(this->Complex.Power->EdgeVertices[e].data(), half, 2);
+    return this->Complex.Protrusion(this->Complex.Power->EdgeVertices[e].data(), half, 2, this->Tolerance);
   }
   double ProbeTriangle(vtkIdType f)
   {
     const double third[3] = { 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 };
-    double worst = this->Complex.Protrusion(this->Complex.Power->TriangleVertices[f].data(), third, 3);
+    double worst = this->Complex.Protrusion(this->Complex.Power->TriangleVertices[f].data(), third, 3, this->Tolerance);
     for (vtkIdType e : this->Complex.Power->TriangleEdges[f])
     {
       worst = std::max(worst, this->EdgeValue(e));
@@ -781,5 +793,403 @@ void vtkMedialMeshComplex::Extract()
       this->Vertices.push_back(b);
       this->Components += sets.Find(b) == b;
     }
+  }
+}
+
+std::vector<vtkIdType> vtkMedialMeshComplex::LoopBalls() const
+{
+  const vtkMedialPowerComplex& p = *this->Power;
+  const vtkIdType nb = static_cast<vtkIdType>(p.BallIsVertex.size());
+  const vtkIdType ne = p.GetNumberOfEdges(), nf = p.GetNumberOfTriangles(), nt = p.GetNumberOfTetrahedra();
+  std::vector<char> tetIn = this->TetIn, triangleIn = this->TriangleIn, edgeIn = this->EdgeIn;
+  // Tetrahedra through free triangles.
+  std::vector<int> triangleTets(nf, 0);
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    for (int j = 0; j < 4 && tetIn[t]; ++j)
+    {
+      ++triangleTets[p.TetTriangles[t][j]];
+    }
+  }
+  std::vector<vtkIdType> queue;
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    if (triangleIn[f] && triangleTets[f] == 1)
+    {
+      queue.push_back(f);
+    }
+  }
+  for (size_t head = 0; head < queue.size(); ++head)
+  {
+    const vtkIdType f = queue[head];
+    if (!triangleIn[f] || triangleTets[f] != 1)
+    {
+      continue;
+    }
+    const auto& tets = p.TriangleTets[f];
+    const vtkIdType t = tetIn[tets[0]] ? tets[0] : tets[1];
+    tetIn[t] = 0;
+    triangleIn[f] = 0;
+    for (vtkIdType g : p.TetTriangles[t])
+    {
+      if (--triangleTets[g] == 1 && triangleIn[g])
+      {
+        queue.push_back(g);
+      }
+    }
+  }
+  // Triangles (with no tetrahedron left) through free edges.
+  std::vector<int> edgeTriangles(ne, 0);
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    for (int k = 0; k < 3 && triangleIn[f]; ++k)
+    {
+      ++edgeTriangles[p.TriangleEdges[f][k]];
+    }
+  }
+  auto freeEdge = [&](vtkIdType f) {
+    for (vtkIdType e : p.TriangleEdges[f])
+    {
+      if (edgeTriangles[e] == 1 && edgeIn[e])
+      {
+        return e;
+      }
+    }
+    return vtkIdType(-1);
+  };
+  queue.clear();
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    if (triangleIn[f] && triangleTets[f] == 0)
+    {
+      queue.push_back(f);
+    }
+  }
+  for (size_t head = 0; head < queue.size(); ++head)
+  {
+    const vtkIdType f = queue[head];
+    const vtkIdType e = triangleIn[f] && triangleTets[f] == 0 ? freeEdge(f) : -1;
+    if (e < 0)
+    {
+      continue;
+    }
+    triangleIn[f] = 0;
+    edgeIn[e] = 0;
+    for (vtkIdType g : p.TriangleEdges[f])
+    {
+      if (--edgeTriangles[g] == 1)
+      {
+        for (vtkIdType k = p.EdgeTriangleStart[g]; k < p.EdgeTriangleStart[g + 1]; ++k)
+        {
+          queue.push_back(p.EdgeTriangleList[k]);
+        }
+      }
+    }
+  }
+  // Edges (with no triangle left) through free ends.
+  std::vector<int> degree(nb, 0);
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    if (edgeIn[e])
+    {
+      ++degree[p.EdgeVertices[e][0]];
+      ++degree[p.EdgeVertices[e][1]];
+    }
+  }
+  std::vector<char> core(nb, 0);
+  bool changed = true;
+  while (changed)
+  {
+    changed = false;
+    for (vtkIdType e = 0; e < ne; ++e)
+    {
+      const auto& v = p.EdgeVertices[e];
+      if (edgeIn[e] && edgeTriangles[e] == 0 && (degree[v[0]] == 1 || degree[v[1]] == 1))
+      {
+        edgeIn[e] = 0;
+        --degree[v[0]];
+        --degree[v[1]];
+        changed = true;
+      }
+    }
+  }
+  // The loops: what is left of the edges of no triangle (closed surfaces left are
+  // voids, FillVoids' concern).
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    if (edgeIn[e] && edgeTriangles[e] == 0)
+    {
+      core[p.EdgeVertices[e][0]] = core[p.EdgeVertices[e][1]] = 1;
+    }
+  }
+  std::vector<vtkIdType> balls;
+  for (vtkIdType b = 0; b < nb; ++b)
+  {
+    if (core[b])
+    {
+      balls.push_back(b);
+    }
+  }
+  return balls;
+}
+
+void vtkMedialMeshComplex::FillLoops()
+{
+  const vtkMedialPowerComplex& p = *this->Power;
+  const vtkIdType nb = static_cast<vtkIdType>(p.BallIsVertex.size());
+  const vtkIdType ne = p.GetNumberOfEdges(), nf = p.GetNumberOfTriangles(), nt = p.GetNumberOfTetrahedra();
+  const std::vector<vtkIdType> core = this->LoopBalls();
+  if (core.empty())
+  {
+    return;
+  }
+  // Tetrahedra on each ball.
+  std::vector<vtkIdType> ballTetStart(nb + 1, 0), ballTets;
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    for (vtkIdType b : p.TetVertices[t])
+    {
+      ++ballTetStart[b + 1];
+    }
+  }
+  std::partial_sum(ballTetStart.begin(), ballTetStart.end(), ballTetStart.begin());
+  ballTets.resize(ballTetStart.back());
+  {
+    std::vector<vtkIdType> fill(ballTetStart.begin(), ballTetStart.end() - 1);
+    for (vtkIdType t = 0; t < nt; ++t)
+    {
+      for (vtkIdType b : p.TetVertices[t])
+      {
+        ballTets[fill[b]++] = t;
+      }
+    }
+  }
+  // The region: the tetrahedra on the loops' balls and on their neighbours.
+  std::vector<char> inRegion(nb, 0);
+  for (vtkIdType b : core)
+  {
+    for (vtkIdType k = ballTetStart[b]; k < ballTetStart[b + 1]; ++k)
+    {
+      for (vtkIdType c : p.TetVertices[ballTets[k]])
+      {
+        inRegion[c] = 1;
+      }
+    }
+  }
+  std::vector<vtkIdType> tets, triangles, edges;
+  {
+    std::vector<char> tetSeen(nt, 0), triangleSeen(nf, 0), edgeSeen(ne, 0);
+    for (vtkIdType b = 0; b < nb; ++b)
+    {
+      for (vtkIdType k = ballTetStart[b]; inRegion[b] && k < ballTetStart[b + 1]; ++k)
+      {
+        const vtkIdType t = ballTets[k];
+        if (tetSeen[t])
+        {
+          continue;
+        }
+        tetSeen[t] = 1;
+        tets.push_back(t);
+        for (vtkIdType f : p.TetTriangles[t])
+        {
+          if (!triangleSeen[f])
+          {
+            triangleSeen[f] = 1;
+            triangles.push_back(f);
+            for (vtkIdType e : p.TriangleEdges[f])
+            {
+              if (!edgeSeen[e])
+              {
+                edgeSeen[e] = 1;
+                edges.push_back(e);
+              }
+            }
+          }
+        }
+      }
+    }
+    std::sort(tets.begin(), tets.end());
+    std::sort(triangles.begin(), triangles.end());
+    std::sort(edges.begin(), edges.end());
+  }
+  // Containment of the region's simplices (edges first: triangles read them).
+  const vtkIdType nre = static_cast<vtkIdType>(edges.size()), nrf = static_cast<vtkIdType>(triangles.size());
+#pragma omp parallel for schedule(dynamic, 64) num_threads(this->Threads)
+  for (vtkIdType k = 0; k < nre; ++k)
+  {
+    this->EdgeInside(edges[k]);
+  }
+#pragma omp parallel for schedule(dynamic, 64) num_threads(this->Threads)
+  for (vtkIdType k = 0; k < nrf; ++k)
+  {
+    this->TriangleInside(triangles[k]);
+  }
+  // Closure under the operations that keep or lower the homology: a triangle inside the
+  // solid whose sides are in K (it fills a loop or closes a void), or whose two sides are
+  // and the third is added with it (an expansion); a tetrahedron inside whose faces are in
+  // K (it fills a void), or whose three faces are and the fourth is added with it.
+  vtkIdType added = 0;
+  for (bool changed = true; changed;)
+  {
+    changed = false;
+    for (vtkIdType f : triangles)
+    {
+      if (this->TriangleIn[f] || this->TriangleState[f] != INSIDE)
+      {
+        continue;
+      }
+      int missing = 0;
+      vtkIdType gap = -1;
+      for (vtkIdType e : p.TriangleEdges[f])
+      {
+        if (!this->EdgeIn[e])
+        {
+          ++missing;
+          gap = e;
+        }
+      }
+      const auto& v = p.TriangleVertices[f];
+      if (missing > 1 || !this->VertexIn[v[0]] || !this->VertexIn[v[1]] || !this->VertexIn[v[2]])
+      {
+        continue;
+      }
+      if (gap >= 0)
+      {
+        this->EdgeIn[gap] = 1;
+      }
+      this->TriangleIn[f] = 1;
+      this->TriangleAdded.push_back(f);
+      ++added;
+      changed = true;
+    }
+    for (vtkIdType t : tets)
+    {
+      if (this->TetIn[t])
+      {
+        continue;
+      }
+      int missing = 0, inside = 0;
+      vtkIdType gap = -1;
+      for (vtkIdType f : p.TetTriangles[t])
+      {
+        inside += this->TriangleState[f] == INSIDE || this->TriangleIn[f];
+        if (!this->TriangleIn[f])
+        {
+          ++missing;
+          gap = f;
+        }
+      }
+      if (inside < 4 || missing > 1)
+      {
+        continue;
+      }
+      if (gap >= 0)
+      {
+        bool sides = true;
+        for (vtkIdType e : p.TriangleEdges[gap])
+        {
+          sides = sides && this->EdgeIn[e];
+        }
+        if (!sides)
+        {
+          continue;
+        }
+        this->TriangleIn[gap] = 1;
+        this->TriangleAdded.push_back(gap);
+      }
+      this->TetIn[t] = 1;
+      ++added;
+      changed = true;
+    }
+  }
+  this->Stats.EmptyTriangles += added;
+  this->Stats.FilledTetrahedra += this->FillVoids();
+}
+
+void vtkMedialMeshComplex::TrimAdded()
+{
+  const vtkMedialPowerComplex& p = *this->Power;
+  const vtkIdType ne = p.GetNumberOfEdges();
+  if (this->TriangleAdded.empty())
+  {
+    return;
+  }
+  std::vector<int> edgeTriangles(ne, 0);
+  for (vtkIdType f = 0; f < p.GetNumberOfTriangles(); ++f)
+  {
+    for (int k = 0; k < 3 && this->TriangleIn[f]; ++k)
+    {
+      ++edgeTriangles[p.TriangleEdges[f][k]];
+    }
+  }
+  std::vector<char> added(p.GetNumberOfTriangles(), 0);
+  for (vtkIdType f : this->TriangleAdded)
+  {
+    added[f] = 1;
+  }
+  std::vector<int> cofaces(p.GetNumberOfTriangles(), 0); // tetrahedra left (not collapsible)
+  for (vtkIdType t = 0; t < p.GetNumberOfTetrahedra(); ++t)
+  {
+    for (int j = 0; j < 4 && this->TetIn[t]; ++j)
+    {
+      ++cofaces[p.TetTriangles[t][j]];
+    }
+  }
+  std::vector<vtkIdType> queue(this->TriangleAdded);
+  std::sort(queue.begin(), queue.end());
+  queue.erase(std::unique(queue.begin(), queue.end()), queue.end());
+  for (size_t head = 0; head < queue.size(); ++head)
+  {
+    const vtkIdType f = queue[head];
+    if (!this->TriangleIn[f] || cofaces[f] > 0)
+    {
+      continue;
+    }
+    vtkIdType side = -1;
+    for (vtkIdType e : p.TriangleEdges[f])
+    {
+      side = side < 0 && edgeTriangles[e] == 1 && this->EdgeIn[e] ? e : side;
+    }
+    if (side < 0)
+    {
+      continue;
+    }
+    this->TriangleIn[f] = 0;
+    this->EdgeIn[side] = 0;
+    for (vtkIdType e : p.TriangleEdges[f])
+    {
+      if (--edgeTriangles[e] == 1)
+      {
+        for (vtkIdType k = p.EdgeTriangleStart[e]; k < p.EdgeTriangleStart[e + 1]; ++k)
+        {
+          const vtkIdType g = p.EdgeTriangleList[k];
+          if (added[g] && this->TriangleIn[g])
+          {
+            queue.push_back(g);
+          }
+        }
+      }
+    }
+  }
+  this->TriangleAdded.clear();
+}
+
+
+void vtkMedialMeshComplex::CountComponents()
+{
+  vtkIdType nb = 0;
+  for (vtkIdType b : this->Vertices)
+  {
+    nb = std::max(nb, b + 1);
+  }
+  vtkMedialDisjointSets sets(nb);
+  for (const auto& e : this->Edges)
+  {
+    sets.Join(e[0], e[1]);
+  }
+  this->Components = 0;
+  for (vtkIdType b : this->Vertices)
+  {
+    this->Components += sets.Find(b) == b;
   }
 }

@@ -12,12 +12,15 @@
  *     union), a triangle whose dual segment (a ray on the convex hull) meets the solid
  *     (an inside end or a surface crossing), an edge with a candidate triangle or in
  *     the union. The restricted cells cover the solid, gaps between the balls
- *     included, so this nerve has the solid's topology where they are convex.
+ *     included, so this nerve has the solid's topology where they are convex; near
+ *     the surface they are not (a cell that leaves the solid may enter it again far
+ *     off), so it may not: loops, voids and pieces the next passes mend.
  *  2. KeepContained: a candidate outside the union of balls is kept only when it
- *     does not cross the surface (SegmentCrossesSurface, TriangleCrossesSurface; a
- *     tetrahedron through its faces). Simplices in the union lie in the union of
- *     their balls, so inside the solid when the balls are inscribed. From here on
- *     the complex K lies in the solid.
+ *     does not cross the surface (vtkMedialSurfaceQuery::CrossesSurface decided by
+ *     vtkMedialExactPredicates: exact signs, touching does not count; a tetrahedron
+ *     through its faces). Simplices in the union lie in the union of their balls, so
+ *     inside the solid when the balls are inscribed. From here on the complex K lies
+ *     in the solid.
  *  3. FillVoids: tetrahedra that the outside cannot reach through triangles not in
  *     K form voids; each is filled (tetrahedra, faces, edges) when none of its
  *     simplices crosses the surface. A solid without cavities has no void, and a
@@ -26,22 +29,38 @@
  *     shortest first, join the components of K that they connect.
  *  5. FillEmptyTriangles: triangles of the triangulation whose three edges are in K
  *     and that do not cross the surface are added (then voids are filled again),
- *     until none is left. Steps 3 to 5 only add simplices inside the solid, so they
- *     can only remove homology that the solid does not have.
+ *     until none is left.
  *  6. DropDetachedComponents: each component of K lies in one component of the
  *     solid (given per ball); in each solid component only the component of K with
  *     the most balls is kept. The others (balls that no edge inside the shape could
  *     join, e.g. a tiny ball at a crease whose every edge leaves the shape) are
  *     dropped and counted.
- *  7. Collapse: tetrahedra are removed with a free face (a triangle of exactly one
+ *  7. FillLoops: a loop of K that a disk of triangles inside the solid would fill,
+ *     but no single triangle (step 5), e.g. one closed by an edge between two balls
+ *     that the rest of K already joins. Where the loops are: the balls on the edges
+ *     of no triangle that collapses (tetrahedra through free triangles, triangles
+ *     through free edges, edges through free ends) cannot remove, the true loops of
+ *     the solid and the extra ones. Around them (the tetrahedra on those balls) K is
+ *     closed under the additions inside the solid that never add homology: a
+ *     triangle whose sides are in K, a triangle with two sides in K added with its
+ *     third (an expansion), a tetrahedron whose faces are in K, or whose faces but one
+ *     are, added with it; then voids are filled. The closure is unique (each addition
+ *     only enables others), so the order does not matter.
+ *     Steps 3 to 7 only add simplices inside the solid, so they can only remove
+ *     homology that the solid does not have: a loop or void of K they fill bounds in
+ *     the solid.
+ *  8. Collapse: tetrahedra are removed with a free face (a triangle of exactly one
  *     of them), oldest first, until none has one. Collapses keep the homotopy type.
- *  8. PruneProtrusions: the triangles left are faces of thin layers of tetrahedra,
+ *     Then TrimAdded collapses the triangles step 7 added through their free sides.
+ *  9. PruneProtrusions: the triangles left are faces of thin layers of tetrahedra,
  *     some of them fins standing out of the sheet, whose interpolated balls (the
  *     envelope's) cross the surface. A triangle with a free side (an edge of no other
  *     triangle) is removed with that side when a ball interpolated at its centroid or
  *     a side's midpoint protrudes through the surface by more than the tolerance; an
  *     edge of no triangle with a free end, with that end, likewise. These are
- *     collapses too; they go on as long as any applies.
+ *     collapses too; they go on as long as any applies. The vertex balls bound most
+ *     protrusions within the tolerance without a surface query
+ *     (vtkMedialEnvelope::ProtrusionBound).
  * The result: the vertices (ball ids), every edge (triangle sides included) and the
  * triangles; tetrahedra left without a free face (none on every shape measured) are
  * counted and dropped.
@@ -67,7 +86,7 @@ public:
     vtkIdType RejectedSimplices = 0; // candidates that crossed the surface
     vtkIdType FilledTetrahedra = 0;  // by FillVoids
     vtkIdType ConnectingEdges = 0;   // by ConnectComponents
-    vtkIdType EmptyTriangles = 0;    // by FillEmptyTriangles
+    vtkIdType EmptyTriangles = 0;    // by FillEmptyTriangles and FillLoops
     vtkIdType DetachedBalls = 0;     // dropped by DropDetachedComponents
     vtkIdType PrunedTriangles = 0;   // by PruneProtrusions
     vtkIdType PrunedEdges = 0;       // edges of no triangle, by PruneProtrusions
@@ -102,6 +121,8 @@ public:
   }
   /// Connected components of the result.
   vtkIdType GetNumberOfComponents() const { return this->Components; }
+  /// Counts the components again from Vertices and Edges (after a refinement changed them).
+  void CountComponents();
 
 private:
   void SelectCandidates();
@@ -110,11 +131,21 @@ private:
   void ConnectComponents();
   void FillEmptyTriangles();
   void DropDetachedComponents(const std::vector<vtkIdType>& solidComponents);
+  void FillLoops();
+  // The balls on the edges of no triangle that collapses cannot remove (tetrahedra
+  // through free triangles, triangles through free edges, edges through free ends):
+  // where every loop of K is.
+  std::vector<vtkIdType> LoopBalls() const;
+  // Collapses the triangles FillLoops added through their free sides, once the
+  // tetrahedra are gone.
+  void TrimAdded();
+  std::vector<vtkIdType> TriangleAdded;
   void Collapse();
   void PruneProtrusions(double tolerance);
   // Largest protrusion through the surface of the balls interpolated at the given
-  // barycentric weights over the balls `ids`.
-  double Protrusion(const vtkIdType* ids, const double* weights, int n) const;
+  // barycentric weights over the balls `ids`; where the vertex balls bound it within
+  // `tolerance` (vtkMedialEnvelope::ProtrusionBound), that bound, without a query.
+  double Protrusion(const vtkIdType* ids, const double* weights, int n, double tolerance) const;
   class ProtrusionMemo;
   void Extract();
 

@@ -317,6 +317,7 @@ int vtkMedialMeshFilter::RequestData(
     this->EnvelopeProtrusion = refinement.WorstProtrusion / mesh.Diagonal;
     set.Source.resize(set.Radii.size(), -1);
     set.SolidComponent.resize(set.Radii.size(), -1);
+    complex.CountComponents(); // the figures below are the output's, counted again
     if (this->GetAbortExecute())
     {
       return 1;
