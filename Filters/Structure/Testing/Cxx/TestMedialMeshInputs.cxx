@@ -11,6 +11,7 @@
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialMeshFilter.h"
 
+#include "vtkAppendPolyData.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdList.h"
@@ -109,6 +110,36 @@ int CheckBadInput(vtkPolyData* solid)
     const std::string text = Run(open, nullptr, errors, warnings);
     MEDIAL_CHECK(errors == 0 && text.find("boundary edges") != std::string::npos, "open surface: got '%s'",
       text.c_str());
+  }
+  // Two overlapping spheres in one surface: no valid solid (their triangles intersect),
+  // so the surface's topology (two bodies) is not the shape's. With balls in one of
+  // them only, the mesh is one piece: the warning names the cause, and does not ask for
+  // more samples.
+  {
+    vtkSmartPointer<vtkPolyData> a = medialtest::MakeSolid(vtkMedialShapeSource::SPHERE, 1, 2);
+    vtkSmartPointer<vtkPolyData> b = medialtest::MakeSolid(vtkMedialShapeSource::SPHERE, 1, 2);
+    vtkNew<vtkPoints> moved;
+    moved->SetDataTypeToDouble();
+    for (vtkIdType i = 0; i < b->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      b->GetPoint(i, x);
+      moved->InsertNextPoint(x[0] + 0.8, x[1], x[2]);
+    }
+    b->SetPoints(moved);
+    vtkNew<vtkAppendPolyData> both;
+    both->AddInputData(a);
+    both->AddInputData(b);
+    both->Update();
+    int errors = 0, warnings = 0;
+    const std::string text = Run(both->GetOutput(),
+      BallsOf({ { -0.6, 0, 0, 0.3 }, { -0.6, 0.2, 0, 0.3 }, { -0.6, 0, 0.2, 0.3 }, { -0.7, 0.1, 0.1, 0.2 },
+        { -0.5, -0.1, -0.1, 0.3 } }),
+      errors, warnings);
+    MEDIAL_CHECK(errors == 0 && text.find("not a valid solid") != std::string::npos &&
+        text.find("of its triangles intersect") != std::string::npos &&
+        text.find("try more samples") == std::string::npos,
+      "overlapping spheres: got '%s'", text.c_str());
   }
   return EXIT_SUCCESS;
 }
