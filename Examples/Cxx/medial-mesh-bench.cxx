@@ -26,7 +26,8 @@
 //        [--no-classifier] (--protrusion: the filter's ProtrusionTolerance; -1 turns the
 //        pruning off; --no-classifier: no governors, exact junctions or point types from them)
 //        [--check-solids] [--sweep [--counts N1,N2,...] [--seeds S1,S2,...]]
-//        (MESH: a file, or generated:sphere|box|torus|hollow-sphere|rings1|rings2|rings3)
+//        (MESH: a file, or generated:sphere|box|torus|hollow-sphere|rings1|rings2|rings3, with
+//        "@R" for vtkMedialShapeSource's Resolution R instead of the bench's default)
 
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialAxisSampler.h"
@@ -80,7 +81,14 @@ vtkSmartPointer<vtkPolyData> Generated(const std::string& name)
   {
     return nullptr;
   }
-  const std::string shape = name.substr(prefix.size());
+  std::string shape = name.substr(prefix.size());
+  int resolution = 0; // "@R": this resolution instead of the default below
+  const size_t at = shape.find('@');
+  if (at != std::string::npos)
+  {
+    resolution = std::atoi(shape.c_str() + at + 1);
+    shape = shape.substr(0, at);
+  }
   vtkNew<vtkMedialShapeSource> source;
   if (shape == "sphere")
   {
@@ -110,6 +118,10 @@ vtkSmartPointer<vtkPolyData> Generated(const std::string& name)
   else
   {
     return nullptr;
+  }
+  if (resolution > 0)
+  {
+    source->SetResolution(resolution);
   }
   source->Update();
   return source->GetOutput();
