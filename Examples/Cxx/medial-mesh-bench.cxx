@@ -13,7 +13,7 @@
 // diagonal).
 //
 // --check-solids: instead, whether each mesh bounds a valid solid by CGAL's predicates
-// (vtkMedialSolidCheck: manifold and oriented, closed, outward, collapsed triangles,
+// (vtkMedialSolidDiagnosis: manifold and oriented, closed, outward, collapsed triangles,
 // intersecting triangle pairs) beside its surface's and solid's Euler characteristics.
 //
 // --sweep: instead, for every sample count of --counts and every seed of --seeds, the
@@ -36,7 +36,7 @@
 #include "vtkMedialMeshFilter.h"
 #include "vtkMedialReconstructionError.h"
 #include "vtkMedialShapeSource.h"
-#include "vtkMedialSolidCheck.h"
+#include "vtkMedialSolidDiagnosis.h"
 #include "vtkMedialTriangleMesh.h"
 
 #include "vtkDataArray.h"
@@ -307,7 +307,7 @@ void CheckSolid(vtkPolyData* surface, const std::string& name)
     return;
   }
   const auto start = std::chrono::steady_clock::now();
-  const vtkMedialSolidCheck::Result r = vtkMedialSolidCheck::Check(mesh);
+  const vtkMedialSolidDiagnosis::Result r = vtkMedialSolidDiagnosis::Check(mesh);
   const double seconds = Seconds(start);
   const vtkIdType chi = mesh.GetEulerCharacteristic();
   std::printf("%-20s %9lld %8s %6s %8s %9lld %10lld %9lld %9s %-5s %7.2f\n", name.c_str(),
@@ -458,7 +458,7 @@ int main(int argc, char* argv[])
   }
   if (options.CheckSolids)
   {
-    std::printf("CGAL's predicates on the prepared surface (vtkMedialSolidCheck); seconds for the check\n");
+    std::printf("CGAL's predicates on the prepared surface (vtkMedialSolidDiagnosis); seconds for the check\n");
     std::printf("%-20s %9s %8s %6s %8s %9s %10s %9s %9s %-5s %7s\n", "mesh", "triangles", "manifold", "closed",
       "outward", "collapsed", "intersect", "surf_chi", "solid_chi", "valid", "seconds");
   }

@@ -11,7 +11,7 @@
 #include "vtkMedialPipeline.h"
 #include "vtkMedialPowerComplex.h"
 #include "vtkMedialSimplicialComplex.h"
-#include "vtkMedialSolidCheck.h"
+#include "vtkMedialSolidDiagnosis.h"
 #include "vtkMedialSpatialOrder.h"
 #include "vtkMedialProgress.h"
 #include "vtkMedialSurfaceQuery.h"
@@ -75,12 +75,12 @@ std::vector<vtkIdType> TriangleBodies(const vtkMedialTriangleMesh& mesh)
 }
 
 // Why the medial mesh's topology differs from the one the surface gives its solid: the
-// surface is not a valid solid (CGAL's predicates, vtkMedialSolidCheck), or else the
+// surface is not a valid solid (CGAL's predicates, vtkMedialSolidDiagnosis), or else the
 // mesh is at fault. Run only on a mismatch (the check costs 0.4 s on horse.ply's 97k
 // triangles).
 std::string TopologyMismatchCause(const vtkMedialTriangleMesh& mesh)
 {
-  const vtkMedialSolidCheck::Result check = vtkMedialSolidCheck::Check(mesh);
+  const vtkMedialSolidDiagnosis::Result check = vtkMedialSolidDiagnosis::Check(mesh);
   std::ostringstream cause;
   if (check.IsValidSolid())
   {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "vtkMedialSolidCheck.h"
+#include "vtkMedialSolidDiagnosis.h"
 
 #include "vtkMedialTriangleMesh.h"
 
@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-vtkMedialSolidCheck::Result vtkMedialSolidCheck::Check(const vtkMedialTriangleMesh& mesh)
+vtkMedialSolidDiagnosis::Result vtkMedialSolidDiagnosis::Check(const vtkMedialTriangleMesh& mesh)
 {
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;

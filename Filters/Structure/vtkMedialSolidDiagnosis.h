@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
- * @class vtkMedialSolidCheck
- * @brief Internal: whether a prepared surface bounds a valid solid, by CGAL's predicates.
+ * @class vtkMedialSolidDiagnosis
+ * @brief Internal: whether a prepared surface bounds a valid solid and, if not, why
+ *        (CGAL's predicates).
  *
  * A surface bounds a valid solid when its triangles form a closed, manifold, oriented
  * mesh (CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh, CGAL::is_closed,
@@ -16,17 +17,19 @@
  * triangles (about 0.3 s for 100k triangles): vtkMedialMeshFilter runs it only when the
  * medial mesh's topology differs from the solid's, to name the cause.
  *
- * One function on purpose: a single place to replace by a public valid-solid check.
+ * One function on purpose: a single place to replace by a public valid-solid check. It
+ * diagnoses (names the defect and where) rather than screens: a fast tree-based
+ * pre-check that only says yes or no belongs elsewhere.
  * This class includes CGAL in its .cxx only.
  */
-#ifndef vtkMedialSolidCheck_h
-#define vtkMedialSolidCheck_h
+#ifndef vtkMedialSolidDiagnosis_h
+#define vtkMedialSolidDiagnosis_h
 
 #include "vtkType.h"
 
 class vtkMedialTriangleMesh;
 
-class vtkMedialSolidCheck
+class vtkMedialSolidDiagnosis
 {
 public:
   struct Result
