@@ -272,7 +272,7 @@ def table():
         if picture.prepare:
             how += "; " + PREPARED[picture.prepare]
         if picture.meshes:
-            how += " (needs the shared meshes)"
+            how += "; needs the shared meshes"
         rows.append("| [`%s`](images/%s) | %s | %s |" % (picture.name, picture.name, pages, how))
     for name, (page, how) in sorted(EXTERNAL.items()):
         rows.append("| [`%s`](images/%s) | [%s](%s) | not by the gallery: %s |"
