@@ -6,7 +6,8 @@
 Runs DOXYGEN with the build's DOXYFILE (the one `cmake --build build --target docs` uses),
 writing into WORK_DIR and its warnings into WORK_DIR/warnings.log, and fails when that log
 is not empty: an undocumented public class, method, enum or constant, a comment naming a
-parameter the function does not have, a reference that does not resolve. It also fails
+parameter the function does not have, a reference that does not resolve (in a header or in
+one of the guide's pages, which the reference includes). It also fails
 when one of the HEADERs (the installed headers) declares members with a VTK macro
 (vtkSet...Macro, vtkGet...Macro, vtkBooleanMacro, vtkTypeMacro, ...) that the Doxyfile's
 PREDEFINED does not expand: Doxygen would show such a line as a strange member instead of
@@ -58,8 +59,8 @@ def main(argv):
         problems += warnings.split("\n")
     if problems:
         print("\n".join(problems))
-        print(f"FAIL: {len(problems)} problem(s) in the API reference; document each member named above "
-              "(docs/building.md#the-api-reference)")
+        print(f"FAIL: {len(problems)} problem(s) in the API reference: document each member named above, or fix "
+              "the guide page Doxygen could not read (docs/building.md#the-api-reference)")
         return 1
     print(f"API reference: {len(headers)} headers, no warning ({os.path.join(work, 'html', 'index.html')})")
     return 0
