@@ -135,6 +135,7 @@ raises(lambda: medialaxis.junction_graph([outer[:2]]), "a loop needs 3 or more",
 raises(lambda: medialaxis.reconstruct(balls.centres, balls.radii[:-1]), "2000 centres but 1999 radii", "radii count")
 raises(lambda: medialaxis.reconstruct(balls.centres, -balls.radii), "radii must be positive", "negative radii")
 raises(lambda: medialaxis.medial_mesh(vertices, triangles, balls="x"), "balls must be a Result", "balls not a Result")
+raises(lambda: medialaxis.write_html(None, (vertices, triangles), mesh=[1]), "mesh must be a Result", "write_html mesh a list")
 raises(lambda: medialaxis.demo_shape("cube"), "unknown shape 'cube'", "unknown shape")
 
 # A filter's error is a RuntimeError with its message, its warnings RuntimeWarnings.

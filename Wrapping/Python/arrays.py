@@ -344,12 +344,13 @@ def medial_axis(vertices, triangles=None, *, samples=10000, seed=1, threads=0, m
     return Result(out, arrays, info, planar)
 
 
-def _balls_data(balls):
+def _balls_data(balls, name="balls"):
     if isinstance(balls, Result):
         return balls.data
     if isinstance(balls, vtkPolyData):
         return balls
-    raise ValueError("balls must be a Result of medial_axis or a vtkPolyData with 'Radius'")
+    raise ValueError(f"{name} must be a Result (of medial_axis, medial_mesh, ...) or a vtkPolyData, "
+                     f"got {type(balls).__name__}")
 
 
 def medial_mesh(vertices, triangles=None, *, balls=None, samples=10000, seed=1, threads=0, min_angle=45.0,
@@ -541,7 +542,7 @@ def write_html(path, surface=None, *, balls=None, mesh=None, graph=None, reconst
         raise RuntimeError("this build has no web viewer: " + vtkMedialHTMLWriter.GetViewerStatus())
     writer = vtkMedialHTMLWriter()
     if wall is not None:
-        writer.SetSurface(_balls_data(wall))
+        writer.SetSurface(_balls_data(wall, "wall"))
     elif surface is not None:
         if isinstance(surface, tuple):
             writer.SetSurface(_surface(*surface)[0])
@@ -549,10 +550,10 @@ def write_html(path, surface=None, *, balls=None, mesh=None, graph=None, reconst
             writer.SetSurface(_polygons(surface)[0])
         else:
             writer.SetSurface(to_polydata(surface))
-    for setter, value in (("SetBalls", balls), ("SetMedialMesh", mesh), ("SetGraph", graph),
-                          ("SetReconstruction", reconstruction)):
+    for setter, name, value in (("SetBalls", "balls", balls), ("SetMedialMesh", "mesh", mesh),
+                                ("SetGraph", "graph", graph), ("SetReconstruction", "reconstruction", reconstruction)):
         if value is not None:
-            getattr(writer, setter)(_balls_data(value))
+            getattr(writer, setter)(_balls_data(value, name))
     writer.SetTitle(str(title))
     writer.SetMaximumNumberOfBalls(_count(max_balls, "max_balls", 1, 10**12))
     errors = []
