@@ -1,9 +1,10 @@
 // Opens a medialaxis page in headless Chromium (Debian's, driven by playwright-core),
 // offline, plays with its controls and takes a screenshot of its view; prints one JSON
 // report on stdout. The checks on the report are test_web_page.py's.
-//   node open-page.js NODE_MODULES CHROMIUM PAGE.html SHOT.png [--serve] [--plain]
+//   node open-page.js NODE_MODULES CHROMIUM PAGE.html SHOT.png [--serve] [--plain] [--page-shot FILE]
 // --serve opens the page from a web server on 127.0.0.1 (this script's) instead of a
-// file; --plain only loads and shoots (for the figures), with no interaction.
+// file; --plain only loads and shoots (for the figures), with no interaction;
+// --page-shot also takes the whole page, controls included (docs/web-page.png).
 'use strict';
 const fs = require('fs');
 const http = require('http');
@@ -79,6 +80,8 @@ async function main() {
     report.layers = await snapshot();
     report.decimation = await page.evaluate(() => (document.getElementById('balls-decimation') || {}).textContent || null);
     await page.locator('#medial-view').screenshot({ path: shotPath });
+    const whole = options.indexOf('--page-shot');
+    if (whole >= 0) await page.screenshot({ path: options[whole + 1] });
     if (options.includes('--plain')) return report;
 
     const setRange = (id, value) => page.$eval(`#${id}`, (input, v) => {
