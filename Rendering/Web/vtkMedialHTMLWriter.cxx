@@ -10,12 +10,10 @@
 
 #include "vtkArchiver.h"
 #include "vtkBase64Utilities.h"
-#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkJSONDataSetWriter.h"
-#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -28,6 +26,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <initializer_list>
 #include <map>
 #include <sstream>
 #include <string>
@@ -163,8 +162,7 @@ std::string Vector(const double v[3])
   return "[" + Number(v[0]) + ", " + Number(v[1]) + ", " + Number(v[2]) + "]";
 }
 
-// Points as float32 (the page's precision); a copy of `source`'s point array `name`
-// as float32 or, for codes, uint8.
+// The points of `source` (those of `keep`, when given) as float32, the page's precision.
 vtkSmartPointer<vtkPoints> FloatPoints(vtkPolyData* source, const std::vector<vtkIdType>* keep = nullptr)
 {
   auto points = vtkSmartPointer<vtkPoints>::New();
@@ -178,6 +176,8 @@ vtkSmartPointer<vtkPoints> FloatPoints(vtkPolyData* source, const std::vector<vt
   return points;
 }
 
+// A copy of the array `from` (its tuples in `keep`, when given) as float32 or, for
+// codes, uint8, added to `to`.
 void CopyArray(vtkDataArray* from, vtkDataSetAttributes* to, bool codes, const std::vector<vtkIdType>* keep = nullptr)
 {
   if (!from)
