@@ -520,8 +520,8 @@ void Program::MedialMesh()
 
 // The scale-axis significance 3D pruning keeps: --prune-threshold, or the default
 // scale's 1 - 1/s. After --denoise the default scale is 1.3: the smoothing removed most
-// of the noise the filter's 1.5 is for, and 1.3 keeps more of the shape (README,
-// noisy-horse table: both noise levels within 1% and 2x only so).
+// of the noise the filter's 1.5 is for, and 1.3 keeps more of the shape (the noisy-horse
+// table of docs/how-it-works/pruning.md: both noise levels within 1% and 2x only so).
 double Program::ScaleAxisThreshold() const
 {
   if (this->Opt.PruneThreshold >= 0.0)
@@ -536,7 +536,7 @@ double Program::ScaleAxisThreshold() const
 // 3D --prune: the scale axis transform of the balls (vtkMedialScaleAxisFilter), before
 // they are written, measured or meshed: balls covered at scale s = 1 / (1 - threshold)
 // go. The noise's branches and the balls tangent to tilted facets are covered at a
-// small scale (see the README's noisy-horse table).
+// small scale (see the noisy-horse table of docs/how-it-works/pruning.md).
 void Program::PruneBalls()
 {
   if (!this->Opt.Prune || this->Planar)

@@ -4,7 +4,7 @@
 //   node open-page.js NODE_MODULES CHROMIUM PAGE.html SHOT.png [--serve] [--plain] [--page-shot FILE]
 // --serve opens the page from a web server on 127.0.0.1 (this script's) instead of a
 // file; --plain only loads and shoots (for the figures), with no interaction;
-// --page-shot also takes the whole page, controls included (docs/web-page.png).
+// --page-shot also takes the whole page, controls included (docs/images/web-page.png).
 'use strict';
 const fs = require('fs');
 const http = require('http');
