@@ -22,9 +22,11 @@ by the pages it names and lies in docs/images/, and the table of docs/building.m
 <!-- gallery:begin --> and <!-- gallery:end -->) is this script's; --write rewrites that table.
 """
 import glob
+import json
 import os
 import re
 import shlex
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -42,10 +44,12 @@ class Picture:
     temporary folder), after `prepare` (a function of the scratch folder and the mesh folder),
     or `python` (a function of the output path, the mesh folder and the smoke flag)."""
 
-    def __init__(self, name, size, pages, cli=None, python=None, prepare=None, meshes=(), description=None):
+    def __init__(self, name, size, pages, cli=None, python=None, prepare=None, meshes=(), description=None,
+                 tools=None):
         self.name, self.size, self.pages = name, size, pages
         self.cli, self.python, self.prepare = cli, python, prepare
         self.meshes, self.description = meshes, description
+        self.tools = tools  # a function of the build folder: what is missing to make it
 
     def command(self):
         if self.cli:
@@ -157,6 +161,50 @@ def simplification_picture(mesh_name, k):
     return make
 
 
+def web_page_tools(build):
+    """What the page's screenshot needs: the viewer's node modules (playwright-core) from
+    the build, node and Debian's Chromium."""
+    missing = []
+    if not os.path.isdir(os.path.join(build, "Rendering", "Web", "viewer", "node_modules", "playwright-core")):
+        missing.append("the web viewer's node modules (build/Rendering/Web/viewer/node_modules)")
+    if not shutil.which("node"):
+        missing.append("node")
+    if not os.path.exists("/usr/bin/chromium"):
+        missing.append("/usr/bin/chromium")
+    return missing
+
+
+def web_page_picture(out, meshes, smoke, build, scratch):
+    """The horse's page (medial-axis --html with its medial mesh) as headless Chromium shows
+    it, controls included (Rendering/Web/Testing/Browser/open-page.js --page-shot)."""
+    page = os.path.join(scratch, "horse.html")
+    if not os.path.exists(os.path.join(scratch, "horse.ply")):
+        os.symlink(os.path.join(meshes, "horse.ply"), os.path.join(scratch, "horse.ply"))
+    # Run where the files are: the page shows its command line.
+    command = [os.path.join(build, "bin", "medial-axis"), "horse.ply", "--medial-mesh", "horse-mesh.vtp",
+               "--html", "horse.html", "--quiet"]
+    if smoke:
+        command += ["-n", SMOKE_SAMPLES]
+    subprocess.run(command, check=True, cwd=scratch)
+    modules = os.path.join(build, "Rendering", "Web", "viewer", "node_modules")
+    shot = subprocess.run(["node", os.path.join(ROOT, "Rendering", "Web", "Testing", "Browser", "open-page.js"), modules,
+                           "/usr/bin/chromium", page, os.path.join(scratch, "horse-view.png"), "--plain",
+                           "--page-shot", out], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    try:
+        report = json.loads(shot.stdout)
+    except ValueError:
+        report = {}
+    if shot.returncode != 0 or report.get("status") != "ready" or report.get("consoleErrors"):
+        raise RuntimeError("the page did not open cleanly in Chromium:\n" + shot.stdout)
+    return "%d bytes of page" % os.path.getsize(page)
+
+
+web_page_picture.description = ("`medial-axis horse.ply --medial-mesh horse-mesh.vtp --html horse.html`, then the "
+                                "page as headless Chromium shows it at 1000 × 640, controls included "
+                                "(`node Rendering/Web/Testing/Browser/open-page.js ... --plain --page-shot "
+                                "web-page.png`)")
+
+
 # Every picture the guide shows, in the order of the pages.
 PICTURES = [
     Picture("medial-demo.png", (900, 640), ["README.md"],
@@ -191,6 +239,8 @@ PICTURES = [
             python=simplification_picture("horse.ply", 100)),
     Picture("jack-thickness.png", (900, 640), ["docs/how-it-works/thickness.md"],
             cli=["demo:jack", "--thickness", "{scratch}/jack-thickness.vtp", "--render", "{out}"]),
+    Picture("web-page.png", (1000, 640), ["docs/web-page.md"], meshes=["horse.ply"], python=web_page_picture,
+            tools=web_page_tools),
 ]
 for picture in PICTURES:
     if picture.python:
@@ -218,6 +268,8 @@ def make(picture, out_dir, build, meshes, scratch, smoke, prepared):
     if picture.prepare and picture.prepare not in prepared:
         picture.prepare(scratch, meshes)
         prepared.add(picture.prepare)
+    if picture.python is web_page_picture:
+        return picture.python(out, meshes, smoke, build, scratch)
     if picture.python:
         return picture.python(out, meshes, smoke)
     args = [w.replace("{out}", out).replace("{meshes}", meshes).replace("{scratch}", scratch) for w in picture.cli]
@@ -348,6 +400,11 @@ def main(argv):
                 skipped.append(picture.name)
                 print("skipped %s: needs %s from %s" % (picture.name, ", ".join(missing), meshes))
                 continue
+            missing = picture.tools(build) if picture.tools else []
+            if missing:
+                skipped.append(picture.name)
+                print("skipped %s: needs %s" % (picture.name, ", ".join(missing)))
+                continue
             start = time.time()
             try:
                 figures = make(picture, out_dir, build, meshes, scratch, smoke, prepared)
@@ -363,7 +420,7 @@ def main(argv):
         problems += check_docs(False)
     for problem in problems:
         print("FAIL " + problem)
-    print("gallery: %d pictures in %s, %d skipped (no shared meshes), %d problem(s)"
+    print("gallery: %d pictures in %s, %d skipped (no shared meshes or tools), %d problem(s)"
           % (len(made), out_dir, len(skipped), len(problems)))
     return 1 if problems else 0
 
