@@ -1418,6 +1418,8 @@ public:
     , ConeSin(cosMinAngle < 1.0 ? std::sqrt(0.5 * (1.0 - cosMinAngle)) : 0.0) // sin(theta / 2)
     , Allowed(allowed)
     , Inscribe(cosMinAngle < 1.0 && allowed < result.Radius)
+    , Measure(cosMinAngle < 1.0 && result.MeasureProtrusion)
+    , CollectCap(this->Inscribe || (this->Measure && result.LargestProtrusion < result.Radius))
     , Radius(result.Radius)
     , Result(result)
     , Work(ThreadScratch())
@@ -1485,7 +1487,7 @@ public:
         }
       }
     }
-    if (this->Inscribe)
+    if (this->CollectCap)
     {
       // Below the final cap's plane: only cap surface there.
       for (size_t i = 0; i < this->Work.LowNodes.size(); ++i)
@@ -1497,9 +1499,11 @@ public:
       }
     }
     this->Result.Radius = this->Radius;
-    if (this->Inscribe && this->Allowed < this->Radius)
+    const bool shrink = this->Inscribe && this->Allowed < this->Radius;
+    const bool measure = this->Measure && this->Result.LargestProtrusion < this->Radius;
+    if (shrink || measure)
     {
-      this->InscribeInCap();
+      this->InscribeInCap(shrink, measure);
     }
   }
 
@@ -1586,7 +1590,7 @@ private:
       return true;
     }
     const FloatNodeTests::Sides side = this->Fast->Side(leaf.Lo, leaf.Hi);
-    if (side == FloatNodeTests::OUTSIDE_CONE && this->Inscribe)
+    if (side == FloatNodeTests::OUTSIDE_CONE && this->CollectCap)
     {
       this->Work.CapSlots.push_back(slot); // it may cross the final ball in the cap
     }
@@ -1746,7 +1750,7 @@ private:
   {
     FloatNodeTests::Lanes lanes;
     this->Fast->TestLanes(this->Tree.WideNodes[index], lanes);
-    if ((lanes.Cap & within) && this->Inscribe)
+    if ((lanes.Cap & within) && this->CollectCap)
     {
       for (int i = 0; i < 4; ++i)
       {
@@ -1848,15 +1852,21 @@ private:
   // The surface of the cap that the angle rule ignored: only what the traversal dropped
   // for the cone (CapNodes, CapSlots) or set aside as reaching into the ball in the cap
   // only (Deferred) can lie inside the final ball, which is inside every earlier one.
-  // Its closest point within Radius - Allowed of the centre, if any, is where the
-  // inscribed ball about the same centre touches.
-  void InscribeInCap()
+  // With `shrink`, its closest point within Radius - Allowed of the centre, if any, is
+  // where the inscribed ball about the same centre touches. With `measure`, the search
+  // reaches to Radius - LargestProtrusion, and a closest point found there (and not
+  // shrunk to) is this ball's protrusion. The triangles are tried in the same order
+  // whatever the reach (a farther reach only culls less), so the first of the closest
+  // ones, the point reported, is the same with or without measuring.
+  void InscribeInCap(bool shrink, bool measure)
   {
     // The cap: (q - c).(p - c) >= r^2 cos(theta), as w.q <= k for the clipping.
     double w[3];
     G::Sub(this->Centre, this->P, w);
     const double k = G::Dot(w, this->Centre) - this->Radius * this->Radius * this->CosMinAngle;
-    const double reach = this->Radius - this->Allowed;
+    const double shrinkReach = shrink ? this->Radius - this->Allowed : 0.0;
+    const double reach =
+      measure ? std::max(shrinkReach, this->Radius - this->Result.LargestProtrusion) : shrinkReach;
     double best2 = reach * reach, best[3] = { 0, 0, 0 };
     double clear2 = this->ClearOf(reach); // follows best2
     std::int32_t bestSlot = -1;
@@ -1951,13 +1961,17 @@ private:
         }
       }
     }
-    if (bestSlot >= 0)
+    if (bestSlot >= 0 && shrink && best2 < shrinkReach * shrinkReach)
     {
-      this->Result.Shrunk = true;
+      this->Result.Shrunk = true; // and then it only touches: no protrusion
       this->Result.InscribedRadius = std::sqrt(best2);
       std::copy(best, best + 3, this->Result.InscribedContact);
       this->Result.InscribedTriangle = this->Tree.LeafTriangles[bestSlot].Triangle;
       this->Result.Blockers.Deepest = this->Result.InscribedTriangle;
+    }
+    else if (bestSlot >= 0)
+    {
+      this->Result.LargestProtrusion = std::max(this->Result.LargestProtrusion, this->Radius - std::sqrt(best2));
     }
   }
 
@@ -1969,7 +1983,9 @@ private:
   const bool Capped;
   const double Lift, ConeSin;
   const double Allowed;
-  const bool Inscribe;
+  const bool Inscribe;   // a ball the cap enters deeper than Allowed is shrunk
+  const bool Measure;    // the ball's protrusion raises Result.LargestProtrusion
+  const bool CollectCap; // the cap's surface is set aside for InscribeInCap
   double Radius;
   double Clear2; // ClearOf(Radius - Slack)
   double Centre[3], PRel[3], CentreRel[3];

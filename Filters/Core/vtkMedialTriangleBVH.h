@@ -94,6 +94,14 @@ public:
     double InscribedRadius = 0.0;
     double InscribedContact[3] = { 0, 0, 0 };
     vtkIdType InscribedTriangle = -1;
+    // With MeasureProtrusion (and cosMinAngle < 1): in, LargestProtrusion is the largest
+    // protrusion measured so far (a running maximum over earlier balls, 0 at first);
+    // out, it is raised to this ball's protrusion r - d(c) (the returned ball's radius
+    // minus the distance from its centre to the surface) where that is larger. Balls
+    // that protrude no more are not measured, so the running maximum ends exact
+    // whatever the order of the balls. The ball itself is the same with or without.
+    bool MeasureProtrusion = false;
+    double LargestProtrusion = 0.0;
   };
 
   /// Builds the tree. Returns false when the mesh is empty or too large, or when
@@ -123,6 +131,12 @@ public:
    * first culls the rest of the search. Like the other hints it changes the speed,
    * not the inscribed radius; of cap points at exactly the same distance (two
    * triangles that share the deepest vertex or edge) it decides which is reported.
+   * With result.MeasureProtrusion the same search reaches up to the running maximum
+   * (result.LargestProtrusion) instead of `allowed` below the sphere, and the deepest
+   * cap point it finds gives the ball's protrusion: away from the cap no surface
+   * enters the ball by more than the slack, and a ball shrunk to be inscribed only
+   * touches. The search visits the same triangles in the same order, only further,
+   * so the ball and its inscribed contact do not change.
    */
   void MaximalTangentBall(const double p[3], const double n[3], vtkIdType ownTriangle,
     double cosMinAngle, double slack, double allowed, TangentBall& result) const;
