@@ -138,6 +138,7 @@ int vtkMedialAxisSampler::RequestData(
   this->SeedSamples = 0;
   this->CoverageReached = false;
   this->MaxCoverageGap = -1.0;
+  this->MaxProtrusion = -1.0;
   // Pieces (vtkMedialPieces.h): RANDOM splits the samples; the iterative strategies
   // and a coverage stop are sequential, so piece 0 runs them whole and the other
   // pieces skip even the preparation.
@@ -338,6 +339,10 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(vtkMedialTriangleMesh& mesh
     output->GetFieldData()->GetArray(vtkMedialArrayNames::RequestedSamples)->SetTuple1(0, static_cast<double>(count));
     this->WriteCoverage(output);
   }
+  if (self->MeasureProtrusion)
+  {
+    AddField(output, vtkMedialArrayNames::MaxProtrusion, self->MaxProtrusion); // relative to the diagonal
+  }
   this->WarnDiscarded(mesh, used);
   return 1;
 }
@@ -484,13 +489,24 @@ vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangl
   const vtkIdType count = static_cast<vtkIdType>(results.size());
   // A hint chain: samples first .. last - 1 in leaf order, each hinted with the previous one.
   const vtkIdType chain = HintChainLength(self);
+  // With MeasureProtrusion, each chain's running maximum of its balls' protrusions
+  // (chains start at multiples of the chain length); the largest of them at the end.
+  std::vector<double> chainProtrusion(self->MeasureProtrusion ? static_cast<size_t>((count + chain - 1) / chain) : 0, 0.0);
   auto solveChain = [&](vtkIdType first, vtkIdType last) {
     vtkMedialTriangleBVH::BlockerChain blockers; // the previous sample's
+    double* largest = chainProtrusion.empty() ? nullptr : &chainProtrusion[static_cast<size_t>(first / chain)];
     for (vtkIdType k = first; k < last; ++k)
     {
       const vtkIdType i = order[k];
       const vtkIdType hint = k > first ? results[order[k - 1]].ContactTriangle : -1;
-      vtkMedialSolveBall(query, mesh, param, triangles[i], &points[3 * i], results[i], hint, &blockers);
+      vtkMedialSolveBall(query, mesh, param, triangles[i], &points[3 * i], results[i], hint, &blockers, largest);
+    }
+  };
+  auto largestProtrusion = [&]() {
+    if (!chainProtrusion.empty())
+    {
+      const double largest = *std::max_element(chainProtrusion.begin(), chainProtrusion.end());
+      self->MaxProtrusion = largest / mesh.Diagonal; // the chains not solved are 0
     }
   };
   if (!coverage)
@@ -528,6 +544,7 @@ vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangl
         }
       }
     }
+    largestProtrusion();
     return count;
   }
   // With a coverage stop: block by block, the coverage checked after each (blocks are
@@ -556,9 +573,11 @@ vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangl
     self->CoverageReached = gap <= coverageTolerance;
     if (self->CoverageReached)
     {
+      largestProtrusion();
       return end;
     }
   }
+  largestProtrusion();
   return count;
 }
 
@@ -816,6 +835,7 @@ void vtkMedialAxisSampler::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SamplingStrategy: " << GetSamplingStrategyName(this->SamplingStrategy) << "\n";
   os << indent << "CoverageTolerance: " << this->CoverageTolerance << "\n";
   os << indent << "SeedFraction: " << this->SeedFraction << "\n";
+  os << indent << "MeasureProtrusion: " << this->MeasureProtrusion << "\n";
   os << indent << "DiscardedSamples: " << this->DiscardedSamples << "\n";
   os << indent << "CappedSamples: " << this->CappedSamples << "\n";
   os << indent << "MeanIterations: " << this->MeanIterations << "\n";
@@ -825,4 +845,5 @@ void vtkMedialAxisSampler::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SeedSamples: " << this->SeedSamples << "\n";
   os << indent << "CoverageReached: " << this->CoverageReached << "\n";
   os << indent << "MaxCoverageGap: " << this->MaxCoverageGap << "\n";
+  os << indent << "MaxProtrusion: " << this->MaxProtrusion << "\n";
 }
