@@ -1036,11 +1036,25 @@ bool vtkMedialTriangleBVH::BuildNodes(const vtkMedialTriangleMesh& mesh, const s
   return true;
 }
 
-// The triangles' vertices and planes in leaf order, gathered from the mesh.
+// The triangles' vertices and planes in leaf order, gathered from the mesh; the
+// vertices as floats when every coordinate is one.
 void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh)
 {
   const vtkIdType nt = mesh.GetNumberOfTriangles();
-  this->Vertices.resize(9 * static_cast<size_t>(nt)); // over the build items, read by now
+  const vtkIdType coordinates = 3 * mesh.GetNumberOfPoints();
+  bool floats = true;
+#pragma omp parallel for schedule(static) reduction(&& : floats)
+  for (vtkIdType i = 0; i < coordinates; ++i)
+  {
+    floats = floats && static_cast<double>(static_cast<float>(mesh.Points[i])) == mesh.Points[i];
+  }
+  this->FloatCorners = floats;
+  // Over the build items, read by now (9 floats take the first 36 bytes of each item's 80).
+  float* floatCorners = reinterpret_cast<float*>(this->Vertices.data());
+  if (!floats)
+  {
+    this->Vertices.resize(9 * static_cast<size_t>(nt));
+  }
   // Gathers from all over the mesh: each slot's triangle is fetched ahead (its corners and
   // normal a little less far ahead, once its vertex ids are in).
   constexpr vtkIdType Ahead = 16;
@@ -1065,14 +1079,26 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh)
     const double* normal = mesh.GetNormal(leaf.Triangle);
     std::copy_n(normal, 3, leaf.Plane);
     leaf.Plane[3] = G::Dot(normal, mesh.GetPoint(v[0]));
-    double* corners = &this->Vertices[9 * i];
+    double corners[9];
     for (int j = 0; j < 3; ++j)
     {
       std::copy_n(mesh.GetPoint(v[j]), 3, corners + 3 * j);
     }
+    if (floats)
+    {
+      std::copy_n(corners, 9, floatCorners + 9 * i); // exact: each one is a float
+    }
+    else
+    {
+      std::copy_n(corners, 9, &this->Vertices[9 * i]);
+    }
     leaf.EdgeThird = FloatAbove(static_cast<float>(G::LongestEdge2(corners, corners + 3, corners + 6) / 3.0));
   }
-  vtkMedialReleaseSpareCapacity(this->Vertices); // the build items' last tenth
+  if (floats)
+  {
+    this->Vertices.resize((9 * static_cast<size_t>(nt) + 1) / 2); // 9 floats a triangle
+  }
+  vtkMedialReleaseSpareCapacity(this->Vertices); // the build items' tail
 }
 
 int vtkMedialTriangleBVH::WideLanes(std::int32_t binary, bool root, std::int32_t lanes[4]) const
@@ -1364,14 +1390,18 @@ void vtkMedialTriangleBVH::MeasureSlab(Node& node, const vtkMedialTriangleMesh& 
     axis[k] = node.Axis[k];
   }
   double slabLo = HUGE_VAL, slabHi = -HUGE_VAL;
-  for (const double* v = &this->Vertices[9 * static_cast<size_t>(node.Begin)];
-       v < &this->Vertices[0] + 9 * static_cast<size_t>(node.End); v += 3)
+  for (std::int32_t slot = node.Begin; slot < node.End; ++slot)
   {
-    double x[3];
-    G::Sub(v, this->Origin, x);
-    const double m = G::Dot(axis, x);
-    slabLo = std::min(slabLo, m);
-    slabHi = std::max(slabHi, m);
+    double scratch[9];
+    const double* corners = this->Corners(slot, scratch);
+    for (const double* v = corners; v < corners + 9; v += 3)
+    {
+      double x[3];
+      G::Sub(v, this->Origin, x);
+      const double m = G::Dot(axis, x);
+      slabLo = std::min(slabLo, m);
+      slabHi = std::max(slabHi, m);
+    }
   }
   node.SlabLo = Down(slabLo, this->RoundingPad);
   node.SlabHi = Up(slabHi, this->RoundingPad);
@@ -1659,7 +1689,8 @@ private:
   // with the edge term stored rounded up: never above it, so a skip it allows is sound.
   double Distance2Below(std::int32_t slot) const
   {
-    const double* a = &this->Tree.Vertices[9 * slot];
+    double scratch[9];
+    const double* a = this->Tree.Corners(slot, scratch);
     return G::NearestVertexDistance2(this->Centre, a, a + 3, a + 6) - this->Tree.LeafTriangles[slot].EdgeThird;
   }
 
@@ -1703,7 +1734,8 @@ private:
   // ShrinkOn past the quick tests.
   bool ShrinkWhileBlocked(std::int32_t slot)
   {
-    const double* a = &this->Tree.Vertices[9 * slot];
+    double scratch[9];
+    const double* a = this->Tree.Corners(slot, scratch);
     const double* b = a + 3;
     const double* c = a + 6;
     if (this->Capped && this->BelowCapPlane(a, b, c))
@@ -1939,9 +1971,10 @@ private:
       {
         return false;
       }
-      const double* a = &this->Tree.Vertices[9 * slot];
+      double scratch[9];
+      const double* a = this->Tree.Corners(slot, scratch);
       double q[3];
-      if (this->Distance2Below(slot) >= clear2 ||
+      if (G::NearestVertexDistance2(this->Centre, a, a + 3, a + 6) - leaf.EdgeThird >= clear2 ||
         G::ClosestPointOnTriangle(this->Centre, a, a + 3, a + 6, q) >= best2)
       {
         return false; // the whole triangle is no closer than its part in the cap
@@ -2205,7 +2238,8 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
         continue;
       }
       // Then the whole triangle: cheaper, and never farther than its admissible part.
-      const double* a = &this->Vertices[9 * slot];
+      double scratch[9];
+      const double* a = this->Corners(slot, scratch);
       double q[3];
       double d2 = G::ClosestPointOnTriangle(x, a, a + 3, a + 6, q);
       if (capped && d2 < reach2)
@@ -2541,7 +2575,8 @@ bool vtkMedialTriangleBVH::IntersectRay(const double origin[3], const double dir
   auto hitLeaf = [&](std::int32_t start, std::int32_t end) {
     for (std::int32_t slot = start; slot < end; ++slot)
     {
-      const double* v = &this->Vertices[9 * static_cast<size_t>(slot)];
+      double scratch[9];
+      const double* v = this->Corners(slot, scratch);
       double hit;
       const std::int32_t id = this->LeafTriangles[slot].Triangle;
       if (id != ignoreTriangle && ray.Hit(v, v + 3, v + 6, tMin, hit) && hit > tMin &&

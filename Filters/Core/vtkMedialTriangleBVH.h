@@ -33,7 +33,11 @@
  * collapse opens have none (a quarter of the nodes on the 1.55 M horse, the inner
  * ones whose slabs cost the most to measure; only the binary walk misses them).
  *
- * Every decision is made in double precision on the mesh's own coordinates.
+ * Every decision is made in double precision on the mesh's own coordinates. The
+ * leaf-order copy of the corners is kept in single precision when every coordinate of
+ * the mesh is a float (as read from PLY, STL or OBJ files): the same values, read back
+ * into doubles, in half the memory (36 instead of 72 bytes a triangle: 56 MB less on
+ * the 1.55M-triangle horse) and half the cache lines per leaf.
  * Node bounds are stored in single precision relative to the bounding-box
  * centre and rounded outward, so they only ever cull what cannot block. Queries are const and keep their
  * scratch space per thread, so any number of threads may query after Build().
@@ -187,10 +191,11 @@ public:
   const double* GetPlane(vtkIdType t) const { return this->LeafTriangles[this->LeafRank[t]].Plane; }
 
   /// Mesh triangle t's three vertices, 9 doubles in the mesh's vertex order: the tree's
-  /// leaf-order copy, the same bits as the mesh's points.
-  const double* GetTriangleVertices(vtkIdType t) const
+  /// leaf-order copy, the same bits as the mesh's points. The pointer is into the tree,
+  /// or into `scratch` when the tree keeps them as floats.
+  const double* GetTriangleVertices(vtkIdType t, double scratch[9]) const
   {
-    return &this->Vertices[9 * static_cast<size_t>(this->LeafRank[t])];
+    return this->Corners(this->LeafRank[t], scratch);
   }
 
   /// Position of each mesh triangle in leaf order: nearby triangles get nearby ranks.
@@ -240,6 +245,22 @@ public:
 
 private:
   class TangentSearch; // the passes of MaximalTangentBall
+
+  // The corners of the triangle at leaf-order `slot`, 9 doubles: a pointer into the
+  // double copy, or the float copy read into `scratch`.
+  const double* Corners(std::int32_t slot, double scratch[9]) const
+  {
+    if (!this->FloatCorners)
+    {
+      return &this->Vertices[9 * static_cast<size_t>(slot)];
+    }
+    const float* f = reinterpret_cast<const float*>(this->Vertices.data()) + 9 * static_cast<size_t>(slot);
+    for (int k = 0; k < 9; ++k)
+    {
+      scratch[k] = static_cast<double>(f[k]);
+    }
+    return scratch;
+  }
 
   struct Subtree
   {
@@ -303,7 +324,8 @@ private:
   vtkMedialBuffer<WideNode> WideNodes;
   double Origin[3] = { 0, 0, 0 };          // the bounding-box centre: node bounds are relative to it
   double RoundingPad = 0.0;                // absolute padding of the float bounds
-  vtkMedialBuffer<double> Vertices;        // 9 per triangle, leaf order
+  vtkMedialBuffer<double> Vertices;        // 9 per triangle, leaf order (as floats with FloatCorners)
+  bool FloatCorners = false;               // every mesh coordinate is a float: Vertices holds floats
   vtkMedialBuffer<LeafTriangle> LeafTriangles; // leaf order
   vtkMedialBuffer<std::int32_t> LeafRank; // position of each mesh triangle in leaf order
   vtkMedialBuffer<std::int32_t> LeafLane;  // the lane of the leaf holding each leaf-order slot
