@@ -294,64 +294,6 @@ public:
     return m - this->Radius >= w.SlabHi[i] || m + this->Radius <= w.SlabLo[i];
   }
 
-  /// The box (lo, hi; four floats readable at each) comes within sqrt(reach2) of p, by a
-  /// lower bound of its distance (its gap narrowed by the margin, as Side's).
-  bool BoxNearP(const float* lo, const float* hi, float reach2) const
-  {
-    return Distance2(lo, hi, this->P, this->Margin) * (1.0f - 1e-5f) < reach2;
-  }
-
-  /// The same for lane i of a wide node, read in place.
-  bool LaneNearP(const WideNode& w, int i, float reach2) const
-  {
-    float d2[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      const float d = std::max(std::max(w.Lo[k][i] - this->P[k], this->P[k] - w.Hi[k][i]) - this->Margin, 0.0f);
-      d2[k] = d * d;
-    }
-    return ((d2[0] + d2[2]) + d2[1]) * (1.0f - 1e-5f) < reach2;
-  }
-
-  /// The lanes (bit i: lane i) that may reach into the ball and come within
-  /// sqrt(reach2) of p: MissesBall and BoxNearP of the four at once.
-  int LanesNearP(const WideNode& w, float reach2) const
-  {
-#if defined(__SSE2__)
-    const __m128 zero = _mm_setzero_ps();
-    const __m128 margin = this->LaneMargin;
-    __m128 sq[3], sp[3], m = zero;
-    for (int k = 0; k < 3; ++k)
-    {
-      const __m128 lo = _mm_load_ps(w.Lo[k]);
-      const __m128 hi = _mm_load_ps(w.Hi[k]);
-      const __m128 c = this->LaneC[k];
-      const __m128 p = this->LaneP[k];
-      const __m128 gc = _mm_max_ps(_mm_max_ps(_mm_sub_ps(lo, c), _mm_sub_ps(c, hi)), zero);
-      sq[k] = _mm_mul_ps(gc, gc);
-      const __m128 gp =
-        _mm_max_ps(_mm_sub_ps(_mm_max_ps(_mm_sub_ps(lo, p), _mm_sub_ps(p, hi)), margin), zero);
-      sp[k] = _mm_mul_ps(gp, gp);
-      m = _mm_add_ps(m, _mm_mul_ps(_mm_load_ps(w.Axis[k]), c));
-    }
-    // Summed as Distance2 does: (x + z) + y.
-    const __m128 d2 = _mm_add_ps(_mm_add_ps(sq[0], sq[2]), sq[1]);
-    const __m128 dp2 = _mm_mul_ps(_mm_add_ps(_mm_add_ps(sp[0], sp[2]), sp[1]), _mm_set1_ps(1.0f - 1e-5f));
-    const __m128 radius = this->LaneRadius;
-    const __m128 miss = _mm_or_ps(_mm_or_ps(_mm_cmpge_ps(d2, this->LaneReach2), _mm_cmpge_ps(dp2, _mm_set1_ps(reach2))),
-      _mm_or_ps(_mm_cmpge_ps(_mm_sub_ps(m, radius), _mm_load_ps(w.SlabHi)),
-        _mm_cmple_ps(_mm_add_ps(m, radius), _mm_load_ps(w.SlabLo))));
-    return ~_mm_movemask_ps(miss) & 0xF;
-#else
-    int near = 0;
-    for (int i = 0; i < 4; ++i)
-    {
-      near |= !this->LaneMissesBall(w, i) && this->LaneNearP(w, i, reach2) ? 1 << i : 0;
-    }
-    return near;
-#endif
-  }
-
   /// Lane i of a wide node as a binary node (bounds only).
   static Node LaneNode(const WideNode& w, int i)
   {
@@ -1954,10 +1896,6 @@ private:
     double w[3];
     G::Sub(this->Centre, this->P, w);
     const double k = G::Dot(w, this->Centre) - this->Radius * this->Radius * this->CosMinAngle;
-    // Inside the ball the cap is a lens on p: |q - p|^2 = |q - c|^2 + r^2 - 2 (q - c).(p - c)
-    // <= 2 r^2 (1 - cos theta). Boxes farther from p hold none of it.
-    const float nearP2 =
-      FloatAbove(static_cast<float>(2.0 * this->Radius * this->Radius * (1.0 - this->CosMinAngle) * (1.0 + 1e-6)));
     const double shrinkReach = shrink ? this->Radius - this->Allowed : 0.0;
     const double reach =
       measure ? std::max(shrinkReach, this->Radius - this->Result.LargestProtrusion) : shrinkReach;
@@ -1967,7 +1905,7 @@ private:
     auto test = [&](std::int32_t slot) -> bool {
       const LeafTriangle& leaf = this->Tree.LeafTriangles[slot];
       const double off = G::Dot(leaf.Plane, this->Centre) - leaf.Plane[3];
-      if (leaf.Triangle == this->OwnTriangle || off * off >= best2 || !this->Fast->BoxNearP(leaf.Lo, leaf.Hi, nearP2))
+      if (leaf.Triangle == this->OwnTriangle || off * off >= best2)
       {
         return false;
       }
@@ -2025,7 +1963,7 @@ private:
         if (steps != shrinks)
         {
           // In float, as the children's tests (Fast follows best2): a looser test, never a wrong drop.
-          if (this->Fast->LaneMissesBall(holder, lane) || (steps < 0 && !this->Fast->LaneNearP(holder, lane, nearP2)))
+          if (this->Fast->LaneMissesBall(holder, lane))
           {
             continue;
           }
@@ -2045,10 +1983,11 @@ private:
           continue;
         }
         const WideNode& wide = this->Tree.WideNodes[child];
-        const int near = this->Fast->LanesNearP(wide, nearP2);
+        FloatNodeTests::Lanes lanes;
+        this->Fast->TestLanes(wide, lanes);
         for (int i = 3; i >= 0; --i)
         {
-          if ((near & (1 << i)) && wide.Lo[0][i] <= wide.Hi[0][i]) // not empty
+          if (!(lanes.Miss & (1 << i)) && wide.Lo[0][i] <= wide.Hi[0][i]) // not empty
           {
             stack.push_back({ 4 * child + i, shrinks });
           }
