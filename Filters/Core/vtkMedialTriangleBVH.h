@@ -52,6 +52,10 @@
 #include <functional>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h> // for the corners' conversion
+#endif
+
 class vtkMedialTriangleMesh;
 
 class vtkMedialTriangleBVH
@@ -255,10 +259,21 @@ private:
       return &this->Vertices[9 * static_cast<size_t>(slot)];
     }
     const float* f = reinterpret_cast<const float*>(this->Vertices.data()) + 9 * static_cast<size_t>(slot);
+#if defined(__SSE2__)
+    // Two at a time (exact, as one by one, which took 7% of the sampling's
+    // instructions on the 1.55M-triangle horse).
+    const __m128 first = _mm_loadu_ps(f), second = _mm_loadu_ps(f + 4);
+    _mm_storeu_pd(scratch, _mm_cvtps_pd(first));
+    _mm_storeu_pd(scratch + 2, _mm_cvtps_pd(_mm_movehl_ps(first, first)));
+    _mm_storeu_pd(scratch + 4, _mm_cvtps_pd(second));
+    _mm_storeu_pd(scratch + 6, _mm_cvtps_pd(_mm_movehl_ps(second, second)));
+    scratch[8] = static_cast<double>(f[8]);
+#else
     for (int k = 0; k < 9; ++k)
     {
       scratch[k] = static_cast<double>(f[k]);
     }
+#endif
     return scratch;
   }
 
