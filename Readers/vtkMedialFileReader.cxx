@@ -121,6 +121,9 @@ int vtkMedialFileReader::RequestData(
                                                   << GetExtensions(this->Content) << ")");
     return 0;
   }
+  // The stage starts now for observers that time it (the direct read reports no
+  // progress of its own before it ends).
+  this->UpdateProgress(0.0);
   this->ReadDirectly = format->ReadDirect && format->ReadDirect(this->FileName, output);
   if (this->ReadDirectly)
   {
