@@ -17,8 +17,9 @@
  *    Reconstruction, the picture gets a second view on the right of the first: the
  *    reconstruction, shaded in copper, seen through the
  *    same camera.
- *  - 2D (a Graph, vtkMedialJunctionFilter's output): the Surface's loops as black
- *    outlines, the graph's arcs by `ArcType` (blue linear, orange parabolic), the
+ *  - 2D (a Graph, vtkMedialJunctionFilter's output): the Surface's outline in black
+ *    (the edges of one polygon cell only: a triangulated region shows its boundary,
+ *    not its triangles), the graph's arcs by `ArcType` (blue linear, orange parabolic), the
  *    maximal disks of the six largest junctions (grey circles), junctions (red) and
  *    end points (green).
  *
@@ -195,6 +196,11 @@ public:
 
   /// Renders and writes the picture as a PNG file. 1 on success, 0 on failure (error).
   int WritePNG(const char* fileName);
+
+  /// The camera's frame the scene would use for what is set (see the class comment):
+  /// `right` across the picture, `up`, and `toward` the camera; unit vectors. The web
+  /// page (vtkMedialHTMLWriter) opens with this view.
+  void GetViewAxes(double right[3], double up[3], double toward[3]) const { this->ViewAxes(right, up, toward); }
 
   /// The window of the last Render(), or nullptr.
   vtkRenderWindow* GetRenderWindow();

@@ -1,5 +1,6 @@
 #!/bin/sh
-# The README's pruning pictures, rendered offscreen by the command-line program:
+# The pruning pictures of docs/how-it-works/pruning.md, rendered offscreen by the
+# command-line program into docs/images/:
 #  - 2D: the medial graph of the trefoil (a rounded 3-armed star, 608 vertices) before and
 #    after --prune (tubularity): 477 end points become 3;
 #  - 3D: the medial mesh of horse.ply with Gaussian noise (sigma 0.1% of the diagonal per
@@ -13,7 +14,7 @@ set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
 meshes=${2:-$here/../shared/data/meshes}
-out=${3:-$here/docs}
+out=${3:-$here/docs/images}
 cli="$build/bin/medial-axis"
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT

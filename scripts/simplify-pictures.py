@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""The README's simplification pictures, rendered offscreen with vtkMedialScene:
+"""The simplification pictures of docs/how-it-works/simplification.md, rendered offscreen
+with vtkMedialScene:
 fandisk simplified to 500 balls (its medial mesh in the translucent original, and the
 envelope beside it), and the horse's medial mesh before and after simplification to 100
 balls (each with its envelope).
@@ -8,7 +9,7 @@ balls (each with its envelope).
       scripts/simplify-pictures.py [METHOD] [MESH_DIR] [OUT_DIR]
 
 METHOD is quadric (default) or coverage; MESH_DIR defaults to ../shared/data/meshes,
-OUT_DIR to docs.
+OUT_DIR to docs/images.
 """
 import os
 import sys
@@ -18,7 +19,7 @@ import medialaxis
 method = sys.argv[1] if len(sys.argv) > 1 else "quadric"
 mesh_dir = sys.argv[2] if len(sys.argv) > 2 else os.path.join(os.path.dirname(__file__), "..", "..", "shared",
                                                                "data", "meshes")
-out_dir = sys.argv[3] if len(sys.argv) > 3 else os.path.join(os.path.dirname(__file__), "..", "docs")
+out_dir = sys.argv[3] if len(sys.argv) > 3 else os.path.join(os.path.dirname(__file__), "..", "docs", "images")
 methods = {"quadric": medialaxis.vtkMedialSimplifyFilter.QUADRIC,
            "coverage": medialaxis.vtkMedialSimplifyFilter.COVERAGE}
 

@@ -4,6 +4,7 @@
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialFileReader.h"
 #include "vtkMedialFileWriter.h"
+#include "vtkMedialHTMLWriter.h"
 #include "vtkMedialScene.h"
 #include "vtkMedialSimplifyFilter.h"
 
@@ -111,7 +112,13 @@ const char* Usage =
   "                    than T (in the input's units), e.g. a printer's minimum wall; a line\n"
   "                    on stdout, or members of the --stats line\n"
   "  --render OUT.png  a picture, offscreen (needs X: run under xvfb-run)\n"
-  "  --view V          auto (default: the longest extent across, the second up), +x -x +y\n"
+  "  --html OUT.html   one self-contained web page of everything this run made (the\n"
+  "                    surface, balls, medial mesh or 2D graph, thickness, reconstruction),\n"
+  "                    to turn around, filter and pick in any current browser, offline\n"
+  "                    (vtk.js, bundled at build time; more than 100k balls are thinned);\n"
+  "                    --stats adds html_bytes, html_balls_shown\n"
+  "  --view V          --render's and --html's view: auto (default: the longest extent\n"
+  "                    across, the second up), +x -x +y\n"
   "                    -y +z -z (look along that axis), iso\n"
   "  --size WxH        picture size in pixels (default 900x640, 900x700 in 2D, twice as wide\n"
   "                    with --reconstruct)\n"
@@ -304,6 +311,7 @@ const std::vector<Flag>& Flags()
         o.ThicknessBelow = v;
       } },
     { "render", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Render = t; } },
+    { "html", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Html = t; } },
     { "view", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.View = ParseView(t); } },
     { "size", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { ParseSize(t, o.Size); } },
     { "zoom", nullptr, F::NUMBER, 0.01, 100, [](Options& o, auto&, double v) { o.Zoom = v; } },
@@ -374,6 +382,11 @@ Options Parse(int argc, char* argv[])
   o.Method = vtkMedialAxisSampler::ONE_PASS;
   o.Strategy = vtkMedialAxisSampler::RANDOM;
   o.View = vtkMedialScene::VIEW_AUTO;
+  o.CommandLine = "medial-axis";
+  for (int i = 1; i < argc; ++i)
+  {
+    o.CommandLine += std::string(" ") + argv[i];
+  }
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -444,10 +457,10 @@ void CheckWriter(const std::string& path, const std::string& flag, int content)
 void CheckOutputs(const Options& o)
 {
   if (o.Output.empty() && o.Render.empty() && o.Reconstruct.empty() && o.Junctions.empty() && o.Thickness.empty() &&
-    o.MedialMesh.empty() && o.ThicknessBelow <= 0.0 && !o.Stats)
+    o.MedialMesh.empty() && o.Html.empty() && o.ThicknessBelow <= 0.0 && !o.Stats)
   {
     Fail("nothing to write: give -o OUT, --reconstruct OUT, --junctions OUT, --medial-mesh OUT, --thickness OUT, "
-         "--thickness-below T, --render OUT.png or --stats (see --help)");
+         "--thickness-below T, --render OUT.png, --html OUT.html or --stats (see --help)");
   }
   if (!o.Balls.empty())
   {
@@ -477,6 +490,19 @@ void CheckOutputs(const Options& o)
       Fail("--render writes a PNG picture and needs a .png name, got '" + o.Render + "'");
     }
     CheckWritable(o.Render, "--render");
+  }
+  if (!o.Html.empty())
+  {
+    const std::string ext = Extension(o.Html);
+    if (ext != ".html" && ext != ".htm")
+    {
+      Fail("--html writes a web page and needs a .html name, got '" + o.Html + "'");
+    }
+    if (!vtkMedialHTMLWriter::HasViewer())
+    {
+      Fail(std::string("--html: this build has no web viewer: ") + vtkMedialHTMLWriter::GetViewerStatus());
+    }
+    CheckWritable(o.Html, "--html");
   }
   if (!o.Output.empty())
   {

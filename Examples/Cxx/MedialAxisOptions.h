@@ -33,6 +33,8 @@ struct Options
   std::string Junctions;   // --junctions: the 2D medial graph
   std::string Thickness;   // --thickness: the surface with its wall thickness
   std::string MedialMesh;  // --medial-mesh: the 3D medial mesh
+  std::string Html;        // --html: the self-contained web page
+  std::string CommandLine; // the arguments, as the page shows them
   bool Denoise = false;          // --denoise, --denoise-*: the surface smoothed first
   int DenoiseIterations = 0;     // --denoise-iterations (0: vtkMedialDenoiseFilter's default)
   double DenoisePassBand = -1.0; // --denoise-passband (negative: the filter's default)

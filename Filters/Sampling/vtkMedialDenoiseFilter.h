@@ -8,7 +8,7 @@
  * Why: noise tilts the facets, and the sampler's ray starts inward along each facet's
  * normal, so a bumpy surface gives small balls tangent to the bumps where the clean
  * shape has large ones. No pruning brings back balls that were never sampled (see the
- * README's noisy-horse table). Low-passing the surface first gives the large balls
+ * noisy-horse table in docs/how-it-works/pruning.md). Low-passing the surface first gives the large balls
  * back; the scale axis (vtkMedialScaleAxisFilter) then removes the noise left.
  *
  * Algorithm: points with exactly the same coordinates are welded first (OBJ and STL

@@ -54,9 +54,9 @@
  *    SolidComponents are reported (a warning when they differ); a cavity counts with
  *    the body around it (a hollow sphere is one solid of characteristic 2). Measured
  *    equal on the four closed shared meshes and on generated solids of genus 0 to 3
- *    and a hollow sphere with the sampler's defaults (see the README). Open surfaces have no solid: the result
- *    is built the same way (inside tests by ray parity are then unreliable near the
- *    holes) and nothing is promised.
+ *    and a hollow sphere with the sampler's defaults (see docs/how-it-works/medial-mesh.md).
+ *    Open surfaces have no solid: the result is built the same way (inside tests by
+ *    ray parity are then unreliable near the holes) and nothing is promised.
  *
  * Pieces (vtkMedialPieces): first piece. The filter asks for the whole surface and
  * every ball, piece 0 builds the whole mesh, the other pieces stay empty.

@@ -22,8 +22,8 @@
  * others; once only such collapses are left, the one that moves the surface least goes
  * first. The quadric alone lets corners and thin tips be pulled in by many cheap
  * collapses: fandisk at K = 100 went from 2.88% of the diagonal to 2.35% (measured
- * with vtkMedialReconstructionError on the MEDIAL_MESH envelope; see the README's K
- * table).
+ * with vtkMedialReconstructionError on the MEDIAL_MESH envelope; see the K table in
+ * docs/how-it-works/simplification.md).
  *
  * COVERAGE, the idea of Coverage Axis (Dou et al. 2022) and Coverage Axis++ (Wang et al.
  * 2024), vtkMedialCoverageSelection: the candidates are the medial mesh's balls, the
