@@ -3,8 +3,8 @@
 # layer), the horse with its medial mesh, a 2D shape (a triangulated L) and 300,000 of the
 # horse's balls (the page keeps 100,000); each page's size in bytes and its load time in
 # headless Chromium (open-page.js: from navigation to the first frame drawn; the median of
-# three loads, each in a new browser); and docs/images/web-page.png (the horse's page, controls
-# included).
+# three loads, each in a new browser). The page's picture, docs/images/web-page.png, is
+# scripts/gallery.py's.
 #   sh scripts/web-page-figures.sh [BUILD] [OUT]   (defaults: build, /tmp/medialaxis-web)
 set -eu
 cd "$(dirname "$0")/.."
@@ -37,11 +37,9 @@ for page in jack horse l-shape horse-300k; do
     l-shape) what="triangulated L-shape -n 1000: outline, disks, 2D graph" ;;
     horse-300k) what="horse.ply -n 300000: balls, thinned to 100,000 on the page" ;;
   esac
-  shot=""
-  [ "$page" = horse ] && shot="--page-shot docs/images/web-page.png"
   # Three loads, each in a new browser: the median.
   for run in 1 2 3; do
-    node "$open_page" "$modules" /usr/bin/chromium "$out/$page.html" "$out/$page.png" --plain $shot > "$out/$page-$run.json"
+    node "$open_page" "$modules" /usr/bin/chromium "$out/$page.html" "$out/$page.png" --plain > "$out/$page-$run.json"
   done
   /usr/bin/python3 -c "
 import json, statistics, sys

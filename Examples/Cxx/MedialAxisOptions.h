@@ -6,6 +6,8 @@
 //  - Every output path is checked before any work: its extension must be one the
 //    output's writer table (vtkMedialFileWriter) has, and its folder writable.
 //  - A run that writes nothing (no output flag, no --stats) is refused before any work.
+//  - The hidden --help-table prints the flag table (name, short name, kind, range,
+//    default; tab-separated) for the check of docs/cli.md (scripts/check-cli-page.py).
 #ifndef MedialAxisOptions_h
 #define MedialAxisOptions_h
 

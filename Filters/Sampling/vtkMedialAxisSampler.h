@@ -102,22 +102,29 @@
 class VTKMEDIALAXISSAMPLING_EXPORT vtkMedialAxisSampler : public vtkPolyDataAlgorithm
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialAxisSampler* New();
   vtkTypeMacro(vtkMedialAxisSampler, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
+  /// How each maximal ball is found (Method; step 4 of the algorithm above).
   enum Methods
   {
-    BISECTION = 0,
-    SHRINKING_BALL = 1,
-    ONE_PASS = 2
+    BISECTION = 0,      ///< bisection on the radius with ContainsBall, to Tolerance
+    SHRINKING_BALL = 1, ///< Ma et al.'s shrinking ball, to the closest blocking point
+    ONE_PASS = 2        ///< the shrinking ball within one BVH traversal (the fastest)
   };
 
+  /// Where the samples go (SamplingStrategy).
   enum SamplingStrategies
   {
-    RANDOM = 0,
-    CLOSEST_NEIGHBOR = 1,
-    FACE_DISTANCE = 2
+    RANDOM = 0,           ///< uniform by area
+    CLOSEST_NEIGHBOR = 1, ///< Poisson-disk seeds linked to their closest neighbours
+    FACE_DISTANCE = 2     ///< Poisson-disk seeds, then the faces farthest from the balls
   };
 
   ///@{

@@ -39,9 +39,14 @@
 class VTKMEDIALAXISSAMPLING_EXPORT vtkMedialDenoiseFilter : public vtkPolyDataAlgorithm
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialDenoiseFilter* New();
   vtkTypeMacro(vtkMedialDenoiseFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
   ///@{
   /// Iterations of the windowed sinc filter, the degree of its polynomial (default 20).

@@ -101,16 +101,22 @@ class vtkPointSet;
 class VTKMEDIALAXISSTRUCTURE_EXPORT vtkMedialMeshFilter : public vtkPolyDataAlgorithm
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialMeshFilter* New();
   vtkTypeMacro(vtkMedialMeshFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
+  /// The codes of the cell-data array MedialCellType.
   enum CellTypes
   {
-    ISOLATED_BALL = 0,
-    CURVE_EDGE = 1,
-    SEAM_EDGE = 2,
-    SHEET_TRIANGLE = 3
+    ISOLATED_BALL = 0, ///< a vertex cell: a ball in no edge or triangle
+    CURVE_EDGE = 1,    ///< a line of a medial curve (in no triangle)
+    SEAM_EDGE = 2,     ///< a line where three or more sheets meet
+    SHEET_TRIANGLE = 3 ///< a triangle of a medial sheet
   };
 
   ///@{

@@ -69,9 +69,14 @@ class vtkMedialTriangleMesh;
 class VTKMEDIALAXISSTRUCTURE_EXPORT vtkMedialSimplifyFilter : public vtkPolyDataAlgorithm
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialSimplifyFilter* New();
   vtkTypeMacro(vtkMedialSimplifyFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
   ///@{
   /// The number of balls to keep (default 100).
@@ -79,10 +84,11 @@ public:
   vtkGetMacro(NumberOfBalls, vtkIdType);
   ///@}
 
+  /// The simplification methods (Method).
   enum SimplificationMethod
   {
-    QUADRIC = 0, // Q-MAT: edge collapses under the spherical quadric error
-    COVERAGE = 1 // Coverage Axis: the balls that cover the surface, joined by collapses
+    QUADRIC = 0, ///< Q-MAT: edge collapses under the spherical quadric error
+    COVERAGE = 1 ///< Coverage Axis: the balls that cover the surface, joined by collapses
   };
 
   ///@{

@@ -53,9 +53,14 @@ class vtkPolyData;
 class VTKMEDIALAXISRENDERINGWEB_EXPORT vtkMedialHTMLWriter : public vtkObject
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialHTMLWriter* New();
   vtkTypeMacro(vtkMedialHTMLWriter, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
   ///@{
   /// The input shape: a closed surface (3D, optionally with `Thickness`) or planar loops.
