@@ -55,7 +55,8 @@ bool vtkMedialSurfaceQuery::IntersectFrom(const double rayOrigin[3], const doubl
       return false;
     }
     const double* n = this->GetNormal(t);
-    const double* v0 = this->Tree.GetTriangleVertices(t);
+    double scratch[9];
+    const double* v0 = this->Tree.GetTriangleVertices(t, scratch);
     double d[3];
     G::Sub(v0, origin, d);
     const double denom = G::Dot(n, direction);
@@ -225,7 +226,8 @@ void vtkMedialSurfaceQuery::VisitNear(
   this->Tree.VisitWithin(centre, reach, nullptr, 1.0, [&](double, const double*, vtkIdType t) {
     if (!stop)
     {
-      const double* v = this->Tree.GetTriangleVertices(t);
+      double scratch[9];
+      const double* v = this->Tree.GetTriangleVertices(t, scratch);
       const double* u[3] = { v, v + 3, v + 6 };
       stop = visit(u);
     }
