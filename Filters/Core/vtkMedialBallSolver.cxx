@@ -3,6 +3,7 @@
 
 #include "vtkMedialGeometry.h"
 #include "vtkMedialSampleRecord.h"
+#include "vtkMedialSurfaceNormals.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
 
@@ -57,8 +58,24 @@ void vtkMedialSolveBall(const vtkMedialSurfaceQuery& query, const vtkMedialTrian
   vtkIdType hintTriangle, vtkMedialTriangleBVH::BlockerChain* blockers)
 {
   const double* outward = query.GetNormal(triangle);
-  const double n[3] = { -outward[0], -outward[1], -outward[2] };
-  vtkMedialSolveBallAlong(query, mesh, param, triangle, p, n, out, hintTriangle, blockers);
+  double n[3] = { -outward[0], -outward[1], -outward[2] };
+  vtkIdType own = triangle;
+  if (param.Normals && param.CosMinAngle < 1.0)
+  {
+    double smooth[3];
+    if (!param.Normals->At(triangle, query.GetTriangleVertices(triangle), outward, p, smooth))
+    {
+      // Not the facet's own normal: the facet is not tangent to the ball, and blocks
+      // where it enters it like any other face.
+      for (int k = 0; k < 3; ++k)
+      {
+        n[k] = -smooth[k];
+      }
+      own = -1;
+    }
+  }
+  vtkMedialSolveBallAlong(query, mesh, param, own, p, n, out, hintTriangle, blockers);
+  out.SourceCell = mesh.SourceCellIds[triangle];
 }
 
 void vtkMedialSolveBallAlong(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& mesh,

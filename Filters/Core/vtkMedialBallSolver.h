@@ -11,8 +11,11 @@
  * deeper than MaximumProtrusion, shrinks it about its centre to the distance to that
  * surface, so that it is inscribed (out.Shrunk); any strategy that chooses its own
  * surface points calls it (the Random strategy draws them with
- * vtkMedialDrawSurfacePoint, vtkMedialRandom.h). vtkMedialSolveBallAlong does the same
- * along any inward direction (a vertex normal). All are thread-safe after the mesh
+ * vtkMedialDrawSurfacePoint, vtkMedialRandom.h). With the smooth surface's normals
+ * (vtkMedialBallParameters::Normals, theta > 0), vtkMedialSolveBall follows the normal
+ * interpolated from the corners at p instead of the facet's, which a tessellation
+ * tilts: the ball is then centred on the smooth surface's medial axis. vtkMedialSolveBallAlong
+ * does the same along any inward direction (a vertex normal). All are thread-safe after the mesh
  * and the query are built. Internal header; not installed.
  */
 #ifndef vtkMedialBallSolver_h
@@ -21,6 +24,7 @@
 #include "vtkMedialTriangleBVH.h" // for BlockerChain
 #include "vtkType.h"
 
+class vtkMedialSurfaceNormals;
 class vtkMedialSurfaceQuery;
 class vtkMedialTriangleMesh;
 struct vtkMedialSampleRecord;
@@ -39,6 +43,9 @@ struct vtkMedialBallParameters
   double CosMinAngle;     // cos(theta); 1 for theta = 0
   double MaximumProtrusion; // absolute: a ball the cap's surface enters deeper is shrunk (HUGE_VAL: never)
   int MaximumIterations;  // shrinking-ball cap
+  // With theta > 0: the smooth surface's normals (vtkMedialSurfaceNormals); a sample's
+  // ball then follows the smooth normal at its point instead of its facet's. Null: facets'.
+  const vtkMedialSurfaceNormals* Normals = nullptr;
 };
 
 /// Parameters in absolute units from the filters' settings: tolerance and protrusion

@@ -15,6 +15,7 @@
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialBallSolver.h"
 #include "vtkMedialSampleRecord.h"
+#include "vtkMedialSurfaceNormals.h"
 
 #include <new>
 #include <vector>
@@ -110,6 +111,8 @@ private:
   void ReportAllocationFailure(vtkIdType count) const;
 
   vtkMedialAxisSampler* Self;
+  // The smooth surface's normals, built by PrepareSurface when theta > 0.
+  vtkMedialSurfaceNormals Normals;
 };
 
 #endif
