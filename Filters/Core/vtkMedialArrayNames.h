@@ -73,6 +73,7 @@ constexpr const char* Thickness = "Thickness";
 constexpr const char* MedialRadius = "MedialRadius";
 constexpr const char* MedialCentre = "MedialCentre";
 constexpr const char* RayThickness = "RayThickness";
+constexpr const char* TangentThickness = "TangentThickness";
 constexpr const char* ThinAreaFraction = "ThinAreaFraction";
 constexpr const char* ThinRegionCount = "ThinRegionCount";
 
