@@ -3,7 +3,7 @@
 // function, side by side.
 //
 //   medial-thickness-bench [--threads T] [--shared DIR] [--no-meshes] [--no-shapes]
-//                          [--no-sdf] [--only NAME,NAME]
+//                          [--no-sdf] [--only NAME,NAME] [--write DIR]
 //
 // For the generated shapes whose wall thickness is known in closed form (sphere R = 1
 // of 5k triangles: 2R; hollow sphere 1 / 0.6: its wall 0.4; box 1 x 0.62 x 0.37 turned
@@ -19,7 +19,8 @@
 // (which have no closed form), and the processor time of each (vtkMedialThickness
 // with its preparation, one run of the filter for its three arrays; the SDF with the
 // building of its surface mesh; both on the calling thread with --threads 1).
-// Prints Markdown tables. Not a test: it checks nothing.
+// --write DIR also writes each generated shape there as a .vtp (to run other builds or
+// tools on the same surfaces). Prints Markdown tables. Not a test: it checks nothing.
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialFileReader.h"
 #include "vtkMedialShapeSource.h"
@@ -33,6 +34,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
+#include "vtkXMLPolyDataWriter.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -42,6 +44,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -202,7 +205,7 @@ int main(int argc, char* argv[])
   std::string shared = MEDIALAXIS_SHARED_MESH_DIR;
   int threads = 1;
   bool meshes = true, shapes = true, sdf = true;
-  std::string only;
+  std::string only, write;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -213,6 +216,10 @@ int main(int argc, char* argv[])
     else if (a == "--shared" && i + 1 < argc)
     {
       shared = argv[++i];
+    }
+    else if (a == "--write" && i + 1 < argc)
+    {
+      write = argv[++i];
     }
     else if (a == "--only" && i + 1 < argc)
     {
@@ -225,7 +232,7 @@ int main(int argc, char* argv[])
     else
     {
       std::printf("usage: medial-thickness-bench [--threads T] [--shared DIR] [--no-meshes] [--no-shapes]\n"
-                  "                              [--no-sdf] [--only NAME,NAME]\n");
+                  "                              [--no-sdf] [--only NAME,NAME] [--write DIR]\n");
       return a == "--help" || a == "-h" ? 0 : 1;
     }
   }
@@ -237,6 +244,18 @@ int main(int argc, char* argv[])
     if (!only.empty() && ("," + only + ",").find("," + input.Name + ",") == std::string::npos)
     {
       continue;
+    }
+    if (!write.empty() && input.Truth > 0.0)
+    {
+      std::string file;
+      for (char c : input.Name)
+      {
+        file += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
+      }
+      vtkNew<vtkXMLPolyDataWriter> writer;
+      writer->SetFileName((write + "/" + file + ".vtp").c_str());
+      writer->SetInputData(input.Surface);
+      writer->Write();
     }
     const double scale = input.Truth > 0.0 ? input.Truth : input.Surface->GetLength();
     vtkNew<vtkMedialThickness> thickness;
