@@ -499,7 +499,7 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
 
 bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
   const vtkMedialSurfaceQuery& query, const vtkMedialBallParameters& param, const Walls& walls, vtkIdType cells,
-  std::vector<Measure>& measures)
+  const std::vector<Measure>& corners, std::vector<Measure>& measures)
 {
   // The smooth surface's normals, creased where the walls are.
   vtkMedialSurfaceNormals normals;
@@ -566,6 +566,25 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
     {
       m.Radius = start.Radius;
       std::copy(start.Centre, start.Centre + 3, m.Centre);
+    }
+    // A corner's ball that comes as near the centroid as to its own vertex (or within the
+    // tolerance) is admissible here too: where the cell's own ascent stops early (sliding
+    // off a crease along a curved wall), the cell does not read thinner than its corners.
+    const double size = std::max({ walls.Size[v[0]], walls.Size[v[1]], walls.Size[v[2]] });
+    for (int k = 0; k < 3; ++k)
+    {
+      const Measure& corner = corners[v[k]];
+      if (!(corner.Radius > m.Radius))
+      {
+        continue;
+      }
+      const double toVertex = std::sqrt(G::Distance2(corner.Centre, mesh.GetPoint(v[k]))) - corner.Radius;
+      const double toCentroid = std::sqrt(G::Distance2(corner.Centre, p)) - corner.Radius;
+      if (toCentroid <= std::max(toVertex, this->SurfaceTolerance * size))
+      {
+        m.Radius = corner.Radius;
+        std::copy(corner.Centre, corner.Centre + 3, m.Centre);
+      }
     }
     return next;
   };
@@ -755,7 +774,7 @@ int vtkMedialThickness::RequestData(
   if (cellData)
   {
     stages.Begin("Measuring the thickness at the cells", 0.65, 1.0);
-    if (!this->CellBalls(mesh, query, param, walls, input->GetNumberOfCells(), cells))
+    if (!this->CellBalls(mesh, query, param, walls, input->GetNumberOfCells(), vertices, cells))
     {
       return 1;
     }

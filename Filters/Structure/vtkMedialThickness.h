@@ -58,7 +58,9 @@
  *     at a sharp vertex it starts from a small ball in the wedge of the faces there.
  *     The same pass casts the ray along the inward normal for RayThickness.
  *  5. CellBalls (ComputeCellThickness, or ThinThreshold > 0): the same at the centroid
- *     of each cell's largest triangle, along that triangle's normal.
+ *     of each cell's largest triangle, along that triangle's normal (the grown ball from
+ *     the smooth surface's normal there); a corner's ball that comes as near the
+ *     centroid as to its own vertex (or within tau) counts too.
  *  6. ThinRegions (ThinThreshold > 0): the cells whose Thickness is below the
  *     threshold, their share of the area and the number of regions they form
  *     (connected through shared vertices).
@@ -201,7 +203,8 @@ protected:
     const std::vector<char>& sharp, std::vector<Measure>& measures);
   // Pass 4: one Measure per input cell (NaN for cells without a triangle). False when aborted.
   bool CellBalls(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
-    const vtkMedialBallParameters& param, const Walls& walls, vtkIdType cells, std::vector<Measure>& measures);
+    const vtkMedialBallParameters& param, const Walls& walls, vtkIdType cells,
+    const std::vector<Measure>& corners, std::vector<Measure>& measures);
   // The measures as point data (input points mapped to prepared vertices by their
   // coordinates) and cell data; counts MissingPoints.
   void WriteArrays(vtkPolyData* output, const vtkMedialTriangleMesh& mesh,
