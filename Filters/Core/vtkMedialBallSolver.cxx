@@ -76,8 +76,8 @@ void vtkMedialSolveBall(const vtkMedialSurfaceQuery& query, const vtkMedialTrian
   vtkIdType own = triangle;
   if (param.Normals && param.CosMinAngle < 1.0)
   {
-    double smooth[3];
-    if (!param.Normals->At(triangle, query.GetTriangleVertices(triangle), outward, p, smooth))
+    double smooth[3], scratch[9];
+    if (!param.Normals->At(triangle, query.GetTriangleVertices(triangle, scratch), outward, p, smooth))
     {
       // Not the facet's own normal: the facet is not tangent to the ball, and blocks
       // where it enters it like any other face.
@@ -269,8 +269,8 @@ void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
       if (t.Triangle >= 0)
       {
         const double* outward = query.GetNormal(t.Triangle);
-        double cv[3];
-        G::Sub(c, query.GetTriangleVertices(t.Triangle), cv);
+        double cv[3], scratch[9];
+        G::Sub(c, query.GetTriangleVertices(t.Triangle, scratch), cv);
         G::AddScaled(c, -G::Dot(outward, cv), outward, t.Point);
       }
       double u[3];
@@ -340,8 +340,8 @@ void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
     // surface's triangle may lie in a plane that crosses the ball already.)
     auto planeFrom = [&](vtkIdType t) {
       const double* outward = query.GetNormal(t);
-      double cv[3];
-      G::Sub(c, query.GetTriangleVertices(t), cv);
+      double cv[3], scratch[9];
+      G::Sub(c, query.GetTriangleVertices(t, scratch), cv);
       const double d0 = -G::Dot(outward, cv), rate = gamma + G::Dot(outward, v);
       return rate > 0.0 && d0 >= r * (1.0 - 1e-9) ? std::max(0.0, d0 - r) / rate : HUGE_VAL;
     };
