@@ -161,6 +161,81 @@ def simplification_picture(mesh_name, k):
     return make
 
 
+def thin_regions_picture(mesh_name, below):
+    """A shared mesh twice, its cells thinner than `below` in red: by the tangent ball alone
+    (TangentThickness, left) and by Thickness (right), from one vtkMedialThickness run."""
+
+    def make(out, meshes, smoke):
+        import vtk
+        ma = medialaxis()
+        reader = ma.vtkMedialFileReader()
+        reader.SetFileName(os.path.join(meshes, mesh_name))
+        thickness = ma.vtkMedialThickness()
+        thickness.SetInputConnection(reader.GetOutputPort())
+        thickness.SetThinThreshold(below)
+        thickness.Update()
+        surface = thickness.GetOutput()
+        window = vtk.vtkRenderWindow()
+        window.SetOffScreenRendering(1)
+        window.SetSize(1000, 420)
+        lookup = vtk.vtkLookupTable()
+        lookup.SetNumberOfTableValues(2)
+        lookup.SetTableValue(0, 0.85, 0.15, 0.1, 1.0)  # thinner than `below`
+        lookup.SetTableValue(1, 0.8, 0.8, 0.8, 1.0)
+        lookup.SetTableRange(0.0, 2.0 * below)
+        lookup.Build()
+        camera = None
+        thin = []
+        for i, name in enumerate(["TangentThickness", "Thickness"]):
+            values = surface.GetCellData().GetArray(name)
+            cells = sum(1 for c in range(values.GetNumberOfTuples()) if values.GetValue(c) < below)
+            thin.append(cells)
+            copy = vtk.vtkPolyData()
+            copy.ShallowCopy(surface)
+            copy.GetCellData().SetActiveScalars(name)
+            mapper = vtk.vtkPolyDataMapper()
+            mapper.SetInputData(copy)
+            mapper.SetScalarModeToUseCellData()
+            mapper.SetLookupTable(lookup)
+            mapper.UseLookupTableScalarRangeOn()
+            actor = vtk.vtkActor()
+            actor.SetMapper(mapper)
+            renderer = vtk.vtkRenderer()
+            renderer.SetViewport(0.5 * i, 0.0, 0.5 * (i + 1), 1.0)
+            renderer.SetBackground(1.0, 1.0, 1.0)
+            renderer.AddActor(actor)
+            label = vtk.vtkTextActor()
+            label.SetInput("%s < %g: %d cells" % (name, below, cells))
+            label.GetTextProperty().SetColor(0.1, 0.1, 0.1)
+            label.GetTextProperty().SetFontSize(18)
+            label.SetPosition(10, 10)
+            renderer.AddActor2D(label)
+            if camera is None:
+                renderer.ResetCamera()
+                renderer.GetActiveCamera().Elevation(35)
+                renderer.GetActiveCamera().Azimuth(-30)
+                renderer.ResetCamera()
+                renderer.GetActiveCamera().Zoom(1.3)
+                camera = renderer.GetActiveCamera()
+            else:
+                renderer.SetActiveCamera(camera)
+            window.AddRenderer(renderer)
+        window.Render()
+        grab = vtk.vtkWindowToImageFilter()
+        grab.SetInput(window)
+        grab.Update()
+        writer = vtk.vtkPNGWriter()
+        writer.SetFileName(out)
+        writer.SetInputConnection(grab.GetOutputPort())
+        writer.Write()
+        return "thinner than %g: %d cells by the tangent ball, %d by Thickness" % (below, thin[0], thin[1])
+
+    make.description = ("`scripts/gallery.py`: `%s` through `vtkMedialThickness` (defaults), its cells thinner than "
+                        "%g in red, by `TangentThickness` (left) and `Thickness` (right), at 1000 × 420"
+                        % (mesh_name, below))
+    return make
+
+
 def web_page_tools(build):
     """What the page's screenshot needs: the viewer's node modules (playwright-core) from
     the build, node and Debian's Chromium."""
@@ -239,6 +314,8 @@ PICTURES = [
             python=simplification_picture("horse.ply", 100)),
     Picture("jack-thickness.png", (900, 640), ["docs/how-it-works/thickness.md"],
             cli=["demo:jack", "--thickness", "{scratch}/jack-thickness.vtp", "--render", "{out}"]),
+    Picture("fandisk-thin.png", (1000, 420), ["docs/how-it-works/thickness.md"], meshes=["fandisk.obj"],
+            python=thin_regions_picture("fandisk.obj", 0.3)),
     Picture("web-page.png", (1000, 640), ["docs/web-page.md"], meshes=["horse.ply"], python=web_page_picture,
             tools=web_page_tools),
 ]

@@ -50,7 +50,7 @@ sphere.Update()
 noisy = sphere.GetOutput().NewInstance()
 noisy.DeepCopy(sphere.GetOutput())
 points = vtk_to_numpy(noisy.GetPoints().GetData())  # a view: edits change the surface
-points += np.random.default_rng(3).normal(0.0, 0.001 * noisy.GetLength(), points.shape)
+points += np.random.default_rng(3).normal(0.0, 0.002 * noisy.GetLength(), points.shape)
 noisy.GetPoints().Modified()
 def scale_axis_of(surface_port, scale):
     """3000 balls of the surface, the scale axis of them, and how far from the centre

@@ -27,7 +27,7 @@
  * Cell data of the sampler's links: InitialLink.
  *
  * Point and cell data on a surface (thickness): Thickness, MedialRadius, MedialCentre,
- * RayThickness; field data ThinAreaFraction, ThinRegionCount.
+ * RayThickness, TangentThickness; field data ThinAreaFraction, ThinRegionCount.
  *
  * Field data: RequestedSamples, DiscardedSamples, MeanIterations, CappedSamples,
  * EvaluatedSamples, SeedSamples, CoverageReached, MaxCoverageGap; the medial mesh's
@@ -84,6 +84,8 @@ constexpr const char* MedialRadius = "MedialRadius";
 constexpr const char* MedialCentre = "MedialCentre";
 /// Point and cell data of a surface: the distance along the inward normal.
 constexpr const char* RayThickness = "RayThickness";
+/// Point and cell data of a surface: the diameter of the ball tangent along the normal alone.
+constexpr const char* TangentThickness = "TangentThickness";
 /// Field data of a surface: the share of the area thinner than the threshold.
 constexpr const char* ThinAreaFraction = "ThinAreaFraction";
 /// Field data of a surface: the number of regions thinner than the threshold.

@@ -3,11 +3,14 @@
 
 #include "vtkMedialGeometry.h"
 #include "vtkMedialSampleRecord.h"
+#include "vtkMedialSurfaceNormals.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 namespace
 {
@@ -69,8 +72,24 @@ void vtkMedialSolveBall(const vtkMedialSurfaceQuery& query, const vtkMedialTrian
   vtkIdType hintTriangle, vtkMedialTriangleBVH::BlockerChain* blockers, double* largestProtrusion)
 {
   const double* outward = query.GetNormal(triangle);
-  const double n[3] = { -outward[0], -outward[1], -outward[2] };
-  vtkMedialSolveBallAlong(query, mesh, param, triangle, p, n, out, hintTriangle, blockers, largestProtrusion);
+  double n[3] = { -outward[0], -outward[1], -outward[2] };
+  vtkIdType own = triangle;
+  if (param.Normals && param.CosMinAngle < 1.0)
+  {
+    double smooth[3], scratch[9];
+    if (!param.Normals->At(triangle, query.GetTriangleVertices(triangle, scratch), outward, p, smooth))
+    {
+      // Not the facet's own normal: the facet is not tangent to the ball, and blocks
+      // where it enters it like any other face.
+      for (int k = 0; k < 3; ++k)
+      {
+        n[k] = -smooth[k];
+      }
+      own = -1;
+    }
+  }
+  vtkMedialSolveBallAlong(query, mesh, param, own, p, n, out, hintTriangle, blockers, largestProtrusion);
+  out.SourceCell = mesh.SourceCellIds[triangle];
 }
 
 void vtkMedialSolveBallAlong(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& mesh,
@@ -202,5 +221,230 @@ void vtkMedialSolveBallAlong(const vtkMedialSurfaceQuery& query, const vtkMedial
   if (largestProtrusion)
   {
     MeasureProtrusion(query, out, *largestProtrusion);
+  }
+}
+
+void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
+  const vtkMedialGrowthLimits& limits, const vtkIdType* faces, int faceCount, vtkMedialSampleRecord& out)
+{
+  double c[3];
+  G::Copy(out.Centre, c);
+  double r = out.Radius;
+  if (!(r > 0.0))
+  {
+    return;
+  }
+  const double slack = query.GetSlack();
+  auto gapAt = [&](const double x[3], double radius) { return std::sqrt(G::Distance2(x, p)) - radius; };
+  double allowed = std::max(limits.Tolerance, gapAt(c, r));
+  // The contacts: the planes of the triangles the ball touches (a ball that moves
+  // along a face keeps touching its plane; the probes below check the surface itself),
+  // or a fixed point (triangle -1: the contact of a ball shrunk to be inscribed).
+  struct Touch
+  {
+    double Point[3];
+    vtkIdType Triangle;
+  };
+  std::vector<Touch> touches;
+  for (int i = 0; i < faceCount; ++i)
+  {
+    touches.push_back({ { p[0], p[1], p[2] }, faces[i] });
+  }
+  touches.push_back({ { out.Contact[0], out.Contact[1], out.Contact[2] }, out.Shrunk ? -1 : out.ContactTriangle });
+  std::vector<std::array<double, 3>> directions;
+  std::vector<vtkIdType> triangles;
+  double contact[3];
+  G::Copy(out.Contact, contact);
+  bool moved = false;
+  int retries = 0; // steps repeated with a contact they found
+  for (int steps = 0, slides = 0; steps < limits.MaximumSteps && slides < limits.MaximumSlides;)
+  {
+    // The directions from the contacts that still touch the ball to its centre.
+    const double touching = r * (1.0 + 1e-7) + 8.0 * slack;
+    directions.clear();
+    triangles.clear();
+    size_t kept = 0;
+    for (Touch& t : touches)
+    {
+      if (t.Triangle >= 0)
+      {
+        const double* outward = query.GetNormal(t.Triangle);
+        double cv[3], scratch[9];
+        G::Sub(c, query.GetTriangleVertices(t.Triangle, scratch), cv);
+        G::AddScaled(c, -G::Dot(outward, cv), outward, t.Point);
+      }
+      double u[3];
+      G::Sub(c, t.Point, u);
+      const double length = std::sqrt(G::Dot(u, u));
+      if (!(length > 0.0) || length > touching)
+      {
+        continue;
+      }
+      touches[kept++] = t;
+      triangles.push_back(t.Triangle);
+      for (double& x : u)
+      {
+        x /= length;
+      }
+      bool same = false;
+      for (const auto& d : directions)
+      {
+        double e[3];
+        G::Sub(d.data(), u, e);
+        same = same || G::Dot(e, e) < 1e-16;
+      }
+      if (!same && directions.size() < 8)
+      {
+        directions.push_back({ u[0], u[1], u[2] });
+      }
+    }
+    touches.resize(kept);
+    double g[3];
+    G::NearestHullPoint(directions, g);
+    const double speed = std::sqrt(G::Dot(g, g));
+    if (!(speed > 1e-6))
+    {
+      break; // no contact left, or they surround the centre: a local maximum
+    }
+    // Contacts less than the slide angle apart: the ball rounds a convex feature.
+    const bool sliding = speed >= limits.CosHalfSlideAngle && directions.size() >= 2 &&
+      (!limits.MaySlide || limits.MaySlide(triangles.data(), static_cast<int>(triangles.size())));
+    ++(sliding ? slides : steps);
+    double v[3];
+    double gamma = HUGE_VAL; // how fast the slowest contact recedes
+    for (int k = 0; k < 3; ++k)
+    {
+      v[k] = g[k] / speed;
+    }
+    for (const auto& d : directions)
+    {
+      gamma = std::min(gamma, G::Dot(d.data(), v));
+    }
+    // Centre c + s v, radius rho(s) = r + gamma s: the distance to the plane of the
+    // slowest-receding contact. A surface point x is inside that ball from
+    // s1 = D / (k + sqrt(k^2 - a D)) on, with D = |c - x|^2 - r^2, k = r gamma + (x - c).v
+    // and a = 1 - gamma^2 (until the centre has passed it, which no search reaches).
+    auto radiusAt = [&](double s) { return r + gamma * s; };
+    auto pointFrom = [&](const double x[3]) {
+      double d[3];
+      G::Sub(x, c, d);
+      const double k = r * gamma + G::Dot(d, v);
+      const double D = std::max(0.0, G::Dot(d, d) - r * r);
+      const double a = std::max(0.0, 1.0 - gamma * gamma);
+      const double disc = k * k - a * D;
+      return k > 0.0 && disc >= 0.0 ? D / (k + std::sqrt(disc)) : HUGE_VAL;
+    };
+    // A triangle's plane, when the ball lies wholly inside it, is entered from
+    // (d0 - r) / (gamma + n.v) on (n its outward normal, d0 the centre's distance to
+    // it): no later than the triangle, and exactly when the wall is flat. (A curved
+    // surface's triangle may lie in a plane that crosses the ball already.)
+    auto planeFrom = [&](vtkIdType t) {
+      const double* outward = query.GetNormal(t);
+      double cv[3], scratch[9];
+      G::Sub(c, query.GetTriangleVertices(t, scratch), cv);
+      const double d0 = -G::Dot(outward, cv), rate = gamma + G::Dot(outward, v);
+      return rate > 0.0 && d0 >= r * (1.0 - 1e-9) ? std::max(0.0, d0 - r) / rate : HUGE_VAL;
+    };
+    // The first bound: the surface where the ray along v leaves; then the largest step
+    // whose ball still comes within `allowed` of p (sliding: within SlideReach times its
+    // radius).
+    vtkMedialSurfaceQuery::RayHit ray;
+    if (!query.Intersect(c, v, 0.0, HUGE_VAL, -1, ray))
+    {
+      break; // open surface
+    }
+    double x[3];
+    G::AddScaled(c, ray.Distance, v, x);
+    double s = std::min(pointFrom(x), planeFrom(ray.Triangle));
+    auto within = [&](const double centre[3], double radius) {
+      return gapAt(centre, radius) <= (sliding ? limits.SlideReach * radius : allowed);
+    };
+    G::AddScaled(c, s, v, x);
+    if (!within(x, radiusAt(s)))
+    {
+      double lo = 0.0, hi = s;
+      for (int i = 0; i < 50; ++i)
+      {
+        const double mid = 0.5 * (lo + hi);
+        G::AddScaled(c, mid, v, x);
+        (within(x, radiusAt(mid)) ? lo : hi) = mid;
+      }
+      s = lo;
+    }
+    // Probes: the ball at s, empty, or else shrunk about its centre to the closest
+    // point found (inscribed either way), whose triangle then sets the next probe's s.
+    // A step keeps its largest probe; a sliding one follows the path exactly (a probe
+    // counts once nothing is inside it, or as the last resort).
+    double best[3], radius = r;
+    bool touched = false, missed = false;
+    Touch touch{ { 0, 0, 0 }, -1 }, previous{ { 0, 0, 0 }, -1 };
+    const int probes = sliding ? limits.SlideProbes : limits.Probes;
+    vtkMedialSurfaceQuery::ClosestHit hit;
+    for (int i = 0; i < probes && s > 0.0; ++i)
+    {
+      G::AddScaled(c, s, v, x);
+      const bool blocked = query.ClosestPoint(x, radiusAt(s) - slack, hit);
+      const double inscribed = blocked ? hit.Distance : radiusAt(s);
+      if (inscribed > radius && (!sliding || !blocked || i + 1 == probes) && within(x, inscribed))
+      {
+        radius = inscribed;
+        G::Copy(x, best);
+        // The point found touches it, or the one that set this probe's step does.
+        touched = blocked || i > 0;
+        touch = blocked ? Touch{ { hit.Point[0], hit.Point[1], hit.Point[2] }, hit.Triangle } : previous;
+        G::Copy(touch.Point, contact);
+      }
+      if (!blocked)
+      {
+        break;
+      }
+      const double next = std::min(pointFrom(hit.Point), planeFrom(hit.Triangle));
+      previous = { { hit.Point[0], hit.Point[1], hit.Point[2] }, hit.Triangle };
+      if (!(next > 1e-12 * r))
+      {
+        // It touches the ball already (a contact it did not know of, e.g. a third
+        // wall at a corner): the direction must account for it.
+        missed = true;
+        break;
+      }
+      if (!(next < s))
+      {
+        break; // no progress at double precision
+      }
+      s = next;
+    }
+    if (!(radius > r * (1.0 + 1e-9)))
+    {
+      if (missed && retries++ < 8)
+      {
+        touches.push_back(previous);
+        --(sliding ? slides : steps);
+        continue;
+      }
+      break;
+    }
+    const bool small = radius < r * (1.0 + limits.MinimumGain);
+    G::Copy(best, c);
+    r = radius;
+    moved = true;
+    if (touched)
+    {
+      touches.push_back(touch);
+    }
+    if (sliding)
+    {
+      allowed = std::max(allowed, gapAt(c, r));
+    }
+    if (small)
+    {
+      break;
+    }
+  }
+  if (moved)
+  {
+    G::Copy(c, out.Centre);
+    out.Radius = r;
+    G::Copy(contact, out.Contact);
+    out.Angle = G::AngleDegrees(c, p, contact);
   }
 }

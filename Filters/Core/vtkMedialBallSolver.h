@@ -11,8 +11,11 @@
  * deeper than MaximumProtrusion, shrinks it about its centre to the distance to that
  * surface, so that it is inscribed (out.Shrunk); any strategy that chooses its own
  * surface points calls it (the Random strategy draws them with
- * vtkMedialDrawSurfacePoint, vtkMedialRandom.h). vtkMedialSolveBallAlong does the same
- * along any inward direction (a vertex normal). All are thread-safe after the mesh
+ * vtkMedialDrawSurfacePoint, vtkMedialRandom.h). With the smooth surface's normals
+ * (vtkMedialBallParameters::Normals, theta > 0), vtkMedialSolveBall follows the normal
+ * interpolated from the corners at p instead of the facet's, which a tessellation
+ * tilts: the ball is then centred on the smooth surface's medial axis. vtkMedialSolveBallAlong
+ * does the same along any inward direction (a vertex normal). All are thread-safe after the mesh
  * and the query are built. Internal header; not installed.
  */
 #ifndef vtkMedialBallSolver_h
@@ -21,6 +24,9 @@
 #include "vtkMedialTriangleBVH.h" // for BlockerChain
 #include "vtkType.h"
 
+#include <functional>
+
+class vtkMedialSurfaceNormals;
 class vtkMedialSurfaceQuery;
 class vtkMedialTriangleMesh;
 struct vtkMedialSampleRecord;
@@ -39,6 +45,9 @@ struct vtkMedialBallParameters
   double CosMinAngle;     // cos(theta); 1 for theta = 0
   double MaximumProtrusion; // absolute: a ball the cap's surface enters deeper is shrunk (HUGE_VAL: never)
   int MaximumIterations;  // shrinking-ball cap
+  // With theta > 0: the smooth surface's normals (vtkMedialSurfaceNormals); a sample's
+  // ball then follows the smooth normal at its point instead of its facet's. Null: facets'.
+  const vtkMedialSurfaceNormals* Normals = nullptr;
 };
 
 /// Parameters in absolute units from the filters' settings: tolerance and protrusion
@@ -72,5 +81,50 @@ void vtkMedialSolveBallAlong(const vtkMedialSurfaceQuery& query, const vtkMedial
   const vtkMedialBallParameters& param, vtkIdType ownTriangle, const double p[3], const double n[3],
   vtkMedialSampleRecord& out, vtkIdType hintTriangle = -1,
   vtkMedialTriangleBVH::BlockerChain* blockers = nullptr, double* largestProtrusion = nullptr);
+
+/// How far vtkMedialGrowBall may move a ball.
+struct vtkMedialGrowthLimits
+{
+  // The grown ball comes within this distance of its sample p (|centre - p| - radius
+  // at most this), or no farther from it than the ball it started from.
+  double Tolerance = 0.0;
+  // A ball whose contacts are all less than the slide angle apart (seen from its
+  // centre) rounds a convex feature instead of spanning a wall: it may slide away from
+  // them while it stays within SlideReach times its radius of p. The cosine of half the
+  // angle; above 1: never.
+  double CosHalfSlideAngle = 2.0;
+  double SlideReach = 1.0;
+  // Optional: whether a ball whose contacts lie on these triangles (-1: the sample's
+  // own faces) may slide (vtkMedialThickness: only where they lie on walls that meet
+  // along convex edges). Unset: wherever the angle allows.
+  std::function<bool(const vtkIdType* triangles, int count)> MaySlide;
+  // Steps (each one ray and up to Probes closest-point queries), and sliding steps
+  // (up to SlideProbes each), counted apart.
+  int MaximumSteps = 1;
+  int Probes = 1;
+  int MaximumSlides = 16;
+  int SlideProbes = 8;
+  // A step that grows the radius by less than this fraction is the last.
+  double MinimumGain = 1e-3;
+};
+
+/**
+ * Grows an inscribed ball (out.Centre, out.Radius) whose sample is p: the centre moves
+ * away from every surface point the ball touches, along the direction in which its
+ * distance to all of them grows fastest (the nearest point to the origin of the convex
+ * hull of the unit vectors from the contacts to the centre: the generalised gradient of
+ * the distance to the surface), by the step after which the ball through the
+ * slowest-receding contact's plane meets the surface (a ray gives the first bound;
+ * each closest-point probe that finds the surface inside lowers it), within the
+ * limits; then again from the new contacts. A probe that finds the surface inside
+ * counts as the ball about its centre that touches it, so the ball stays inscribed.
+ * Stops when the contacts surround the centre (no direction increases the distance),
+ * when a step no longer grows it, or after the limits' steps.
+ * The contacts at the start: the planes of `faces` (the triangles around p, when the
+ * ball touches p) and out.Contact (on out.ContactTriangle's plane, or a point when
+ * out.Shrunk). out.Contact becomes its last contact.
+ */
+void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
+  const vtkMedialGrowthLimits& limits, const vtkIdType* faces, int faceCount, vtkMedialSampleRecord& out);
 
 #endif

@@ -9,7 +9,8 @@
  * installed. Every decisive inside/outside comparison goes through here, in
  * double precision. Also the bisection shared by the 2D and 3D samplers, and the
  * orientation, segment-triangle and triangle-triangle crossing tests used to keep
- * the medial mesh inside the shape.
+ * the medial mesh inside the shape, and the nearest point of a small convex hull to
+ * the origin (the direction in which a ball grows away from its contacts).
  */
 #ifndef vtkMedialGeometry_h
 #define vtkMedialGeometry_h
@@ -320,6 +321,127 @@ inline bool TrianglesCross(const double* const t[3], const double* const u[3])
     }
   }
   return false;
+}
+
+/**
+ * The point of the convex hull of the unit vectors u nearest to the origin (zero when
+ * the hull holds it): for the unit vectors from a ball's contacts to its centre, the
+ * direction along which the centre moves away from all of them fastest (the
+ * generalised gradient of the distance to the surface), and its speed. Up to 8 vectors
+ * (a ball's contacts), exactly, by enumeration of the vertices, edges and triangles
+ * whose projection of the origin lies inside them, and of the tetrahedra that hold the
+ * origin; more, by Gilbert's iteration (to about 1e-12).
+ */
+template <class Vectors>
+void NearestHullPoint(const Vectors& u, double g[3])
+{
+  const int n = static_cast<int>(u.size());
+  double best = HUGE_VAL;
+  g[0] = g[1] = g[2] = 0.0;
+  if (n > 8)
+  {
+    // Many vectors (a vertex where many faces meet): Gilbert's iteration instead, each
+    // step to the nearest point of the segment towards the farthest-back vector.
+    Copy(u[0].data(), g);
+    for (int step = 0; step < 200; ++step)
+    {
+      int back = 0;
+      for (int i = 1; i < n; ++i)
+      {
+        back = Dot(u[i].data(), g) < Dot(u[back].data(), g) ? i : back;
+      }
+      double e[3];
+      Sub(u[back].data(), g, e);
+      const double ee = Dot(e, e);
+      const double t = ee > 0.0 ? std::min(1.0, std::max(0.0, -Dot(g, e) / ee)) : 0.0;
+      if (!(t > 1e-12))
+      {
+        break;
+      }
+      AddScaled(g, t, e, g);
+    }
+    return;
+  }
+  auto consider = [&](const double x[3]) {
+    const double d = Dot(x, x);
+    if (d < best)
+    {
+      best = d;
+      Copy(x, g);
+    }
+  };
+  const double origin[3] = { 0, 0, 0 };
+  for (int i = 0; i < n; ++i)
+  {
+    const double* a = u[i].data();
+    consider(a);
+    for (int j = i + 1; j < n; ++j)
+    {
+      const double* b = u[j].data();
+      double e[3];
+      Sub(b, a, e);
+      const double ee = Dot(e, e);
+      const double t = ee > 0.0 ? -Dot(a, e) / ee : -1.0;
+      if (t > 0.0 && t < 1.0)
+      {
+        double x[3];
+        AddScaled(a, t, e, x);
+        consider(x);
+      }
+      for (int k = j + 1; k < n; ++k)
+      {
+        // The origin's projection on the plane of (a, b, c), if inside the triangle.
+        const double* c = u[k].data();
+        double f[3], m[3];
+        Sub(c, a, f);
+        Cross(e, f, m);
+        const double mm = Dot(m, m);
+        if (!(mm > 1e-18))
+        {
+          continue; // a degenerate triangle: its edges and corners count
+        }
+        double x[3];
+        const double h = Dot(a, m) / mm;
+        for (int q = 0; q < 3; ++q)
+        {
+          x[q] = h * m[q];
+        }
+        const double* corner[3] = { a, b, c };
+        bool inside = true;
+        for (int q = 0; q < 3 && inside; ++q)
+        {
+          double edge[3], to[3], side[3];
+          Sub(corner[(q + 1) % 3], corner[q], edge);
+          Sub(x, corner[q], to);
+          Cross(edge, to, side);
+          inside = Dot(side, m) > 0.0;
+        }
+        if (inside)
+        {
+          consider(x);
+        }
+        for (int l = k + 1; l < n && best > 0.0; ++l)
+        {
+          // The origin strictly inside the tetrahedron: on the same side of every face
+          // as the opposite corner.
+          const double* t4[4] = { a, b, c, u[l].data() };
+          bool holds = true;
+          for (int face = 0; face < 4 && holds; ++face)
+          {
+            const double s1 = Orient3D(t4[(face + 1) % 4], t4[(face + 2) % 4], t4[(face + 3) % 4], t4[face]);
+            const double s0 = Orient3D(t4[(face + 1) % 4], t4[(face + 2) % 4], t4[(face + 3) % 4], origin);
+            // A flat tetrahedron (nearly equal or coplanar vectors) holds nothing.
+            holds = std::fabs(s1) > 1e-9 && s0 != 0.0 && (s0 > 0.0) == (s1 > 0.0);
+          }
+          if (holds)
+          {
+            best = 0.0;
+            g[0] = g[1] = g[2] = 0.0;
+          }
+        }
+      }
+    }
+  }
 }
 
 /**

@@ -156,6 +156,13 @@ public:
   /// mesh's, which a caller that only queries may then release: ReleaseNormals).
   const double* GetNormal(vtkIdType t) const { return this->Tree.GetPlane(t); }
 
+  /// Mesh triangle t's three vertices, 9 doubles in the mesh's vertex order (the tree's
+  /// copy; the pointer is into the tree, or into `scratch` when it keeps floats).
+  const double* GetTriangleVertices(vtkIdType t, double scratch[9]) const
+  {
+    return this->Tree.GetTriangleVertices(t, scratch);
+  }
+
   /// Rank of each triangle in the internal tree's leaf order (spatially coherent).
   const vtkMedialBuffer<std::int32_t>& GetLeafRanks() const { return this->Tree.GetLeafRanks(); }
 

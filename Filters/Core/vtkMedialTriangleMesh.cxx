@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <numeric>
 #include <sstream>
 
 #include <omp.h>
@@ -1198,6 +1199,31 @@ bool vtkMedialTriangleMesh::BuildAreaCdf(std::string& error)
     this->AreaGuide[j] = static_cast<std::uint32_t>(at);
   }
   return true;
+}
+
+void vtkMedialTriangleMesh::TrianglesAroundPoints(
+  std::vector<vtkIdType>& start, std::vector<vtkIdType>& around) const
+{
+  const vtkIdType np = this->GetNumberOfPoints();
+  const vtkIdType nt = this->GetNumberOfTriangles();
+  start.assign(np + 1, 0);
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      ++start[this->Triangles[3 * t + j] + 1];
+    }
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  around.resize(start.back());
+  std::vector<vtkIdType> next(start.begin(), start.end() - 1);
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      around[next[this->Triangles[3 * t + j]]++] = t;
+    }
+  }
 }
 
 void vtkMedialTriangleMesh::ReleaseGeometry()

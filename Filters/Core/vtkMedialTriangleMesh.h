@@ -75,6 +75,10 @@ public:
     return this->UsedPoints - this->Edges + this->GetNumberOfTriangles();
   }
 
+  /// The triangles around each point, as offsets `start` (one per point, plus the end)
+  /// into `around`; a point no triangle uses has none.
+  void TrianglesAroundPoints(std::vector<vtkIdType>& start, std::vector<vtkIdType>& around) const;
+
   /// Index of the triangle whose cumulative area bracket holds u in [0, 1).
   vtkIdType PickTriangleByArea(double u) const;
 

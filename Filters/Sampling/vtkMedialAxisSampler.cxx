@@ -218,6 +218,12 @@ bool vtkMedialAxisSampler::vtkInternals::PrepareSurface(vtkPolyData* input, vtkM
     }
     return false;
   }
+  if (self->MinimumSeparationAngle > 0.0 && self->MaximumProtrusion < 1.0 && self->SamplingStrategy == RANDOM)
+  {
+    // Balls along the smooth surface's normals (vtkMedialSurfaceNormals), with creases
+    // where faces meet at more than theta.
+    this->Normals.Build(mesh, self->MinimumSeparationAngle);
+  }
   return true;
 }
 
@@ -637,8 +643,10 @@ static_assert(static_cast<int>(vtkMedialAxisSampler::BISECTION) == vtkMedialBall
 vtkMedialBallParameters vtkMedialAxisSampler::vtkInternals::MakeBallParameters(double diagonal) const
 {
   const vtkMedialAxisSampler* self = this->Self;
-  return vtkMedialMakeBallParameters(self->Method, self->Tolerance, self->MinimumSeparationAngle,
-    self->MaximumProtrusion, self->MaximumIterations, diagonal);
+  vtkMedialBallParameters param = vtkMedialMakeBallParameters(self->Method, self->Tolerance,
+    self->MinimumSeparationAngle, self->MaximumProtrusion, self->MaximumIterations, diagonal);
+  param.Normals = this->Normals.IsEmpty() ? nullptr : &this->Normals;
+  return param;
 }
 
 int vtkMedialAxisSampler::vtkInternals::SampleIterative(
@@ -654,6 +662,9 @@ int vtkMedialAxisSampler::vtkInternals::SampleIterative(
   settings.Seed = static_cast<std::uint64_t>(self->RandomSeed);
   settings.Threads = vtkMedialThreadCount(self->NumberOfThreads);
   settings.Ball = this->MakeBallParameters(mesh.Diagonal);
+  // The strategies' coverage counts on each ball touching its own sample: they keep the
+  // facets' normals.
+  settings.Ball.Normals = nullptr;
   if (!this->CheckMemory(settings.Budget,
         2.0 * sizeof(vtkMedialSampleRecord) + 12 * sizeof(double) + 8 * sizeof(vtkIdType), "use fewer samples"))
   {

@@ -16,6 +16,7 @@
 #include "vtkMedialBallSolver.h"
 #include "vtkMedialBuffer.h"
 #include "vtkMedialSampleRecord.h"
+#include "vtkMedialSurfaceNormals.h"
 
 #include <new>
 #include <vector>
@@ -112,6 +113,8 @@ private:
   void ReportAllocationFailure(vtkIdType count) const;
 
   vtkMedialAxisSampler* Self;
+  // The smooth surface's normals, built by PrepareSurface when theta > 0.
+  vtkMedialSurfaceNormals Normals;
 };
 
 #endif

@@ -390,12 +390,12 @@ double RingsDistance(const double p[3], int genus)
   return d;
 }
 
-// The zero level of a signed distance sampled on a grid of 4 * resolution cells along
-// the longest side of the box [lo, hi] (vtkFlyingEdges3D).
+// The zero level of a signed distance sampled on a grid of `cells` cells along the
+// longest side of the box [lo, hi] (vtkFlyingEdges3D).
 template <class Distance>
-void ContourDistance(vtkPolyData* out, const double lo[3], const double hi[3], int resolution, Distance distance)
+void ContourDistance(vtkPolyData* out, const double lo[3], const double hi[3], int cells, Distance distance)
 {
-  const double h = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] }) / (4.0 * resolution);
+  const double h = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] }) / cells;
   int dims[3];
   for (int i = 0; i < 3; ++i)
   {
@@ -434,14 +434,25 @@ void ContourDistance(vtkPolyData* out, const double lo[3], const double hi[3], i
 void MakeJack(vtkPolyData* out, int resolution)
 {
   const double lo[3] = { -2.0, -0.8, -1.1 }, hi[3] = { 2.0, 1.5, 1.1 };
-  ContourDistance(out, lo, hi, resolution, JackDistance);
+  ContourDistance(out, lo, hi, 4 * resolution, JackDistance);
 }
 
 void MakeRings(vtkPolyData* out, int genus, int resolution)
 {
   const double halfWidth = 0.85 * (genus - 1) + 1.5;
   const double lo[3] = { -halfWidth, -1.5, -0.5 }, hi[3] = { halfWidth, 1.5, 0.5 };
-  ContourDistance(out, lo, hi, resolution, [genus](const double p[3]) { return RingsDistance(p, genus); });
+  ContourDistance(out, lo, hi, 4 * resolution, [genus](const double p[3]) { return RingsDistance(p, genus); });
+}
+
+// The torus's exact signed distance on a cube of `points` grid points per axis,
+// 1.1 (ring + tube) on either side of the centre.
+void MakeContouredTorus(vtkPolyData* out, double ring, double tube, int points)
+{
+  const double half = 1.1 * (ring + tube);
+  const double lo[3] = { -half, -half, -half }, hi[3] = { half, half, half };
+  ContourDistance(out, lo, hi, std::max(points, 2) - 1, [ring, tube](const double p[3]) {
+    return std::hypot(std::hypot(p[0], p[1]) - ring, p[2]) - tube;
+  });
 }
 }
 
@@ -479,6 +490,15 @@ int vtkMedialShapeSource::RequestData(vtkInformation*, vtkInformationVector**, v
       }
       MakeTorus(m, this->Radius, this->TubeRadius, this->Resolution);
       break;
+    case CONTOURED_TORUS:
+      if (!(this->TubeRadius < this->Radius))
+      {
+        vtkErrorMacro(<< "CONTOURED_TORUS tube radius " << this->TubeRadius << " is not below the ring radius "
+                      << this->Radius << ".");
+        return 0;
+      }
+      MakeContouredTorus(output, this->Radius, this->TubeRadius, this->Resolution);
+      return 1;
     case HOLLOW_SPHERE:
       if (this->Resolution > 8 || !(this->InnerRadius < this->Radius))
       {

@@ -3,11 +3,13 @@
 
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialBallSolver.h"
+#include "vtkMedialDisjointSets.h"
 #include "vtkMedialGeometry.h"
 #include "vtkMedialPieces.h"
 #include "vtkMedialPipeline.h"
 #include "vtkMedialProgress.h"
 #include "vtkMedialSampleRecord.h"
+#include "vtkMedialSurfaceNormals.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialThreads.h"
 #include "vtkMedialTriangleMesh.h"
@@ -36,6 +38,11 @@ namespace
 {
 namespace G = vtkMedialGeometry;
 constexpr double Pi = 3.14159265358979323846;
+// A ball whose contacts are all less than this far apart (seen from its centre), on
+// walls that meet along convex creases, rounds their edge instead of spanning a wall:
+// it slides off it (see the class comment). A wedge sharper than 180 - WallAngle
+// degrees stays thin.
+constexpr double WallAngle = 120.0;
 // Consecutive items (in the tree's leaf order) solved on one thread, each hinted with
 // the previous one's contact; groups start at multiples of Chain whatever the thread
 // count, so the output does not depend on it (as in the sampler).
@@ -61,30 +68,60 @@ void AddMaxWeighted(const double* at, const double* b, const double* c, double n
   }
 }
 
-// The triangles around each prepared vertex, as offsets `start` into `around`.
-void TrianglesAroundVertices(
-  const vtkMedialTriangleMesh& mesh, std::vector<vtkIdType>& start, std::vector<vtkIdType>& around)
+// The limits of the balls' growth at a point whose local facet size is `size`.
+vtkMedialGrowthLimits GrowthLimits(double tolerance, double size)
 {
-  const vtkIdType np = mesh.GetNumberOfPoints();
-  const vtkIdType nt = mesh.GetNumberOfTriangles();
-  start.assign(np + 1, 0);
-  for (vtkIdType t = 0; t < nt; ++t)
+  vtkMedialGrowthLimits limits;
+  limits.Tolerance = tolerance * size;
+  limits.CosHalfSlideAngle = std::cos(0.5 * WallAngle * Pi / 180.0);
+  return limits;
+}
+
+// At a sharp vertex p (faces `fan`, local facet size `size`), a small inscribed ball
+// just inside the wedge of its faces, along the direction that makes equal angles with
+// their nearest inward normals (the nearest point of the normals' hull); invalid where
+// no such direction enters the solid (a fold).
+vtkMedialSampleRecord WedgeBall(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& mesh,
+  const double p[3], const std::vector<vtkIdType>& fan, double size)
+{
+  vtkMedialSampleRecord ball;
+  ball.Valid = false;
+  std::vector<std::array<double, 3>> inward;
+  for (vtkIdType t : fan)
   {
-    for (int j = 0; j < 3; ++j)
+    if (mesh.Areas[t] > 0.0)
     {
-      ++start[mesh.GetTriangle(t)[j] + 1];
+      const double* o = mesh.GetNormal(t);
+      inward.push_back({ -o[0], -o[1], -o[2] });
     }
   }
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  around.resize(start.back());
-  std::vector<vtkIdType> next(start.begin(), start.end() - 1);
-  for (vtkIdType t = 0; t < nt; ++t)
+  double d[3];
+  G::NearestHullPoint(inward, d);
+  const double length = std::sqrt(G::Dot(d, d));
+  if (!(length > 1e-3))
   {
-    for (int j = 0; j < 3; ++j)
-    {
-      around[next[mesh.GetTriangle(t)[j]]++] = t;
-    }
+    return ball;
   }
+  for (double& x : d)
+  {
+    x /= length;
+  }
+  const double step = 1e-3 * size;
+  G::AddScaled(p, step, d, ball.Centre);
+  vtkMedialSurfaceQuery::RayHit ray;
+  vtkMedialSurfaceQuery::ClosestHit hit;
+  if (!query.IntersectFromInside(ball.Centre, d, 0.0, -1, ray) || !(ray.Distance > 2.0 * step) ||
+    !query.ClosestPoint(ball.Centre, step, hit))
+  {
+    return ball;
+  }
+  ball.Valid = true;
+  ball.Shrunk = false;
+  ball.Radius = hit.Distance;
+  std::copy(hit.Point, hit.Point + 3, ball.Contact);
+  ball.ContactTriangle = hit.Triangle;
+  std::copy(p, p + 3, ball.Surface);
+  return ball;
 }
 
 // Runs solve(item, hint) for every (item, triangle) pair, in the tree's leaf order of
@@ -150,6 +187,163 @@ std::array<double, 3> Key(const double x[3])
 }
 }
 
+// The walls of the surface: its triangles split along its creases (adjacent faces'
+// normals more than CreaseAngle apart), and which walls meet along a convex crease (where
+// the solid's two faces meet at less than 180 degrees). Only a ball that touches walls
+// meeting so rounds an edge and may slide off it: on one smooth wall, a ball whose
+// contacts are close together is a rim's, and its size is the wall's.
+struct vtkMedialThickness::Walls
+{
+  std::vector<vtkIdType> OfTriangle;
+  std::vector<std::pair<vtkIdType, vtkIdType>> Convex; // (a < b), sorted, unique
+  // The local facet size at each point: the longest edge that ends there (the
+  // tolerance's unit; a cell's is the largest of its corners').
+  std::vector<double> Size;
+
+  void Build(const vtkMedialTriangleMesh& mesh, double creaseDegrees)
+  {
+    const double cosCrease = std::cos(creaseDegrees * Pi / 180.0);
+    const vtkIdType nt = mesh.GetNumberOfTriangles();
+    // Each edge as (lower point, higher point, triangle); an edge of exactly two
+    // triangles joins them, unless it is a crease.
+    std::vector<std::array<vtkIdType, 3>> edges;
+    edges.reserve(3 * static_cast<size_t>(nt));
+    for (vtkIdType t = 0; t < nt; ++t)
+    {
+      const vtkIdType* v = mesh.GetTriangle(t);
+      for (int j = 0; j < 3; ++j)
+      {
+        edges.push_back({ std::min(v[j], v[(j + 1) % 3]), std::max(v[j], v[(j + 1) % 3]), t });
+      }
+    }
+    std::sort(edges.begin(), edges.end());
+    this->Size.assign(mesh.GetNumberOfPoints(), 0.0);
+    for (const auto& e : edges)
+    {
+      const double length = std::sqrt(G::Distance2(mesh.GetPoint(e[0]), mesh.GetPoint(e[1])));
+      this->Size[e[0]] = std::max(this->Size[e[0]], length);
+      this->Size[e[1]] = std::max(this->Size[e[1]], length);
+    }
+    vtkMedialDisjointSets sets(nt);
+    std::vector<std::pair<vtkIdType, vtkIdType>> convex;
+    for (size_t i = 0; i < edges.size();)
+    {
+      size_t j = i + 1;
+      while (j < edges.size() && edges[j][0] == edges[i][0] && edges[j][1] == edges[i][1])
+      {
+        ++j;
+      }
+      const vtkIdType a = edges[i][2], b = edges[j - 1][2];
+      if (j == i + 2 && mesh.Areas[a] > 0.0 && mesh.Areas[b] > 0.0)
+      {
+        if (G::Dot(mesh.GetNormal(a), mesh.GetNormal(b)) >= cosCrease)
+        {
+          sets.Join(a, b);
+        }
+        else
+        {
+          // Convex: b's third point lies below a's plane.
+          const vtkIdType* tb = mesh.GetTriangle(b);
+          int k = 0;
+          while (k < 2 && (tb[k] == edges[i][0] || tb[k] == edges[i][1]))
+          {
+            ++k;
+          }
+          double d[3];
+          G::Sub(mesh.GetPoint(tb[k]), mesh.GetPoint(edges[i][0]), d);
+          if (G::Dot(mesh.GetNormal(a), d) < 0.0)
+          {
+            convex.emplace_back(a, b);
+          }
+        }
+      }
+      i = j;
+    }
+    this->OfTriangle.resize(nt);
+    for (vtkIdType t = 0; t < nt; ++t)
+    {
+      this->OfTriangle[t] = sets.Find(t);
+    }
+    this->Convex.clear();
+    for (const auto& c : convex)
+    {
+      const vtkIdType a = this->OfTriangle[c.first], b = this->OfTriangle[c.second];
+      if (a != b)
+      {
+        this->Convex.emplace_back(std::min(a, b), std::max(a, b));
+      }
+    }
+    std::sort(this->Convex.begin(), this->Convex.end());
+    this->Convex.erase(std::unique(this->Convex.begin(), this->Convex.end()), this->Convex.end());
+  }
+
+  // Whether a tangent ball at a point of `faces` may grow: the surface near its point
+  // shrank it (a facet's tilt or a ripple), or what stopped it lies less than the wall
+  // angle away on a wall that meets the point's along a convex crease (an edge).
+  bool MayGrow(const std::vector<vtkIdType>& faces, const vtkMedialSampleRecord& ball) const
+  {
+    if (!ball.Valid || !(ball.Radius > 0.0))
+    {
+      return false;
+    }
+    if (ball.Shrunk)
+    {
+      return true;
+    }
+    if (!(ball.Angle < WallAngle) || ball.ContactTriangle < 0)
+    {
+      return false;
+    }
+    const vtkIdType w = this->OfTriangle[ball.ContactTriangle];
+    for (vtkIdType f : faces)
+    {
+      if (this->MeetConvex(w, this->OfTriangle[f]))
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  bool MeetConvex(vtkIdType a, vtkIdType b) const
+  {
+    return a != b &&
+      std::binary_search(this->Convex.begin(), this->Convex.end(), std::make_pair(std::min(a, b), std::max(a, b)));
+  }
+
+  // True when the contacts on `triangles` (-1: one of `faces`) lie on at least two walls,
+  // each of which meets another one of them along a convex crease.
+  bool MaySlide(const std::vector<vtkIdType>& faces, const vtkIdType* triangles, int count) const
+  {
+    std::vector<vtkIdType> touched;
+    for (int i = 0; i < count; ++i)
+    {
+      const vtkIdType t = triangles[i] >= 0 ? triangles[i] : (faces.empty() ? -1 : faces.front());
+      if (t >= 0 && std::find(touched.begin(), touched.end(), this->OfTriangle[t]) == touched.end())
+      {
+        touched.push_back(this->OfTriangle[t]);
+      }
+    }
+    if (touched.size() < 2)
+    {
+      return false;
+    }
+    for (vtkIdType a : touched)
+    {
+      bool meets = false;
+      for (vtkIdType b : touched)
+      {
+        meets = meets || this->MeetConvex(a, b);
+      }
+      if (!meets)
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+};
+
 vtkMedialThickness::vtkMedialThickness() = default;
 
 int vtkMedialThickness::FillInputPortInformation(int, vtkInformation* info)
@@ -203,12 +397,12 @@ void vtkMedialThickness::VertexNormals(const vtkMedialTriangleMesh& mesh,
 }
 
 bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
-  const vtkMedialSurfaceQuery& query, const vtkMedialBallParameters& param,
+  const vtkMedialSurfaceQuery& query, const vtkMedialBallParameters& param, const Walls& walls,
   const std::vector<vtkIdType>& start, const std::vector<vtkIdType>& around,
   const std::vector<double>& normals, const std::vector<char>& sharp, std::vector<Measure>& measures)
 {
   const vtkIdType np = mesh.GetNumberOfPoints();
-  measures.assign(np, Measure{ NaN, { NaN, NaN, NaN }, NaN });
+  measures.assign(np, Measure{ NaN, { NaN, NaN, NaN }, NaN, NaN });
   std::vector<std::pair<vtkIdType, vtkIdType>> items; // (vertex, one of its triangles)
   for (vtkIdType v = 0; v < np; ++v)
   {
@@ -220,46 +414,48 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
   auto solve = [&](vtkIdType v, vtkIdType hint) {
     const double* p = mesh.GetPoint(v);
     const double* n = &normals[3 * v];
-    vtkMedialSampleRecord best;
-    best.Valid = false;
+    const std::vector<vtkIdType> fan(around.begin() + start[v], around.begin() + start[v + 1]);
+    // The tangent ball (TangentThickness): along the mean normal, or at a sharp vertex
+    // the smallest over the adjacent faces' normals.
+    vtkMedialSampleRecord along, tangent;
+    along.Valid = false;
     if (!sharp[v])
     {
-      vtkMedialSolveBallAlong(query, mesh, param, -1, p, n, best, hint);
+      vtkMedialSolveBallAlong(query, mesh, param, -1, p, n, along, hint);
     }
-    if (!best.Valid) // sharp, or the mean normal leaves the solid at once (a fold)
+    tangent = along;
+    if (!tangent.Valid) // sharp, or the mean normal leaves the solid at once (a fold)
     {
-      // The smallest ball over the adjacent faces' normals.
-      for (vtkIdType i = start[v]; i < start[v + 1]; ++i)
+      for (vtkIdType t : fan)
       {
-        const vtkIdType t = around[i];
-        vtkMedialSampleRecord along;
-        along.Valid = false; // degenerate faces are skipped
+        vtkMedialSampleRecord face;
+        face.Valid = false; // degenerate faces are skipped
         if (mesh.Areas[t] > 0.0)
         {
-          vtkMedialSolveBall(query, mesh, param, t, p, along, hint);
+          vtkMedialSolveBall(query, mesh, param, t, p, face, hint);
         }
-        if (along.Valid && (!best.Valid || along.Radius < best.Radius))
+        if (face.Valid && (!tangent.Valid || face.Radius < tangent.Radius))
         {
-          best = along;
+          tangent = face;
         }
       }
     }
-    Measure& m = measures[v];
-    if (!best.Valid && mesh.BoundaryEdges == 0)
+    if (!tangent.Valid && mesh.BoundaryEdges == 0)
     {
       // Closed, yet every direction leaves the solid at once: a fold (adjacent faces
       // nearly opposite) where no ball fits.
-      best.Valid = true;
-      best.Radius = 0.0;
-      best.ContactTriangle = -1; // no ball, so no hint for the next vertex
-      std::copy(p, p + 3, best.Centre);
+      tangent.Valid = true;
+      tangent.Radius = 0.0;
+      tangent.ContactTriangle = -1; // no ball, so no hint for the next vertex
+      std::copy(p, p + 3, tangent.Centre);
     }
+    Measure& m = measures[v];
     m.Ray = RayLength(query, mesh, p, n, -1);
-    if (std::isnan(m.Ray) && best.Valid)
+    if (std::isnan(m.Ray) && tangent.Valid)
     {
       // The mean normal leaves the solid: the ray along the chosen ball's direction.
       double d[3];
-      G::Sub(best.Centre, p, d);
+      G::Sub(tangent.Centre, p, d);
       const double length = std::sqrt(G::Dot(d, d));
       for (double& x : d)
       {
@@ -267,17 +463,55 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
       }
       m.Ray = length > 0.0 ? RayLength(query, mesh, p, d, -1) : 0.0;
     }
-    return Keep(best, hint, m.Radius, m.Centre);
+    m.TangentRadius = tangent.Valid ? tangent.Radius : NaN;
+    const vtkIdType next = Keep(tangent, hint, m.Radius, m.Centre);
+
+    // The grown ball (Thickness): from the ball along the mean normal, or at a sharp
+    // vertex from a small ball in its wedge.
+    const double size = walls.Size[v];
+    vtkMedialGrowthLimits limits = GrowthLimits(this->SurfaceTolerance, size);
+    limits.MaySlide = [&](const vtkIdType* t, int count) { return walls.MaySlide(fan, t, count); };
+    vtkMedialSampleRecord grown = along;
+    if (!along.Valid)
+    {
+      grown = WedgeBall(query, mesh, p, fan, size);
+      limits.MaximumSteps = 2; // it touches one face first: a second probe finds the other
+      limits.Probes = 4;
+    }
+    else if (!walls.MayGrow(fan, along))
+    {
+      return next;
+    }
+    if (grown.Valid)
+    {
+      vtkMedialGrowBall(query, p, limits, fan.data(), static_cast<int>(fan.size()), grown);
+      if (!(tangent.Valid && tangent.Radius > grown.Radius))
+      {
+        m.Radius = grown.Radius;
+        std::copy(grown.Centre, grown.Centre + 3, m.Centre);
+      }
+    }
+    return next;
   };
   const int threads = vtkMedialThreadCount(this->NumberOfThreads);
   return SolveInLeafOrder(this, query, items, threads, solve);
 }
 
 bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
-  const vtkMedialSurfaceQuery& query, const vtkMedialBallParameters& param, vtkIdType cells,
-  std::vector<Measure>& measures)
+  const vtkMedialSurfaceQuery& query, const vtkMedialBallParameters& param, const Walls& walls, vtkIdType cells,
+  const std::vector<Measure>& corners, std::vector<Measure>& measures)
 {
-  measures.assign(cells, Measure{ NaN, { NaN, NaN, NaN }, NaN });
+  // The smooth surface's normals, creased where the walls are.
+  vtkMedialSurfaceNormals normals;
+  vtkMedialBallParameters smoothParameters = param;
+  const vtkMedialBallParameters* smooth = nullptr;
+  if (param.CosMinAngle < 1.0)
+  {
+    normals.Build(mesh, this->CreaseAngle);
+    smoothParameters.Normals = &normals;
+    smooth = &smoothParameters;
+  }
+  measures.assign(cells, Measure{ NaN, { NaN, NaN, NaN }, NaN, NaN });
   // Each cell is represented by its largest triangle (the first among equals).
   std::vector<vtkIdType> largest(cells, -1);
   for (vtkIdType t = 0; t < mesh.GetNumberOfTriangles(); ++t)
@@ -309,7 +543,50 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
     vtkMedialSolveBall(query, mesh, param, t, p, ball, hint);
     Measure& m = measures[c];
     m.Ray = RayLength(query, mesh, p, n, t);
-    return Keep(ball, hint, m.Radius, m.Centre);
+    const vtkIdType next = Keep(ball, hint, m.Radius, m.Centre);
+    m.TangentRadius = m.Radius;
+    // The grown ball starts along the smooth surface's normal at the centroid: a
+    // facet's own normal may be tilted by far more than a vertex's (a contour's sliver),
+    // and its ball then stops early on the same wall, or is shrunk. (A ball whose
+    // contacts are opposed spans a wall already.)
+    vtkMedialSampleRecord start = ball;
+    if (smooth && ball.Valid && (ball.Shrunk || ball.Angle < WallAngle))
+    {
+      vtkMedialSolveBall(query, mesh, *smooth, t, p, start, next);
+    }
+    const std::vector<vtkIdType> faces{ t };
+    if (walls.MayGrow(faces, start))
+    {
+      const double size = std::max({ walls.Size[v[0]], walls.Size[v[1]], walls.Size[v[2]] });
+      vtkMedialGrowthLimits limits = GrowthLimits(this->SurfaceTolerance, size);
+      limits.MaySlide = [&](const vtkIdType* touched, int count) { return walls.MaySlide(faces, touched, count); };
+      vtkMedialGrowBall(query, p, limits, &t, 1, start);
+    }
+    if (start.Valid && start.Radius > m.Radius)
+    {
+      m.Radius = start.Radius;
+      std::copy(start.Centre, start.Centre + 3, m.Centre);
+    }
+    // A corner's ball that comes as near the centroid as to its own vertex (or within the
+    // tolerance) is admissible here too: where the cell's own ascent stops early (sliding
+    // off a crease along a curved wall), the cell does not read thinner than its corners.
+    const double size = std::max({ walls.Size[v[0]], walls.Size[v[1]], walls.Size[v[2]] });
+    for (int k = 0; k < 3; ++k)
+    {
+      const Measure& corner = corners[v[k]];
+      if (!(corner.Radius > m.Radius))
+      {
+        continue;
+      }
+      const double toVertex = std::sqrt(G::Distance2(corner.Centre, mesh.GetPoint(v[k]))) - corner.Radius;
+      const double toCentroid = std::sqrt(G::Distance2(corner.Centre, p)) - corner.Radius;
+      if (toCentroid <= std::max(toVertex, this->SurfaceTolerance * size))
+      {
+        m.Radius = corner.Radius;
+        std::copy(corner.Centre, corner.Centre + 3, m.Centre);
+      }
+    }
+    return next;
   };
   const int threads = vtkMedialThreadCount(this->NumberOfThreads);
   return SolveInLeafOrder(this, query, items, threads, solve);
@@ -388,7 +665,8 @@ void vtkMedialThickness::WriteArrays(vtkPolyData* output, const vtkMedialTriangl
     vtkDoubleArray* radius = make(vtkMedialArrayNames::MedialRadius, 1);
     vtkDoubleArray* centre = make(vtkMedialArrayNames::MedialCentre, 3);
     vtkDoubleArray* ray = make(vtkMedialArrayNames::RayThickness, 1);
-    const Measure missing{ NaN, { NaN, NaN, NaN }, NaN };
+    vtkDoubleArray* tangent = make(vtkMedialArrayNames::TangentThickness, 1);
+    const Measure missing{ NaN, { NaN, NaN, NaN }, NaN, NaN };
     vtkIdType withoutValue = 0;
     for (vtkIdType i = 0; i < n; ++i)
     {
@@ -397,6 +675,7 @@ void vtkMedialThickness::WriteArrays(vtkPolyData* output, const vtkMedialTriangl
       radius->SetValue(i, m.Radius);
       centre->SetTypedTuple(i, m.Centre);
       ray->SetValue(i, m.Ray);
+      tangent->SetValue(i, 2.0 * m.TangentRadius);
       withoutValue += std::isnan(m.Radius) ? 1 : 0;
     }
     data->SetActiveScalars(vtkMedialArrayNames::Thickness);
@@ -481,19 +760,21 @@ int vtkMedialThickness::RequestData(
   // Passes 2 to 4.
   stages.Begin("Measuring the thickness at the vertices", 0.1, cellData ? 0.65 : 1.0);
   std::vector<vtkIdType> start, around;
-  TrianglesAroundVertices(mesh, start, around);
+  mesh.TrianglesAroundPoints(start, around);
   std::vector<double> normals;
   std::vector<char> sharp;
   this->VertexNormals(mesh, start, around, normals, sharp);
+  Walls walls;
+  walls.Build(mesh, this->CreaseAngle);
   std::vector<Measure> vertices, cells;
-  if (!this->VertexBalls(mesh, query, param, start, around, normals, sharp, vertices))
+  if (!this->VertexBalls(mesh, query, param, walls, start, around, normals, sharp, vertices))
   {
     return 1; // aborted: leave the output empty
   }
   if (cellData)
   {
     stages.Begin("Measuring the thickness at the cells", 0.65, 1.0);
-    if (!this->CellBalls(mesh, query, param, input->GetNumberOfCells(), cells))
+    if (!this->CellBalls(mesh, query, param, walls, input->GetNumberOfCells(), vertices, cells))
     {
       return 1;
     }
@@ -534,6 +815,8 @@ void vtkMedialThickness::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "MinimumSeparationAngle: " << this->MinimumSeparationAngle << "\n";
   os << indent << "MaximumProtrusion: " << this->MaximumProtrusion << "\n";
+  os << indent << "SurfaceTolerance: " << this->SurfaceTolerance << "\n";
+  os << indent << "CreaseAngle: " << this->CreaseAngle << "\n";
   os << indent << "ComputeCellThickness: " << this->ComputeCellThickness << "\n";
   os << indent << "ThinThreshold: " << this->ThinThreshold << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";

@@ -1,8 +1,35 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class vtkMedialThickness
- * @brief Wall thickness on a closed surface: at every vertex, the diameter of the
- * largest inscribed ball that touches the surface there.
+ * @brief Wall thickness on a closed surface that facets, ripples and sharp edges do
+ * not spoil: at every vertex (and cell), the diameter of the largest inscribed ball
+ * that touches the surface near it, or at a convex edge the thickness of the walls that
+ * meet there.
+ *
+ * What is measured, at a point x of the surface of the solid:
+ *  - Hildebrand and Rüegsegger's local thickness of a point of a solid is the diameter
+ *    of the largest ball inside the solid that contains it; at x, of the largest
+ *    inscribed ball that touches x (TangentThickness approximates it, as this filter
+ *    did before). On a tessellated surface that ball is shrunk by any facet's tilt or
+ *    ripple near x, while a slightly moved ball of the full size touches the surface a
+ *    hair away. So Thickness takes it with a tolerance: the largest inscribed ball whose
+ *    sphere comes within tau of x (|centre - x| - radius <= tau), tau = SurfaceTolerance
+ *    times the local facet size (the longest edge at x; a cell's largest triangle's
+ *    longest edge): the largest local thickness over the solid within tau of x.
+ *  - Walls: the surface split along its creases, edges where adjacent faces' normals
+ *    are more than CreaseAngle apart. Near a convex crease (an edge or a corner of a
+ *    part), the balls that touch x only round the edge: they get smaller the nearer x
+ *    is to it, down to 0 on it, whatever the thickness of the walls that meet there. A
+ *    ball whose contacts lie on walls meeting along convex creases, and are less than
+ *    120 degrees apart seen from its centre, is such a rounding ball; the filter lets it
+ *    slide away from them (while it stays within its own radius of x) until it touches
+ *    a wall across (contacts 120 degrees or more apart): its size is then the walls'. On
+ *    a box every vertex, face, edge or corner gets the box's smallest dimension; a
+ *    wedge whose faces meet at less than 60 degrees (a knife's edge) stays thin, as it is.
+ * Only the solid's own surface bounds a ball: Thickness is never larger than a ball
+ * that fits. The search below is local (an ascent from the tangent ball), so it finds
+ * a local maximum of those definitions, as the sampler's balls are; it may miss a
+ * larger ball within tau reached only by moving against a contact first.
  *
  * Algorithm, in passes:
  *  1. Preparation: the input becomes a solid (vtkMedialTriangleMesh: triangulated,
@@ -13,17 +40,28 @@
  *     (area vector over the product of the two edge lengths squared: exact for
  *     vertices on a sphere, so a tessellated sphere's balls are centred), and the
  *     spread, the largest angle between two adjacent triangles' normals.
- *  3. VertexBalls: the maximal ball tangent at each vertex along its inward normal,
- *     by the sampler's one-pass solver and its rules (MinimumSeparationAngle theta, and
- *     MaximumProtrusion: a ball that crosses the surface around the vertex deeper is
- *     shrunk about its centre until inscribed; see vtkMedialAxisSampler). At a sharp vertex (spread above
- *     theta) the ball is solved along each adjacent triangle's normal and the smallest
- *     is kept; no ball fits at a convex sharp edge or corner, where the thickness is 0,
- *     nor on a closed surface's folds, where every direction leaves the solid at once.
+ *  3. Walls: the triangles joined across every edge that is not a crease (union-find),
+ *     and the pairs of walls that meet along a convex crease.
+ *  4. VertexBalls: the tangent ball, the maximal ball tangent at each vertex along its
+ *     inward normal, by the sampler's one-pass solver and its rules
+ *     (MinimumSeparationAngle theta, and MaximumProtrusion: a ball that crosses the
+ *     surface around the vertex deeper is shrunk about its centre until inscribed; see
+ *     vtkMedialAxisSampler). At a sharp vertex (spread above theta) it is solved along
+ *     each adjacent triangle's normal and the smallest is kept (0 at a convex edge or
+ *     corner, and on a closed surface's folds, where every direction leaves the solid
+ *     at once). Then the grown ball (vtkMedialGrowBall): a tangent ball that was shrunk,
+ *     or that a wall beside the vertex's stopped (its contact less than 120 degrees
+ *     away, on a wall meeting the vertex's along a convex crease), moves its centre
+ *     away from its contacts along the direction that increases its distance to all of
+ *     them fastest, and grows while it stays inscribed and within tau of the vertex
+ *     (one step of one ray and one closest-point query), or while it slides as above;
+ *     at a sharp vertex it starts from a small ball in the wedge of the faces there.
  *     The same pass casts the ray along the inward normal for RayThickness.
- *  4. CellBalls (ComputeCellThickness, or ThinThreshold > 0): the same at the centroid
- *     of each cell's largest triangle, along that triangle's normal.
- *  5. ThinRegions (ThinThreshold > 0): the cells whose Thickness is below the
+ *  5. CellBalls (ComputeCellThickness, or ThinThreshold > 0): the same at the centroid
+ *     of each cell's largest triangle, along that triangle's normal (the grown ball from
+ *     the smooth surface's normal there); a corner's ball that comes as near the
+ *     centroid as to its own vertex (or within tau) counts too.
+ *  6. ThinRegions (ThinThreshold > 0): the cells whose Thickness is below the
  *     threshold, their share of the area and the number of regions they form
  *     (connected through shared vertices).
  *
@@ -32,12 +70,15 @@
  *
  * Output: the input (points, cells and their data) with point data and, with
  * ComputeCellThickness, cell data:
- *  - Thickness (double): the ball's diameter, 2 MedialRadius;
- *  - MedialRadius (double) and MedialCentre (double x3): the ball;
+ *  - Thickness (double): the grown ball's diameter, 2 MedialRadius;
+ *  - MedialRadius (double) and MedialCentre (double x3): that ball;
+ *  - TangentThickness (double): the tangent ball's diameter (0 at convex edges);
  *  - RayThickness (double): the distance along the inward normal to the surface
- *    beyond, the usual "ray" (shape-diameter style) thickness; at least Thickness.
+ *    beyond, the usual "ray" (shape-diameter style) thickness; at least
+ *    TangentThickness.
  * NaN where no value exists (ray escaped; a point that no cell uses). With
- * ThinThreshold > 0, field data ThinAreaFraction and ThinRegionCount.
+ * ThinThreshold > 0, field data ThinAreaFraction and ThinRegionCount (from the cells'
+ * Thickness).
  *
  * Deterministic: the output does not depend on NumberOfThreads.
  *
@@ -87,6 +128,21 @@ public:
   ///@}
 
   ///@{
+  /// How near its vertex (or cell centre) a ball must come, relative to the local facet
+  /// size (the longest edge at the vertex; the cell's largest triangle's longest edge),
+  /// in [0, 10] (default 0.25). See the class comment.
+  vtkSetClampMacro(SurfaceTolerance, double, 0.0, 10.0);
+  vtkGetMacro(SurfaceTolerance, double);
+  ///@}
+
+  ///@{
+  /// Angle between adjacent faces' normals, in degrees in [0, 90] (default 20), above
+  /// which their common edge is a crease between two walls. See the class comment.
+  vtkSetClampMacro(CreaseAngle, double, 0.0, 90.0);
+  vtkGetMacro(CreaseAngle, double);
+  ///@}
+
+  ///@{
   /// Also compute the cell data (default on): one more ball per cell.
   vtkSetMacro(ComputeCellThickness, bool);
   vtkGetMacro(ComputeCellThickness, bool);
@@ -132,19 +188,23 @@ protected:
     double Radius;
     double Centre[3];
     double Ray;
+    double TangentRadius;
   };
+  // The surface split along its creases, and which parts meet along a convex one.
+  struct Walls;
 
   // Pass 2: unit inward normals and sharpness of the prepared mesh's vertices.
   void VertexNormals(const vtkMedialTriangleMesh& mesh, const std::vector<vtkIdType>& start,
     const std::vector<vtkIdType>& around, std::vector<double>& normals, std::vector<char>& sharp);
   // Pass 3: one Measure per prepared vertex. False when aborted.
   bool VertexBalls(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
-    const vtkMedialBallParameters& param, const std::vector<vtkIdType>& start,
+    const vtkMedialBallParameters& param, const Walls& walls, const std::vector<vtkIdType>& start,
     const std::vector<vtkIdType>& around, const std::vector<double>& normals,
     const std::vector<char>& sharp, std::vector<Measure>& measures);
   // Pass 4: one Measure per input cell (NaN for cells without a triangle). False when aborted.
   bool CellBalls(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
-    const vtkMedialBallParameters& param, vtkIdType cells, std::vector<Measure>& measures);
+    const vtkMedialBallParameters& param, const Walls& walls, vtkIdType cells,
+    const std::vector<Measure>& corners, std::vector<Measure>& measures);
   // The measures as point data (input points mapped to prepared vertices by their
   // coordinates) and cell data; counts MissingPoints.
   void WriteArrays(vtkPolyData* output, const vtkMedialTriangleMesh& mesh,
@@ -155,6 +215,8 @@ protected:
 
   double MinimumSeparationAngle = 45.0;
   double MaximumProtrusion = 1e-4;
+  double SurfaceTolerance = 0.25;
+  double CreaseAngle = 20.0;
   bool ComputeCellThickness = true;
   double ThinThreshold = 0.0;
   int NumberOfThreads = 0;

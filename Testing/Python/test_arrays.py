@@ -4,8 +4,9 @@
  - medial_axis on a sphere of radius 1 (numpy arrays): every ball centred near the origin
    with a radius near 1; the same balls from a vtkPolyData and from int32 triangles;
    reconstruct of those balls is a sphere of radius about 1.
- - thickness of a 3 x 2 x 1 box: 1 (the slab) at the centres of its large faces, never
-   more than 1, and the thin share with below.
+ - thickness of a 3 x 2 x 1 box: 1 (the slab) at every vertex, edges and corners
+   included, where the tangent ball alone (tangent_thickness) is 0; nothing thinner than
+   0.5, all of it thinner than 1.01.
  - medial_mesh of the demo shape: one component with Euler characteristic 1 (a ball's),
    faces and edges indexing its vertices, the four type names.
  - junction_graph of the L-shape (3 junctions, 5 end points) and of the square frame
@@ -54,13 +55,16 @@ box_v, box_t = medialaxis.demo_shape("box", box_lengths=(3.0, 2.0, 1.0), resolut
 wall = medialaxis.thickness(box_v, box_t, threads=2, below=0.5)
 check(wall.thickness.shape == (len(box_v),) and wall.medial_centres.shape == (len(box_v), 3),
       f"thickness per vertex {wall.thickness.shape}")
-for centre in ((0, 0, 0.5), (0, 0, -0.5)):
-    i = np.linalg.norm(box_v - centre, axis=1).argmin()
-    check(abs(wall.thickness[i] - 1.0) < 1e-6, f"box: thickness {wall.thickness[i]:.8f} at {centre} is the slab's 1")
-finite = wall.thickness[np.isfinite(wall.thickness)]
-check(finite.max() <= 1.0 + 1e-9, f"box: no thickness above 1 ({finite.max():.8f})")
-check(0.0 < wall.info["thin_area_fraction"] < 0.5 and wall.info["thin_regions"] >= 1,
-      f"box: thinner than 0.5 near the edges only ({wall.info})")
+check(np.abs(wall.thickness - 1.0).max() < 1e-6,
+      f"box: thickness {wall.thickness.min():.8f} to {wall.thickness.max():.8f}, the slab's 1 everywhere")
+check(wall.tangent_thickness.shape == (len(box_v),) and wall.tangent_thickness.min() == 0.0
+      and wall.tangent_thickness.max() <= 1.0 + 1e-9,
+      f"box: the tangent ball alone {wall.tangent_thickness.min()} to {wall.tangent_thickness.max()} (0 on the edges)")
+check(wall.info["thin_area_fraction"] == 0.0 and wall.info["thin_regions"] == 0,
+      f"box: nothing thinner than 0.5 ({wall.info})")
+thick = medialaxis.thickness(box_v, box_t, threads=2, below=1.01)
+check(thick.info["thin_area_fraction"] == 1.0 and thick.info["thin_regions"] == 1,
+      f"box: all of it thinner than 1.01 ({thick.info})")
 
 # The demo shape's medial mesh: a genus-0 solid's medial mesh has chi 1, one component.
 jack_v, jack_t = medialaxis.demo_shape("jack")
@@ -130,6 +134,8 @@ raises(lambda: medialaxis.medial_axis(vertices, triangles, strategy="nearest"), 
 raises(lambda: medialaxis.medial_axis(vertices, triangles, min_angle=200), "min_angle must be a number in [0.0, 179.0]",
        "min_angle 200")
 raises(lambda: medialaxis.thickness(l_vertices, l_triangles), "thickness needs a 3D surface", "2D thickness")
+raises(lambda: medialaxis.thickness(box_v, box_t, surface_tolerance=-1.0), "surface_tolerance must be a number",
+       "negative surface_tolerance")
 raises(lambda: medialaxis.junction_graph([]), "polygons is empty", "no loops")
 raises(lambda: medialaxis.junction_graph([outer[:2]]), "a loop needs 3 or more", "a 2-point loop")
 raises(lambda: medialaxis.reconstruct(balls.centres, balls.radii[:-1]), "2000 centres but 1999 radii", "radii count")

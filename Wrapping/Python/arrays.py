@@ -410,16 +410,18 @@ def medial_mesh(vertices, triangles=None, *, balls=None, samples=10000, seed=1, 
     return Result(out, arrays, info)
 
 
-def thickness(vertices, triangles=None, *, min_angle=45.0, max_protrusion=1e-4, threads=0, below=None):
+def thickness(vertices, triangles=None, *, min_angle=45.0, max_protrusion=1e-4, threads=0, below=None,
+              surface_tolerance=0.25):
     """The wall thickness of a closed triangle mesh at every vertex and triangle
-    (vtkMedialThickness): the diameter of the largest inscribed ball touching there.
+    (vtkMedialThickness): the diameter of the largest inscribed ball touching there
+    (within surface_tolerance times the local facet size; at a convex edge, the walls').
 
     min_angle, max_protrusion and threads as the command line; below: a thickness (in the
     mesh's units) under which the area is counted as thin (--thickness-below).
 
     Returns a Result with thickness (n,), medial_radius (n,), medial_centres (n, 3),
-    ray_thickness (n,) per vertex and cell_thickness (m,) per triangle; info:
-    thin_area_fraction and thin_regions (with below).
+    tangent_thickness (n,), ray_thickness (n,) per vertex and cell_thickness (m,) per
+    triangle; info: thin_area_fraction and thin_regions (with below).
     """
     data, planar = _surface(vertices, triangles)
     if planar:
@@ -429,12 +431,14 @@ def thickness(vertices, triangles=None, *, min_angle=45.0, max_protrusion=1e-4, 
     wall.SetMinimumSeparationAngle(_number(min_angle, "min_angle", 0.0, 179.0))
     wall.SetMaximumProtrusion(_number(max_protrusion, "max_protrusion", 0.0, 1.0))
     wall.SetNumberOfThreads(_count(threads, "threads", 0, 4096))
+    wall.SetSurfaceTolerance(_number(surface_tolerance, "surface_tolerance", 0.0, 10.0))
     if below is not None:
         wall.SetThinThreshold(_number(below, "below", 1e-300, 1e300))
     out = vtkPolyData()
     out.DeepCopy(_run(wall))
     arrays = {"thickness": _array(out, "Thickness"), "medial_radius": _array(out, "MedialRadius"),
-              "medial_centres": _array(out, "MedialCentre"), "ray_thickness": _array(out, "RayThickness")}
+              "medial_centres": _array(out, "MedialCentre"), "tangent_thickness": _array(out, "TangentThickness"),
+              "ray_thickness": _array(out, "RayThickness")}
     cell = _array(out, "Thickness", cells=True)
     if cell is not None:
         arrays["cell_thickness"] = cell

@@ -11,9 +11,13 @@
 //     their edge is within the band too (brute force), its type follows from it, and
 //     the two runs agree (the faces are 90 degrees apart). With a band of 1e-2 of
 //     the diagonal (the largest allowed), seam, junction and rim balls appear and are checked the same way.
-//  3. Smooth shapes at the default theta (a geodesic sphere, a capsule): every ball
-//     has two governors, the cap around P and the contact that stopped it (a sheet),
-//     and no exact point is solved (a tessellated cap is no single face or edge).
+//  3. Smooth shapes at the default theta (a geodesic sphere, a capsule): no ball is a
+//     rim, most (85% or more) have two governors, the cap around P and the contact that
+//     stopped it (a sheet), and no exact point is solved (a tessellated cap is no
+//     single face or edge). A ball centred in a tessellated sphere or tube (the
+//     sampler's balls follow the smooth surface's normals) touches facets all around
+//     within the rounding of its radius, and those more than theta apart count as more
+//     governors: 3.5% of the sphere's balls, 11% of the capsule's.
 //  4. The output is the same for 1 and 2 threads.
 #include "MedialStructureTestUtilities.h"
 
@@ -186,16 +190,23 @@ int CheckSmooth(int shape, int resolution, const char* label)
   classifier->SetSurfaceData(surface);
   classifier->Update();
   vtkPolyData* out = classifier->GetOutput();
+  vtkIdType sheets = 0;
   for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
   {
-    MEDIAL_CHECK(Value(out, "GovernorCount", i) == 2 && Value(out, "MedialPointType", i) == 1,
-      "%s: ball %lld has %g governors, type %g", label, static_cast<long long>(i), Value(out, "GovernorCount", i),
+    const double count = Value(out, "GovernorCount", i);
+    MEDIAL_CHECK(count >= 2 && Value(out, "MedialPointType", i) == std::min(count, 4.0) - 1,
+      "%s: ball %lld has %g governors, type %g", label, static_cast<long long>(i), count,
       Value(out, "MedialPointType", i));
+    sheets += count == 2 ? 1 : 0;
   }
+  const vtkIdType n = out->GetNumberOfPoints();
+  MEDIAL_CHECK(sheets >= 0.85 * n, "%s: only %lld of %lld balls are sheets", label, static_cast<long long>(sheets),
+    static_cast<long long>(n));
   MEDIAL_CHECK(classifier->GetOutput(1)->GetNumberOfPoints() == 0, "%s: %lld exact points from compound governors",
     label, static_cast<long long>(classifier->GetOutput(1)->GetNumberOfPoints()));
-  std::printf("%s at theta 45: all %lld balls are sheets with 2 governors, no exact points\n", label,
-    static_cast<long long>(out->GetNumberOfPoints()));
+  std::printf("%s at theta 45: %lld of %lld balls are sheets with 2 governors, the others touch more; no rim, no "
+              "exact points\n",
+    label, static_cast<long long>(sheets), static_cast<long long>(n));
   return EXIT_SUCCESS;
 }
 

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Wall thickness against closed forms, at the default angle and protrusion:
-//  - a sphere of radius R: 2R at every vertex and cell, within 2%;
+//  - a sphere of radius R: 2R at every vertex and cell, within 2% (Thickness within 1%);
 //  - a hollow sphere with radii R1 > R2: R1 - R2 on both shells, within 2%;
-//  - a box: its smallest dimension on the two largest faces, exactly, wherever the
-//    ball of that diameter fits (at least half of it from the face's border); never
-//    more anywhere; 0 on its convex edges, where no ball touches;
+//  - a box: TangentThickness is its smallest dimension on the two largest faces,
+//    exactly, wherever the ball of that diameter fits (at least half of it from the
+//    face's border), never more anywhere, 0 on its convex edges, where no ball touches
+//    them; Thickness is the smallest dimension everywhere, edges and corners included
+//    (the walls that meet there);
 //  - a torus with radii (R, a): 2a at every vertex, within 2%.
 // Prints the table of the closed forms (expected, min, median, max).
 #include "MedialThicknessTestUtilities.h"
@@ -57,8 +59,11 @@ int TestMedialThicknessClosedForms(int, char*[])
   PrintRow("sphere R = 1.5, 20480 triangles: vertices", 2 * R, sphereVertices);
   PrintRow("sphere R = 1.5, 5120 triangles: cells", 2 * R, sphereCells);
   PrintRow("sphere, 20480 triangles: RayThickness at the vertices", 2 * R, sphereRays);
-  MEDIAL_CHECK(Within(sphereVertices, 2 * R, 0.02), "sphere vertices %g to %g", sphereVertices.Min, sphereVertices.Max);
-  MEDIAL_CHECK(Within(sphereCells, 2 * R, 0.02), "sphere cells %g to %g", sphereCells.Min, sphereCells.Max);
+  MEDIAL_CHECK(Within(sphereVertices, 2 * R, 0.01), "sphere vertices %g to %g", sphereVertices.Min, sphereVertices.Max);
+  MEDIAL_CHECK(Within(sphereCells, 2 * R, 0.01), "sphere cells %g to %g", sphereCells.Min, sphereCells.Max);
+  const Summary sphereTangent = Summarise(PointArray(sphere, vtkMedialArrayNames::TangentThickness), all);
+  PrintRow("sphere, 20480 triangles: TangentThickness at the vertices", 2 * R, sphereTangent);
+  MEDIAL_CHECK(Within(sphereTangent, 2 * R, 0.02), "sphere tangent %g to %g", sphereTangent.Min, sphereTangent.Max);
   MEDIAL_CHECK(Within(sphereRays, 2 * R, 0.02), "sphere rays %g to %g", sphereRays.Min, sphereRays.Max);
 
   const double R1 = 1.0, R2 = 0.6;
@@ -94,13 +99,19 @@ int TestMedialThicknessClosedForms(int, char*[])
         std::fabs(x[1]) <= 1.0 - margin + 1e-12;
     };
   };
-  const Summary fits = Summarise(PointArray(box, vtkMedialArrayNames::Thickness), largestFaces(0.5));
-  const Summary faces = Summarise(PointArray(box, vtkMedialArrayNames::Thickness), largestFaces(0.0));
-  const Summary boxAll = Summarise(PointArray(box, vtkMedialArrayNames::Thickness), all);
-  PrintRow("box 3 x 2 x 1: largest faces, 0.5 or more from their border", 1.0, fits);
-  PrintRow("box: largest faces, all vertices (less near the border, 0 on the edges)", 1.0, faces);
+  const Summary fits = Summarise(PointArray(box, vtkMedialArrayNames::TangentThickness), largestFaces(0.5));
+  const Summary faces = Summarise(PointArray(box, vtkMedialArrayNames::TangentThickness), largestFaces(0.0));
+  const Summary boxAll = Summarise(PointArray(box, vtkMedialArrayNames::TangentThickness), all);
+  const Summary walls = Summarise(PointArray(box, vtkMedialArrayNames::Thickness), all);
+  const Summary wallCells = Summarise(box->GetCellData()->GetArray(vtkMedialArrayNames::Thickness), all);
+  PrintRow("box 3 x 2 x 1: TangentThickness, largest faces, 0.5 or more from their border", 1.0, fits);
+  PrintRow("box: TangentThickness, largest faces, all vertices (less near the border, 0 on the edges)", 1.0, faces);
+  PrintRow("box: Thickness, every vertex", 1.0, walls);
+  PrintRow("box: Thickness, every cell", 1.0, wallCells);
   MEDIAL_CHECK(Within(fits, 1.0, 1e-9), "box faces %.12g to %.12g", fits.Min, fits.Max);
   MEDIAL_CHECK(boxAll.Max <= 1.0 + 1e-9 && boxAll.Min == 0.0, "box: %g to %g", boxAll.Min, boxAll.Max);
+  MEDIAL_CHECK(Within(walls, 1.0, 1e-9) && Within(wallCells, 1.0, 1e-9), "box Thickness: vertices %.12g to %.12g, "
+    "cells %.12g to %.12g", walls.Min, walls.Max, wallCells.Min, wallCells.Max);
 
   const double ring = 1.0, tube = 0.25;
   auto torus = Thickness(MakeShape(vtkMedialShapeSource::TORUS, 48, [&](vtkMedialShapeSource* s) {

@@ -1,0 +1,39 @@
+#!/usr/bin/env python3
+"""vtkMedialThickness on a mesh (default: the shared horse.ply), three runs of every vertex and
+three of every vertex and cell, 2 threads: processor time (user + system, both threads) and
+wall time of each Update. Compare two builds on a shared machine by their processor times.
+
+    /usr/bin/python3 scripts/thickness-timing.py BUILD_DIR [MESH]
+"""
+import os
+import resource
+import sys
+import time
+
+build = sys.argv[1] if len(sys.argv) > 1 else "build"
+mesh = sys.argv[2] if len(sys.argv) > 2 else os.path.join(os.path.dirname(__file__), "..", "..", "shared", "data",
+                                                          "meshes", "horse.ply")
+sys.path.insert(0, os.path.join(build, "lib", "python3", "dist-packages"))
+import medialaxis  # noqa: E402
+
+
+def cpu():
+    usage = resource.getrusage(resource.RUSAGE_SELF)
+    return usage.ru_utime + usage.ru_stime
+
+
+reader = medialaxis.vtkMedialFileReader()
+reader.SetFileName(mesh)
+reader.Update()
+for cells in (False, True):
+    runs = []
+    for _ in range(3):
+        wall = medialaxis.vtkMedialThickness()
+        wall.SetInputData(reader.GetOutput())
+        wall.SetNumberOfThreads(2)
+        wall.SetComputeCellThickness(cells)
+        c0, w0 = cpu(), time.time()
+        wall.Update()
+        runs.append((cpu() - c0, time.time() - w0))
+    print("%s: CPU s %s; wall s %s" % ("every vertex and cell" if cells else "every vertex",
+                                        ", ".join("%.3f" % r[0] for r in runs), ", ".join("%.3f" % r[1] for r in runs)))
