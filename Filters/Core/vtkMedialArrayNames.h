@@ -105,6 +105,28 @@ constexpr const char* MaxProtrusion = "MaxProtrusion";
 
 // Pruning (vtkMedialPruneFilter): the threshold from which a cell is removed.
 constexpr const char* Significance = "Significance";
+
+// The repair's report (vtkMedialRepairFilter), field data of its output and, when a
+// filter repaired its input (RepairMode), of that filter's output: one line per step
+// (a string array), then the counts and the distance.
+constexpr const char* RepairReport = "RepairReport";
+constexpr const char* RepairInputValid = "RepairInputValid";
+constexpr const char* RepairIntersectingPairs = "RepairIntersectingPairs";
+constexpr const char* RepairWeldedPoints = "RepairWeldedPoints";
+constexpr const char* RepairDroppedTriangles = "RepairDroppedTriangles";
+constexpr const char* RepairSplitPoints = "RepairSplitPoints";
+constexpr const char* RepairStitchedEdges = "RepairStitchedEdges";
+constexpr const char* RepairRewoundTriangles = "RepairRewoundTriangles";
+constexpr const char* RepairTurnedShells = "RepairTurnedShells";
+constexpr const char* RepairFilledHoles = "RepairFilledHoles";
+constexpr const char* RepairUnfilledHoles = "RepairUnfilledHoles";
+constexpr const char* RepairResolvedShells = "RepairResolvedShells";
+constexpr const char* RepairJoinedShells = "RepairJoinedShells";
+constexpr const char* RepairTouchingShells = "RepairTouchingShells";
+constexpr const char* RepairRemovedSheets = "RepairRemovedSheets";
+constexpr const char* RepairWrapped = "RepairWrapped";
+constexpr const char* RepairMaximumDistance = "RepairMaximumDistance";
+constexpr const char* RepairBuriedArea = "RepairBuriedArea";
 }
 
 #endif

@@ -138,6 +138,11 @@ public:
   /// (vtkMedialGeometry::TrianglesCross; touching does not count).
   bool TriangleCrossesSurface(const double a[3], const double b[3], const double c[3]) const;
 
+  /// Pairs of triangles that may intersect other than where they share an edge or a
+  /// corner (vtkMedialTriangleBVH::FindIntersectingPairs, tolerance 1e-9 of the
+  /// diagonal plus the coordinates' rounding).
+  void FindIntersectingPairs(int threads, std::vector<std::pair<vtkIdType, vtkIdType>>& pairs) const;
+
   /// Unit outward normal of mesh triangle t, from the tree (the same values as the
   /// mesh's, which a caller that only queries may then release: ReleaseNormals).
   const double* GetNormal(vtkIdType t) const { return this->Tree.GetPlane(t); }
