@@ -7,4 +7,4 @@ export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq \
   cmake ninja-build g++ make libvtk9-dev python3-vtk9 vtk9 python3-numpy \
-  libboost-dev libcgal-dev xvfb xauth libgl1-mesa-dri openmpi-bin libopenmpi-dev >/dev/null
+  libboost-dev libcgal-dev libeigen3-dev xvfb xauth libgl1-mesa-dri openmpi-bin libopenmpi-dev >/dev/null
