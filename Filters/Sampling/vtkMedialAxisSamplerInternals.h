@@ -16,6 +16,9 @@
 #include "vtkMedialBallSolver.h"
 #include "vtkMedialSampleRecord.h"
 
+#include "vtkFieldData.h"
+#include "vtkSmartPointer.h"
+
 #include <new>
 #include <vector>
 
@@ -34,6 +37,9 @@ public:
     : Self(self)
   {
   }
+
+  /// The repair's report (field data) when PrepareSurface sampled a repaired surface.
+  vtkSmartPointer<vtkFieldData> RepairReport;
 
   /// The 3D surface: mesh preparation (with its warnings) and the queries. False
   /// when RequestData must return `status` (0 on error, 1 when aborted).
