@@ -84,7 +84,12 @@ bool vtkMedialMeshComplex::EdgeInside(vtkIdType e)
   if (this->EdgeState[e] == UNKNOWN)
   {
     const auto& v = this->Power->EdgeVertices[e];
-    this->EdgeState[e] = this->Query->SegmentCrossesSurface(this->Centre(v[0]), this->Centre(v[1])) ? CROSSES : INSIDE;
+    // Balls of two solid components: the edge leaves the solid even where it only
+    // touches the surface (bodies that touch along an edge or at a point).
+    const std::vector<vtkIdType>* solid = this->BallData.SolidComponents;
+    const bool apart = solid && (*solid)[v[0]] >= 0 && (*solid)[v[1]] >= 0 && (*solid)[v[0]] != (*solid)[v[1]];
+    this->EdgeState[e] =
+      apart || this->Query->SegmentCrossesSurface(this->Centre(v[0]), this->Centre(v[1])) ? CROSSES : INSIDE;
   }
   return this->EdgeState[e] == INSIDE;
 }
