@@ -1,4 +1,5 @@
 """medialaxis: medial axis transform filters, measures, readers, writers and pictures for VTK pipelines."""
+from .vtkMedialAxisRepair import *  # noqa: F401,F403
 from .vtkMedialAxisSampling import *  # noqa: F401,F403
 from .vtkMedialAxisPlanar import *  # noqa: F401,F403
 from .vtkMedialAxisStructure import *  # noqa: F401,F403
