@@ -73,7 +73,12 @@ inline vtkMedialSolidPreparation::Repairer vtkMedialMakeRepairer(vtkMedialRepair
     result.Messages.clear();
     for (int i = 0; i < repair->GetNumberOfReportLines(); ++i)
     {
-      result.Messages.push_back(std::string("Repair: ") + repair->GetReportLine(i) + ".");
+      // A shell wound inward is no defect to a filter, which orients as it prepares.
+      const std::string line = repair->GetReportLine(i);
+      if (line.find("wound inward turned over") == std::string::npos)
+      {
+        result.Messages.push_back("Repair: " + line + ".");
+      }
     }
     result.Report = vtkSmartPointer<vtkFieldData>::New();
     result.Report->ShallowCopy(output->GetFieldData());

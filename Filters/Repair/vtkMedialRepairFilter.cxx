@@ -4,6 +4,7 @@
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialPieces.h"
 #include "vtkMedialPipeline.h"
+#include "vtkMedialPlane.h"
 #include "vtkMedialProgress.h"
 #include "vtkMedialSolidCheck.h"
 #include "vtkMedialSurfaceQuery.h"
@@ -280,6 +281,7 @@ private:
   vtkMedialRepairFilter* Self;
   int Threads;
   double Diagonal = 0.0;
+  bool NoSolid = false; // nothing closed was left: the wrap is a thin solid around a sheet
   std::string Error;
   std::string StageName;
   std::chrono::steady_clock::time_point StageStart;
@@ -527,19 +529,40 @@ bool vtkMedialRepairFilter::vtkInternals::Shells(Soup& work, bool& wrap)
         return vtkMedialSurfaceRepair::Clean(soup, counts, error, this->TinyArea()) && counts.BorderEdges == 0 &&
           this->ShellsValid(soup, unused);
       };
-      for (int method = 0; method < 2 && !resolved; ++method)
+      // The shell's triangles in the pairs (pieces[s] keeps the mesh's triangle order).
+      std::vector<vtkIdType> near;
+      {
+        std::vector<vtkIdType> local(m.GetNumberOfTriangles(), -1);
+        vtkIdType next = 0;
+        for (vtkIdType t = 0; t < m.GetNumberOfTriangles(); ++t)
+        {
+          local[t] = m.ShellOfTriangle[t] == s ? next++ : -1;
+        }
+        for (const auto& pair : p.Exact)
+        {
+          if (m.ShellOfTriangle[pair.first] == s && m.ShellOfTriangle[pair.second] == s)
+          {
+            near.push_back(local[pair.first]);
+            near.push_back(local[pair.second]);
+          }
+        }
+      }
+      // A few pairs in a large shell are local folds: the local removal first there.
+      const bool local = 100 * selfPairs[s] < static_cast<vtkIdType>(pieces[s].Triangles.size());
+      for (int attempt = 0; attempt < 2 && !resolved; ++attempt)
       {
         shell = pieces[s];
-        if (method == 0)
+        if ((attempt == 0) != local)
         {
           // The rounding of the exact result can leave slivers and a few crossings
           // along the intersection curves: the local removal takes those.
+          const std::vector<vtkIdType> everywhere;
           resolved = vtkMedialSurfaceRepair::Autorefine(shell, error) &&
-            (tidy(shell) || (vtkMedialSurfaceRepair::RemoveSelfIntersections(shell, error) && tidy(shell)));
+            (tidy(shell) || (vtkMedialSurfaceRepair::RemoveSelfIntersections(shell, everywhere, error) && tidy(shell)));
         }
         else
         {
-          resolved = vtkMedialSurfaceRepair::RemoveSelfIntersections(shell, error) && tidy(shell);
+          resolved = vtkMedialSurfaceRepair::RemoveSelfIntersections(shell, near, error) && tidy(shell);
         }
         resolved = resolved && this->Moved(pieces[s], shell) <= MovedTolerance * this->Diagonal;
       }
@@ -594,17 +617,25 @@ bool vtkMedialRepairFilter::vtkInternals::RemoveSheets(Soup& work, bool& wrap)
   }
   if (!anyClosed)
   {
-    if (this->Self->Mode == WRAP)
+    // Nothing closed: a flat surface bounds no volume whatever is done to it (an error,
+    // or with WRAP a thin solid); a curved one is a solid with holes too large to fill,
+    // which the wrap closes.
+    double centroid[3], values[3], axes[3][3];
+    const vtkIdType np = m.GetNumberOfPoints();
+    auto point = [&](vtkIdType i, double x[3]) { std::copy_n(m.GetPoint(i), 3, x); };
+    vtkMedialPlane::FitPoints(np, point, centroid, values, axes);
+    const double normal[3] = { axes[0][2], axes[1][2], axes[2][2] };
+    const bool flat = vtkMedialPlane::MaxDistance(np, point, centroid, normal) <= 1e-6 * this->Diagonal;
+    if (flat && this->Self->Mode != WRAP)
     {
-      wrap = true;
-      return true;
+      std::ostringstream os;
+      os << "the surface is flat (" << Plural(static_cast<vtkIdType>(m.Shells.size()), "open piece", "open pieces")
+         << " in one plane)";
+      return this->NoVolume(os.str());
     }
-    std::ostringstream os;
-    os << "the surface stays open after the repair (" << m.BoundaryEdges << " boundary edges in "
-       << Plural(static_cast<vtkIdType>(m.Shells.size()), "piece", "pieces")
-       << "; holes larger than MaximumHoleSize " << this->Self->MaximumHoleSize
-       << " of the diagonal are not filled, and a sheet is not the wall of a solid)";
-    return this->NoVolume(os.str());
+    this->NoSolid = true;
+    wrap = true;
+    return true;
   }
   // The solid of the closed shells.
   const Soup solidSoup = SoupOf(m, [&](vtkIdType t) { return closed[m.ShellOfTriangle[t]] != 0; });
@@ -799,11 +830,13 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
     check.Run(m0, original.Query, this->Threads);
   }
   // The input's winding against the outward one the preparation found (the filters
-  // need not care, they orient as they prepare; this filter's output must be oriented).
-  vtkIdType rewound = 0;
+  // need not care, they orient as they prepare; this filter's output must be oriented):
+  // triangles against the rest of their shell, and shells wound inward as a whole.
+  vtkIdType rewound = 0, turned = 0;
   for (const auto& shell : m0.Shells)
   {
-    rewound += shell.Rewound;
+    rewound += std::min(shell.Rewound, shell.Triangles - shell.Rewound);
+    turned += 2 * shell.Rewound > shell.Triangles ? 1 : 0;
   }
   if (!wrapNow)
   {
@@ -814,7 +847,7 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
       self->IntersectingPairs = static_cast<vtkIdType>(original.Exact.size());
       valid = original.Exact.empty();
     }
-    if (valid && rewound == 0)
+    if (valid && rewound == 0 && turned == 0)
     {
       self->InputWasValid = true;
       output->ShallowCopy(input);
@@ -826,7 +859,11 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
       std::vector<std::string> problems = valid ? std::vector<std::string>() : check.Problems();
       if (rewound > 0)
       {
-        problems.push_back(Plural(rewound, "triangle", "triangles") + " wound against their shell's outward orientation");
+        problems.push_back(Plural(rewound, "triangle", "triangles") + " wound against the rest of their shell");
+      }
+      if (turned > 0)
+      {
+        problems.push_back(Plural(turned, "shell", "shells") + " wound inward as a whole");
       }
       for (const std::string& problem : problems)
       {
@@ -893,6 +930,7 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
   // The preparation's winding is the input's only where it did not have to weld or
   // clean; there the soup's orientation is found again (step 2, and at the end).
   self->RewoundTriangles = welded ? 0 : rewound;
+  self->TurnedShells = welded ? 0 : turned;
 
   // 2. Clean, orient, stitch.
   const bool clean = welded || m0.NonManifoldEdges > 0 || m0.NonOrientableComponents > 0 ||
@@ -926,7 +964,11 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
   }
   if (self->RewoundTriangles > 0)
   {
-    this->Line("orient: " + Plural(self->RewoundTriangles, "triangle", "triangles") + " of the input turned over to face out of the solid");
+    this->Line("orient: " + Plural(self->RewoundTriangles, "triangle", "triangles") + " turned over to agree with the rest of their shell");
+  }
+  if (self->TurnedShells > 0)
+  {
+    this->Line("orient: " + Plural(self->TurnedShells, "shell", "shells") + " wound inward turned over to face out of the solid");
   }
 
   // 3. Holes.
@@ -940,7 +982,7 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
       return false;
     }
     vtkIdType faired = 0;
-    double largest = 0.0;
+    double largest = 0.0, largestLeft = 0.0;
     for (const auto& hole : holes)
     {
       self->FilledHoles += hole.Filled ? 1 : 0;
@@ -949,6 +991,7 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
       const bool rim = !(hole.Area < 0.5 * hole.PieceArea);
       self->UnfilledHoles += !hole.Filled && !rim ? 1 : 0;
       largest = hole.Filled ? std::max(largest, hole.Size) : largest;
+      largestLeft = !hole.Filled && !rim ? std::max(largestLeft, hole.Size) : largestLeft;
     }
     if (self->FilledHoles > 0)
     {
@@ -961,7 +1004,8 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
     {
       std::ostringstream os;
       os << "holes: " << Plural(self->UnfilledHoles, "hole", "holes") << " larger than MaximumHoleSize "
-         << self->MaximumHoleSize << " of the diagonal: left to the wrap";
+         << self->MaximumHoleSize << " of the diagonal (the largest " << largestLeft / this->Diagonal
+         << "): left to the wrap";
       this->Line(os.str());
     }
   }
@@ -1001,15 +1045,10 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
   this->Stage("orient");
   if (!wrap)
   {
-    vtkIdType turned = 0;
-    if (vtkMedialSurfaceRepair::OrientToBoundVolume(work, turned, error))
-    {
-      self->TurnedShells = turned;
-      if (turned > 0)
-      {
-        this->Line("orient: " + Plural(turned, "shell", "shells") + " turned over to bound a volume");
-      }
-    }
+    // The steps' own orientation (CGAL's soup orientation picks one per piece) is
+    // settled here: not a change to the input, not reported.
+    vtkIdType settled = 0;
+    vtkMedialSurfaceRepair::OrientToBoundVolume(work, settled, error);
     vtkIdType touching = 0;
     wrap = !this->ShellsValid(work, touching);
     if (wrap && this->Error.empty())
@@ -1027,8 +1066,10 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
       return false;
     }
     std::ostringstream os;
-    os << "wrap: what the exact steps could not make a solid is wrapped (alpha " << self->WrapAlpha << ", offset "
-       << self->WrapOffset << " of the diagonal): " << Plural(static_cast<vtkIdType>(wrapped.Triangles.size()), "triangle", "triangles");
+    os << "wrap: " << (this->NoSolid ? "nothing closed was left (holes too large to fill): the wrap is a thin solid around the surface"
+                                     : "what the exact steps could not make a solid is wrapped")
+       << " (alpha " << self->WrapAlpha << ", offset " << self->WrapOffset << " of the diagonal): "
+       << Plural(static_cast<vtkIdType>(wrapped.Triangles.size()), "triangle", "triangles");
     this->Line(os.str());
     work = wrapped;
   }

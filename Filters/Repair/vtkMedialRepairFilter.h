@@ -107,7 +107,8 @@ public:
 
   ///@{
   /// Holes whose box diagonal is at most this, relative to the surface's, are filled
-  /// (default 0.1); larger ones go to the wrap.
+  /// (default 0.25: the Stanford bunny's largest hole, 0.18, is filled; the cut of a
+  /// sphere whose cap is cut away, 0.36, is not); larger ones go to the wrap.
   vtkSetClampMacro(MaximumHoleSize, double, 0.0, 2.0);
   vtkGetMacro(MaximumHoleSize, double);
   ///@}
@@ -146,8 +147,8 @@ public:
   vtkGetMacro(DroppedTriangles, vtkIdType); ///< invalid, degenerate and duplicate
   vtkGetMacro(SplitPoints, vtkIdType);     ///< split off non-manifold edges and corners
   vtkGetMacro(StitchedEdges, vtkIdType);
-  vtkGetMacro(RewoundTriangles, vtkIdType); ///< input triangles wound against their shell
-  vtkGetMacro(TurnedShells, vtkIdType);     ///< shells turned over to bound a volume
+  vtkGetMacro(RewoundTriangles, vtkIdType); ///< input triangles wound against the rest of their shell
+  vtkGetMacro(TurnedShells, vtkIdType);     ///< input shells wound inward as a whole, turned over
   vtkGetMacro(FilledHoles, vtkIdType);
   vtkGetMacro(UnfilledHoles, vtkIdType);    ///< larger than MaximumHoleSize
   vtkGetMacro(ResolvedShells, vtkIdType);   ///< self-crossing shells made to bound their solid
@@ -176,7 +177,7 @@ protected:
 
   int Mode = AUTO;
   double WeldTolerance = 1e-6;
-  double MaximumHoleSize = 0.1;
+  double MaximumHoleSize = 0.25;
   double WrapAlpha = 0.02;
   double WrapOffset = 0.001;
   bool ReportSteps = true;

@@ -305,7 +305,7 @@ std::vector<char> IntersectingPairs(
   return result;
 }
 
-bool RemoveSelfIntersections(Soup& soup, std::string& error)
+bool RemoveSelfIntersections(Soup& soup, const std::vector<vtkIdType>& near, std::string& error)
 {
   try
   {
@@ -314,7 +314,41 @@ bool RemoveSelfIntersections(Soup& soup, std::string& error)
     {
       return false;
     }
-    const bool solved = PMP::experimental::remove_self_intersections(mesh);
+    // The working faces: `near` grown by three rings (the mesh's faces are the soup's
+    // triangles in order), so that CGAL searches and smooths there only.
+    std::vector<Mesh::Face_index> range;
+    if (near.empty())
+    {
+      range.assign(mesh.faces().begin(), mesh.faces().end());
+    }
+    else
+    {
+      std::vector<char> in(mesh.num_faces(), 0);
+      for (vtkIdType f : near)
+      {
+        if (f >= 0 && static_cast<std::size_t>(f) < in.size() && !in[f])
+        {
+          in[f] = 1;
+          range.push_back(Mesh::Face_index(static_cast<Mesh::size_type>(f)));
+        }
+      }
+      for (int ring = 0; ring < 3; ++ring)
+      {
+        const std::size_t end = range.size();
+        for (std::size_t i = 0; i < end; ++i)
+        {
+          for (Mesh::Face_index g : CGAL::faces_around_face(mesh.halfedge(range[i]), mesh))
+          {
+            if (g != Mesh::null_face() && !in[g])
+            {
+              in[g] = 1;
+              range.push_back(g);
+            }
+          }
+        }
+      }
+    }
+    const bool solved = PMP::experimental::remove_self_intersections(range, mesh);
     mesh.collect_garbage();
     FromMesh(mesh, soup);
     if (!solved)
