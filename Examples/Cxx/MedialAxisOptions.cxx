@@ -72,7 +72,7 @@ const char* Usage =
   "  --weld-tolerance E  points closer than E (relative to the diagonal) are welded\n"
   "                    when the surface is open (default 1e-6)\n"
   "  --max-hole-size E holes up to E across (relative to the diagonal) are filled,\n"
-  "                    larger ones wrapped (default 0.1)\n"
+  "                    larger ones wrapped (default 0.25)\n"
   "  --wrap-alpha E, --wrap-offset E  the alpha wrap's alpha and offset, relative to\n"
   "                    the diagonal (defaults 0.02 and 0.001)\n"
   "Outputs (checked before any work; the extension chooses the format):\n"
