@@ -29,9 +29,14 @@
 class VTKMEDIALAXISREADERS_EXPORT vtkMedialBallCSVReader : public vtkAbstractPolyDataReader
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialBallCSVReader* New();
   vtkTypeMacro(vtkMedialBallCSVReader, vtkAbstractPolyDataReader);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
 protected:
   vtkMedialBallCSVReader() = default;

@@ -35,9 +35,14 @@
 class VTKMEDIALAXISREADERS_EXPORT vtkMedialBallPLYReader : public vtkAbstractPolyDataReader
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialBallPLYReader* New();
   vtkTypeMacro(vtkMedialBallPLYReader, vtkAbstractPolyDataReader);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
   /// 1 when the file's PLY header parses and its vertices have x, y, z and a radius.
   static int CanReadFile(const char* fileName);

@@ -36,9 +36,14 @@
 class VTKMEDIALAXISREADERS_EXPORT vtkMedialBallPLYWriter : public vtkMedialBallWriter
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialBallPLYWriter* New();
   vtkTypeMacro(vtkMedialBallPLYWriter, vtkMedialBallWriter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
   ///@{
   /// VTK_BINARY (default, little endian) or VTK_ASCII.

@@ -35,8 +35,12 @@ struct BallRecords;
 class VTKMEDIALAXISREADERS_EXPORT vtkMedialBallWriter : public vtkWriter
 {
 public:
+  ///@{
+  /// Standard VTK methods: the type queries of vtkTypeMacro (SafeDownCast, IsA,
+  /// NewInstance) and PrintSelf() (the settings). No New(): the class is abstract.
   vtkTypeMacro(vtkMedialBallWriter, vtkWriter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
   ///@{
   /// The file to write.

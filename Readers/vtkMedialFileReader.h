@@ -52,9 +52,14 @@ class vtkAlgorithm;
 class VTKMEDIALAXISREADERS_EXPORT vtkMedialFileReader : public vtkAbstractPolyDataReader
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialFileReader* New();
   vtkTypeMacro(vtkMedialFileReader, vtkAbstractPolyDataReader);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
   /// What the file holds, which decides the reader for an extension.
   enum Contents

@@ -55,9 +55,14 @@ class vtkPolyData;
 class VTKMEDIALAXISREADERS_EXPORT vtkMedialFileWriter : public vtkWriter
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialFileWriter* New();
   vtkTypeMacro(vtkMedialFileWriter, vtkWriter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
   /// What the data is, which decides the writer for an extension (as vtkMedialFileReader's).
   enum Contents

@@ -35,9 +35,14 @@
 class VTKMEDIALAXISREADERS_EXPORT vtkMedialMeshReader : public vtkAbstractPolyDataReader
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialMeshReader* New();
   vtkTypeMacro(vtkMedialMeshReader, vtkAbstractPolyDataReader);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
   /// 1 when the file opens and starts with a valid header 'nv ne nf'; 0 otherwise.
   static int CanReadFile(const char* fileName);

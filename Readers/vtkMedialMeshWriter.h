@@ -30,9 +30,14 @@
 class VTKMEDIALAXISREADERS_EXPORT vtkMedialMeshWriter : public vtkMedialBallWriter
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialMeshWriter* New();
   vtkTypeMacro(vtkMedialMeshWriter, vtkMedialBallWriter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
 protected:
   vtkMedialMeshWriter() = default;

@@ -38,9 +38,14 @@
 class VTKMEDIALAXISREADERS_EXPORT vtkMedialOFFReader : public vtkAbstractPolyDataReader
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialOFFReader* New();
   vtkTypeMacro(vtkMedialOFFReader, vtkAbstractPolyDataReader);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
   /// 1 when the file opens and starts with a valid OFF header (keyword and counts); 0 otherwise.
   static int CanReadFile(const char* fileName);

@@ -5,6 +5,7 @@
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialJunctionFilter.h"
 #include "vtkMedialMessageRelay.h"
+#include "vtkMedialOutline.h"
 
 #include "vtkActor.h"
 #include "vtkAutoInit.h"
@@ -63,30 +64,6 @@ vtkSmartPointer<vtkActor> ActorOf(vtkPolyData* data, double r, double g, double 
   actor->SetMapper(mapper);
   actor->GetProperty()->SetColor(r, g, b);
   return actor;
-}
-
-// The loops of polygon cells and polylines as closed polylines.
-vtkSmartPointer<vtkPolyData> Outline(vtkPolyData* shape)
-{
-  vtkNew<vtkCellArray> edges;
-  for (vtkCellArray* cells : { shape->GetPolys(), shape->GetLines() })
-  {
-    vtkIdType npts;
-    const vtkIdType* ids;
-    for (cells->InitTraversal(); cells->GetNextCell(npts, ids);)
-    {
-      std::vector<vtkIdType> loop(ids, ids + npts);
-      if (cells == shape->GetPolys())
-      {
-        loop.push_back(ids[0]);
-      }
-      edges->InsertNextCell(static_cast<vtkIdType>(loop.size()), loop.data());
-    }
-  }
-  auto outline = vtkSmartPointer<vtkPolyData>::New();
-  outline->SetPoints(shape->GetPoints());
-  outline->SetLines(edges);
-  return outline;
 }
 
 // The points of the graph with one MedialPointType, as spheres of radius `size`.
@@ -357,7 +334,8 @@ vtkSmartPointer<vtkRenderer> vtkMedialScene::AddBalls(vtkRenderer* renderer)
   return strip;
 }
 
-// The polygon (black), the arcs (blue linear, orange parabolic), the maximal disks of
+// The polygon's outline (black: its boundary edges, not a triangulated region's
+// inner edges), the arcs (blue linear, orange parabolic), the maximal disks of
 // the (up to) six largest junctions (grey circles), junctions (red), end points (green).
 void vtkMedialScene::AddGraph(vtkRenderer* renderer, const double normal[3])
 {
@@ -365,7 +343,7 @@ void vtkMedialScene::AddGraph(vtkRenderer* renderer, const double normal[3])
   const double diagonal = this->Surface ? this->Surface->GetLength() : graph->GetLength();
   if (this->Surface)
   {
-    vtkSmartPointer<vtkActor> outline = ActorOf(Outline(this->Surface), 0.1, 0.1, 0.1);
+    vtkSmartPointer<vtkActor> outline = ActorOf(vtkMedialOutline::Boundary(this->Surface), 0.1, 0.1, 0.1);
     outline->GetProperty()->SetLineWidth(3);
     renderer->AddActor(outline);
   }

@@ -17,8 +17,9 @@
  *    Reconstruction, the picture gets a second view on the right of the first: the
  *    reconstruction, shaded in copper, seen through the
  *    same camera.
- *  - 2D (a Graph, vtkMedialJunctionFilter's output): the Surface's loops as black
- *    outlines, the graph's arcs by `ArcType` (blue linear, orange parabolic), the
+ *  - 2D (a Graph, vtkMedialJunctionFilter's output): the Surface's outline in black
+ *    (the edges of one polygon cell only: a triangulated region shows its boundary,
+ *    not its triangles), the graph's arcs by `ArcType` (blue linear, orange parabolic), the
  *    maximal disks of the six largest junctions (grey circles), junctions (red) and
  *    end points (green).
  *
@@ -69,9 +70,14 @@ class vtkRenderer;
 class VTKMEDIALAXISRENDERING_EXPORT vtkMedialScene : public vtkObject
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialScene* New();
   vtkTypeMacro(vtkMedialScene, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
   ///@{
   /// The input shape: a surface (3D) or planar loops (2D).
@@ -125,10 +131,11 @@ public:
   vtkBooleanMacro(ScalarBarVisibility, bool);
   ///@}
 
+  /// What colours the medial points in 3D (ColorBy).
   enum ColorModes
   {
-    RADIUS = 0,
-    POINT_TYPE = 1
+    RADIUS = 0,    ///< the Radius array, with a colour bar
+    POINT_TYPE = 1 ///< the 3D MedialPointType codes (rim, sheet, seam, junction)
   };
 
   ///@{
@@ -162,14 +169,14 @@ public:
   /// The camera's direction (see the class comment).
   enum ViewDirections
   {
-    VIEW_AUTO = 0,
-    VIEW_PLUS_X,
-    VIEW_MINUS_X,
-    VIEW_PLUS_Y,
-    VIEW_MINUS_Y,
-    VIEW_PLUS_Z,
-    VIEW_MINUS_Z,
-    VIEW_ISO
+    VIEW_AUTO = 0, ///< from the principal axes: the longest extent across, the second up
+    VIEW_PLUS_X,   ///< looking along +x
+    VIEW_MINUS_X,  ///< looking along -x
+    VIEW_PLUS_Y,   ///< looking along +y
+    VIEW_MINUS_Y,  ///< looking along -y
+    VIEW_PLUS_Z,   ///< looking along +z
+    VIEW_MINUS_Z,  ///< looking along -z
+    VIEW_ISO       ///< looking along -(1, 1, 1)
   };
 
   ///@{
@@ -195,6 +202,11 @@ public:
 
   /// Renders and writes the picture as a PNG file. 1 on success, 0 on failure (error).
   int WritePNG(const char* fileName);
+
+  /// The camera's frame the scene would use for what is set (see the class comment):
+  /// `right` across the picture, `up`, and `toward` the camera; unit vectors. The web
+  /// page (vtkMedialHTMLWriter) opens with this view.
+  void GetViewAxes(double right[3], double up[3], double toward[3]) const { this->ViewAxes(right, up, toward); }
 
   /// The window of the last Render(), or nullptr.
   vtkRenderWindow* GetRenderWindow();

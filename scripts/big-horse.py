@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Writes horse.ply Loop-subdivided twice (about 1.55 M triangles, as medial-bench builds
-it) to a .vtp, for the limit runs of scripts/limits.sh.   big-horse.py HORSE.ply OUT.vtp [--raw]
+it) to a .vtp, for the limit runs of scripts/limits.py.   big-horse.py HORSE.ply OUT.vtp [--raw]
 Default: binary, zlib-compressed (35 MB). --raw: appended raw binary, uncompressed (68 MB), which
 vtkXMLPolyDataReader reads about 2.3 times faster (measured on the 2-core machine, issue 18)."""
 import sys

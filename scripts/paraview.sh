@@ -11,7 +11,7 @@
 # Usage: sh scripts/paraview.sh [--test] [--gui]     (run as root, or with sudo for apt)
 # Afterwards: build-paraview/root/usr/bin/{pvpython,pvbatch,paraview}, with
 #   LD_LIBRARY_PATH=build-paraview/root/usr/lib/x86_64-linux-gnu, and the plugin
-#   build-paraview/build/lib/paraview-5.11/plugins/MedialAxis/MedialAxis.so (see README).
+#   build-paraview/build/lib/paraview-5.11/plugins/MedialAxis/MedialAxis.so (see docs/paraview.md).
 set -eu
 cd "$(dirname "$0")/.."
 TEST=0

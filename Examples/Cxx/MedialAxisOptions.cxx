@@ -4,6 +4,7 @@
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialFileReader.h"
 #include "vtkMedialFileWriter.h"
+#include "vtkMedialHTMLWriter.h"
 #include "vtkMedialRepairFilter.h"
 #include "vtkMedialScene.h"
 #include "vtkMedialSimplifyFilter.h"
@@ -98,8 +99,9 @@ const char* Usage =
   "                    --stats, the reconstruction error too), and --prune's default scale\n"
   "                    becomes 1.3. Rounds sharp edges: not for clean CAD meshes. --stats\n"
   "                    adds denoise_max_move (largest vertex move / diagonal), denoise_seconds\n"
-  "  --denoise-iterations N, --denoise-passband X  --denoise with N iterations (1 to 1000)\n"
-  "                    or pass band X (0.001 to 2; lower smooths more)\n"
+  "  --denoise-iterations N, --denoise-passband X  --denoise with N iterations (1 to 1000,\n"
+  "                    default 20) or pass band X (0.001 to 2, default 0.03; lower\n"
+  "                    smooths more)\n"
   "  --prune           2D: remove the insignificant branches of the graph (--junctions,\n"
   "                    --render), keeping the topology (tubularity at 0.05). 3D: the scale\n"
   "                    axis transform: balls that another ball covers once all are scaled\n"
@@ -127,7 +129,13 @@ const char* Usage =
   "                    than T (in the input's units), e.g. a printer's minimum wall; a line\n"
   "                    on stdout, or members of the --stats line\n"
   "  --render OUT.png  a picture, offscreen (needs X: run under xvfb-run)\n"
-  "  --view V          auto (default: the longest extent across, the second up), +x -x +y\n"
+  "  --html OUT.html   one self-contained web page of everything this run made (the\n"
+  "                    surface, balls, medial mesh or 2D graph, thickness, reconstruction),\n"
+  "                    to turn around, filter and pick in any current browser, offline\n"
+  "                    (vtk.js, bundled at build time; more than 100k balls are thinned);\n"
+  "                    --stats adds html_bytes, html_balls_shown\n"
+  "  --view V          --render's and --html's view: auto (default: the longest extent\n"
+  "                    across, the second up), +x -x +y\n"
   "                    -y +z -z (look along that axis), iso\n"
   "  --size WxH        picture size in pixels (default 900x640, 900x700 in 2D, twice as wide\n"
   "                    with --reconstruct)\n"
@@ -195,7 +203,9 @@ std::string Range(double lo, double hi)
   return os.str();
 }
 
-// What a flag takes and what it does with it.
+// What a flag takes and what it does with it. docs/cli.md has one row per flag, in this
+// order, with the same range and default (the docs-cli-flags test compares them through
+// --help-table).
 struct Flag
 {
   const char* Long;
@@ -207,8 +217,9 @@ struct Flag
     COUNT,
     NUMBER
   } Kind;
-  double Lo, Hi;
+  double Lo, Hi; // COUNT and NUMBER: the accepted range (Hi 1e300: no upper bound)
   std::function<void(Options&, const std::string& text, double value)> Apply;
+  const char* Default = nullptr; // the default as --help and docs/cli.md spell it, if one
 };
 
 int ParseMethod(const std::string& name)
@@ -284,15 +295,15 @@ const std::vector<Flag>& Flags()
 {
   using F = Flag;
   static const std::vector<Flag> flags = {
-    { "samples", "n", F::COUNT, 1, 1e15, [](Options& o, auto&, double v) { o.Samples = static_cast<long long>(v); } },
-    { "method", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Method = ParseMethod(t); } },
-    { "strategy", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Strategy = ParseStrategy(t); } },
-    { "coverage", nullptr, F::NUMBER, 0, 1, [](Options& o, auto&, double v) { o.Coverage = v; } },
-    { "seed", nullptr, F::COUNT, 0, 9.0e15, [](Options& o, auto&, double v) { o.Seed = static_cast<unsigned long long>(v); } },
-    { "threads", nullptr, F::COUNT, 0, 4096, [](Options& o, auto&, double v) { o.Threads = static_cast<int>(v); } },
-    { "tolerance", nullptr, F::NUMBER, 1e-15, 0.1, [](Options& o, auto&, double v) { o.Tolerance = v; } },
-    { "min-angle", nullptr, F::NUMBER, 0, 179, [](Options& o, auto&, double v) { o.MinAngle = v; } },
-    { "max-protrusion", nullptr, F::NUMBER, 0, 1, [](Options& o, auto&, double v) { o.MaxProtrusion = v; } },
+    { "samples", "n", F::COUNT, 1, 1e15, [](Options& o, auto&, double v) { o.Samples = static_cast<long long>(v); }, "10000" },
+    { "method", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Method = ParseMethod(t); }, "one-pass" },
+    { "strategy", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Strategy = ParseStrategy(t); }, "random" },
+    { "coverage", nullptr, F::NUMBER, 0, 1, [](Options& o, auto&, double v) { o.Coverage = v; }, "0" },
+    { "seed", nullptr, F::COUNT, 0, 9.0e15, [](Options& o, auto&, double v) { o.Seed = static_cast<unsigned long long>(v); }, "1" },
+    { "threads", nullptr, F::COUNT, 0, 4096, [](Options& o, auto&, double v) { o.Threads = static_cast<int>(v); }, "0" },
+    { "tolerance", nullptr, F::NUMBER, 1e-15, 0.1, [](Options& o, auto&, double v) { o.Tolerance = v; }, "1e-6" },
+    { "min-angle", nullptr, F::NUMBER, 0, 179, [](Options& o, auto&, double v) { o.MinAngle = v; }, "45" },
+    { "max-protrusion", nullptr, F::NUMBER, 0, 1, [](Options& o, auto&, double v) { o.MaxProtrusion = v; }, "1e-4" },
     { "balls", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Balls = t; } },
     { "repair", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Repair = ParseRepair(t); } },
     { "weld-tolerance", nullptr, F::NUMBER, 0, 0.01, [](Options& o, auto&, double v) { o.WeldTolerance = v; } },
@@ -301,7 +312,7 @@ const std::vector<Flag>& Flags()
     { "wrap-offset", nullptr, F::NUMBER, 1e-6, 0.1, [](Options& o, auto&, double v) { o.WrapOffset = v; } },
     { "output", "o", F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Output = t; } },
     { "reconstruct", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Reconstruct = t; } },
-    { "resolution", nullptr, F::COUNT, 8, 2048, [](Options& o, auto&, double v) { o.Resolution = static_cast<int>(v); } },
+    { "resolution", nullptr, F::COUNT, 8, 2048, [](Options& o, auto&, double v) { o.Resolution = static_cast<int>(v); }, "128" },
     { "junctions", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Junctions = t; } },
     { "medial-mesh", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.MedialMesh = t; } },
     { "denoise", nullptr, F::SWITCH, 0, 0, [](Options& o, auto&, double) { o.Denoise = true; } },
@@ -309,12 +320,12 @@ const std::vector<Flag>& Flags()
       [](Options& o, auto&, double v) {
         o.Denoise = true;
         o.DenoiseIterations = static_cast<int>(v);
-      } },
+      }, "20" },
     { "denoise-passband", nullptr, F::NUMBER, 0.001, 2,
       [](Options& o, auto&, double v) {
         o.Denoise = true;
         o.DenoisePassBand = v;
-      } },
+      }, "0.03" },
     { "prune", nullptr, F::SWITCH, 0, 0, [](Options& o, auto&, double) { o.Prune = true; } },
     { "prune-threshold", nullptr, F::NUMBER, 0, 1,
       [](Options& o, auto&, double v) {
@@ -323,8 +334,8 @@ const std::vector<Flag>& Flags()
       } },
     { "simplify", nullptr, F::COUNT, 1, 1e9, [](Options& o, auto&, double v) { o.Simplify = static_cast<long long>(v); } },
     { "simplify-method", nullptr, F::TEXT, 0, 0,
-      [](Options& o, auto& t, double) { o.SimplifyMethod = ParseSimplifyMethod(t); } },
-    { "simplify-tolerance", nullptr, F::NUMBER, 0, 1, [](Options& o, auto&, double v) { o.SimplifyTolerance = v; } },
+      [](Options& o, auto& t, double) { o.SimplifyMethod = ParseSimplifyMethod(t); }, "quadric" },
+    { "simplify-tolerance", nullptr, F::NUMBER, 0, 1, [](Options& o, auto&, double v) { o.SimplifyTolerance = v; }, "0.0075" },
     { "thickness", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Thickness = t; } },
     { "thickness-below", nullptr, F::NUMBER, 0, 1e300,
       [](Options& o, auto&, double v) {
@@ -335,9 +346,10 @@ const std::vector<Flag>& Flags()
         o.ThicknessBelow = v;
       } },
     { "render", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Render = t; } },
-    { "view", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.View = ParseView(t); } },
-    { "size", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { ParseSize(t, o.Size); } },
-    { "zoom", nullptr, F::NUMBER, 0.01, 100, [](Options& o, auto&, double v) { o.Zoom = v; } },
+    { "html", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Html = t; } },
+    { "view", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.View = ParseView(t); }, "auto" },
+    { "size", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { ParseSize(t, o.Size); }, "900x640" },
+    { "zoom", nullptr, F::NUMBER, 0.01, 100, [](Options& o, auto&, double v) { o.Zoom = v; }, "1" },
     { "stats", nullptr, F::SWITCH, 0, 0, [](Options& o, auto&, double) { o.Stats = true; } },
     { "quiet", nullptr, F::SWITCH, 0, 0, [](Options& o, auto&, double) { o.Quiet = true; } },
     { "help", "h", F::SWITCH, 0, 0, [](Options&, auto&, double) { Exit(Usage); } },
@@ -347,6 +359,21 @@ const std::vector<Flag>& Flags()
       } },
   };
   return flags;
+}
+
+// The flag table as tab-separated lines (long name, short name, kind, range, default), for
+// the hidden --help-table that scripts/check-cli-page.py reads.
+std::string FlagTable()
+{
+  static const char* const kinds[] = { "switch", "text", "count", "number" };
+  std::ostringstream os;
+  os.precision(17);
+  for (const Flag& f : Flags())
+  {
+    os << f.Long << '\t' << (f.Short ? f.Short : "") << '\t' << kinds[f.Kind] << '\t' << f.Lo << '\t' << f.Hi
+       << '\t' << (f.Default ? f.Default : "") << '\n';
+  }
+  return os.str();
 }
 
 // The flag spelled `name` (--long or -short), or nullptr.
@@ -405,6 +432,16 @@ Options Parse(int argc, char* argv[])
   o.Method = vtkMedialAxisSampler::ONE_PASS;
   o.Strategy = vtkMedialAxisSampler::RANDOM;
   o.View = vtkMedialScene::VIEW_AUTO;
+  // Hidden, not in the table: the table itself, for the docs' check.
+  if (argc == 2 && std::string(argv[1]) == "--help-table")
+  {
+    Exit(FlagTable());
+  }
+  o.CommandLine = "medial-axis";
+  for (int i = 1; i < argc; ++i)
+  {
+    o.CommandLine += std::string(" ") + argv[i];
+  }
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -475,10 +512,10 @@ void CheckWriter(const std::string& path, const std::string& flag, int content)
 void CheckOutputs(const Options& o)
 {
   if (o.Output.empty() && o.Render.empty() && o.Reconstruct.empty() && o.Junctions.empty() && o.Thickness.empty() &&
-    o.MedialMesh.empty() && o.ThicknessBelow <= 0.0 && !o.Stats)
+    o.MedialMesh.empty() && o.Html.empty() && o.ThicknessBelow <= 0.0 && !o.Stats)
   {
     Fail("nothing to write: give -o OUT, --reconstruct OUT, --junctions OUT, --medial-mesh OUT, --thickness OUT, "
-         "--thickness-below T, --render OUT.png or --stats (see --help)");
+         "--thickness-below T, --render OUT.png, --html OUT.html or --stats (see --help)");
   }
   if (!o.Balls.empty())
   {
@@ -518,6 +555,19 @@ void CheckOutputs(const Options& o)
       Fail("--render writes a PNG picture and needs a .png name, got '" + o.Render + "'");
     }
     CheckWritable(o.Render, "--render");
+  }
+  if (!o.Html.empty())
+  {
+    const std::string ext = Extension(o.Html);
+    if (ext != ".html" && ext != ".htm")
+    {
+      Fail("--html writes a web page and needs a .html name, got '" + o.Html + "'");
+    }
+    if (!vtkMedialHTMLWriter::HasViewer())
+    {
+      Fail(std::string("--html: this build has no web viewer: ") + vtkMedialHTMLWriter::GetViewerStatus());
+    }
+    CheckWritable(o.Html, "--html");
   }
   if (!o.Output.empty())
   {

@@ -6,6 +6,8 @@
 //  - Every output path is checked before any work: its extension must be one the
 //    output's writer table (vtkMedialFileWriter) has, and its folder writable.
 //  - A run that writes nothing (no output flag, no --stats) is refused before any work.
+//  - The hidden --help-table prints the flag table (name, short name, kind, range,
+//    default; tab-separated) for the check of docs/cli.md (scripts/check-cli-page.py).
 #ifndef MedialAxisOptions_h
 #define MedialAxisOptions_h
 
@@ -33,6 +35,8 @@ struct Options
   std::string Junctions;   // --junctions: the 2D medial graph
   std::string Thickness;   // --thickness: the surface with its wall thickness
   std::string MedialMesh;  // --medial-mesh: the 3D medial mesh
+  std::string Html;        // --html: the self-contained web page
+  std::string CommandLine; // the arguments, as the page shows them
   bool Denoise = false;          // --denoise, --denoise-*: the surface smoothed first
   int DenoiseIterations = 0;     // --denoise-iterations (0: vtkMedialDenoiseFilter's default)
   double DenoisePassBand = -1.0; // --denoise-passband (negative: the filter's default)

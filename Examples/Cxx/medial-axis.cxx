@@ -7,7 +7,7 @@
 // writes what is asked: the balls, the 2D medial graph (vtkMedialJunctionFilter),
 // the union of balls (vtkMedialBallUnion), the 3D medial mesh (vtkMedialMeshFilter),
 // the wall thickness (vtkMedialThickness),
-// a picture (vtkMedialScene) and a JSON line of figures. Only wiring lives here: every algorithm is in a filter, every
+// a picture (vtkMedialScene), a web page (vtkMedialHTMLWriter) and a JSON line of figures. Only wiring lives here: every algorithm is in a filter, every
 // format in vtkMedialFileReader / vtkMedialFileWriter, every picture in
 // vtkMedialScene. The flag rules are in MedialAxisOptions.h, what is said on
 // stderr in MedialAxisConsole.h.
@@ -21,6 +21,7 @@
 #include "vtkMedialBallUnion.h"
 #include "vtkMedialFileReader.h"
 #include "vtkMedialFileWriter.h"
+#include "vtkMedialHTMLWriter.h"
 #include "vtkMedialBallClassifier.h"
 #include "vtkMedialDenoiseFilter.h"
 #include "vtkMedialJunctionFilter.h"
@@ -213,6 +214,7 @@ public:
   void MedialMesh();
   void Thickness();
   void Render();
+  void WritePage();
   void PrintStats();
 
 private:
@@ -334,7 +336,8 @@ void Program::MedialGraph()
     Fail("--junctions needs planar polygons or closed polylines; '" +
       (this->Opt.Input.empty() ? std::string("(no INPUT)") : this->Opt.Input) + "' is not planar");
   }
-  if (!this->Planar || (this->Opt.Junctions.empty() && this->Opt.Render.empty() && !this->Opt.Stats))
+  if (!this->Planar ||
+    (this->Opt.Junctions.empty() && this->Opt.Render.empty() && this->Opt.Html.empty() && !this->Opt.Stats))
   {
     return;
   }
@@ -538,8 +541,8 @@ void Program::MedialMesh()
 
 // The scale-axis significance 3D pruning keeps: --prune-threshold, or the default
 // scale's 1 - 1/s. After --denoise the default scale is 1.3: the smoothing removed most
-// of the noise the filter's 1.5 is for, and 1.3 keeps more of the shape (README,
-// noisy-horse table: both noise levels within 1% and 2x only so).
+// of the noise the filter's 1.5 is for, and 1.3 keeps more of the shape (the noisy-horse
+// table of docs/how-it-works/pruning.md: both noise levels within 1% and 2x only so).
 double Program::ScaleAxisThreshold() const
 {
   if (this->Opt.PruneThreshold >= 0.0)
@@ -554,7 +557,7 @@ double Program::ScaleAxisThreshold() const
 // 3D --prune: the scale axis transform of the balls (vtkMedialScaleAxisFilter), before
 // they are written, measured or meshed: balls covered at scale s = 1 / (1 - threshold)
 // go. The noise's branches and the balls tangent to tilted facets are covered at a
-// small scale (see the README's noisy-horse table).
+// small scale (see the noisy-horse table of docs/how-it-works/pruning.md).
 void Program::PruneBalls()
 {
   if (!this->Opt.Prune || this->Planar)
@@ -828,6 +831,36 @@ void Program::RepairSurface()
   this->AfterRepair(repair->GetChanged(), repair);
 }
 
+// --html: everything this run made, in one self-contained page (the surface with its
+// thickness when measured).
+void Program::WritePage()
+{
+  if (this->Opt.Html.empty())
+  {
+    return;
+  }
+  this->Out.Begin("Writing " + this->Opt.Html);
+  this->Out.ClearError();
+  vtkNew<vtkMedialHTMLWriter> page;
+  page->SetSurface(this->WallThickness ? this->WallThickness : this->Surface);
+  page->SetBalls(this->Balls);
+  page->SetMedialMesh(this->Mesh);
+  page->SetGraph(this->Graph);
+  page->SetReconstruction(this->Reconstruction);
+  const std::string& input = this->Opt.Input;
+  page->SetTitle(input.empty() ? (this->Opt.Balls.empty() ? "demo:jack" : this->Opt.Balls.c_str()) : input.c_str());
+  page->SetDetails(this->Opt.CommandLine.c_str());
+  page->SetViewDirection(this->Opt.View);
+  page->SetFileName(this->Opt.Html.c_str());
+  if (!page->Write() || !this->Out.GetError().empty())
+  {
+    Fail("cannot write '" + this->Opt.Html + "': " + this->Out.GetError());
+  }
+  this->Json << ", \"html_bytes\": " << page->GetNumberOfBytes()
+             << ", \"html_balls_shown\": " << page->GetNumberOfDisplayedBalls();
+  this->Out.End();
+}
+
 void Program::PrintStats()
 {
   if (!this->Opt.Stats)
@@ -866,6 +899,7 @@ int main(int argc, char* argv[])
   program.MedialMesh();
   program.Thickness();
   program.Render();
+  program.WritePage();
   program.PrintStats();
   return 0;
 }

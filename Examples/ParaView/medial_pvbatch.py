@@ -1,6 +1,6 @@
 """Medial balls of a surface with ParaView's MPI pipeline, gathered into one file.
 
-Usage (pvbatch from scripts/paraview.sh's unpacked ParaView; see the README):
+Usage (pvbatch from scripts/paraview.sh's unpacked ParaView; see docs/paraview.md):
   mpiexec -n R pvbatch Examples/ParaView/medial_pvbatch.py MESH OUT.vtp \\
       [--samples N] [--reconstruct REC.vtp] [--png OUT.png] [--threads T] [--seed S] \\
       [--resolution N] [--plugin MedialAxis.so] [--timing]

@@ -48,62 +48,91 @@
 #ifndef vtkMedialArrayNames_h
 #define vtkMedialArrayNames_h
 
+/// The array names, one constant per array (the file comment says which filter writes each).
 namespace vtkMedialArrayNames
 {
-// Medial balls.
+/// Point data of balls (double): the ball radius.
 constexpr const char* Radius = "Radius";
+/// Point data of balls (double x3): the surface sample P the ball is tangent at.
 constexpr const char* SurfacePoint = "SurfacePoint";
+/// Point data of balls (double x3): the second touching point.
 constexpr const char* ContactPoint = "ContactPoint";
+/// Point data of balls (double): the angle P-centre-contact, in degrees.
 constexpr const char* SeparationAngle = "SeparationAngle";
+/// Point data of balls (vtkIdType): the input cell that P lies on.
 constexpr const char* SourceCellId = "SourceCellId";
+/// Point data of balls (int): the surface regions the ball touches.
 constexpr const char* GovernorCount = "GovernorCount";
+/// Point data (int): 2D 0 end, 1 regular, 2 junction; 3D 0 rim, 1 sheet, 2 seam, 3 junction.
 constexpr const char* MedialPointType = "MedialPointType";
 
-// Cells of the 3D medial mesh (vtkMedialMeshFilter): 0 isolated ball, 1 curve edge,
-// 2 seam edge, 3 sheet triangle.
+/// Cell data of the medial mesh (int): 0 ball, 1 curve edge, 2 seam edge, 3 sheet triangle.
 constexpr const char* MedialCellType = "MedialCellType";
 
-// Cells of the 2D medial graph and of the sampler's links.
+/// Cell data of the 2D medial graph (int): 0 linear, 1 parabolic.
 constexpr const char* ArcType = "ArcType";
+/// Cell data of the 2D medial graph: the input polygon the arc belongs to.
 constexpr const char* PolygonId = "PolygonId";
+/// Cell data of the sampler's links (closest-neighbor): the seed link a line refines.
 constexpr const char* InitialLink = "InitialLink";
 
-// Thickness on the input surface.
+/// Point and cell data of a surface: the wall thickness (the inscribed ball's diameter).
 constexpr const char* Thickness = "Thickness";
+/// Point and cell data of a surface: the radius of the inscribed ball behind it.
 constexpr const char* MedialRadius = "MedialRadius";
+/// Point and cell data of a surface (double x3): that ball's centre.
 constexpr const char* MedialCentre = "MedialCentre";
+/// Point and cell data of a surface: the distance along the inward normal.
 constexpr const char* RayThickness = "RayThickness";
+/// Field data of a surface: the share of the area thinner than the threshold.
 constexpr const char* ThinAreaFraction = "ThinAreaFraction";
+/// Field data of a surface: the number of regions thinner than the threshold.
 constexpr const char* ThinRegionCount = "ThinRegionCount";
 
-// Field data of the sampler.
+/// Field data of the sampler: the samples asked for.
 constexpr const char* RequestedSamples = "RequestedSamples";
+/// Field data of the sampler: the samples that gave no ball.
 constexpr const char* DiscardedSamples = "DiscardedSamples";
+/// Field data of the sampler: the mean iterations per ball.
 constexpr const char* MeanIterations = "MeanIterations";
+/// Field data of the sampler: the samples that reached the iteration cap.
 constexpr const char* CappedSamples = "CappedSamples";
+/// Field data of the sampler's iterative strategies: the samples evaluated.
 constexpr const char* EvaluatedSamples = "EvaluatedSamples";
+/// Field data of the sampler's iterative strategies: the seeds (the first points).
 constexpr const char* SeedSamples = "SeedSamples";
+/// Field data of the sampler (0 or 1): whether the coverage stop was reached.
 constexpr const char* CoverageReached = "CoverageReached";
+/// Field data of the sampler: the largest gap to the union of balls / diagonal.
 constexpr const char* MaxCoverageGap = "MaxCoverageGap";
-// The medial mesh's topology, and the solid's when the surface is closed.
+/// Field data of the medial mesh: its Euler characteristic.
 constexpr const char* EulerCharacteristic = "EulerCharacteristic";
+/// Field data of the medial mesh: its connected components.
 constexpr const char* Components = "Components";
+/// Field data of the medial mesh: the solid's Euler characteristic.
 constexpr const char* SolidEulerCharacteristic = "SolidEulerCharacteristic";
+/// Field data of the medial mesh: the solid's connected components.
 constexpr const char* SolidComponents = "SolidComponents";
 
-// The reconstruction's field image.
+/// Point data of the reconstruction's image: the clamped distance-like field.
 constexpr const char* Distance = "Distance";
 
-// Measures of a reconstruction and of the balls.
+/// Point data of a measured shape: a vertex's distance to the other shape.
 constexpr const char* SurfaceDistance = "SurfaceDistance";
+/// Point data of balls: the radius minus the centre's distance to the surface.
 constexpr const char* Protrusion = "Protrusion";
+/// Field data (2 components): the largest vertex distance / diagonal.
 constexpr const char* VertexMaxError = "VertexMaxError";
+/// Field data (2 components): the mean vertex distance / diagonal.
 constexpr const char* VertexMeanError = "VertexMeanError";
+/// Field data (2 components): the largest distance of area samples / diagonal.
 constexpr const char* AreaMaxError = "AreaMaxError";
+/// Field data (2 components): the mean distance of area samples / diagonal.
 constexpr const char* AreaMeanError = "AreaMeanError";
+/// Field data of balls: the largest protrusion / diagonal.
 constexpr const char* MaxProtrusion = "MaxProtrusion";
 
-// Pruning (vtkMedialPruneFilter): the threshold from which a cell is removed.
+/// Cell data of a pruned axis: the threshold from which pruning removes the cell.
 constexpr const char* Significance = "Significance";
 
 // The repair's report (vtkMedialRepairFilter), field data of its output and, when a

@@ -26,7 +26,7 @@
  * on one of this project's virtual machines a first touch cost about 15 us per 4 kB
  * page, 50 times a huge page's cost per byte; on another, a huge page that the host
  * had taken back cost about 6 ms and 512 fresh 4 kB pages 1.2 ms, and the preparation
- * was faster without it (README, "Huge pages"). Large buffers of the
+ * was faster without it (docs/performance.md, "Huge pages"). Large buffers of the
  * preparation should all be vtkMedialBuffer, not std::vector, either way.
  */
 #ifndef vtkMedialBuffer_h

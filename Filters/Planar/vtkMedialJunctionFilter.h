@@ -63,20 +63,27 @@
 class VTKMEDIALAXISPLANAR_EXPORT vtkMedialJunctionFilter : public vtkPolyDataAlgorithm
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialJunctionFilter* New();
   vtkTypeMacro(vtkMedialJunctionFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
+  /// The 2D codes of the point-data array MedialPointType.
   enum PointTypes
   {
-    END_POINT = 0,
-    REGULAR_POINT = 1,
-    JUNCTION_POINT = 2
+    END_POINT = 0,     ///< the free end of a branch (one arc)
+    REGULAR_POINT = 1, ///< a point inside an arc, or joining two arcs
+    JUNCTION_POINT = 2 ///< where three or more arcs meet (three or more governors)
   };
+  /// The codes of the cell-data array ArcType.
   enum ArcTypes
   {
-    LINEAR_ARC = 0,
-    PARABOLIC_ARC = 1
+    LINEAR_ARC = 0,   ///< a straight arc, between two edges
+    PARABOLIC_ARC = 1 ///< a parabolic arc, between an edge and a reflex vertex
   };
 
   ///@{

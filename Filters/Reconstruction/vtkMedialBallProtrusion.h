@@ -37,9 +37,14 @@
 class VTKMEDIALAXISRECONSTRUCTION_EXPORT vtkMedialBallProtrusion : public vtkPolyDataAlgorithm
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialBallProtrusion* New();
   vtkTypeMacro(vtkMedialBallProtrusion, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
   ///@{
   /// The inputs: the surface (port 0) and the balls (port 1).

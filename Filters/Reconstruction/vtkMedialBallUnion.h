@@ -92,25 +92,33 @@ class vtkImageData;
 class VTKMEDIALAXISRECONSTRUCTION_EXPORT vtkMedialBallUnion : public vtkPolyDataAlgorithm
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialBallUnion* New();
   vtkTypeMacro(vtkMedialBallUnion, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
+  /// How the grid is sized (ResolutionMode).
   enum ResolutionModes
   {
-    USE_SAMPLE_DIMENSIONS = 0,
-    USE_SPACING = 1
+    USE_SAMPLE_DIMENSIONS = 0, ///< SampleDimensions points per axis
+    USE_SPACING = 1            ///< an isotropic Spacing relative to the diagonal
   };
+  /// What the shape is made of (Primitives).
   enum PrimitiveTypes
   {
-    BALLS = 0,
-    MEDIAL_MESH = 1
+    BALLS = 0,      ///< the union of the balls at the input's points
+    MEDIAL_MESH = 1 ///< the envelope of a medial mesh: balls, cones and slabs
   };
+  /// Balls or disks (Dimension).
   enum Dimensions
   {
-    DIMENSION_AUTOMATIC = 0,
-    DIMENSION_2D = 2,
-    DIMENSION_3D = 3
+    DIMENSION_AUTOMATIC = 0, ///< disks when the centres span exactly a plane, else balls
+    DIMENSION_2D = 2,        ///< disks in the centres' plane
+    DIMENSION_3D = 3         ///< balls
   };
 
   ///@{

@@ -51,15 +51,20 @@
 class VTKMEDIALAXISRECONSTRUCTION_EXPORT vtkMedialReconstructionError : public vtkPolyDataAlgorithm
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialReconstructionError* New();
   vtkTypeMacro(vtkMedialReconstructionError, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
   /// Index of the direction in the two-component results.
   enum Directions
   {
-    RECONSTRUCTION_TO_ORIGINAL = 0,
-    ORIGINAL_TO_RECONSTRUCTION = 1
+    RECONSTRUCTION_TO_ORIGINAL = 0, ///< from the reconstruction's points to the original
+    ORIGINAL_TO_RECONSTRUCTION = 1  ///< from the original's points to the reconstruction
   };
 
   ///@{

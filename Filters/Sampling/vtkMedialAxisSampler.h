@@ -41,9 +41,9 @@
  *     polyhedron, whose balls on a finely tessellated smooth surface are mostly
  *     bounded by the facets next to P (median 0.29 R on a sphere). The default,
  *     45 degrees, was chosen by measurement (scripts/theta-table.py and
- *     scripts/protrusion-table.py, tables in the README): on geodesic spheres the
- *     radius error falls linearly with the facet size and with 1 - cos(theta)
- *     (1.4% of R at 327k triangles); shrinking the balls that cross the ignored
+ *     scripts/protrusion-table.py, tables in docs/how-it-works/theta.md): on
+ *     geodesic spheres the radius error falls linearly with the facet size and with
+ *     1 - cos(theta) (1.4% of R at 327k triangles); shrinking the balls that cross the ignored
  *     cap's surface keeps them inscribed (the angle rule alone lets them cross it by
  *     0.5% (horse.ply) to 1.9% (the open bunny) of the diagonal).
  *     Features whose contacts are at least 45 degrees apart (a dihedral angle of
@@ -110,22 +110,29 @@ class vtkMedialRepairFilter;
 class VTKMEDIALAXISSAMPLING_EXPORT vtkMedialAxisSampler : public vtkPolyDataAlgorithm
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialAxisSampler* New();
   vtkTypeMacro(vtkMedialAxisSampler, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
+  /// How each maximal ball is found (Method; step 4 of the algorithm above).
   enum Methods
   {
-    BISECTION = 0,
-    SHRINKING_BALL = 1,
-    ONE_PASS = 2
+    BISECTION = 0,      ///< bisection on the radius with ContainsBall, to Tolerance
+    SHRINKING_BALL = 1, ///< Ma et al.'s shrinking ball, to the closest blocking point
+    ONE_PASS = 2        ///< the shrinking ball within one BVH traversal (the fastest)
   };
 
+  /// Where the samples go (SamplingStrategy).
   enum SamplingStrategies
   {
-    RANDOM = 0,
-    CLOSEST_NEIGHBOR = 1,
-    FACE_DISTANCE = 2
+    RANDOM = 0,           ///< uniform by area
+    CLOSEST_NEIGHBOR = 1, ///< Poisson-disk seeds linked to their closest neighbours
+    FACE_DISTANCE = 2     ///< Poisson-disk seeds, then the faces farthest from the balls
   };
 
   ///@{
@@ -216,7 +223,7 @@ public:
   /// is where it touches). 0 shrinks every ball that crosses at all; 1 never shrinks:
   /// the angle rule alone (the behaviour before), whose balls cross the surface by up
   /// to 0.47% (horse.ply) to 1.9% (the open bunny) of the diagonal. Chosen by
-  /// measurement (README, "Balls that stay inside").
+  /// measurement (docs/how-it-works/inscribed-balls.md).
   vtkSetClampMacro(MaximumProtrusion, double, 0.0, 1.0);
   vtkGetMacro(MaximumProtrusion, double);
   ///@}

@@ -8,7 +8,7 @@
  * Why: noise tilts the facets, and the sampler's ray starts inward along each facet's
  * normal, so a bumpy surface gives small balls tangent to the bumps where the clean
  * shape has large ones. No pruning brings back balls that were never sampled (see the
- * README's noisy-horse table). Low-passing the surface first gives the large balls
+ * noisy-horse table in docs/how-it-works/pruning.md). Low-passing the surface first gives the large balls
  * back; the scale axis (vtkMedialScaleAxisFilter) then removes the noise left.
  *
  * Algorithm: points with exactly the same coordinates are welded first (OBJ and STL
@@ -39,9 +39,14 @@
 class VTKMEDIALAXISSAMPLING_EXPORT vtkMedialDenoiseFilter : public vtkPolyDataAlgorithm
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialDenoiseFilter* New();
   vtkTypeMacro(vtkMedialDenoiseFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
   ///@{
   /// Iterations of the windowed sinc filter, the degree of its polynomial (default 20).

@@ -54,25 +54,31 @@
 class VTKMEDIALAXISSOURCES_EXPORT vtkMedialShapeSource : public vtkPolyDataAlgorithm
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialShapeSource* New();
   vtkTypeMacro(vtkMedialShapeSource, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
+  /// The shapes (Shape; each is described in the class comment).
   enum Shapes
   {
-    JACK = 0,
-    SPHERE = 1,
-    BOX = 2,
-    CAPSULE = 3,
-    L_SHAPE = 4,
-    RECTANGLE = 5,
-    SQUARE_FRAME = 6,
-    STAR = 7,
-    TORUS = 8,
-    HOLLOW_SPHERE = 9,
-    RINGS = 10,
-    ELLIPSE = 11,
-    TREFOIL = 12
+    JACK = 0,          ///< the demo: a ball with three arms (3D)
+    SPHERE = 1,        ///< a geodesic sphere (3D)
+    BOX = 2,           ///< an axis-aligned box (3D)
+    CAPSULE = 3,       ///< a cylinder with hemispherical caps (3D)
+    L_SHAPE = 4,       ///< an L with unit-wide arms (2D)
+    RECTANGLE = 5,     ///< a rectangle (2D)
+    SQUARE_FRAME = 6,  ///< a square with a square hole (2D)
+    STAR = 7,          ///< a star with wobbled spikes (2D)
+    TORUS = 8,         ///< a torus (3D)
+    HOLLOW_SPHERE = 9, ///< a sphere with a concentric cavity (3D)
+    RINGS = 10,        ///< Genus rings blended side by side (3D)
+    ELLIPSE = 11,      ///< a finely polygonised ellipse (2D)
+    TREFOIL = 12       ///< a rounded 3-armed star (2D)
   };
 
   ///@{

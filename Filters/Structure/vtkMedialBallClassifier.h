@@ -65,17 +65,22 @@ class vtkMedialSurfaceQuery;
 class VTKMEDIALAXISSTRUCTURE_EXPORT vtkMedialBallClassifier : public vtkPolyDataAlgorithm
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialBallClassifier* New();
   vtkTypeMacro(vtkMedialBallClassifier, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
   /// MedialPointType's 3D codes.
   enum PointTypes
   {
-    RIM = 0,
-    SHEET = 1,
-    SEAM = 2,
-    JUNCTION = 3
+    RIM = 0,     ///< at most one governor: a sheet's free boundary
+    SHEET = 1,   ///< two governors
+    SEAM = 2,    ///< three governors: where sheets meet
+    JUNCTION = 3 ///< four or more governors: where seams meet
   };
 
   ///@{

@@ -54,9 +54,9 @@
  *    SolidComponents are reported (a warning when they differ); a cavity counts with
  *    the body around it (a hollow sphere is one solid of characteristic 2). Measured
  *    equal on the four closed shared meshes and on generated solids of genus 0 to 3
- *    and a hollow sphere with the sampler's defaults (see the README). Open surfaces have no solid: the result
- *    is built the same way (inside tests by ray parity are then unreliable near the
- *    holes) and nothing is promised.
+ *    and a hollow sphere with the sampler's defaults (see docs/how-it-works/medial-mesh.md).
+ *    Open surfaces have no solid: the result is built the same way (inside tests by
+ *    ray parity are then unreliable near the holes) and nothing is promised.
  *
  * Pieces (vtkMedialPieces): first piece. The filter asks for the whole surface and
  * every ball, piece 0 builds the whole mesh, the other pieces stay empty.
@@ -102,16 +102,22 @@ class vtkPointSet;
 class VTKMEDIALAXISSTRUCTURE_EXPORT vtkMedialMeshFilter : public vtkPolyDataAlgorithm
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialMeshFilter* New();
   vtkTypeMacro(vtkMedialMeshFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
+  /// The codes of the cell-data array MedialCellType.
   enum CellTypes
   {
-    ISOLATED_BALL = 0,
-    CURVE_EDGE = 1,
-    SEAM_EDGE = 2,
-    SHEET_TRIANGLE = 3
+    ISOLATED_BALL = 0, ///< a vertex cell: a ball in no edge or triangle
+    CURVE_EDGE = 1,    ///< a line of a medial curve (in no triangle)
+    SEAM_EDGE = 2,     ///< a line where three or more sheets meet
+    SHEET_TRIANGLE = 3 ///< a triangle of a medial sheet
   };
 
   ///@{

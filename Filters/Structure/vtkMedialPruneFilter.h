@@ -61,17 +61,23 @@
 class VTKMEDIALAXISSTRUCTURE_EXPORT vtkMedialPruneFilter : public vtkPolyDataAlgorithm
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialPruneFilter* New();
   vtkTypeMacro(vtkMedialPruneFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
+  /// The significance measures (Measure; each is described in the class comment).
   enum Measures
   {
-    EROSION_THICKNESS = 0,
-    TUBULARITY = 1,
-    LAMBDA = 2,
-    SEPARATION_ANGLE = 3,
-    SCALE_AXIS = 4
+    EROSION_THICKNESS = 0, ///< B - R relative to the diagonal (Liu et al. 2011)
+    TUBULARITY = 1,        ///< (B - R) / B, scale-free
+    LAMBDA = 2,            ///< R sin(theta / 2) relative to the diagonal (Chazal and Lieutier)
+    SEPARATION_ANGLE = 3,  ///< the angle theta between the contacts, in degrees
+    SCALE_AXIS = 4         ///< 1 - 1 / s, s the covering scale (Giesen et al.)
   };
 
   ///@{

@@ -43,9 +43,14 @@
 class VTKMEDIALAXISSTRUCTURE_EXPORT vtkMedialScaleAxisFilter : public vtkPolyDataAlgorithm
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialScaleAxisFilter* New();
   vtkTypeMacro(vtkMedialScaleAxisFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
   /// Covering scales above this are not resolved: such balls get Significance 1.
   static constexpr double MaximumScale = 16.0;

@@ -22,8 +22,8 @@
  * others; once only such collapses are left, the one that moves the surface least goes
  * first. The quadric alone lets corners and thin tips be pulled in by many cheap
  * collapses: fandisk at K = 100 went from 2.88% of the diagonal to 2.35% (measured
- * with vtkMedialReconstructionError on the MEDIAL_MESH envelope; see the README's K
- * table).
+ * with vtkMedialReconstructionError on the MEDIAL_MESH envelope; see the K table in
+ * docs/how-it-works/simplification.md).
  *
  * COVERAGE, the idea of Coverage Axis (Dou et al. 2022) and Coverage Axis++ (Wang et al.
  * 2024), vtkMedialCoverageSelection: the candidates are the medial mesh's balls, the
@@ -70,9 +70,14 @@ class vtkMedialTriangleMesh;
 class VTKMEDIALAXISSTRUCTURE_EXPORT vtkMedialSimplifyFilter : public vtkPolyDataAlgorithm
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialSimplifyFilter* New();
   vtkTypeMacro(vtkMedialSimplifyFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
   ///@{
   /// The number of balls to keep (default 100).
@@ -80,10 +85,11 @@ public:
   vtkGetMacro(NumberOfBalls, vtkIdType);
   ///@}
 
+  /// The simplification methods (Method).
   enum SimplificationMethod
   {
-    QUADRIC = 0, // Q-MAT: edge collapses under the spherical quadric error
-    COVERAGE = 1 // Coverage Axis: the balls that cover the surface, joined by collapses
+    QUADRIC = 0, ///< Q-MAT: edge collapses under the spherical quadric error
+    COVERAGE = 1 ///< Coverage Axis: the balls that cover the surface, joined by collapses
   };
 
   ///@{

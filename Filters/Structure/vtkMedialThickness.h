@@ -66,9 +66,14 @@ struct vtkMedialBallParameters;
 class VTKMEDIALAXISSTRUCTURE_EXPORT vtkMedialThickness : public vtkPolyDataAlgorithm
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings, and the figures of the last run where there are some).
   static vtkMedialThickness* New();
   vtkTypeMacro(vtkMedialThickness, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
   ///@{
   /// Minimum separation angle theta in degrees, in [0, 179] (default 45, as the

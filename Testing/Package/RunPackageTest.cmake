@@ -1,6 +1,7 @@
 # Driver of the package-outside-project test (see CMakeLists.txt). Arguments:
 # BUILD_DIR (this build), WORK_DIR (scratch, emptied first), SOURCE_DIR (this folder),
-# README (the README whose "Use from C++" section is checked and run).
+# DOC (the guide's C++ page, whose section "Build against the installed package" is
+# checked and run).
 
 # Runs one command; fails the test with its output unless it succeeds.
 function (run working_directory)
@@ -13,41 +14,43 @@ function (run working_directory)
   set(run_output "${out}" PARENT_SCOPE)
 endfunction ()
 
-# The fenced blocks of the README's "## Use from C++" section, by language.
-file(READ "${README}" readme)
-string(FIND "${readme}" "\n## Use from C++\n" begin)
+# The fenced blocks of the guide's "## Build against the installed package" section, by
+# language (a fence may carry more words after the language, e.g. "```sh runnable").
+set(heading "## Build against the installed package")
+file(READ "${DOC}" doc)
+string(FIND "${doc}" "\n${heading}\n" begin)
 if (begin LESS 0)
-  message(FATAL_ERROR "README: no '## Use from C++' section")
+  message(FATAL_ERROR "${DOC}: no '${heading}' section")
 endif ()
 math(EXPR begin "${begin} + 1")
-string(SUBSTRING "${readme}" ${begin} -1 section)
+string(SUBSTRING "${doc}" ${begin} -1 section)
 string(FIND "${section}" "\n## " end) # the next section
 if (end GREATER 0)
   string(SUBSTRING "${section}" 0 ${end} section)
 endif ()
 foreach (language IN ITEMS cmake cpp sh)
-  string(REGEX MATCH "```${language}\n([^`]*)```" block "${section}")
+  string(REGEX MATCH "```${language}[^\n]*\n([^`]*)```" block "${section}")
   if (NOT block)
-    message(FATAL_ERROR "README, Use from C++: no ${language} block")
+    message(FATAL_ERROR "${DOC}, ${heading}: no ${language} block")
   endif ()
-  set(readme_${language} "${CMAKE_MATCH_1}")
+  set(doc_${language} "${CMAKE_MATCH_1}")
 endforeach ()
 file(READ "${SOURCE_DIR}/Project/CMakeLists.txt" project_cmake)
 file(READ "${SOURCE_DIR}/Project/main.cxx" project_cpp)
 foreach (language IN ITEMS cmake cpp)
-  if (NOT readme_${language} STREQUAL project_${language})
-    message(FATAL_ERROR "README, Use from C++: the ${language} block differs from Testing/Package/Project:\n"
-      "--- README\n${readme_${language}}--- Project\n${project_${language}}")
+  if (NOT doc_${language} STREQUAL project_${language})
+    message(FATAL_ERROR "${DOC}, ${heading}: the ${language} block differs from Testing/Package/Project:\n"
+      "--- ${DOC}\n${doc_${language}}--- Project\n${project_${language}}")
   endif ()
 endforeach ()
 
-# The README's commands, line by line, in a folder holding my-project (the example)
+# The guide's commands, line by line, in a folder holding my-project (the example)
 # and build (this build tree).
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
 file(COPY "${SOURCE_DIR}/Project/" DESTINATION "${WORK_DIR}/my-project")
 file(CREATE_LINK "${BUILD_DIR}" "${WORK_DIR}/build" SYMBOLIC)
-string(REPLACE "\n" ";" commands "${readme_sh}")
+string(REPLACE "\n" ";" commands "${doc_sh}")
 foreach (command IN LISTS commands)
   if (command STREQUAL "")
     continue ()

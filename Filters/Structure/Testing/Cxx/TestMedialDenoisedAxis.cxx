@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The medial axis of a noisy surface, the way the README and `medial-axis --denoise
-// --prune` make it: the surface low-pass filtered (vtkMedialDenoiseFilter's defaults:
-// a windowed sinc, 20 iterations, pass band 0.03), the sampler's default balls,
+// The medial axis of a noisy surface, the way `medial-axis --denoise --prune` makes it
+// (docs/how-it-works/pruning.md): the surface low-pass filtered (vtkMedialDenoiseFilter's
+// defaults: a windowed sinc, 20 iterations, pass band 0.03), the sampler's default balls,
 // the scale axis at 1.3 (vtkMedialScaleAxisFilter), the medial mesh.
 //
 // Shapes with a closed-form medial axis, with Gaussian vertex noise of 0.1% and 0.5% of
