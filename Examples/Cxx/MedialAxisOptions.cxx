@@ -74,8 +74,10 @@ const char* Usage =
   "                    when the surface is open (default 1e-6)\n"
   "  --max-hole-size E holes up to E across (relative to the diagonal) are filled,\n"
   "                    larger ones wrapped (default 0.25)\n"
-  "  --wrap-alpha E, --wrap-offset E  the alpha wrap's alpha and offset, relative to\n"
-  "                    the diagonal (defaults 0.02 and 0.001)\n"
+  "  --wrap-alpha E    the alpha wrap's alpha (no feature narrower than it is\n"
+  "                    followed), relative to the diagonal (default 0.02)\n"
+  "  --wrap-offset E   the alpha wrap's distance from the input, relative to the\n"
+  "                    diagonal (default 0.001)\n"
   "Outputs (checked before any work; the extension chooses the format):\n"
   "  -o, --output OUT  the medial balls: .vtp .vtk .ply (radius property) .ma .csv\n"
   "  --reconstruct OUT the surface of the union of the balls: .vtp .vtk .stl .ply .obj;\n"
@@ -305,11 +307,11 @@ const std::vector<Flag>& Flags()
     { "min-angle", nullptr, F::NUMBER, 0, 179, [](Options& o, auto&, double v) { o.MinAngle = v; }, "45" },
     { "max-protrusion", nullptr, F::NUMBER, 0, 1, [](Options& o, auto&, double v) { o.MaxProtrusion = v; }, "1e-4" },
     { "balls", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Balls = t; } },
-    { "repair", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Repair = ParseRepair(t); } },
-    { "weld-tolerance", nullptr, F::NUMBER, 0, 0.01, [](Options& o, auto&, double v) { o.WeldTolerance = v; } },
-    { "max-hole-size", nullptr, F::NUMBER, 0, 2, [](Options& o, auto&, double v) { o.MaximumHoleSize = v; } },
-    { "wrap-alpha", nullptr, F::NUMBER, 1e-4, 1, [](Options& o, auto&, double v) { o.WrapAlpha = v; } },
-    { "wrap-offset", nullptr, F::NUMBER, 1e-6, 0.1, [](Options& o, auto&, double v) { o.WrapOffset = v; } },
+    { "repair", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Repair = ParseRepair(t); }, "auto" },
+    { "weld-tolerance", nullptr, F::NUMBER, 0, 0.01, [](Options& o, auto&, double v) { o.WeldTolerance = v; }, "1e-6" },
+    { "max-hole-size", nullptr, F::NUMBER, 0, 2, [](Options& o, auto&, double v) { o.MaximumHoleSize = v; }, "0.25" },
+    { "wrap-alpha", nullptr, F::NUMBER, 1e-4, 1, [](Options& o, auto&, double v) { o.WrapAlpha = v; }, "0.02" },
+    { "wrap-offset", nullptr, F::NUMBER, 1e-6, 0.1, [](Options& o, auto&, double v) { o.WrapOffset = v; }, "0.001" },
     { "output", "o", F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Output = t; } },
     { "reconstruct", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Reconstruct = t; } },
     { "resolution", nullptr, F::COUNT, 8, 2048, [](Options& o, auto&, double v) { o.Resolution = static_cast<int>(v); }, "128" },
