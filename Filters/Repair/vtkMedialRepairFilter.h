@@ -72,9 +72,14 @@
 class VTKMEDIALAXISREPAIR_EXPORT vtkMedialRepairFilter : public vtkPolyDataAlgorithm
 {
 public:
+  ///@{
+  /// Standard VTK methods: New() (an instance with the defaults below), the type
+  /// queries of vtkTypeMacro (SafeDownCast, IsA, NewInstance) and PrintSelf() (the
+  /// settings and the report of the last update).
   static vtkMedialRepairFilter* New();
   vtkTypeMacro(vtkMedialRepairFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+  ///@}
 
   /// The modes of this filter and of every filter's RepairMode.
   enum Modes
