@@ -881,9 +881,10 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
     {
       return false;
     }
-    this->Line("wrap: the alpha wrap of the input (alpha " + std::to_string(self->WrapAlpha) + ", offset " +
-      std::to_string(self->WrapOffset) + " of the diagonal), as asked: " +
-      Plural(static_cast<vtkIdType>(wrapped.Triangles.size()), "triangle", "triangles"));
+    std::ostringstream os;
+    os << "wrap: the alpha wrap of the input (alpha " << self->WrapAlpha << ", offset " << self->WrapOffset
+       << " of the diagonal), as asked: " << Plural(static_cast<vtkIdType>(wrapped.Triangles.size()), "triangle", "triangles");
+    this->Line(os.str());
     vtkSmartPointer<vtkPolyData> out = ToPolyData(wrapped);
     output->ShallowCopy(out);
     self->Changed = true;
