@@ -10,7 +10,7 @@
  * |---|---|---|
  * | SURFACE | .vtp | vtkXMLPolyDataReader |
  * | SURFACE | .vtk | vtkDataSetReader (any legacy dataset; its outer surface is extracted with vtkDataSetSurfaceFilter) |
- * | SURFACE | .ply | vtkPLYReader |
+ * | SURFACE | .ply | vtkPLYReader (the common binary layout, float vertices and faces alone, is read directly with the same output: vtkMedialPLYSurface.h) |
  * | SURFACE | .stl | vtkSTLReader |
  * | SURFACE | .obj | vtkOBJReader |
  * | SURFACE | .off | vtkMedialOFFReader |
@@ -94,6 +94,10 @@ public:
   /// The extension of `fileName` in lower case with its dot ("" when it has none).
   static std::string GetExtension(const char* fileName);
 
+  /// True when the last update read the file directly (a PLY surface of the common
+  /// binary layout) rather than through the table's reader; the output is the same.
+  vtkGetMacro(ReadDirectly, bool);
+
 protected:
   vtkMedialFileReader() = default;
   ~vtkMedialFileReader() override = default;
@@ -101,6 +105,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Content = SURFACE;
+  bool ReadDirectly = false;
 
 private:
   vtkMedialFileReader(const vtkMedialFileReader&) = delete;

@@ -1,10 +1,13 @@
 #!/usr/bin/python3
 """Writes horse.ply Loop-subdivided twice (about 1.55 M triangles, as medial-bench builds
-it) to a .vtp, for the limit runs of scripts/limits.py.   big-horse.py HORSE.ply OUT.vtp [--raw]
-Default: binary, zlib-compressed (35 MB). --raw: appended raw binary, uncompressed (68 MB), which
-vtkXMLPolyDataReader reads about 2.3 times faster (measured on the 2-core machine, issue 18)."""
+it), for the limit runs of scripts/limits.py and the 1M-ball command line.
+   big-horse.py HORSE.ply OUT.vtp [--raw]    or    big-horse.py HORSE.ply OUT.ply
+.vtp default: binary, zlib-compressed (35 MB). --raw: appended raw binary, uncompressed (68 MB),
+which vtkXMLPolyDataReader reads about 2.3 times faster (measured on the 2-core machine, issue 18).
+.ply: binary little-endian PLY with float vertices (29 MB), the layout the command line reads
+directly (issue 37), as a user would have it."""
 import sys
-from vtkmodules.vtkIOPLY import vtkPLYReader
+from vtkmodules.vtkIOPLY import vtkPLYReader, vtkPLYWriter
 from vtkmodules.vtkFiltersCore import vtkTriangleFilter
 from vtkmodules.vtkFiltersModeling import vtkLoopSubdivisionFilter
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
@@ -16,15 +19,19 @@ triangles.SetInputConnection(reader.GetOutputPort())
 loop = vtkLoopSubdivisionFilter()
 loop.SetInputConnection(triangles.GetOutputPort())
 loop.SetNumberOfSubdivisions(2)
-writer = vtkXMLPolyDataWriter()
+if sys.argv[2].lower().endswith(".ply"):
+    writer = vtkPLYWriter()
+    writer.SetFileTypeToBinary()
+else:
+    writer = vtkXMLPolyDataWriter()
+    if "--raw" in sys.argv[3:]:
+        writer.SetDataModeToAppended()
+        writer.EncodeAppendedDataOff()
+        writer.SetCompressorTypeToNone()
+    else:
+        writer.SetDataModeToBinary()
 writer.SetInputConnection(loop.GetOutputPort())
 writer.SetFileName(sys.argv[2])
-if "--raw" in sys.argv[3:]:
-    writer.SetDataModeToAppended()
-    writer.EncodeAppendedDataOff()
-    writer.SetCompressorTypeToNone()
-else:
-    writer.SetDataModeToBinary()
 if not writer.Write():
     sys.exit("big-horse.py: cannot write " + sys.argv[2])
 print("%s: %d triangles" % (sys.argv[2], loop.GetOutput().GetNumberOfCells()))

@@ -250,6 +250,7 @@ private:
   bool Planar = false;
   int Polygons = 0;
   bool Closed = true; // the sampler saw no boundary edges (or no sampler ran)
+  double SampledProtrusion = -1.0; // the sampler's MaxProtrusion, when it measured it
 };
 
 // The surface: a file, a demo shape, the jack without INPUT (unless --balls).
@@ -396,6 +397,9 @@ void Program::Sample()
   sampler->SetMaximumProtrusion(o.MaxProtrusion);
   sampler->SetRepairMode(this->Planar ? vtkMedialRepairFilter::NONE : this->RepairMode);
   this->ConfigureRepair(sampler->GetRepair());
+  // --stats reports how far the balls cross the surface: the sampler measures it as it
+  // goes (RANDOM strategy; --prune then keeps only some balls, which Protrusion measures).
+  sampler->SetMeasureProtrusion(o.Stats && !o.Prune);
   const Clock::time_point start = Clock::now();
   Run(sampler, this->Out);
   const double seconds = SecondsSince(start);
@@ -405,6 +409,8 @@ void Program::Sample()
   {
     this->AfterRepair(sampler->GetSurfaceRepaired(), sampler->GetRepair());
   }
+  this->SampledProtrusion = sampler->GetMaxProtrusion();
+  this->Balls->GetFieldData()->RemoveArray(vtkMedialArrayNames::MaxProtrusion); // -o is the same without --stats
 
   const int strategy = this->Planar ? vtkMedialAxisSampler::RANDOM : o.Strategy;
   auto& js = this->Json;
@@ -442,20 +448,28 @@ void Program::ReadBalls()
              << ", \"radius_max\": " << range[1];
 }
 
-// How far the balls cross the 3D surface (vtkMedialBallProtrusion), and the limit
-// the sampler was given.
+// How far the balls cross the 3D surface, and the limit the sampler was given: the
+// sampler's own measure where it took one (every ball it made is written), else a pass
+// of vtkMedialBallProtrusion over the balls (read with --balls, pruned, or from an
+// iterative strategy). Both are the exact largest r - d(c).
 void Program::Protrusion(bool sampled)
 {
-  vtkNew<vtkMedialBallProtrusion> protrusion;
-  protrusion->SetSurfaceData(this->Surface);
-  protrusion->SetBallsData(this->Balls);
-  protrusion->SetNumberOfThreads(this->Opt.Threads);
-  Run(protrusion, this->Out);
+  double largest = this->SampledProtrusion;
+  if (!sampled || largest < 0.0)
+  {
+    vtkNew<vtkMedialBallProtrusion> protrusion;
+    protrusion->SetSurfaceData(this->Surface);
+    protrusion->SetBallsData(this->Balls);
+    protrusion->MaximumOnlyOn();
+    protrusion->SetNumberOfThreads(this->Opt.Threads);
+    Run(protrusion, this->Out);
+    largest = protrusion->GetMaxProtrusion();
+  }
   if (sampled)
   {
     this->Json << ", \"max_protrusion\": " << this->Opt.MaxProtrusion;
   }
-  this->Json << ", \"protrusion_max_rel\": " << protrusion->GetMaxProtrusion();
+  this->Json << ", \"protrusion_max_rel\": " << largest;
 }
 
 // --reconstruct: the union of the balls, and its error against a closed input; with

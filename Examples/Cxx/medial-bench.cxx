@@ -14,6 +14,12 @@
 // the sampling strategies' wall time per sample on horse.ply against Random's, in
 // the same run, and Random's with a coverage stop that is never reached, which keeps
 // the same exact coverage as the strategies (--strategies runs only these rows).
+// --cli-run runs only the command-line rows: the CLI itself, as a user runs it, on
+// the horse Loop-subdivided twice written as a binary PLY (or --surface FILE), 1M
+// balls written to a .vtp, without and with --stats, in alternating rounds: wall and
+// CPU seconds, peak RSS and preparation of each run against issue 37's targets (6 s,
+// 500 MiB, 0.7 s), and what --stats costs against the same round's run without it
+// (target: 10%).
 // Prints a table, or one JSON object with --json. Not a test: it checks nothing.
 #include "MedialAxisRuntime.h"
 #include "vtkMedialArrayNames.h"
@@ -35,6 +41,7 @@
 #include "vtkLoopSubdivisionFilter.h"
 #include "vtkNew.h"
 #include "vtkPLYReader.h"
+#include "vtkPLYWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
@@ -43,6 +50,7 @@
 #include <omp.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -467,6 +475,10 @@ struct BenchOptions
   bool Json = false;
   bool StructureOnly = false;
   std::string PreparationFile; // --preparation: only the preparation rows, on this surface
+  bool CliRun = false;         // --cli-run: only the command-line rows
+  std::string CliSurface;      // --surface: their input (default: the subdivided horse as PLY)
+  std::string Cli;             // --cli: the medial-axis program (default: next to this one)
+  int CliRounds = 3;           // --rounds
   bool StrategiesOnly = false;
   vtkIdType StrategySamples = 50000;
   vtkIdType Samples = 200000;
@@ -512,6 +524,22 @@ bool ParseArgs(int argc, char* argv[], BenchOptions& options)
     {
       options.SharedDir = argv[++i];
     }
+    else if (a == "--cli-run")
+    {
+      options.CliRun = true;
+    }
+    else if (a == "--surface" && i + 1 < argc)
+    {
+      options.CliSurface = argv[++i];
+    }
+    else if (a == "--cli" && i + 1 < argc)
+    {
+      options.Cli = argv[++i];
+    }
+    else if (a == "--rounds" && i + 1 < argc)
+    {
+      options.CliRounds = std::max(1, std::atoi(argv[++i]));
+    }
     else
     {
       std::fprintf(stderr,
@@ -520,7 +548,9 @@ bool ParseArgs(int argc, char* argv[], BenchOptions& options)
         "                    [--shared DIR] [--structure (only the 3D classification rows)]\n"
         "                    [--preparation SURFACE (only the preparation rows, on that file)]\n"
         "                    [--strategies (only the sampling-strategy rows)]\n"
-        "                    [--strategy-samples N (per strategy run, default 50000)]\n");
+        "                    [--strategy-samples N (per strategy run, default 50000)]\n"
+        "                    [--cli-run (only the command-line rows: 1M balls, --stats) [--surface FILE]\n"
+        "                     [--cli MEDIAL_AXIS] [--rounds N (default 3)]]\n");
       return false;
     }
   }
@@ -807,6 +837,14 @@ void PrintTables(const BenchFigures& f, const BenchOptions& options, const std::
 }
 }
 
+// The target of a symbolic link (e.g. /proc/self/exe), else `fallback`.
+std::string ReadLink(const char* link, const char* fallback)
+{
+  char path[4096];
+  const ssize_t n = readlink(link, path, sizeof(path) - 1);
+  return n > 0 ? std::string(path, static_cast<size_t>(n)) : std::string(fallback);
+}
+
 // The stages before sampling on `file`, each the median of three runs: reading, the
 // mesh preparation (merge, adjacency, orientation, normals, CDF) and the surface
 // queries' build (the tree); then the ray throughput and the peak RSS of the run.
@@ -909,6 +947,218 @@ int RunPreparation(const std::string& file)
   return 0;
 }
 
+// One run of another program: its wall and CPU seconds (user + system, its own and
+// its children's), peak RSS, and what it wrote on stdout and stderr.
+struct ProcessRun
+{
+  bool Ok = false;
+  double Wall = 0, Cpu = 0, PeakMiB = 0;
+  std::string Out, Err;
+};
+
+std::string ReadWhole(const std::string& path)
+{
+  std::string text;
+  if (FILE* f = std::fopen(path.c_str(), "rb"))
+  {
+    char buffer[4096];
+    for (size_t n; (n = std::fread(buffer, 1, sizeof(buffer), f)) > 0;)
+    {
+      text.append(buffer, n);
+    }
+    std::fclose(f);
+  }
+  return text;
+}
+
+ProcessRun RunProcess(const std::vector<std::string>& args, const std::string& scratch)
+{
+  ProcessRun run;
+  const std::string out = scratch + "/stdout.txt", err = scratch + "/stderr.txt";
+  const double t0 = Now();
+  const pid_t pid = fork();
+  if (pid == 0)
+  {
+    if (!std::freopen(out.c_str(), "w", stdout) || !std::freopen(err.c_str(), "w", stderr))
+    {
+      _exit(127);
+    }
+    std::vector<char*> argv;
+    for (const std::string& a : args)
+    {
+      argv.push_back(const_cast<char*>(a.c_str()));
+    }
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  int status = 0;
+  rusage usage{};
+  if (pid < 0 || wait4(pid, &status, 0, &usage) != pid)
+  {
+    return run;
+  }
+  run.Wall = Now() - t0;
+  run.Cpu = usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+  run.PeakMiB = usage.ru_maxrss / 1024.0;
+  run.Ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  run.Out = ReadWhole(out);
+  run.Err = ReadWhole(err);
+  return run;
+}
+
+// The seconds the CLI printed for a stage ("<stage>: done (S s)"), 0 when absent.
+double StageSeconds(const std::string& err, const std::string& stage)
+{
+  const std::string key = stage + ": done (";
+  const size_t at = err.rfind(key);
+  return at == std::string::npos ? 0.0 : std::atof(err.c_str() + at + key.size());
+}
+
+std::string LoadAverage()
+{
+  std::string text = ReadWhole("/proc/loadavg");
+  const size_t third = text.find(' ', text.find(' ', text.find(' ') + 1) + 1);
+  return third == std::string::npos ? "?" : text.substr(0, third);
+}
+
+// The command-line rows (--cli-run): see the header. Returns the exit code.
+int RunCli(const BenchOptions& options, const char* self)
+{
+  char pattern[] = "/tmp/medial-bench-XXXXXX";
+  if (!mkdtemp(pattern))
+  {
+    std::fprintf(stderr, "medial-bench: no temporary folder\n");
+    return 1;
+  }
+  const std::string scratch = pattern;
+  std::string cli = options.Cli;
+  if (cli.empty())
+  {
+    const std::string me = ReadLink("/proc/self/exe", self);
+    cli = me.substr(0, me.find_last_of('/') + 1) + "medial-axis";
+  }
+  std::string surface = options.CliSurface, label = surface;
+  if (surface.empty())
+  {
+    // The horse Loop-subdivided twice, written as a user would have it: binary PLY.
+    vtkSmartPointer<vtkPolyData> mesh = LoadBenchMesh(options.SharedDir, 2, 230, label);
+    surface = scratch + "/horse-loop2.ply";
+    vtkNew<vtkPLYWriter> writer;
+    writer->SetInputData(mesh);
+    writer->SetFileName(surface.c_str());
+    writer->SetFileTypeToBinary();
+    if (!writer->Write())
+    {
+      std::fprintf(stderr, "medial-bench: cannot write %s\n", surface.c_str());
+      return 1;
+    }
+    label += " (binary PLY)";
+  }
+  const std::string balls = scratch + "/balls.vtp";
+  const std::vector<std::string> plain = { cli, surface, "-n", "1M", "-o", balls };
+  std::vector<std::string> stats = plain;
+  stats.push_back("--stats");
+  const std::string loadBefore = LoadAverage();
+  struct Figures
+  {
+    std::vector<double> Wall, Cpu, Peak, Prepare, Read, Sample, Write;
+  } figures[2];
+  std::vector<double> wallCost, cpuCost;
+  std::string json;
+  for (int round = 0; round < options.CliRounds; ++round)
+  {
+    ProcessRun runs[2];
+    for (int k = 0; k < 2; ++k)
+    {
+      const int which = round % 2 == 0 ? k : 1 - k; // alternate which goes first
+      runs[which] = RunProcess(which == 0 ? plain : stats, scratch);
+      if (!runs[which].Ok)
+      {
+        std::fprintf(stderr, "medial-bench: %s failed:\n%s\n", cli.c_str(), runs[which].Err.c_str());
+        return 1;
+      }
+    }
+    for (int k = 0; k < 2; ++k)
+    {
+      const ProcessRun& r = runs[k];
+      figures[k].Wall.push_back(r.Wall);
+      figures[k].Cpu.push_back(r.Cpu);
+      figures[k].Peak.push_back(r.PeakMiB);
+      figures[k].Prepare.push_back(
+        StageSeconds(r.Err, "Preparing the surface") + StageSeconds(r.Err, "Building the surface queries"));
+      figures[k].Read.push_back(StageSeconds(r.Err, "Reading the surface"));
+      figures[k].Sample.push_back(StageSeconds(r.Err, "Drawing the samples") + StageSeconds(r.Err, "Sampling"));
+      figures[k].Write.push_back(StageSeconds(r.Err, "Writing " + balls));
+    }
+    wallCost.push_back(runs[1].Wall / runs[0].Wall - 1.0);
+    cpuCost.push_back(runs[1].Cpu / runs[0].Cpu - 1.0);
+    json = runs[1].Out;
+  }
+  auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+  };
+  const std::string loadAfter = LoadAverage();
+  const char* names[2] = { "medial-axis SURFACE -n 1M -o balls.vtp", "the same with --stats" };
+  const double wall = median(figures[0].Wall), peak = std::max(median(figures[0].Peak), median(figures[1].Peak));
+  const double prepare = median(figures[0].Prepare), statsWall = median(wallCost), statsCpu = median(cpuCost);
+  if (options.Json)
+  {
+    std::ostringstream js;
+    js << "{\"cli_surface\": \"" << label << "\", \"cli_rounds\": " << options.CliRounds << ", \"load_before\": \""
+       << loadBefore << "\", \"load_after\": \"" << loadAfter << "\"";
+    const char* keys[2] = { "cli_1m", "cli_1m_stats" };
+    for (int k = 0; k < 2; ++k)
+    {
+      js << ", \"" << keys[k] << "\": {\"wall_seconds\": " << median(figures[k].Wall)
+         << ", \"cpu_seconds\": " << median(figures[k].Cpu) << ", \"peak_rss_mib\": " << median(figures[k].Peak)
+         << ", \"preparation_seconds\": " << median(figures[k].Prepare)
+         << ", \"read_seconds\": " << median(figures[k].Read)
+         << ", \"sampling_seconds\": " << median(figures[k].Sample)
+         << ", \"write_seconds\": " << median(figures[k].Write) << "}";
+    }
+    js << ", \"wall_to_target\": " << wall / 6.0 << ", \"peak_rss_to_target\": " << peak / 500.0
+       << ", \"preparation_to_target\": " << prepare / 0.7 << ", \"stats_cost_wall\": " << statsWall
+       << ", \"stats_cost_cpu\": " << statsCpu << ", \"stats_cost_to_target\": " << statsWall / 0.10 << "}";
+    std::printf("%s\n", js.str().c_str());
+  }
+  else
+  {
+    std::printf("command-line runs on %s, %d threads, median of %d alternating rounds; load average before %s, "
+                "after %s:\n",
+      label.c_str(), omp_get_num_procs(), options.CliRounds, loadBefore.c_str(), loadAfter.c_str());
+    std::printf("| run | wall s | CPU s (user + sys) | peak RSS MiB | preparation s | reading s | drawing + "
+                "sampling s | writing s |\n|---|---|---|---|---|---|---|---|\n");
+    for (int k = 0; k < 2; ++k)
+    {
+      const Figures& f = figures[k];
+      std::printf("| %s | %.2f | %.2f | %.0f | %.2f | %.2f | %.2f | %.2f |\n", names[k], median(f.Wall),
+        median(f.Cpu), median(f.Peak), median(f.Prepare), median(f.Read), median(f.Sample), median(f.Write));
+    }
+    std::printf("\nagainst issue 37's targets, same run:\n| figure | measured | target | ratio to target |\n"
+                "|---|---|---|---|\n");
+    std::printf("| wall, 1M balls with reading and writing | %.2f s | 6 s | %.2f |\n", wall, wall / 6.0);
+    std::printf("| peak RSS (the larger of the two runs) | %.0f MiB | 500 MiB | %.2f |\n", peak, peak / 500.0);
+    std::printf("| preparation (merge, orient, normals, tree) | %.2f s | 0.7 s | %.2f |\n", prepare, prepare / 0.7);
+    std::printf("| --stats cost, wall (per round, median) | %.1f%% | 10%% | %.2f |\n", 100.0 * statsWall,
+      statsWall / 0.10);
+    std::printf("| --stats cost, CPU (per round, median) | %.1f%% | 10%% | %.2f |\n", 100.0 * statsCpu,
+      statsCpu / 0.10);
+    std::printf("\nlast --stats line: %s", json.c_str());
+    std::printf("commands: %s %s -n 1M -o balls.vtp [--stats]\n", cli.c_str(), surface.c_str());
+  }
+  std::remove(balls.c_str());
+  std::remove((scratch + "/stdout.txt").c_str());
+  std::remove((scratch + "/stderr.txt").c_str());
+  if (options.CliSurface.empty())
+  {
+    std::remove(surface.c_str());
+  }
+  rmdir(scratch.c_str());
+  return 0;
+}
+
 int main(int argc, char* argv[])
 {
   medialaxis::RestartWithRuntimeSettings(argv);
@@ -920,6 +1170,10 @@ int main(int argc, char* argv[])
   if (!options.PreparationFile.empty())
   {
     return RunPreparation(options.PreparationFile);
+  }
+  if (options.CliRun)
+  {
+    return RunCli(options, argv[0]);
   }
   // The 3D classification rows (first: they are short).
   std::string structureLabel;

@@ -37,6 +37,18 @@ void Inscribe(const vtkMedialSurfaceQuery& query, const vtkMedialSurfaceQuery::C
     out.Shrunk = true;
   }
 }
+
+// Raises `largest` to the ball's protrusion r - d(c) where that is larger: the closest
+// point of the whole surface within r - largest of the centre (a shrinking ball capped
+// at its iterations need not be empty away from the cap either).
+void MeasureProtrusion(const vtkMedialSurfaceQuery& query, const vtkMedialSampleRecord& out, double& largest)
+{
+  vtkMedialSurfaceQuery::ClosestHit closest;
+  if (largest < out.Radius && query.ClosestPoint(out.Centre, out.Radius - largest, closest))
+  {
+    largest = std::max(largest, out.Radius - closest.Distance);
+  }
+}
 }
 
 vtkMedialBallParameters vtkMedialMakeBallParameters(int method, double tolerance,
@@ -54,16 +66,17 @@ vtkMedialBallParameters vtkMedialMakeBallParameters(int method, double tolerance
 // Finds the maximal admissible ball tangent at p (on `triangle`) along the inward normal.
 void vtkMedialSolveBall(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& mesh,
   const vtkMedialBallParameters& param, vtkIdType triangle, const double p[3], vtkMedialSampleRecord& out,
-  vtkIdType hintTriangle, vtkMedialTriangleBVH::BlockerChain* blockers)
+  vtkIdType hintTriangle, vtkMedialTriangleBVH::BlockerChain* blockers, double* largestProtrusion)
 {
   const double* outward = query.GetNormal(triangle);
   const double n[3] = { -outward[0], -outward[1], -outward[2] };
-  vtkMedialSolveBallAlong(query, mesh, param, triangle, p, n, out, hintTriangle, blockers);
+  vtkMedialSolveBallAlong(query, mesh, param, triangle, p, n, out, hintTriangle, blockers, largestProtrusion);
 }
 
 void vtkMedialSolveBallAlong(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& mesh,
   const vtkMedialBallParameters& param, vtkIdType triangle, const double p[3], const double n[3],
-  vtkMedialSampleRecord& out, vtkIdType hintTriangle, vtkMedialTriangleBVH::BlockerChain* blockers)
+  vtkMedialSampleRecord& out, vtkIdType hintTriangle, vtkMedialTriangleBVH::BlockerChain* blockers,
+  double* largestProtrusion)
 {
   vtkMedialSurfaceQuery::TangentBall ball;
   if (blockers)
@@ -103,7 +116,13 @@ void vtkMedialSolveBallAlong(const vtkMedialSurfaceQuery& query, const vtkMedial
     std::copy(q, q + 3, ball.Contact);
     ball.ContactTriangle = hit.Triangle;
     ball.HintTriangle = hintTriangle;
+    ball.MeasureProtrusion = largestProtrusion != nullptr;
+    ball.LargestProtrusion = largestProtrusion ? *largestProtrusion : 0.0;
     query.MaximalTangentBall(p, n, filter, param.MaximumProtrusion, ball);
+    if (largestProtrusion)
+    {
+      *largestProtrusion = ball.LargestProtrusion; // theta = 0: exact, nothing to add
+    }
     if (blockers)
     {
       *blockers = ball.Blockers;
@@ -180,4 +199,8 @@ void vtkMedialSolveBallAlong(const vtkMedialSurfaceQuery& query, const vtkMedial
   out.Angle = G::AngleDegrees(centre, p, closest.Point);
   out.Valid = true;
   Inscribe(query, filter, param.MaximumProtrusion, out);
+  if (largestProtrusion)
+  {
+    MeasureProtrusion(query, out, *largestProtrusion);
+  }
 }

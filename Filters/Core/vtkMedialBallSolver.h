@@ -53,10 +53,17 @@ vtkMedialBallParameters vtkMedialMakeBallParameters(int method, double tolerance
 /// sample's contact); it changes how fast ONE_PASS finds the ball, and the ball only
 /// within the query's 1e-12 slack. `blockers`, the same kind of hint: in, a nearby
 /// ball's blockers (the previous sample's); out, this ball's (ONE_PASS; else empty).
+/// `largestProtrusion`, when given: a running maximum of the balls' protrusions r - d(c)
+/// (absolute; start it at 0), raised to this ball's where that is larger. ONE_PASS
+/// measures it in its own cap search (exact up to the query's slack: away from the cap
+/// the ball is empty by construction), the other methods by a closest-point query
+/// within r - *largestProtrusion of the centre; balls that protrude no more than the
+/// running maximum are not measured further, so it ends exact whatever the order. The
+/// ball is the same with or without it.
 void vtkMedialSolveBall(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& mesh,
   const vtkMedialBallParameters& param, vtkIdType triangle, const double p[3],
   vtkMedialSampleRecord& out, vtkIdType hintTriangle = -1,
-  vtkMedialTriangleBVH::BlockerChain* blockers = nullptr);
+  vtkMedialTriangleBVH::BlockerChain* blockers = nullptr, double* largestProtrusion = nullptr);
 
 /// The same along a given unit inward direction n, e.g. a vertex normal.
 /// `ownTriangle` (never blocking, its input cell is out.SourceCell) may be -1: then
@@ -64,6 +71,6 @@ void vtkMedialSolveBall(const vtkMedialSurfaceQuery& query, const vtkMedialTrian
 void vtkMedialSolveBallAlong(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& mesh,
   const vtkMedialBallParameters& param, vtkIdType ownTriangle, const double p[3], const double n[3],
   vtkMedialSampleRecord& out, vtkIdType hintTriangle = -1,
-  vtkMedialTriangleBVH::BlockerChain* blockers = nullptr);
+  vtkMedialTriangleBVH::BlockerChain* blockers = nullptr, double* largestProtrusion = nullptr);
 
 #endif

@@ -55,7 +55,8 @@ bool vtkMedialSurfaceQuery::IntersectFrom(const double rayOrigin[3], const doubl
       return false;
     }
     const double* n = this->GetNormal(t);
-    const double* v0 = this->Tree.GetTriangleVertices(t);
+    double scratch[9];
+    const double* v0 = this->Tree.GetTriangleVertices(t, scratch);
     double d[3];
     G::Sub(v0, origin, d);
     const double denom = G::Dot(n, direction);
@@ -229,7 +230,8 @@ bool vtkMedialSurfaceQuery::CrossesSurface(const double* const points[], int n) 
     {
       return;
     }
-    const double* v = this->Tree.GetTriangleVertices(t);
+    double scratch[9];
+    const double* v = this->Tree.GetTriangleVertices(t, scratch);
     const double* u[3] = { v, v + 3, v + 6 };
     crosses = n == 2 ? G::SegmentCrossesTriangle(points[0], points[1], u[0], u[1], u[2])
                      : G::TrianglesCross(points, u);

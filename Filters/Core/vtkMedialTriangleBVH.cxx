@@ -978,11 +978,25 @@ bool vtkMedialTriangleBVH::BuildNodes(const vtkMedialTriangleMesh& mesh, const s
   return true;
 }
 
-// The triangles' vertices and planes in leaf order, gathered from the mesh.
+// The triangles' vertices and planes in leaf order, gathered from the mesh; the
+// vertices as floats when every coordinate is one.
 void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh)
 {
   const vtkIdType nt = mesh.GetNumberOfTriangles();
-  this->Vertices.resize(9 * static_cast<size_t>(nt)); // over the build items, read by now
+  const vtkIdType coordinates = 3 * mesh.GetNumberOfPoints();
+  bool floats = true;
+#pragma omp parallel for schedule(static) reduction(&& : floats)
+  for (vtkIdType i = 0; i < coordinates; ++i)
+  {
+    floats = floats && static_cast<double>(static_cast<float>(mesh.Points[i])) == mesh.Points[i];
+  }
+  this->FloatCorners = floats;
+  // Over the build items, read by now (9 floats take the first 36 bytes of each item's 80).
+  float* floatCorners = reinterpret_cast<float*>(this->Vertices.data());
+  if (!floats)
+  {
+    this->Vertices.resize(9 * static_cast<size_t>(nt));
+  }
   // Gathers from all over the mesh: each slot's triangle is fetched ahead (its corners and
   // normal a little less far ahead, once its vertex ids are in).
   constexpr vtkIdType Ahead = 16;
@@ -1007,14 +1021,26 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh)
     const double* normal = mesh.GetNormal(leaf.Triangle);
     std::copy_n(normal, 3, leaf.Plane);
     leaf.Plane[3] = G::Dot(normal, mesh.GetPoint(v[0]));
-    double* corners = &this->Vertices[9 * i];
+    double corners[9];
     for (int j = 0; j < 3; ++j)
     {
       std::copy_n(mesh.GetPoint(v[j]), 3, corners + 3 * j);
     }
+    if (floats)
+    {
+      std::copy_n(corners, 9, floatCorners + 9 * i); // exact: each one is a float
+    }
+    else
+    {
+      std::copy_n(corners, 9, &this->Vertices[9 * i]);
+    }
     leaf.EdgeThird = FloatAbove(static_cast<float>(G::LongestEdge2(corners, corners + 3, corners + 6) / 3.0));
   }
-  vtkMedialReleaseSpareCapacity(this->Vertices); // the build items' last tenth
+  if (floats)
+  {
+    this->Vertices.resize((9 * static_cast<size_t>(nt) + 1) / 2); // 9 floats a triangle
+  }
+  vtkMedialReleaseSpareCapacity(this->Vertices); // the build items' tail
 }
 
 int vtkMedialTriangleBVH::WideLanes(std::int32_t binary, bool root, std::int32_t lanes[4]) const
@@ -1306,14 +1332,18 @@ void vtkMedialTriangleBVH::MeasureSlab(Node& node, const vtkMedialTriangleMesh& 
     axis[k] = node.Axis[k];
   }
   double slabLo = HUGE_VAL, slabHi = -HUGE_VAL;
-  for (const double* v = &this->Vertices[9 * static_cast<size_t>(node.Begin)];
-       v < &this->Vertices[0] + 9 * static_cast<size_t>(node.End); v += 3)
+  for (std::int32_t slot = node.Begin; slot < node.End; ++slot)
   {
-    double x[3];
-    G::Sub(v, this->Origin, x);
-    const double m = G::Dot(axis, x);
-    slabLo = std::min(slabLo, m);
-    slabHi = std::max(slabHi, m);
+    double scratch[9];
+    const double* corners = this->Corners(slot, scratch);
+    for (const double* v = corners; v < corners + 9; v += 3)
+    {
+      double x[3];
+      G::Sub(v, this->Origin, x);
+      const double m = G::Dot(axis, x);
+      slabLo = std::min(slabLo, m);
+      slabHi = std::max(slabHi, m);
+    }
   }
   node.SlabLo = Down(slabLo, this->RoundingPad);
   node.SlabHi = Up(slabHi, this->RoundingPad);
@@ -1418,6 +1448,8 @@ public:
     , ConeSin(cosMinAngle < 1.0 ? std::sqrt(0.5 * (1.0 - cosMinAngle)) : 0.0) // sin(theta / 2)
     , Allowed(allowed)
     , Inscribe(cosMinAngle < 1.0 && allowed < result.Radius)
+    , Measure(cosMinAngle < 1.0 && result.MeasureProtrusion)
+    , CollectCap(this->Inscribe || (this->Measure && result.LargestProtrusion < result.Radius))
     , Radius(result.Radius)
     , Result(result)
     , Work(ThreadScratch())
@@ -1485,7 +1517,7 @@ public:
         }
       }
     }
-    if (this->Inscribe)
+    if (this->CollectCap)
     {
       // Below the final cap's plane: only cap surface there.
       for (size_t i = 0; i < this->Work.LowNodes.size(); ++i)
@@ -1497,9 +1529,11 @@ public:
       }
     }
     this->Result.Radius = this->Radius;
-    if (this->Inscribe && this->Allowed < this->Radius)
+    const bool shrink = this->Inscribe && this->Allowed < this->Radius;
+    const bool measure = this->Measure && this->Result.LargestProtrusion < this->Radius;
+    if (shrink || measure)
     {
-      this->InscribeInCap();
+      this->InscribeInCap(shrink, measure);
     }
   }
 
@@ -1586,7 +1620,7 @@ private:
       return true;
     }
     const FloatNodeTests::Sides side = this->Fast->Side(leaf.Lo, leaf.Hi);
-    if (side == FloatNodeTests::OUTSIDE_CONE && this->Inscribe)
+    if (side == FloatNodeTests::OUTSIDE_CONE && this->CollectCap)
     {
       this->Work.CapSlots.push_back(slot); // it may cross the final ball in the cap
     }
@@ -1597,7 +1631,8 @@ private:
   // with the edge term stored rounded up: never above it, so a skip it allows is sound.
   double Distance2Below(std::int32_t slot) const
   {
-    const double* a = &this->Tree.Vertices[9 * slot];
+    double scratch[9];
+    const double* a = this->Tree.Corners(slot, scratch);
     return G::NearestVertexDistance2(this->Centre, a, a + 3, a + 6) - this->Tree.LeafTriangles[slot].EdgeThird;
   }
 
@@ -1641,7 +1676,8 @@ private:
   // ShrinkOn past the quick tests.
   bool ShrinkWhileBlocked(std::int32_t slot)
   {
-    const double* a = &this->Tree.Vertices[9 * slot];
+    double scratch[9];
+    const double* a = this->Tree.Corners(slot, scratch);
     const double* b = a + 3;
     const double* c = a + 6;
     if (this->Capped && this->BelowCapPlane(a, b, c))
@@ -1746,7 +1782,7 @@ private:
   {
     FloatNodeTests::Lanes lanes;
     this->Fast->TestLanes(this->Tree.WideNodes[index], lanes);
-    if ((lanes.Cap & within) && this->Inscribe)
+    if ((lanes.Cap & within) && this->CollectCap)
     {
       for (int i = 0; i < 4; ++i)
       {
@@ -1848,15 +1884,21 @@ private:
   // The surface of the cap that the angle rule ignored: only what the traversal dropped
   // for the cone (CapNodes, CapSlots) or set aside as reaching into the ball in the cap
   // only (Deferred) can lie inside the final ball, which is inside every earlier one.
-  // Its closest point within Radius - Allowed of the centre, if any, is where the
-  // inscribed ball about the same centre touches.
-  void InscribeInCap()
+  // With `shrink`, its closest point within Radius - Allowed of the centre, if any, is
+  // where the inscribed ball about the same centre touches. With `measure`, the search
+  // reaches to Radius - LargestProtrusion, and a closest point found there (and not
+  // shrunk to) is this ball's protrusion. The triangles are tried in the same order
+  // whatever the reach (a farther reach only culls less), so the first of the closest
+  // ones, the point reported, is the same with or without measuring.
+  void InscribeInCap(bool shrink, bool measure)
   {
     // The cap: (q - c).(p - c) >= r^2 cos(theta), as w.q <= k for the clipping.
     double w[3];
     G::Sub(this->Centre, this->P, w);
     const double k = G::Dot(w, this->Centre) - this->Radius * this->Radius * this->CosMinAngle;
-    const double reach = this->Radius - this->Allowed;
+    const double shrinkReach = shrink ? this->Radius - this->Allowed : 0.0;
+    const double reach =
+      measure ? std::max(shrinkReach, this->Radius - this->Result.LargestProtrusion) : shrinkReach;
     double best2 = reach * reach, best[3] = { 0, 0, 0 };
     double clear2 = this->ClearOf(reach); // follows best2
     std::int32_t bestSlot = -1;
@@ -1867,9 +1909,10 @@ private:
       {
         return false;
       }
-      const double* a = &this->Tree.Vertices[9 * slot];
+      double scratch[9];
+      const double* a = this->Tree.Corners(slot, scratch);
       double q[3];
-      if (this->Distance2Below(slot) >= clear2 ||
+      if (G::NearestVertexDistance2(this->Centre, a, a + 3, a + 6) - leaf.EdgeThird >= clear2 ||
         G::ClosestPointOnTriangle(this->Centre, a, a + 3, a + 6, q) >= best2)
       {
         return false; // the whole triangle is no closer than its part in the cap
@@ -1951,13 +1994,17 @@ private:
         }
       }
     }
-    if (bestSlot >= 0)
+    if (bestSlot >= 0 && shrink && best2 < shrinkReach * shrinkReach)
     {
-      this->Result.Shrunk = true;
+      this->Result.Shrunk = true; // and then it only touches: no protrusion
       this->Result.InscribedRadius = std::sqrt(best2);
       std::copy(best, best + 3, this->Result.InscribedContact);
       this->Result.InscribedTriangle = this->Tree.LeafTriangles[bestSlot].Triangle;
       this->Result.Blockers.Deepest = this->Result.InscribedTriangle;
+    }
+    else if (bestSlot >= 0)
+    {
+      this->Result.LargestProtrusion = std::max(this->Result.LargestProtrusion, this->Radius - std::sqrt(best2));
     }
   }
 
@@ -1969,7 +2016,9 @@ private:
   const bool Capped;
   const double Lift, ConeSin;
   const double Allowed;
-  const bool Inscribe;
+  const bool Inscribe;   // a ball the cap enters deeper than Allowed is shrunk
+  const bool Measure;    // the ball's protrusion raises Result.LargestProtrusion
+  const bool CollectCap; // the cap's surface is set aside for InscribeInCap
   double Radius;
   double Clear2; // ClearOf(Radius - Slack)
   double Centre[3], PRel[3], CentreRel[3];
@@ -2128,7 +2177,8 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
         continue;
       }
       // Then the whole triangle: cheaper, and never farther than its admissible part.
-      const double* a = &this->Vertices[9 * slot];
+      double scratch[9];
+      const double* a = this->Corners(slot, scratch);
       double q[3];
       double d2 = G::ClosestPointOnTriangle(x, a, a + 3, a + 6, q);
       if (capped && d2 < reach2)
@@ -2464,7 +2514,8 @@ bool vtkMedialTriangleBVH::IntersectRay(const double origin[3], const double dir
   auto hitLeaf = [&](std::int32_t start, std::int32_t end) {
     for (std::int32_t slot = start; slot < end; ++slot)
     {
-      const double* v = &this->Vertices[9 * static_cast<size_t>(slot)];
+      double scratch[9];
+      const double* v = this->Corners(slot, scratch);
       double hit;
       const std::int32_t id = this->LeafTriangles[slot].Triangle;
       if (id != ignoreTriangle && ray.Hit(v, v + 3, v + 6, tMin, hit) && hit > tMin &&

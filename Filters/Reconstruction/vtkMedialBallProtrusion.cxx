@@ -87,21 +87,34 @@ int vtkMedialBallProtrusion::RequestData(
   }
   const int threads = vtkMedialThreadCount(this->NumberOfThreads);
   stages.Begin("Measuring the balls", 0.3, 1.0);
-  const std::vector<double> distance = boundary.Distances(balls->GetPoints(), threads);
-  vtkNew<vtkDoubleArray> protrusion;
-  protrusion->SetName(vtkMedialArrayNames::Protrusion);
-  protrusion->SetNumberOfValues(n);
-  double worst = 0.0;
+  std::vector<double> radii(static_cast<size_t>(n));
   for (vtkIdType i = 0; i < n; ++i)
   {
-    const double p = radius->GetTuple1(i) - distance[i];
-    protrusion->SetValue(i, p);
-    worst = std::max(worst, p);
+    radii[i] = radius->GetComponent(i, 0);
+  }
+  output->ShallowCopy(balls);
+  double worst = 0.0;
+  if (this->MaximumOnly)
+  {
+    worst = boundary.LargestExcess(balls->GetPoints(), radii.data(), threads);
+  }
+  else
+  {
+    // The radii as hints: a ball that touches or crosses the surface has d(c) <= r.
+    const std::vector<double> distance = boundary.Distances(balls->GetPoints(), threads, radii.data());
+    vtkNew<vtkDoubleArray> protrusion;
+    protrusion->SetName(vtkMedialArrayNames::Protrusion);
+    protrusion->SetNumberOfValues(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const double p = radii[i] - distance[i];
+      protrusion->SetValue(i, p);
+      worst = std::max(worst, p);
+    }
+    output->GetPointData()->AddArray(protrusion);
   }
   this->MaxProtrusion = worst / surface->GetLength();
 
-  output->ShallowCopy(balls);
-  output->GetPointData()->AddArray(protrusion);
   vtkNew<vtkFieldData> field;
   field->ShallowCopy(balls->GetFieldData());
   vtkNew<vtkDoubleArray> largest;
@@ -115,6 +128,7 @@ int vtkMedialBallProtrusion::RequestData(
 void vtkMedialBallProtrusion::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "MaximumOnly: " << this->MaximumOnly << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "MaxProtrusion: " << this->MaxProtrusion << "\n";
 }

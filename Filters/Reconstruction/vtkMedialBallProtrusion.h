@@ -22,6 +22,12 @@
  * surface's bounding box, 0 when no ball crosses (also from GetMaxProtrusion()).
  * No balls is no error: the output is empty and the largest protrusion 0.
  *
+ * Each distance query starts bounded by the ball's radius (a ball that touches or
+ * crosses the surface has d(c) <= r), and only a ball clear of the surface is asked
+ * again without that bound. With MaximumOnly, only MaxProtrusion is computed (no
+ * `Protrusion` array), still exactly but several times faster: a running maximum M
+ * bounds each query to r - M, so a ball that cannot raise it costs little.
+ *
  * Pieces (see vtkMedialPieces.h): every piece asks for both whole inputs and piece 0
  * measures every ball, so that MaxProtrusion is the largest over all of them; the
  * other pieces are empty.
@@ -55,6 +61,13 @@ public:
   ///@}
 
   ///@{
+  /// Compute MaxProtrusion only, without the per-ball `Protrusion` array (default off).
+  vtkSetMacro(MaximumOnly, vtkTypeBool);
+  vtkGetMacro(MaximumOnly, vtkTypeBool);
+  vtkBooleanMacro(MaximumOnly, vtkTypeBool);
+  ///@}
+
+  ///@{
   /// OpenMP threads; 0 (default) uses every core.
   vtkSetClampMacro(NumberOfThreads, int, 0, 4096);
   vtkGetMacro(NumberOfThreads, int);
@@ -73,6 +86,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int NumberOfThreads = 0;
+  vtkTypeBool MaximumOnly = 0;
   double MaxProtrusion = 0.0;
 
 private:

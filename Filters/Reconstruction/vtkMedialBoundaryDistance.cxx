@@ -153,21 +153,30 @@ bool vtkMedialBoundaryDistance::Build(vtkPolyData* shape, bool curves, int engin
   return true;
 }
 
-std::vector<double> vtkMedialBoundaryDistance::Distances(vtkPoints* points, int threads) const
+std::vector<double> vtkMedialBoundaryDistance::Distances(vtkPoints* points, int threads, const double* near) const
 {
   const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
   std::vector<double> distance(static_cast<size_t>(n), HUGE_VAL);
   const Surface* s = this->SurfaceEngine.get();
   if (s && s->Query)
   {
+    // Room beyond a hint: rounding of a distance that equals it (a ball's contact).
+    const double room = 1e-9 * s->Mesh.Diagonal;
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 1024)
     for (vtkIdType i = 0; i < n; ++i)
     {
       double x[3];
       points->GetPoint(i, x);
-      // Any upper bound will do: the tree narrows it at the first leaf it reaches.
-      const double bound = 2.0 * (std::sqrt(vtkMedialGeometry::Distance2(x, s->Centre)) + s->Reach) + 1e-300;
       vtkMedialSurfaceQuery::ClosestHit hit;
+      // Any upper bound is exact where something lies within it; the tree narrows it at
+      // each point it finds, but a loose first bound costs a wide first descent.
+      const double hint = near ? near[i] : -1.0;
+      if (hint >= 0.0 && std::isfinite(hint) && s->Query->ClosestPoint(x, hint * (1.0 + 1e-9) + room, hit))
+      {
+        distance[i] = hit.Distance;
+        continue;
+      }
+      const double bound = 2.0 * (std::sqrt(vtkMedialGeometry::Distance2(x, s->Centre)) + s->Reach) + 1e-300;
       if (s->Query->ClosestPoint(x, bound, hit))
       {
         distance[i] = hit.Distance;
@@ -192,6 +201,48 @@ std::vector<double> vtkMedialBoundaryDistance::Distances(vtkPoints* points, int 
     }
   }
   return distance;
+}
+
+double vtkMedialBoundaryDistance::LargestExcess(vtkPoints* points, const double* radius, int threads) const
+{
+  const Surface* s = this->SurfaceEngine.get();
+  const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
+  if (!s || !s->Query)
+  {
+    const std::vector<double> distance = this->Distances(points, threads);
+    double largest = 0.0;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      largest = std::max(largest, radius[i] - distance[i]);
+    }
+    return largest;
+  }
+  // Each thread's running maximum: a point is measured only where its excess would
+  // raise it, and the largest of them is exact whatever the order.
+  double largest = 0.0;
+#pragma omp parallel num_threads(threads)
+  {
+    double mine = 0.0;
+#pragma omp for schedule(dynamic, 1024)
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const double reach = radius[i] - mine;
+      if (!(reach > 0.0))
+      {
+        continue;
+      }
+      double x[3];
+      points->GetPoint(i, x);
+      vtkMedialSurfaceQuery::ClosestHit hit;
+      if (s->Query->ClosestPoint(x, reach, hit))
+      {
+        mine = std::max(mine, radius[i] - hit.Distance);
+      }
+    }
+#pragma omp critical
+    largest = std::max(largest, mine);
+  }
+  return largest;
 }
 
 vtkSmartPointer<vtkPoints> vtkMedialBoundaryDistance::SamplePoints(

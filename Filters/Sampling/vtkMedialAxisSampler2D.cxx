@@ -243,6 +243,6 @@ int vtkMedialAxisSampler::vtkInternals::Sample2D(
     record.Angle = r.Angle;
     record.SourceCell = poly.GetEdge(r.Edge).SourceCell;
   }
-  this->WriteSamples(output, count, records);
+  this->WriteSamples(output, count, records.data(), static_cast<vtkIdType>(records.size()));
   return 1;
 }

@@ -14,6 +14,7 @@
 
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialBallSolver.h"
+#include "vtkMedialBuffer.h"
 #include "vtkMedialSampleRecord.h"
 
 #include "vtkFieldData.h"
@@ -75,14 +76,15 @@ public:
   }
   /// Turns the valid records into output vertices, point data and field data, and
   /// sets DiscardedSamples, CappedSamples and MeanIterations. Shared by 2D and 3D.
-  void WriteSamples(vtkPolyData* output, vtkIdType requested, const std::vector<vtkMedialSampleRecord>& records);
+  void WriteSamples(vtkPolyData* output, vtkIdType requested, const vtkMedialSampleRecord* records, vtkIdType count);
 
 private:
   // Bisection / shrinking-ball settings in absolute units.
   vtkMedialBallParameters MakeBallParameters(double diagonal) const;
   // The samples a piece solves and their order (see SampleRandom): `index` gets the
   // piece's sample indices in increasing order, `order` positions in `index` in leaf
-  // order, `triangles` the triangle each one picked. With a coverage stop, all
+  // order, `triangles` the triangle each one picked; `index` is left empty when it would
+  // be 0, 1, 2, ... (one piece, or a coverage stop). With a coverage stop, all
   // samples, ordered by leaf within blocks once drawn.
   void SelectSamples(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
     const vtkMedialPieces& pieces, bool coverage, int threads, std::vector<vtkIdType>& index,
@@ -100,7 +102,7 @@ private:
   // samples used (a prefix).
   vtkIdType SolveBlocks(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int threads,
     vtkIdType block, const std::vector<vtkIdType>& triangles, const std::vector<double>& points,
-    const std::vector<vtkIdType>& order, std::vector<vtkMedialSampleRecord>& results, vtkMedialCoverage* coverage);
+    const std::vector<vtkIdType>& order, vtkMedialBuffer<vtkMedialSampleRecord>& results, vtkMedialCoverage* coverage);
   // Warns about samples discarded on an open or folded surface, or where shells touch.
   void WarnDiscarded(const vtkMedialTriangleMesh& mesh, vtkIdType count) const;
   // Warns when FACE_DISTANCE gave up faces and stopped short of the budget and the coverage.

@@ -87,6 +87,25 @@ protrusion.Update()
 per_ball = vtk_to_numpy(protrusion.GetOutput().GetPointData().GetArray("Protrusion"))
 check(per_ball.shape == (1000,) and protrusion.GetMaxProtrusion() < 1e-9,
       f"theta = 0 balls do not cross the surface (max protrusion {protrusion.GetMaxProtrusion():.2e})")
+check(any_reader.GetReadDirectly(), "the capsule's binary PLY is read directly")
+
+# The sampler's own measure of the protrusion (MeasureProtrusion) against the exact pass
+# over its balls (MaximumOnly), without shrinking (the angle rule alone crosses the surface).
+crossing = medialaxis.vtkMedialAxisSampler()
+crossing.SetInputConnection(reader.GetOutputPort())
+crossing.SetNumberOfSamples(2000)
+crossing.SetMaximumProtrusion(1)
+crossing.MeasureProtrusionOn()
+crossing.Update()
+exact_pass = medialaxis.vtkMedialBallProtrusion()
+exact_pass.SetSurfaceConnection(reader.GetOutputPort())
+exact_pass.SetBallsConnection(crossing.GetOutputPort())
+exact_pass.MaximumOnlyOn()
+exact_pass.Update()
+own = crossing.GetOutput().GetFieldData().GetArray("MaxProtrusion").GetValue(0)
+check(own == crossing.GetMaxProtrusion() > 1e-4 and abs(own - exact_pass.GetMaxProtrusion()) < 1e-11,
+      f"the sampler's protrusion {own:.6g} is the exact one {exact_pass.GetMaxProtrusion():.6g}")
+check(exact_pass.GetOutput().GetPointData().GetArray("Protrusion") is None, "MaximumOnly: no per-ball array")
 
 # Same seed, same output from Python with 1 and 2 threads.
 for threads in (1, 2):
