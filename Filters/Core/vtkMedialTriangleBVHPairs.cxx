@@ -268,8 +268,7 @@ void vtkMedialTriangleBVH::FindIntersectingPairs(const vtkMedialTriangleMesh& me
     {
       ids[3 * i + k] = static_cast<std::int32_t>(v[k]);
     }
-    const double* x = &this->Vertices[9 * static_cast<size_t>(i)];
-    sliver[i] = IsSliver(x, x + 3, x + 6);
+    sliver[i] = IsSliver(mesh.GetPoint(v[0]), mesh.GetPoint(v[1]), mesh.GetPoint(v[2]));
   }
   // Boxes (floats relative to Origin, rounded outward) are compared padded by the
   // tolerance, so that pairs closer than it are tested too.
@@ -278,9 +277,12 @@ void vtkMedialTriangleBVH::FindIntersectingPairs(const vtkMedialTriangleMesh& me
     return alo[0] <= bhi[0] + pad && blo[0] <= ahi[0] + pad && alo[1] <= bhi[1] + pad && blo[1] <= ahi[1] + pad &&
       alo[2] <= bhi[2] + pad && blo[2] <= ahi[2] + pad;
   };
+  // The corners from the mesh's points (the same bits as the tree's leaf-order copy,
+  // which holds floats when every coordinate is one).
   auto triangle = [&](std::int32_t slot) {
-    const double* x = &this->Vertices[9 * static_cast<size_t>(slot)];
-    return Triangle{ { x, x + 3, x + 6 }, this->LeafTriangles[slot].Plane, sliver[slot] != 0 };
+    const vtkIdType* v = mesh.GetTriangle(this->LeafTriangles[slot].Triangle);
+    return Triangle{ { mesh.GetPoint(v[0]), mesh.GetPoint(v[1]), mesh.GetPoint(v[2]) },
+      this->LeafTriangles[slot].Plane, sliver[slot] != 0 };
   };
   using Pairs = std::vector<std::pair<vtkIdType, vtkIdType>>;
   // One pair of slots whose boxes overlap: the test by the corners they share.
