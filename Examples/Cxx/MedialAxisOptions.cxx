@@ -5,6 +5,7 @@
 #include "vtkMedialFileReader.h"
 #include "vtkMedialFileWriter.h"
 #include "vtkMedialHTMLWriter.h"
+#include "vtkMedialRepairFilter.h"
 #include "vtkMedialScene.h"
 #include "vtkMedialSimplifyFilter.h"
 
@@ -60,6 +61,23 @@ const char* Usage =
   "  --balls IN        read medial balls instead of sampling: .ma (Q-MAT, MATFP, Coverage\n"
   "                    Axis, ours), .ply with a per-vertex radius, .vtp, .vtk, .csv; INPUT is\n"
   "                    then optional (the surface to draw and to measure against)\n"
+  "Repair (3D input; docs/repair.md):\n"
+  "  --repair M        auto (default): a surface that is not a valid solid (open, non-\n"
+  "                    manifold, self-intersecting, overlapping shells, stray sheets,\n"
+  "                    an unwelded soup) is repaired before anything else sees it, one\n"
+  "                    warning per step; a valid solid is used as it is (the same bytes\n"
+  "                    out as with none). none: used as it is, with warnings. wrap: the\n"
+  "                    alpha wrap of the input (any soup: a closed, manifold solid,\n"
+  "                    offset outwards by --wrap-offset). --stats adds repair_* members\n"
+  "                    when the surface was repaired\n"
+  "  --weld-tolerance E  points closer than E (relative to the diagonal) are welded\n"
+  "                    when the surface is open (default 1e-6)\n"
+  "  --max-hole-size E holes up to E across (relative to the diagonal) are filled,\n"
+  "                    larger ones wrapped (default 0.25)\n"
+  "  --wrap-alpha E    the alpha wrap's alpha (no feature narrower than it is\n"
+  "                    followed), relative to the diagonal (default 0.02)\n"
+  "  --wrap-offset E   the alpha wrap's distance from the input, relative to the\n"
+  "                    diagonal (default 0.001)\n"
   "Outputs (checked before any work; the extension chooses the format):\n"
   "  -o, --output OUT  the medial balls: .vtp .vtk .ply (radius property) .ma .csv\n"
   "  --reconstruct OUT the surface of the union of the balls: .vtp .vtk .stl .ply .obj;\n"
@@ -243,6 +261,16 @@ int ParseSimplifyMethod(const std::string& name)
   Fail("unknown --simplify-method '" + name + "' (quadric, coverage)");
 }
 
+int ParseRepair(const std::string& name)
+{
+  const int mode = vtkMedialRepairFilter::GetModeFromName(name.c_str());
+  if (mode < 0)
+  {
+    Fail("unknown --repair '" + name + "' (auto, none, wrap)");
+  }
+  return mode;
+}
+
 int ParseView(const std::string& name)
 {
   const int view = vtkMedialScene::GetViewDirectionFromName(name.c_str());
@@ -280,6 +308,11 @@ const std::vector<Flag>& Flags()
     { "min-angle", nullptr, F::NUMBER, 0, 179, [](Options& o, auto&, double v) { o.MinAngle = v; }, "45" },
     { "max-protrusion", nullptr, F::NUMBER, 0, 1, [](Options& o, auto&, double v) { o.MaxProtrusion = v; }, "1e-4" },
     { "balls", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Balls = t; } },
+    { "repair", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Repair = ParseRepair(t); }, "auto" },
+    { "weld-tolerance", nullptr, F::NUMBER, 0, 0.01, [](Options& o, auto&, double v) { o.WeldTolerance = v; }, "1e-6" },
+    { "max-hole-size", nullptr, F::NUMBER, 0, 2, [](Options& o, auto&, double v) { o.MaximumHoleSize = v; }, "0.25" },
+    { "wrap-alpha", nullptr, F::NUMBER, 1e-4, 1, [](Options& o, auto&, double v) { o.WrapAlpha = v; }, "0.02" },
+    { "wrap-offset", nullptr, F::NUMBER, 1e-6, 0.1, [](Options& o, auto&, double v) { o.WrapOffset = v; }, "0.001" },
     { "output", "o", F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Output = t; } },
     { "reconstruct", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Reconstruct = t; } },
     { "resolution", nullptr, F::COUNT, 8, 2048, [](Options& o, auto&, double v) { o.Resolution = static_cast<int>(v); }, "128" },
@@ -500,6 +533,16 @@ void CheckOutputs(const Options& o)
     {
       Fail("--balls reads " + vtkMedialFileReader::GetExtensions(vtkMedialFileReader::BALLS) + ", got '" + o.Balls +
         "'");
+    }
+  }
+  if (o.Repair == vtkMedialRepairFilter::NONE)
+  {
+    for (const char* setting : { "weld-tolerance", "max-hole-size", "wrap-alpha", "wrap-offset" })
+    {
+      if (o.Given.count(setting))
+      {
+        Fail(std::string("--") + setting + " sets the repair, and --repair none turns it off");
+      }
     }
   }
   if (!o.Render.empty())

@@ -46,6 +46,11 @@ struct Options
   int SimplifyMethod = -1;       // --simplify-method: vtkMedialSimplifyFilter's Method (-1: not given)
   double SimplifyTolerance = -1.0; // --simplify-tolerance: its ErrorTolerance (negative: not given)
   double ThicknessBelow = 0.0;
+  int Repair = 0;               // --repair: vtkMedialRepairFilter's mode (0 auto, 1 none, 2 wrap)
+  double WeldTolerance = -1.0;  // --weld-tolerance (negative: the filter's default)
+  double MaximumHoleSize = -1.0; // --max-hole-size
+  double WrapAlpha = -1.0;      // --wrap-alpha
+  double WrapOffset = -1.0;     // --wrap-offset
   int Resolution = 128;
   bool Stats = false;
   bool Quiet = false;

@@ -30,6 +30,7 @@
 #include "vtkMedialScaleAxisFilter.h"
 #include "vtkMedialSimplifyFilter.h"
 #include "vtkMedialReconstructionError.h"
+#include "vtkMedialRepairFilter.h"
 #include "vtkMedialScene.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkMedialThickness.h"
@@ -199,8 +200,10 @@ public:
   Program(const Options& options, Console& console)
     : Opt(options)
     , Out(console)
+    , RepairMode(options.Repair)
   {
     this->Json.precision(6);
+    this->RepairJson.precision(6);
   }
 
   void LoadInput();
@@ -226,10 +229,18 @@ private:
   double ScaleAxisThreshold() const;
   void Simplify();
   void Rebuild(vtkPolyData* medial, bool envelope);
+  void ConfigureRepair(vtkMedialRepairFilter* repair) const;
+  void AfterRepair(bool repaired, vtkMedialRepairFilter* repair);
+  void RepairSurface();
 
   const Options& Opt;
   Console& Out;
-  std::ostringstream Json; // members after the opening brace
+  std::ostringstream InputJson;  // the first member
+  std::ostringstream RepairJson; // the repair's members, when the surface was repaired
+  std::ostringstream Json;       // the members after them
+  // What the next filter that prepares the 3D surface does with it: --repair for the
+  // first one, then NONE (the surface has been checked, or repaired, once).
+  int RepairMode;
   vtkSmartPointer<vtkPolyData> Surface;
   vtkSmartPointer<vtkPolyData> Balls;
   vtkSmartPointer<vtkPolyData> Graph;
@@ -256,7 +267,7 @@ void Program::LoadInput()
     {
       Fail("--medial-mesh joins the balls inside a surface: give INPUT with --balls");
     }
-    this->Json << "\"input\": null";
+    this->InputJson << "\"input\": null";
     return;
   }
   if (input.empty() || input.rfind("demo:", 0) == 0)
@@ -272,7 +283,7 @@ void Program::LoadInput()
     this->Surface = ReadFile(input, vtkMedialFileReader::SURFACE, this->Out);
   }
   this->Planar = vtkMedialAxisSampler::IsPlanarInput(this->Surface);
-  this->Json << "\"input\": " << JsonString(input.empty() ? "demo:jack" : input);
+  this->InputJson << "\"input\": " << JsonString(input.empty() ? "demo:jack" : input);
   if (this->Planar && (!this->Opt.Thickness.empty() || this->Opt.ThicknessBelow > 0.0))
   {
     Fail("--thickness and --thickness-below need a 3D surface; '" + input + "' is planar");
@@ -356,6 +367,7 @@ void Program::SampleOrReadBalls()
   }
   else
   {
+    this->RepairSurface();
     this->ReadBalls();
   }
   this->PruneBalls();
@@ -383,6 +395,8 @@ void Program::Sample()
   sampler->SetTolerance(o.Tolerance);
   sampler->SetMinimumSeparationAngle(o.MinAngle);
   sampler->SetMaximumProtrusion(o.MaxProtrusion);
+  sampler->SetRepairMode(this->Planar ? vtkMedialRepairFilter::NONE : this->RepairMode);
+  this->ConfigureRepair(sampler->GetRepair());
   // --stats reports how far the balls cross the surface: the sampler measures it as it
   // goes (RANDOM strategy; --prune then keeps only some balls, which Protrusion measures).
   sampler->SetMeasureProtrusion(o.Stats && !o.Prune);
@@ -391,6 +405,10 @@ void Program::Sample()
   const double seconds = SecondsSince(start);
   this->Balls = Copy(sampler->GetOutput());
   this->Closed = sampler->GetBoundaryEdges() == 0;
+  if (!this->Planar)
+  {
+    this->AfterRepair(sampler->GetSurfaceRepaired(), sampler->GetRepair());
+  }
   this->SampledProtrusion = sampler->GetMaxProtrusion();
   this->Balls->GetFieldData()->RemoveArray(vtkMedialArrayNames::MaxProtrusion); // -o is the same without --stats
 
@@ -515,9 +533,12 @@ void Program::MedialMesh()
   filter->SetBallsData(this->Balls);
   filter->SetNumberOfThreads(this->Opt.Threads);
   filter->GetClassifier()->SetMinimumSeparationAngle(this->Opt.MinAngle);
+  filter->SetRepairMode(this->RepairMode);
+  this->ConfigureRepair(filter->GetRepair());
   const Clock::time_point start = Clock::now();
   Run(filter, this->Out);
   const double seconds = SecondsSince(start);
+  this->AfterRepair(filter->GetSurfaceRepaired(), filter->GetRepair());
   this->Mesh = Copy(filter->GetOutput());
   this->MedialMeshReport(filter, seconds);
   if (this->Opt.Prune)
@@ -611,6 +632,8 @@ void Program::Simplify()
     simplify->SetErrorTolerance(this->Opt.SimplifyTolerance);
   }
   simplify->SetSurfaceData(this->Surface);
+  simplify->SetRepairMode(this->RepairMode); // NONE by now: the medial mesh checked the surface
+  this->ConfigureRepair(simplify->GetRepair());
   simplify->SetNumberOfThreads(this->Opt.Threads);
   const Clock::time_point start = Clock::now();
   Run(simplify, this->Out);
@@ -649,7 +672,10 @@ void Program::Thickness()
   thickness->SetMaximumProtrusion(this->Opt.MaxProtrusion);
   thickness->SetThinThreshold(this->Opt.ThicknessBelow);
   thickness->SetNumberOfThreads(this->Opt.Threads);
+  thickness->SetRepairMode(this->RepairMode);
+  this->ConfigureRepair(thickness->GetRepair());
   Run(thickness, this->Out);
+  this->AfterRepair(thickness->GetSurfaceRepaired(), thickness->GetRepair());
   this->WallThickness = Copy(thickness->GetOutput());
   if (!this->Opt.Thickness.empty())
   {
@@ -738,6 +764,87 @@ void Program::Render()
   this->Out.End();
 }
 
+// The repair's settings from the command line (the filter's defaults otherwise).
+void Program::ConfigureRepair(vtkMedialRepairFilter* repair) const
+{
+  const Options& o = this->Opt;
+  if (o.WeldTolerance >= 0.0)
+  {
+    repair->SetWeldTolerance(o.WeldTolerance);
+  }
+  if (o.MaximumHoleSize >= 0.0)
+  {
+    repair->SetMaximumHoleSize(o.MaximumHoleSize);
+  }
+  if (o.WrapAlpha > 0.0)
+  {
+    repair->SetWrapAlpha(o.WrapAlpha);
+  }
+  if (o.WrapOffset > 0.0)
+  {
+    repair->SetWrapOffset(o.WrapOffset);
+  }
+}
+
+// After the first filter that prepared the 3D surface: a repaired surface replaces the
+// input for every later step (and measure), with its report in --stats; later filters
+// need not check again.
+void Program::AfterRepair(bool repaired, vtkMedialRepairFilter* repair)
+{
+  if (this->RepairMode == vtkMedialRepairFilter::NONE)
+  {
+    return;
+  }
+  this->RepairMode = vtkMedialRepairFilter::NONE;
+  if (!repaired)
+  {
+    return;
+  }
+  this->Surface = Copy(repair->GetOutput());
+  this->Closed = true;
+  auto& js = this->RepairJson;
+  js << ", \"repair\": " << JsonString(vtkMedialRepairFilter::GetModeName(this->Opt.Repair)) << ", \"repair_steps\": [";
+  for (int i = 0; i < repair->GetNumberOfReportLines(); ++i)
+  {
+    js << (i ? ", " : "") << JsonString(repair->GetReportLine(i));
+  }
+  js << "], \"repair_intersecting_pairs\": " << repair->GetIntersectingPairs()
+     << ", \"repair_welded_points\": " << repair->GetWeldedPoints()
+     << ", \"repair_dropped_triangles\": " << repair->GetDroppedTriangles()
+     << ", \"repair_split_points\": " << repair->GetSplitPoints()
+     << ", \"repair_stitched_edges\": " << repair->GetStitchedEdges()
+     << ", \"repair_rewound_triangles\": " << repair->GetRewoundTriangles()
+     << ", \"repair_turned_shells\": " << repair->GetTurnedShells()
+     << ", \"repair_filled_holes\": " << repair->GetFilledHoles()
+     << ", \"repair_unfilled_holes\": " << repair->GetUnfilledHoles()
+     << ", \"repair_unions\": " << repair->GetJoinedShells()
+     << ", \"repair_resolved_shells\": " << repair->GetResolvedShells()
+     << ", \"repair_touching_shells\": " << repair->GetTouchingShells()
+     << ", \"repair_removed_sheets\": " << repair->GetRemovedSheets()
+     << ", \"repair_wrapped\": " << (repair->GetWrapped() ? "true" : "false")
+     << ", \"repair_max_distance_rel\": " << repair->GetMaximumDistance()
+     << ", \"repair_buried_area\": " << repair->GetBuriedArea()
+     << ", \"repair_triangles\": " << repair->GetOutput()->GetNumberOfPolys()
+     << ", \"repair_seconds\": " << repair->GetSeconds();
+}
+
+// --balls with a 3D surface: the surface is checked (and repaired) here, before the
+// balls are measured against it, since no sampler does it.
+void Program::RepairSurface()
+{
+  if (!this->Surface || this->Planar || this->RepairMode == vtkMedialRepairFilter::NONE)
+  {
+    return;
+  }
+  vtkNew<vtkMedialRepairFilter> repair;
+  repair->SetInputData(this->Surface);
+  repair->SetMode(this->RepairMode);
+  repair->SetNumberOfThreads(this->Opt.Threads);
+  this->ConfigureRepair(repair);
+  Run(repair, this->Out);
+  this->AfterRepair(repair->GetChanged(), repair);
+}
+
 // --html: everything this run made, in one self-contained page (the surface with its
 // thickness when measured).
 void Program::WritePage()
@@ -787,7 +894,7 @@ void Program::PrintStats()
     this->Json << ", \"junctions\": " << junctions << ", \"end_points\": " << ends
                << ", \"arcs\": " << this->Graph->GetNumberOfLines() << ", \"polygons\": " << this->Polygons;
   }
-  std::cout << "{" << this->Json.str() << "}" << std::endl;
+  std::cout << "{" << this->InputJson.str() << this->RepairJson.str() << this->Json.str() << "}" << std::endl;
 }
 }
 

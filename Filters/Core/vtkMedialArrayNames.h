@@ -136,6 +136,44 @@ constexpr const char* MaxProtrusion = "MaxProtrusion";
 
 /// Cell data of a pruned axis: the threshold from which pruning removes the cell.
 constexpr const char* Significance = "Significance";
+
+/// Field data (strings) of the repair's output, and of a filter's output when it repaired its
+/// input (RepairMode): one line per step that ran. The Repair* arrays below are one value each.
+constexpr const char* RepairReport = "RepairReport";
+/// Field data: 1 when the input was a valid solid, passed through untouched.
+constexpr const char* RepairInputValid = "RepairInputValid";
+/// Field data: triangle pairs of the input that intersect (CGAL's exact predicates).
+constexpr const char* RepairIntersectingPairs = "RepairIntersectingPairs";
+/// Field data: points merged by the weld.
+constexpr const char* RepairWeldedPoints = "RepairWeldedPoints";
+/// Field data: invalid, degenerate and duplicate triangles dropped.
+constexpr const char* RepairDroppedTriangles = "RepairDroppedTriangles";
+/// Field data: points split off non-manifold edges and corners.
+constexpr const char* RepairSplitPoints = "RepairSplitPoints";
+/// Field data: pairs of border edges stitched.
+constexpr const char* RepairStitchedEdges = "RepairStitchedEdges";
+/// Field data: triangles turned over to agree with the rest of their shell.
+constexpr const char* RepairRewoundTriangles = "RepairRewoundTriangles";
+/// Field data: shells wound inward as a whole, turned over.
+constexpr const char* RepairTurnedShells = "RepairTurnedShells";
+/// Field data: holes filled (refined and faired).
+constexpr const char* RepairFilledHoles = "RepairFilledHoles";
+/// Field data: holes larger than MaximumHoleSize, left to the wrap.
+constexpr const char* RepairUnfilledHoles = "RepairUnfilledHoles";
+/// Field data: shells that crossed themselves, made to bound their solid.
+constexpr const char* RepairResolvedShells = "RepairResolvedShells";
+/// Field data: unions of overlapping shells made (one shell fewer each).
+constexpr const char* RepairJoinedShells = "RepairJoinedShells";
+/// Field data: pairs of shells that only touch, kept as separate bodies.
+constexpr const char* RepairTouchingShells = "RepairTouchingShells";
+/// Field data: open pieces removed from inside the solid.
+constexpr const char* RepairRemovedSheets = "RepairRemovedSheets";
+/// Field data: 1 when the output is the alpha wrap.
+constexpr const char* RepairWrapped = "RepairWrapped";
+/// Field data: the largest distance from the input to the output / diagonal.
+constexpr const char* RepairMaximumDistance = "RepairMaximumDistance";
+/// Field data: the share of the input's area buried inside the repaired solid.
+constexpr const char* RepairBuriedArea = "RepairBuriedArea";
 }
 
 #endif

@@ -152,6 +152,11 @@ public:
   /// centroid that holds them. Stops when visit returns true.
   void VisitNear(const double* const points[], int n, const std::function<bool(const double* const corners[3])>& visit) const;
 
+  /// Pairs of triangles that may intersect other than where they share an edge or a
+  /// corner (vtkMedialTriangleBVH::FindIntersectingPairs, tolerance 1e-9 of the
+  /// diagonal plus the coordinates' rounding).
+  void FindIntersectingPairs(int threads, std::vector<std::pair<vtkIdType, vtkIdType>>& pairs) const;
+
   /// Unit outward normal of mesh triangle t, from the tree (the same values as the
   /// mesh's, which a caller that only queries may then release: ReleaseNormals).
   const double* GetNormal(vtkIdType t) const { return this->Tree.GetPlane(t); }

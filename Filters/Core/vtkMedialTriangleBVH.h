@@ -50,6 +50,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #if defined(__SSE2__)
@@ -167,6 +168,21 @@ public:
   /// (a superset of the triangles whose own box meets it: boxes are padded outward),
   /// until visit returns false. For diagnostics (contacts, ray parity), not per sample.
   void VisitBox(const double lo[3], const double hi[3], const std::function<bool(vtkIdType)>& visit) const;
+
+  /**
+   * Pairs of mesh triangles (a < b, sorted) that may intersect other than along the
+   * edge or at the corner they share: the tree walked against itself, boxes padded by
+   * `tolerance`, then each close pair tested in double precision with margins of
+   * `tolerance` (an absolute length). Every pair that intersects is listed (touching
+   * counts, as in CGAL's self_intersections), and so are pairs too close to tell apart
+   * at that precision, slivers and coplanar neighbours that may overlap: an exact test
+   * decides those (vtkMedialRepairFilter). Corners are shared when they are the same
+   * point of `mesh` (the one the tree was built on, whose merge made equal coordinates
+   * one point). OpenMP over `threads`; the list does not depend on them. In
+   * vtkMedialTriangleBVHPairs.cxx.
+   */
+  void FindIntersectingPairs(const vtkMedialTriangleMesh& mesh, double tolerance, int threads,
+    std::vector<std::pair<vtkIdType, vtkIdType>>& pairs) const;
 
   /**
    * First triangle other than ignoreTriangle met by the ray origin + t direction,

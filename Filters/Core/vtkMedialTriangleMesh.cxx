@@ -699,6 +699,7 @@ void vtkMedialTriangleMesh::OrientShells(const Adjacency& adjacency)
     if (flip[t])
     {
       std::swap(this->Triangles[3 * t], this->Triangles[3 * t + 2]);
+      ++this->Shells[this->ShellOfTriangle[t]].Rewound;
     }
   }
 }
@@ -804,6 +805,7 @@ void vtkMedialTriangleMesh::OrientByVolume()
     if (negative[s])
     {
       this->Shells[s].Volume = -this->Shells[s].Volume;
+      this->Shells[s].Rewound = this->Shells[s].Triangles - this->Shells[s].Rewound;
       ++this->FlippedComponents;
     }
   }
@@ -1152,6 +1154,7 @@ void vtkMedialTriangleMesh::FlipShell(int shell)
     }
   }
   this->Shells[shell].Volume = -this->Shells[shell].Volume;
+  this->Shells[shell].Rewound = this->Shells[shell].Triangles - this->Shells[shell].Rewound;
   ++this->FlippedComponents;
 }
 

@@ -95,6 +95,7 @@ public:
   {
     vtkIdType FirstTriangle = -1; // its lowest triangle id
     vtkIdType Triangles = 0;
+    vtkIdType Rewound = 0;   // its triangles whose input winding was turned over
     bool Closed = false;     // every edge is used an even number of times within the shell
     bool Orientable = true;  // the breadth-first walk found no contradiction
     int Depth = 0;           // closed shells enclosing it (parity of the crossings)

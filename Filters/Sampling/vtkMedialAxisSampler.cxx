@@ -8,6 +8,9 @@
 #include "vtkMedialBallSolver.h"
 #include "vtkMedialIterativeSampling.h"
 #include "vtkMedialPlane.h"
+#include "vtkMedialRepairCallback.h"
+#include "vtkMedialRepairFilter.h"
+#include "vtkMedialSolidPreparation.h"
 #include "vtkMedialPolygon.h"
 #include "vtkMedialProgress.h"
 #include "vtkMedialRandom.h"
@@ -67,7 +70,23 @@ vtkIdType HintChainLength(vtkMedialAxisSampler* self)
 }
 }
 
-vtkMedialAxisSampler::vtkMedialAxisSampler() = default;
+vtkMedialAxisSampler::vtkMedialAxisSampler()
+{
+  this->Repair = vtkMedialRepairFilter::New();
+}
+
+vtkMedialAxisSampler::~vtkMedialAxisSampler()
+{
+  this->SetRepair(nullptr);
+}
+
+vtkCxxSetObjectMacro(vtkMedialAxisSampler, Repair, vtkMedialRepairFilter);
+
+vtkMTimeType vtkMedialAxisSampler::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  return this->Repair ? std::max(time, this->Repair->GetMTime()) : time;
+}
 
 bool vtkMedialAxisSampler::IsPlanarInput(vtkPolyData* input)
 {
@@ -138,6 +157,7 @@ int vtkMedialAxisSampler::RequestData(
   this->SeedSamples = 0;
   this->CoverageReached = false;
   this->MaxCoverageGap = -1.0;
+  this->SurfaceRepaired = false;
   this->MaxProtrusion = -1.0;
   // Pieces (vtkMedialPieces.h): RANDOM splits the samples; the iterative strategies
   // and a coverage stop are sequential, so piece 0 runs them whole and the other
@@ -174,14 +194,26 @@ int vtkMedialAxisSampler::RequestData(
     stages.Begin(this->SamplingStrategy == CLOSEST_NEIGHBOR ? "Sampling (closest-neighbor strategy)"
                                                             : "Sampling (face-distance strategy)",
       0.1, 1.0);
-    return passes.SampleIterative(mesh, query, output);
+    status = passes.SampleIterative(mesh, query, output);
   }
-  if (this->CoverageTolerance <= 0.0)
+  else
   {
-    // Random sampling reads normals from the query's tree only: the mesh's copy goes.
-    mesh.ReleaseNormals();
+    if (this->CoverageTolerance <= 0.0)
+    {
+      // Random sampling reads normals from the query's tree only: the mesh's copy goes.
+      mesh.ReleaseNormals();
+    }
+    status = passes.SampleRandom(mesh, query, pieces, output, stages);
   }
-  return passes.SampleRandom(mesh, query, pieces, output, stages);
+  // The repair's report, when the balls are those of a repaired surface.
+  if (passes.RepairReport)
+  {
+    for (int i = 0; i < passes.RepairReport->GetNumberOfArrays(); ++i)
+    {
+      output->GetFieldData()->AddArray(passes.RepairReport->GetAbstractArray(i));
+    }
+  }
+  return status;
 }
 
 //------------------------------------------------------------------------------
@@ -192,8 +224,26 @@ bool vtkMedialAxisSampler::vtkInternals::PrepareSurface(vtkPolyData* input, vtkM
   // Preparation takes seconds on big meshes: the abort flag is polled between stages.
   auto aborted = [self]() { return self->GetAbortExecute() != 0; };
   std::string error;
-  stages.Begin("Preparing the surface", 0.0, 0.05);
-  if (!mesh.Build(input, error, aborted))
+  // Stages: the mesh, the queries (and the check), the repair and again the mesh and
+  // the queries of the repaired surface.
+  auto stage = [&](int s) {
+    switch (s)
+    {
+      case vtkMedialSolidPreparation::MESH:
+        stages.Begin("Preparing the surface", 0.0, 0.05);
+        break;
+      case vtkMedialSolidPreparation::QUERIES:
+        stages.Begin("Building the surface queries", 0.05, 0.1);
+        break;
+      default:
+        stages.Begin("Repairing the surface", 0.0, 0.05);
+        break;
+    }
+  };
+  vtkMedialSolidPreparation preparation;
+  const int threads = vtkMedialThreadCount(self->NumberOfThreads);
+  if (!preparation.Prepare(input, self->RepairMode, vtkMedialMakeRepairer(self->Repair, threads), threads, mesh,
+        query, error, aborted, stage))
   {
     status = aborted() ? 1 : 0; // aborted: leave the output empty
     if (!aborted())
@@ -204,19 +254,11 @@ bool vtkMedialAxisSampler::vtkInternals::PrepareSurface(vtkPolyData* input, vtkM
   }
   self->BoundaryEdges = mesh.BoundaryEdges;
   self->NumberOfTriangles = mesh.GetNumberOfTriangles();
-  for (const std::string& warning : mesh.Warnings())
+  self->SurfaceRepaired = preparation.GetRepaired();
+  this->RepairReport = preparation.GetReport();
+  for (const std::string& warning : preparation.GetMessages())
   {
     vtkWarningWithObjectMacro(self, << warning);
-  }
-  stages.Begin("Building the surface queries", 0.05, 0.1);
-  if (!query.Build(&mesh, error, aborted))
-  {
-    status = aborted() ? 1 : 0;
-    if (!aborted())
-    {
-      vtkErrorWithObjectMacro(self, << "Cannot build the surface queries: " << error << ".");
-    }
-    return false;
   }
   if (self->MinimumSeparationAngle > 0.0 && self->MaximumProtrusion < 1.0 && self->SamplingStrategy == RANDOM)
   {
@@ -872,6 +914,9 @@ void vtkMedialAxisSampler::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SamplingStrategy: " << GetSamplingStrategyName(this->SamplingStrategy) << "\n";
   os << indent << "CoverageTolerance: " << this->CoverageTolerance << "\n";
   os << indent << "SeedFraction: " << this->SeedFraction << "\n";
+  os << indent << "RepairMode: " << vtkMedialRepairFilter::GetModeName(this->RepairMode) << "\n";
+  os << indent << "Repair: " << this->Repair << "\n";
+  os << indent << "SurfaceRepaired: " << this->SurfaceRepaired << "\n";
   os << indent << "MeasureProtrusion: " << this->MeasureProtrusion << "\n";
   os << indent << "DiscardedSamples: " << this->DiscardedSamples << "\n";
   os << indent << "CappedSamples: " << this->CappedSamples << "\n";

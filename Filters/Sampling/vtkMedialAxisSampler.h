@@ -57,9 +57,15 @@
  * alone); each result keeps its own index, and the output depends neither on the
  * thread count nor on the piece.
  *
- * Input: vtkPolyData with polygons or strips (a closed surface). Open meshes are
- * accepted with a warning: samples whose ray escapes through a hole are discarded
- * and counted.
+ * Input: vtkPolyData with polygons or strips (a closed surface). With RepairMode AUTO
+ * (the default) the preparation checks that the surface is a valid solid (closed,
+ * manifold, consistently oriented, without self-intersections) and, when it is not,
+ * samples the solid that vtkMedialRepairFilter (GetRepair) makes of it: holes filled,
+ * overlapping shells joined, stray sheets removed... (one warning per step;
+ * GetSurfaceRepaired; the repair's report joins the output's field data). With
+ * RepairMode NONE open meshes are accepted with a warning: samples whose ray escapes
+ * through a hole are discarded and counted. SourceCellId then refers to the cells of
+ * the surface sampled: the repaired one when it was repaired.
  *
  * Output: one vertex per accepted sample, at the ball centre, with point data
  *  - Radius (double), SurfacePoint (double x3, the sample P),
@@ -98,6 +104,8 @@
 
 #include "vtkMedialAxisSamplingModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+
+class vtkMedialRepairFilter;
 
 class VTKMEDIALAXISSAMPLING_EXPORT vtkMedialAxisSampler : public vtkPolyDataAlgorithm
 {
@@ -253,6 +261,25 @@ public:
   ///@}
 
   ///@{
+  /// What the preparation does with a 3D surface that is not a valid solid:
+  /// vtkMedialRepairFilter's modes. AUTO (default): it is checked (a valid solid is
+  /// sampled as it is, bit for bit as with NONE) and repaired when it is not one; NONE:
+  /// no check and no repair (warnings about the input instead); WRAP: the alpha wrap of
+  /// the input is sampled. Planar input (the 2D mode) is never repaired.
+  vtkSetClampMacro(RepairMode, int, 0, 2);
+  vtkGetMacro(RepairMode, int);
+  ///@}
+
+  ///@{
+  /// The repair run when RepairMode asks for it (default: a vtkMedialRepairFilter with
+  /// its defaults; this filter sets its input, Mode, ReportSteps and NumberOfThreads).
+  /// After an update, SurfaceRepaired tells whether the balls are those of its output.
+  virtual void SetRepair(vtkMedialRepairFilter*);
+  vtkGetObjectMacro(Repair, vtkMedialRepairFilter);
+  vtkGetMacro(SurfaceRepaired, bool);
+  ///@}
+
+  ///@{
   /// Iteration cap of the shrinking ball (default 100). Capped samples are counted.
   vtkSetClampMacro(MaximumIterations, int, 1, 100000);
   vtkGetMacro(MaximumIterations, int);
@@ -290,9 +317,12 @@ public:
   vtkGetMacro(MaxProtrusion, double);
   ///@}
 
+  /// Includes the repair's modification time.
+  vtkMTimeType GetMTime() override;
+
 protected:
   vtkMedialAxisSampler();
-  ~vtkMedialAxisSampler() override = default;
+  ~vtkMedialAxisSampler() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -309,6 +339,9 @@ protected:
   int SamplingStrategy = RANDOM;
   double CoverageTolerance = 0.0;
   double SeedFraction = 0.25;
+  int RepairMode = 0;
+  vtkMedialRepairFilter* Repair = nullptr;
+  bool SurfaceRepaired = false;
   vtkTypeBool MeasureProtrusion = 0;
 
   vtkIdType DiscardedSamples = 0;

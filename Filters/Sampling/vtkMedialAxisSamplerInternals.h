@@ -18,6 +18,9 @@
 #include "vtkMedialSampleRecord.h"
 #include "vtkMedialSurfaceNormals.h"
 
+#include "vtkFieldData.h"
+#include "vtkSmartPointer.h"
+
 #include <new>
 #include <vector>
 
@@ -36,6 +39,9 @@ public:
     : Self(self)
   {
   }
+
+  /// The repair's report (field data) when PrepareSurface sampled a repaired surface.
+  vtkSmartPointer<vtkFieldData> RepairReport;
 
   /// The 3D surface: mesh preparation (with its warnings) and the queries. False
   /// when RequestData must return `status` (0 on error, 1 when aborted).

@@ -86,8 +86,13 @@ bool vtkMedialMeshComplex::EdgeInside(vtkIdType e)
   if (this->EdgeState[e] == UNKNOWN)
   {
     const auto& v = this->Power->EdgeVertices[e];
+    // Balls of two solid components: the edge leaves the solid even where it only
+    // touches the surface (bodies that touch along an edge or at a point).
+    const std::vector<vtkIdType>* solid = this->BallData.SolidComponents;
+    const bool apart = solid && (*solid)[v[0]] >= 0 && (*solid)[v[1]] >= 0 && (*solid)[v[0]] != (*solid)[v[1]];
     const double* ends[2] = { this->Centre(v[0]), this->Centre(v[1]) };
-    this->EdgeState[e] = this->Query->CrossesSurface(ends, 2, vtkMedialExactPredicates::Crosses) ? CROSSES : INSIDE;
+    this->EdgeState[e] =
+      apart || this->Query->CrossesSurface(ends, 2, vtkMedialExactPredicates::Crosses) ? CROSSES : INSIDE;
   }
   return this->EdgeState[e] == INSIDE;
 }

@@ -14,6 +14,9 @@
 #include "vtkMedialSolidDiagnosis.h"
 #include "vtkMedialSpatialOrder.h"
 #include "vtkMedialProgress.h"
+#include "vtkMedialRepairCallback.h"
+#include "vtkMedialRepairFilter.h"
+#include "vtkMedialSolidPreparation.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialThreads.h"
 #include "vtkMedialTriangleMesh.h"
@@ -46,6 +49,7 @@
 vtkStandardNewMacro(vtkMedialMeshFilter);
 vtkCxxSetObjectMacro(vtkMedialMeshFilter, Sampler, vtkMedialAxisSampler);
 vtkCxxSetObjectMacro(vtkMedialMeshFilter, Classifier, vtkMedialBallClassifier);
+vtkCxxSetObjectMacro(vtkMedialMeshFilter, Repair, vtkMedialRepairFilter);
 
 // The balls the mesh is built on: centres, inscribed radii, and the index of each in
 // the ball input.
@@ -190,12 +194,14 @@ vtkMedialMeshFilter::vtkMedialMeshFilter()
   this->SetNumberOfInputPorts(2);
   this->Sampler = vtkMedialAxisSampler::New();
   this->Classifier = vtkMedialBallClassifier::New();
+  this->Repair = vtkMedialRepairFilter::New();
 }
 
 vtkMedialMeshFilter::~vtkMedialMeshFilter()
 {
   this->SetSampler(nullptr);
   this->SetClassifier(nullptr);
+  this->SetRepair(nullptr);
 }
 
 vtkMTimeType vtkMedialMeshFilter::GetMTime()
@@ -208,6 +214,10 @@ vtkMTimeType vtkMedialMeshFilter::GetMTime()
   if (this->Classifier)
   {
     time = std::max(time, this->Classifier->GetMTime());
+  }
+  if (this->Repair)
+  {
+    time = std::max(time, this->Repair->GetMTime());
   }
   return time;
 }
@@ -240,6 +250,7 @@ int vtkMedialMeshFilter::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   this->EulerCharacteristic = this->NumberOfComponents = this->NumberOfEdges = 0;
   this->HasSolidTopology = false;
+  this->SurfaceRepaired = false;
   this->SolidEulerCharacteristic = this->SolidComponents = 0;
   this->DroppedBalls = this->DetachedBalls = this->RemainingTetrahedra = this->PrunedTriangles = 0;
   this->RefinementBalls = 0;
@@ -263,13 +274,33 @@ int vtkMedialMeshFilter::RequestData(
   vtkMedialTriangleMesh mesh;
   vtkMedialSurfaceQuery query;
   std::string error;
-  if (!mesh.Build(surface, error, aborted) || !query.Build(&mesh, error, aborted))
+  // The surface, checked and repaired as RepairMode says; from here on `surface` is
+  // the one prepared (the repaired one when it was repaired).
+  vtkMedialSolidPreparation preparation;
+  if (!preparation.Prepare(surface, this->RepairMode, vtkMedialMakeRepairer(this->Repair, threads), threads, mesh,
+        query, error, aborted, [&](int s) {
+          stages.Begin(s == vtkMedialSolidPreparation::REPAIR ? "Repairing the surface" : "Preparing the surface", 0.0, 0.05);
+        }))
   {
     if (!this->GetAbortExecute())
     {
       vtkErrorMacro(<< "Cannot build the medial mesh: " << error << ".");
     }
     return this->GetAbortExecute() ? 1 : 0;
+  }
+  surface = preparation.GetSurface();
+  this->SurfaceRepaired = preparation.GetRepaired();
+  if (preparation.GetRepaired() || this->RepairMode != vtkMedialRepairFilter::NONE)
+  {
+    // The preparation's messages: the repair's steps (the mesh's own warnings were
+    // never this filter's, the sampler prints them).
+    for (const std::string& message : preparation.GetMessages())
+    {
+      if (message.rfind("Repair: ", 0) == 0)
+      {
+        vtkWarningMacro(<< message);
+      }
+    }
   }
   const bool closed = mesh.BoundaryEdges == 0;
   if (!closed)
@@ -373,6 +404,13 @@ int vtkMedialMeshFilter::RequestData(
   this->DetachedBalls = complex.Stats.DetachedBalls;
   this->PrunedTriangles = complex.Stats.PrunedTriangles;
   vtkFieldData* fd = output->GetFieldData();
+  if (vtkFieldData* report = preparation.GetReport())
+  {
+    for (int i = 0; i < report->GetNumberOfArrays(); ++i)
+    {
+      fd->AddArray(report->GetAbstractArray(i));
+    }
+  }
   AddCount(fd, vtkMedialArrayNames::EulerCharacteristic, this->EulerCharacteristic);
   AddCount(fd, vtkMedialArrayNames::Components, this->NumberOfComponents);
   if (closed && mesh.NonManifoldEdges == 0 && mesh.GetEulerCharacteristic() % 2 == 0)
@@ -428,7 +466,11 @@ vtkSmartPointer<vtkPointSet> vtkMedialMeshFilter::RunSampler(vtkPolyData* surfac
   vtkNew<vtkPolyData> copy;
   copy->ShallowCopy(surface);
   this->Sampler->SetInputData(copy);
+  // The surface is this filter's prepared one: the sampler must not repair it again.
+  const int repairMode = this->Sampler->GetRepairMode();
+  this->Sampler->SetRepairMode(vtkMedialRepairFilter::NONE);
   const bool ok = this->RunStage(this->Sampler);
+  this->Sampler->SetRepairMode(repairMode);
   auto balls = vtkSmartPointer<vtkPolyData>::New();
   balls->ShallowCopy(this->Sampler->GetOutput());
   this->Sampler->SetInputData(nullptr);
@@ -615,6 +657,8 @@ void vtkMedialMeshFilter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Sampler: " << this->Sampler << "\n";
   os << indent << "Classifier: " << this->Classifier << "\n";
+  os << indent << "RepairMode: " << vtkMedialRepairFilter::GetModeName(this->RepairMode) << "\n";
+  os << indent << "Repair: " << this->Repair << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "ProtrusionTolerance: " << this->ProtrusionTolerance << "\n";
   os << indent << "EnvelopeTolerance: " << this->EnvelopeTolerance << "\n";

@@ -95,6 +95,7 @@ class vtkDataArray;
 class vtkMedialAxisSampler;
 class vtkMedialBallClassifier;
 class vtkMedialMeshComplex;
+class vtkMedialRepairFilter;
 class vtkMedialSurfaceQuery;
 class vtkPointSet;
 
@@ -131,6 +132,22 @@ public:
   /// defaults); nullptr: no classification. This filter sets its inputs.
   virtual void SetClassifier(vtkMedialBallClassifier*);
   vtkGetObjectMacro(Classifier, vtkMedialBallClassifier);
+  ///@}
+
+  ///@{
+  /// What the preparation does with a surface that is not a valid solid
+  /// (vtkMedialRepairFilter's modes): AUTO (default) checks it and builds the mesh in
+  /// the solid its repair (GetRepair) makes of it when it is not one (a valid solid is
+  /// used as it is); NONE neither checks nor repairs; WRAP uses its alpha wrap. The
+  /// sampler run by this filter samples the surface prepared here (its own RepairMode
+  /// is not used); balls given on input 1 must come from that surface.
+  vtkSetClampMacro(RepairMode, int, 0, 2);
+  vtkGetMacro(RepairMode, int);
+  virtual void SetRepair(vtkMedialRepairFilter*);
+  vtkGetObjectMacro(Repair, vtkMedialRepairFilter);
+  /// True when the last update built the mesh in the repaired surface (the repair's
+  /// output, whose report joins this filter's field data).
+  vtkGetMacro(SurfaceRepaired, bool);
   ///@}
 
   ///@{
@@ -191,7 +208,7 @@ public:
   vtkGetMacro(EnvelopeProtrusion, double);
   ///@}
 
-  /// Includes the sampler's and the classifier's modification times.
+  /// Includes the sampler's, the classifier's and the repair's modification times.
   vtkMTimeType GetMTime() override;
 
 protected:
@@ -222,6 +239,9 @@ protected:
 
   vtkMedialAxisSampler* Sampler = nullptr;
   vtkMedialBallClassifier* Classifier = nullptr;
+  vtkMedialRepairFilter* Repair = nullptr;
+  int RepairMode = 0;
+  bool SurfaceRepaired = false;
   int NumberOfThreads = 0;
   double ProtrusionTolerance = 1e-3;
   double EnvelopeTolerance = 1e-3;

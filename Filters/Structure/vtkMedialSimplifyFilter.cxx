@@ -6,6 +6,10 @@
 #include "vtkMedialPipeline.h"
 #include "vtkMedialQuadricSimplification.h"
 #include "vtkMedialRandom.h"
+#include "vtkMedialRepairCallback.h"
+#include "vtkMedialRepairFilter.h"
+#include "vtkMedialSolidPreparation.h"
+#include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialSimplicialComplex.h"
 #include "vtkMedialThreads.h"
 #include "vtkMedialTriangleMesh.h"
@@ -42,6 +46,20 @@ vtkMedialSimplifyFilter::vtkMedialSimplifyFilter()
 {
   this->SetNumberOfInputPorts(2);
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkMedialArrayNames::Radius);
+  this->Repair = vtkMedialRepairFilter::New();
+}
+
+vtkMedialSimplifyFilter::~vtkMedialSimplifyFilter()
+{
+  this->SetRepair(nullptr);
+}
+
+vtkCxxSetObjectMacro(vtkMedialSimplifyFilter, Repair, vtkMedialRepairFilter);
+
+vtkMTimeType vtkMedialSimplifyFilter::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  return this->Repair ? std::max(time, this->Repair->GetMTime()) : time;
 }
 
 const char* vtkMedialSimplifyFilter::GetMethodName(int method)
@@ -108,8 +126,23 @@ int vtkMedialSimplifyFilter::RequestData(
   vtkMedialTriangleMesh mesh;
   if (surface && (guarded || this->Method == COVERAGE))
   {
+    // The surface as RepairMode says (NONE: the mesh alone, as before).
     std::string surfaceError;
-    if (!mesh.Build(surface, surfaceError, aborted))
+    vtkMedialSurfaceQuery query;
+    vtkMedialSolidPreparation preparation;
+    const int prepareThreads = vtkMedialThreadCount(this->NumberOfThreads);
+    const bool prepared = this->RepairMode == vtkMedialRepairFilter::NONE
+      ? mesh.Build(surface, surfaceError, aborted)
+      : preparation.Prepare(surface, this->RepairMode, vtkMedialMakeRepairer(this->Repair, prepareThreads),
+          prepareThreads, mesh, query, surfaceError, aborted);
+    for (const std::string& message : preparation.GetMessages())
+    {
+      if (message.rfind("Repair: ", 0) == 0)
+      {
+        vtkWarningMacro(<< message);
+      }
+    }
+    if (!prepared)
     {
       if (this->GetAbortExecute())
       {
@@ -264,6 +297,8 @@ bool vtkMedialSimplifyFilter::ChooseByCoverage(const vtkMedialSimplicialComplex&
 void vtkMedialSimplifyFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "RepairMode: " << vtkMedialRepairFilter::GetModeName(this->RepairMode) << "\n";
+  os << indent << "Repair: " << this->Repair << "\n";
   os << indent << "NumberOfBalls: " << this->NumberOfBalls << "\n";
   os << indent << "Method: " << GetMethodName(this->Method) << "\n";
   os << indent << "RimWeight: " << this->RimWeight << "\n";

@@ -63,6 +63,7 @@
 #include <vector> // for std::vector
 
 class vtkMedialQuadricSimplification;
+class vtkMedialRepairFilter;
 class vtkMedialSimplicialComplex;
 class vtkMedialTriangleMesh;
 
@@ -124,6 +125,21 @@ public:
   ///@}
 
   ///@{
+  /// What is done with a surface on input 1 that is not a valid solid
+  /// (vtkMedialRepairFilter's modes, as vtkMedialMeshFilter's RepairMode): AUTO (default)
+  /// checks it and uses its repair (GetRepair) when it is not one; NONE neither checks
+  /// nor repairs; WRAP uses its alpha wrap. Give it the surface the medial mesh was
+  /// built in.
+  vtkSetClampMacro(RepairMode, int, 0, 2);
+  vtkGetMacro(RepairMode, int);
+  virtual void SetRepair(vtkMedialRepairFilter*);
+  vtkGetObjectMacro(Repair, vtkMedialRepairFilter);
+  ///@}
+
+  /// Includes the repair's modification time.
+  vtkMTimeType GetMTime() override;
+
+  ///@{
   /// COVERAGE: the start dilation of the balls, relative to the surface's diagonal
   /// (default 0.02), the number of surface samples (default 10000), their random stream
   /// (default 1), and the threads that find the coverage (0 = all cores, the default).
@@ -156,7 +172,7 @@ public:
 
 protected:
   vtkMedialSimplifyFilter();
-  ~vtkMedialSimplifyFilter() override = default;
+  ~vtkMedialSimplifyFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -170,6 +186,8 @@ protected:
   vtkIdType NumberOfSurfaceSamples = 10000;
   int RandomSeed = 1;
   int NumberOfThreads = 0;
+  int RepairMode = 0;
+  vtkMedialRepairFilter* Repair = nullptr;
   vtkIdType NumberOfBlockedCollapses = 0;
   vtkIdType EulerCharacteristic = 0;
   vtkIdType NumberOfComponents = 0;

@@ -8,6 +8,9 @@
 #include "vtkMedialPieces.h"
 #include "vtkMedialPipeline.h"
 #include "vtkMedialProgress.h"
+#include "vtkMedialRepairCallback.h"
+#include "vtkMedialRepairFilter.h"
+#include "vtkMedialSolidPreparation.h"
 #include "vtkMedialSampleRecord.h"
 #include "vtkMedialSurfaceNormals.h"
 #include "vtkMedialSurfaceQuery.h"
@@ -344,7 +347,23 @@ struct vtkMedialThickness::Walls
   }
 };
 
-vtkMedialThickness::vtkMedialThickness() = default;
+vtkMedialThickness::vtkMedialThickness()
+{
+  this->Repair = vtkMedialRepairFilter::New();
+}
+
+vtkMedialThickness::~vtkMedialThickness()
+{
+  this->SetRepair(nullptr);
+}
+
+vtkCxxSetObjectMacro(vtkMedialThickness, Repair, vtkMedialRepairFilter);
+
+vtkMTimeType vtkMedialThickness::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  return this->Repair ? std::max(time, this->Repair->GetMTime()) : time;
+}
 
 int vtkMedialThickness::FillInputPortInformation(int, vtkInformation* info)
 {
@@ -712,6 +731,7 @@ int vtkMedialThickness::RequestData(
   this->MissingPoints = 0;
   this->ThinAreaFraction = 0.0;
   this->ThinRegionCount = 0;
+  this->SurfaceRepaired = false;
   if (!input)
   {
     vtkErrorMacro(<< "No input.");
@@ -728,8 +748,27 @@ int vtkMedialThickness::RequestData(
   vtkMedialStages stages(this);
   stages.Begin("Preparing the surface", 0.0, 0.05);
   vtkMedialTriangleMesh mesh;
+  vtkMedialSurfaceQuery query;
   std::string error;
-  if (!mesh.Build(input, error, aborted))
+  // The surface checked and repaired as RepairMode says; from here on `input` is the
+  // surface measured (and written out): the repaired one when it was repaired.
+  const int threads = vtkMedialThreadCount(this->NumberOfThreads);
+  vtkMedialSolidPreparation preparation;
+  if (!preparation.Prepare(input, this->RepairMode, vtkMedialMakeRepairer(this->Repair, threads), threads, mesh,
+        query, error, aborted, [&](int s) {
+          switch (s)
+          {
+            case vtkMedialSolidPreparation::MESH:
+              stages.Begin("Preparing the surface", 0.0, 0.05);
+              break;
+            case vtkMedialSolidPreparation::QUERIES:
+              stages.Begin("Building the surface queries", 0.05, 0.1);
+              break;
+            default:
+              stages.Begin("Repairing the surface", 0.0, 0.05);
+              break;
+          }
+        }))
   {
     if (aborted())
     {
@@ -738,20 +777,11 @@ int vtkMedialThickness::RequestData(
     vtkErrorMacro(<< "Cannot measure the thickness: " << error << ".");
     return 0;
   }
-  for (const std::string& warning : mesh.Warnings())
+  input = preparation.GetSurface();
+  this->SurfaceRepaired = preparation.GetRepaired();
+  for (const std::string& warning : preparation.GetMessages())
   {
     vtkWarningMacro(<< warning);
-  }
-  stages.Begin("Building the surface queries", 0.05, 0.1);
-  vtkMedialSurfaceQuery query;
-  if (!query.Build(&mesh, error, aborted))
-  {
-    if (aborted())
-    {
-      return 1;
-    }
-    vtkErrorMacro(<< "Cannot build the surface queries: " << error << ".");
-    return 0;
   }
 
   const vtkMedialBallParameters param = vtkMedialMakeBallParameters(vtkMedialBallParameters::ONE_PASS,
@@ -782,6 +812,13 @@ int vtkMedialThickness::RequestData(
 
   output->ShallowCopy(input);
   this->WriteArrays(output, mesh, vertices, cells);
+  if (vtkFieldData* report = preparation.GetReport())
+  {
+    for (int i = 0; i < report->GetNumberOfArrays(); ++i)
+    {
+      output->GetFieldData()->AddArray(report->GetAbstractArray(i));
+    }
+  }
   if (this->ThinThreshold > 0.0)
   {
     // Pass 5.
@@ -813,6 +850,8 @@ int vtkMedialThickness::RequestData(
 void vtkMedialThickness::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "RepairMode: " << vtkMedialRepairFilter::GetModeName(this->RepairMode) << "\n";
+  os << indent << "Repair: " << this->Repair << "\n";
   os << indent << "MinimumSeparationAngle: " << this->MinimumSeparationAngle << "\n";
   os << indent << "MaximumProtrusion: " << this->MaximumProtrusion << "\n";
   os << indent << "SurfaceTolerance: " << this->SurfaceTolerance << "\n";

@@ -65,8 +65,12 @@
  *     threshold, their share of the area and the number of regions they form
  *     (connected through shared vertices).
  *
- * Input: vtkPolyData with polygons or strips, a closed surface. An open surface is
- * accepted with a warning; where the inward ray escapes, the values are NaN.
+ * Input: vtkPolyData with polygons or strips, a closed surface. With RepairMode AUTO
+ * (the default) a surface that is not a valid solid is repaired first
+ * (vtkMedialRepairFilter, GetRepair) and the output is then the repaired surface with
+ * the arrays (SurfaceRepaired; the repair's report joins the field data). With NONE
+ * an open surface is accepted with a warning; where the inward ray escapes, the
+ * values are NaN.
  *
  * Output: the input (points, cells and their data) with point data and, with
  * ComputeCellThickness, cell data:
@@ -95,6 +99,7 @@
 
 #include <vector> // for std::vector
 
+class vtkMedialRepairFilter;
 class vtkMedialSurfaceQuery;
 class vtkMedialTriangleMesh;
 struct vtkMedialBallParameters;
@@ -163,6 +168,21 @@ public:
   ///@}
 
   ///@{
+  /// What is done with a surface that is not a valid solid (vtkMedialRepairFilter's
+  /// modes): AUTO (default) checks it and measures the solid its repair makes of it
+  /// when it is not one; NONE neither checks nor repairs; WRAP measures its alpha wrap.
+  vtkSetClampMacro(RepairMode, int, 0, 2);
+  vtkGetMacro(RepairMode, int);
+  virtual void SetRepair(vtkMedialRepairFilter*);
+  vtkGetObjectMacro(Repair, vtkMedialRepairFilter);
+  /// True when the last update measured (and output) the repaired surface.
+  vtkGetMacro(SurfaceRepaired, bool);
+  ///@}
+
+  /// Includes the repair's modification time.
+  vtkMTimeType GetMTime() override;
+
+  ///@{
   /// Figures from the last execution.
   /// Vertices whose adjacent face normals spread more than theta.
   vtkGetMacro(SharpVertices, vtkIdType);
@@ -176,7 +196,7 @@ public:
 
 protected:
   vtkMedialThickness();
-  ~vtkMedialThickness() override = default;
+  ~vtkMedialThickness() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -220,6 +240,9 @@ protected:
   bool ComputeCellThickness = true;
   double ThinThreshold = 0.0;
   int NumberOfThreads = 0;
+  int RepairMode = 0;
+  vtkMedialRepairFilter* Repair = nullptr;
+  bool SurfaceRepaired = false;
 
   vtkIdType SharpVertices = 0;
   vtkIdType MissingPoints = 0;

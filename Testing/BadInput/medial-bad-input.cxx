@@ -3,7 +3,7 @@
 //
 //   medial-bad-input generate DIR
 //       writes every input file the table names into DIR (run by ctest before the rows)
-//   medial-bad-input run FILE [-n N] [--junctions] [--write OUT.vtp]
+//   medial-bad-input run FILE [-n N] [--repair auto|none|wrap] [--junctions] [--write OUT.vtp]
 //                         [--same-as REF [--scale S]] [--cli-output OUT.vtp]
 //       runs the pipeline the command-line program would run, filter by filter: the
 //       reader for FILE's extension (vtkMedialFileReader), vtkMedialAxisSampler (and, with --junctions,
@@ -18,6 +18,7 @@
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialFileReader.h"
 #include "vtkMedialJunctionFilter.h"
+#include "vtkMedialRepairFilter.h"
 #include "vtkMath.h"
 #include "vtkMedialShapeSource.h"
 
@@ -404,7 +405,7 @@ struct SamplerRun
 };
 
 // The sampler on a file, as run from the command line (seed 1, default settings).
-bool RunSampler(const std::string& path, vtkIdType samples, SamplerRun& run, bool print)
+bool RunSampler(const std::string& path, vtkIdType samples, int repair, SamplerRun& run, bool print)
 {
   vtkNew<vtkMedialFileReader> reader;
   reader->SetFileName(path.c_str());
@@ -414,6 +415,7 @@ bool RunSampler(const std::string& path, vtkIdType samples, SamplerRun& run, boo
   log.Watch(sampler);
   sampler->SetInputConnection(reader->GetOutputPort());
   sampler->SetNumberOfSamples(samples);
+  sampler->SetRepairMode(repair);
   const bool ok = sampler->GetExecutive()->Update() == 1;
   run.Output = sampler->GetOutput();
   if (auto* surface = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0)))
@@ -461,6 +463,7 @@ int Run(int argc, char* argv[])
 {
   const std::string path = argv[2];
   vtkIdType samples = 1000;
+  int repair = vtkMedialRepairFilter::AUTO;
   bool junctions = false;
   std::string write, sameAs, cliOutput;
   double scale = 1.0;
@@ -475,6 +478,15 @@ int Run(int argc, char* argv[])
     else if (a == "--junctions")
     {
       junctions = true;
+    }
+    else if (a == "--repair" && hasValue)
+    {
+      repair = vtkMedialRepairFilter::GetModeFromName(argv[++i]);
+      if (repair < 0)
+      {
+        std::printf("medial-bad-input: unknown --repair '%s'\n", argv[i]);
+        return 2;
+      }
     }
     else if (a == "--write" && hasValue)
     {
@@ -501,7 +513,7 @@ int Run(int argc, char* argv[])
 
   bool ok = true;
   SamplerRun run;
-  ok &= RunSampler(path, samples, run, true);
+  ok &= RunSampler(path, samples, repair, run, true);
 
   if (junctions)
   {
@@ -536,7 +548,7 @@ int Run(int argc, char* argv[])
   if (!sameAs.empty())
   {
     SamplerRun reference;
-    if (!RunSampler(sameAs, samples, reference, false))
+    if (!RunSampler(sameAs, samples, repair, reference, false))
     {
       std::printf("reference run on '%s' failed\n", sameAs.c_str());
       return 1;
@@ -567,7 +579,7 @@ int main(int argc, char* argv[])
   {
     return Run(argc, argv);
   }
-  std::printf("usage: medial-bad-input generate DIR | run FILE [-n N] [--junctions] [--write OUT.vtp]\n"
+  std::printf("usage: medial-bad-input generate DIR | run FILE [-n N] [--repair MODE] [--junctions] [--write OUT.vtp]\n"
               "       [--same-as REF [--scale S]] [--cli-output OUT.vtp]\n");
   return 2;
 }

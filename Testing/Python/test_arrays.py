@@ -153,11 +153,18 @@ try:
         medialaxis.medial_mesh(flat, fan, samples=100, threads=2)
     check(False, "medial_mesh of a flat L raised nothing")
 except RuntimeError as error:
-    check(str(error).startswith("vtkMedialMeshFilter: Cannot build the medial mesh: the ball centres are coplanar"),
-          f"flat surface: RuntimeError '{error}'")
+    check(str(error).startswith("vtkMedialMeshFilter: Cannot build the medial mesh: the surface is flat") and
+          "bounds no volume" in str(error), f"flat surface: RuntimeError '{error}'")
 with warnings.catch_warnings(record=True) as caught:
     warnings.simplefilter("always")
-    open_balls = medialaxis.medial_axis(vertices, triangles[:-10], samples=200, threads=2)
+    open_balls = medialaxis.medial_axis(vertices, triangles[:-10], samples=200, threads=2, repair="none")
 check(any(issubclass(w.category, RuntimeWarning) and "open (10 boundary edges)" in str(w.message) for w in caught),
       f"open sphere: RuntimeWarning {[str(w.message)[:80] for w in caught]}")
+# Repaired by default: the hole filled, one warning per step, no sample discarded.
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always")
+    repaired_balls = medialaxis.medial_axis(vertices, triangles[:-10], samples=200, threads=2)
+check(any("Repair: holes: 1 hole filled" in str(w.message) for w in caught) and repaired_balls.info["discarded"] == 0,
+      f"open sphere repaired: {[str(w.message)[:80] for w in caught]}, {repaired_balls.info}")
+raises(lambda: medialaxis.medial_axis(vertices, triangles, repair="fix"), "unknown repair 'fix'", "unknown repair")
 finish()

@@ -4,6 +4,7 @@ The VTK classes (vtkMedialAxisSampler, vtkMedialMeshFilter, ...) are here, and t
 numpy-level functions of medialaxis.arrays: medial_axis, medial_mesh, thickness,
 junction_graph, reconstruct, write_html, demo_shape (see help(medialaxis.arrays)).
 """
+from .vtkMedialAxisRepair import *  # noqa: F401,F403
 from .vtkMedialAxisSampling import *  # noqa: F401,F403
 from .vtkMedialAxisPlanar import *  # noqa: F401,F403
 from .vtkMedialAxisStructure import *  # noqa: F401,F403

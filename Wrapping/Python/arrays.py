@@ -27,6 +27,7 @@ from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 
 from .vtkMedialAxisPlanar import vtkMedialJunctionFilter
 from .vtkMedialAxisReconstruction import vtkMedialBallUnion
+from .vtkMedialAxisRepair import vtkMedialRepairFilter
 from .vtkMedialAxisRenderingWeb import vtkMedialHTMLWriter
 from .vtkMedialAxisSampling import vtkMedialAxisSampler
 from .vtkMedialAxisSources import vtkMedialShapeSource
@@ -39,6 +40,7 @@ METHODS = {"one-pass": vtkMedialAxisSampler.ONE_PASS, "bisection": vtkMedialAxis
            "shrinking-ball": vtkMedialAxisSampler.SHRINKING_BALL}
 STRATEGIES = {"random": vtkMedialAxisSampler.RANDOM, "closest-neighbor": vtkMedialAxisSampler.CLOSEST_NEIGHBOR,
               "face-distance": vtkMedialAxisSampler.FACE_DISTANCE}
+REPAIRS = {"auto": vtkMedialRepairFilter.AUTO, "none": vtkMedialRepairFilter.NONE, "wrap": vtkMedialRepairFilter.WRAP}
 TYPES_3D = ("rim", "sheet", "seam", "junction")
 TYPES_2D = ("end", "regular", "junction")
 
@@ -300,14 +302,16 @@ def demo_shape(name="jack", **parameters):
 
 
 def medial_axis(vertices, triangles=None, *, samples=10000, seed=1, threads=0, method="one-pass",
-                strategy="random", coverage=0.0, tolerance=1e-6, min_angle=45.0, max_protrusion=1e-4):
+                strategy="random", coverage=0.0, tolerance=1e-6, min_angle=45.0, max_protrusion=1e-4, repair="auto"):
     """The medial balls of a closed triangle mesh, or of a planar region (vertices (n, 2),
     or a flat mesh), by vtkMedialAxisSampler: one maximal inscribed ball per surface sample.
 
     Parameters mirror the command line: samples (-n), seed, threads (0: all cores),
     method ("one-pass", "bisection", "shrinking-ball"), strategy ("random",
     "closest-neighbor", "face-distance"), coverage, tolerance, min_angle (degrees),
-    max_protrusion (relative to the diagonal).
+    max_protrusion (relative to the diagonal), repair ("auto": a surface that is not a
+    valid solid is repaired first, one RuntimeWarning per step; "none"; "wrap"; see
+    docs/repair.md).
 
     Returns a Result with centres (k, 3) (k, 2 for 2D vertices), radii (k,),
     surface_points and contacts (k, 3 or 2: where each ball touches the surface),
@@ -326,6 +330,7 @@ def medial_axis(vertices, triangles=None, *, samples=10000, seed=1, threads=0, m
     sampler.SetTolerance(_number(tolerance, "tolerance", 1e-15, 0.1))
     sampler.SetMinimumSeparationAngle(_number(min_angle, "min_angle", 0.0, 179.0))
     sampler.SetMaximumProtrusion(_number(max_protrusion, "max_protrusion", 0.0, 1.0))
+    sampler.SetRepairMode(_choice(repair, "repair", REPAIRS))
     out = vtkPolyData()
     out.DeepCopy(_run(sampler))
     arrays = {"centres": _xyz(out, planar), "radii": _array(out, "Radius")}
@@ -354,14 +359,14 @@ def _balls_data(balls, name="balls"):
 
 
 def medial_mesh(vertices, triangles=None, *, balls=None, samples=10000, seed=1, threads=0, min_angle=45.0,
-                max_protrusion=1e-4, prune=False, prune_threshold=None):
+                max_protrusion=1e-4, prune=False, prune_threshold=None, repair="auto"):
     """The medial mesh of a closed triangle mesh (vtkMedialMeshFilter): the balls joined
     by edges and triangles through the regular triangulation, with the solid's topology.
 
     balls: a Result of medial_axis (or a vtkPolyData) to join instead of sampling anew
     with samples, seed, min_angle, max_protrusion. threads as the command line.
     prune / prune_threshold: the mesh's branches pruned by the scale axis measure
-    (vtkMedialPruneFilter; threshold default 1/3, a scale of 1.5).
+    (vtkMedialPruneFilter; threshold default 1/3, a scale of 1.5). repair as medial_axis.
 
     Returns a Result with centres (k, 3), radii (k,), types (k,) (MedialPointType: 0 rim,
     1 sheet, 2 seam, 3 junction; type_names gives the names), governors (k,), edges (e, 2)
@@ -372,6 +377,7 @@ def medial_mesh(vertices, triangles=None, *, balls=None, samples=10000, seed=1, 
     mesh = vtkMedialMeshFilter()
     mesh.SetInputData(data)
     mesh.SetNumberOfThreads(_count(threads, "threads", 0, 4096))
+    mesh.SetRepairMode(_choice(repair, "repair", REPAIRS))
     mesh.GetClassifier().SetMinimumSeparationAngle(_number(min_angle, "min_angle", 0.0, 179.0))
     if balls is not None:
         mesh.SetBallsData(_balls_data(balls))
@@ -411,13 +417,15 @@ def medial_mesh(vertices, triangles=None, *, balls=None, samples=10000, seed=1, 
 
 
 def thickness(vertices, triangles=None, *, min_angle=45.0, max_protrusion=1e-4, threads=0, below=None,
-              surface_tolerance=0.25):
+              surface_tolerance=0.25, repair="auto"):
     """The wall thickness of a closed triangle mesh at every vertex and triangle
     (vtkMedialThickness): the diameter of the largest inscribed ball touching there
     (within surface_tolerance times the local facet size; at a convex edge, the walls').
 
     min_angle, max_protrusion and threads as the command line; below: a thickness (in the
-    mesh's units) under which the area is counted as thin (--thickness-below).
+    mesh's units) under which the area is counted as thin (--thickness-below); repair as
+    medial_axis (when the surface is repaired, the arrays are the repaired surface's, whose
+    vertices are not the input's; repair="none" keeps the input's).
 
     Returns a Result with thickness (n,), medial_radius (n,), medial_centres (n, 3),
     tangent_thickness (n,), ray_thickness (n,) per vertex and cell_thickness (m,) per
@@ -432,6 +440,7 @@ def thickness(vertices, triangles=None, *, min_angle=45.0, max_protrusion=1e-4, 
     wall.SetMaximumProtrusion(_number(max_protrusion, "max_protrusion", 0.0, 1.0))
     wall.SetNumberOfThreads(_count(threads, "threads", 0, 4096))
     wall.SetSurfaceTolerance(_number(surface_tolerance, "surface_tolerance", 0.0, 10.0))
+    wall.SetRepairMode(_choice(repair, "repair", REPAIRS))
     if below is not None:
         wall.SetThinThreshold(_number(below, "below", 1e-300, 1e300))
     out = vtkPolyData()

@@ -7,6 +7,7 @@
 // Testing/BadInput/cases.tsv.
 #include "MedialTestUtilities.h"
 
+#include "vtkMedialRepairFilter.h"
 #include "vtkCellArray.h"
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialShapeSource.h"
@@ -49,6 +50,7 @@ int TestMedialSamplerOpenMesh(int, char*[])
   vtkNew<vtkMedialAxisSampler> sampler;
   log.Watch(sampler);
   sampler->SetInputData(open);
+  sampler->SetRepairMode(vtkMedialRepairFilter::NONE); // the open surface as it is
   sampler->SetNumberOfSamples(2000);
   sampler->SetMinimumSeparationAngle(0.0); // balls strictly inside the polyhedron
   sampler->Update();
@@ -78,6 +80,7 @@ int TestMedialSamplerOpenMesh(int, char*[])
     vtkNew<vtkMedialAxisSampler> s;
     iterative.Watch(s);
     s->SetInputData(open);
+    s->SetRepairMode(vtkMedialRepairFilter::NONE);
     s->SetNumberOfSamples(3000);
     s->SetSamplingStrategy(strategy);
     s->Update();
@@ -125,6 +128,7 @@ int TestMedialSamplerOpenMesh(int, char*[])
   vtkNew<vtkMedialAxisSampler> s;
   early.Watch(s);
   s->SetInputData(unreachable);
+  s->SetRepairMode(vtkMedialRepairFilter::NONE);
   s->SetNumberOfSamples(200000);
   s->SetSamplingStrategyToFaceDistance();
   s->SetCoverageTolerance(0.002);

@@ -7,6 +7,7 @@
 // one clear error (or a warning for an open surface or balls outside the shape).
 #include "MedialMeshTestUtilities.h"
 
+#include "vtkMedialRepairFilter.h"
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialMeshFilter.h"
@@ -42,13 +43,15 @@ vtkSmartPointer<vtkPolyData> BallsOf(const std::vector<std::array<double, 4>>& l
   return balls;
 }
 
-// Runs the filter on (surface, balls) and returns the log.
+// Runs the filter on (surface, balls) and returns the log. The surfaces are taken as they
+// are (RepairMode NONE): these are the messages about them.
 std::string Run(vtkPolyData* surface, vtkPolyData* balls, int& errors, int& warnings)
 {
   vtkNew<vtkMedialMeshFilter> filter;
   medialtest::EventLog log;
   log.Watch(filter);
   filter->SetInputData(surface);
+  filter->SetRepairMode(vtkMedialRepairFilter::NONE);
   if (balls)
   {
     filter->SetBallsData(balls);

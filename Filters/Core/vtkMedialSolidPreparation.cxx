@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkMedialSolidPreparation.h"
+
+#include "vtkMedialSolidCheck.h"
+#include "vtkMedialSurfaceQuery.h"
+#include "vtkMedialTriangleMesh.h"
+
+#include "vtkFieldData.h"
+#include "vtkPolyData.h"
+
+bool vtkMedialSolidPreparation::Prepare(vtkPolyData* input, int mode, const Repairer& repair, int threads,
+  vtkMedialTriangleMesh& mesh, vtkMedialSurfaceQuery& query, std::string& error,
+  const std::function<bool()>& aborted, const std::function<void(int)>& stage)
+{
+  auto begin = [&](int s) {
+    if (stage)
+    {
+      stage(s);
+    }
+  };
+  *this = vtkMedialSolidPreparation();
+  this->Surface = input;
+  auto build = [&](vtkPolyData* surface) {
+    begin(MESH);
+    if (!mesh.Build(surface, error, aborted))
+    {
+      return false;
+    }
+    begin(QUERIES);
+    if (!query.Build(&mesh, error, aborted))
+    {
+      return false;
+    }
+    this->Surface = surface;
+    return true;
+  };
+  auto runRepair = [&](bool wrap, Repair& result) {
+    begin(REPAIR);
+    if (!repair)
+    {
+      error = "no repair is available";
+      return false;
+    }
+    if (!repair(input, wrap, result, error))
+    {
+      return false;
+    }
+    this->Messages = result.Messages;
+    this->Report = result.Report;
+    return true;
+  };
+
+  if (mode == WRAP)
+  {
+    Repair result;
+    if (!runRepair(true, result) || !build(result.Surface))
+    {
+      return false;
+    }
+    this->Repaired = true;
+    return true;
+  }
+  if (!build(input))
+  {
+    return false;
+  }
+  if (mode != AUTO)
+  {
+    this->Messages = mesh.Warnings();
+    return true;
+  }
+  vtkMedialSolidCheck check;
+  check.Run(mesh, query, threads);
+  if (check.IsValid())
+  {
+    this->Messages = mesh.Warnings();
+    return true;
+  }
+  if (aborted && aborted())
+  {
+    error = "aborted";
+    return false;
+  }
+  Repair result;
+  if (!runRepair(false, result))
+  {
+    return false;
+  }
+  if (!result.Changed)
+  {
+    // A valid solid after all: the mesh already built is the one. The repair's lines,
+    // when it has any, say why (shells that only touch) instead of the mesh's warnings.
+    if (result.Messages.empty())
+    {
+      this->Messages = mesh.Warnings();
+    }
+    this->Report = nullptr;
+    return true;
+  }
+  this->Repaired = true;
+  return build(result.Surface);
+}

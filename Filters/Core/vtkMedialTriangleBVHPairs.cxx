@@ -1,0 +1,431 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkMedialTriangleBVH::FindIntersectingPairs: the self-intersection search of the
+// solid check (vtkMedialSolidCheck), the tree walked against itself.
+#include "vtkMedialTriangleBVH.h"
+
+#include "vtkMedialGeometry.h"
+#include "vtkMedialTriangleMesh.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <omp.h>
+
+namespace
+{
+namespace G = vtkMedialGeometry;
+
+// A triangle as the tests read it: its corners, its plane (unit normal n, n.x = d) and
+// whether that plane can be trusted.
+struct Triangle
+{
+  const double* X[3];
+  const double* Plane;
+  bool Sliver;
+};
+
+double Side(const double* plane, const double* x)
+{
+  return plane[0] * x[0] + plane[1] * x[1] + plane[2] * x[2] - plane[3];
+}
+
+// Every value beyond eps on the same side.
+bool OneSide(const double d[], int n, double eps)
+{
+  bool above = true, below = true;
+  for (int i = 0; i < n; ++i)
+  {
+    above = above && d[i] > eps;
+    below = below && d[i] < -eps;
+  }
+  return above || below;
+}
+
+// A triangle whose normal is ill-conditioned (|e1 x e2| tiny against |e1| |e2|): its
+// stored plane may be off by more than the tolerance, so any close pair with it is kept.
+bool IsSliver(const double* a, const double* b, const double* c)
+{
+  double e1[3], e2[3], n[3];
+  G::Sub(b, a, e1);
+  G::Sub(c, a, e2);
+  G::Cross(e1, e2, n);
+  return !(G::Dot(n, n) >= 1e-14 * G::Dot(e1, e1) * G::Dot(e2, e2));
+}
+
+// Two coplanar triangles (within the tolerance): true unless an edge of one separates
+// them in their plane by more than eps.
+bool CoplanarMayOverlap(const Triangle& a, const Triangle& b, double eps)
+{
+  // The plane's two coordinates that the normal leans on least.
+  const double* n = a.Plane;
+  const int drop = std::fabs(n[0]) > std::fabs(n[1]) ? (std::fabs(n[0]) > std::fabs(n[2]) ? 0 : 2)
+                                                      : (std::fabs(n[1]) > std::fabs(n[2]) ? 1 : 2);
+  const int u = (drop + 1) % 3, v = (drop + 2) % 3;
+  auto separates = [&](const Triangle& s, const Triangle& t) {
+    for (int i = 0; i < 3; ++i)
+    {
+      const double* p = s.X[i];
+      const double* q = s.X[(i + 1) % 3];
+      const double* r = s.X[(i + 2) % 3];
+      const double m[2] = { -(q[v] - p[v]), q[u] - p[u] };
+      const double length = std::sqrt(m[0] * m[0] + m[1] * m[1]);
+      const double inner = m[0] * (r[u] - p[u]) + m[1] * (r[v] - p[v]);
+      const double sign = inner < 0.0 ? 1.0 : -1.0; // towards the outside of s
+      bool apart = length > 0.0;
+      for (int k = 0; k < 3 && apart; ++k)
+      {
+        apart = sign * (m[0] * (t.X[k][u] - p[u]) + m[1] * (t.X[k][v] - p[v])) > eps * length;
+      }
+      if (apart)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  return !separates(a, b) && !separates(b, a);
+}
+
+// The interval of triangle t (signed distances d to the other plane) on the line along u
+// where the planes meet; corners within eps of the plane count as on it.
+void LineInterval(const Triangle& t, const double d[3], const double u[3], double eps, double& lo, double& hi)
+{
+  lo = HUGE_VAL;
+  hi = -HUGE_VAL;
+  auto add = [&](const double x[3]) {
+    const double s = G::Dot(u, x);
+    lo = std::min(lo, s);
+    hi = std::max(hi, s);
+  };
+  for (int i = 0; i < 3; ++i)
+  {
+    if (std::fabs(d[i]) <= eps)
+    {
+      add(t.X[i]);
+    }
+    const int j = (i + 1) % 3;
+    if ((d[i] > eps && d[j] < -eps) || (d[i] < -eps && d[j] > eps))
+    {
+      const double s = d[i] / (d[i] - d[j]);
+      double x[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        x[k] = t.X[i][k] + s * (t.X[j][k] - t.X[i][k]);
+      }
+      add(x);
+    }
+  }
+}
+
+// Triangles that share no corner: true unless they are certainly apart by more than the
+// rounding of the test (Moller's interval test with margins; coplanar ones in 2D).
+bool MayTouch(const Triangle& a, const Triangle& b, double eps)
+{
+  double db[3], da[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    db[i] = Side(a.Plane, b.X[i]);
+  }
+  if (OneSide(db, 3, eps) && !a.Sliver)
+  {
+    return false;
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    da[i] = Side(b.Plane, a.X[i]);
+  }
+  if (OneSide(da, 3, eps) && !b.Sliver)
+  {
+    return false;
+  }
+  if (a.Sliver || b.Sliver)
+  {
+    return true;
+  }
+  double u[3];
+  G::Cross(a.Plane, b.Plane, u);
+  const double length = std::sqrt(G::Dot(u, u));
+  if (length < 1e-6)
+  {
+    return CoplanarMayOverlap(a, b, eps);
+  }
+  for (double& c : u)
+  {
+    c /= length;
+  }
+  double alo, ahi, blo, bhi;
+  LineInterval(a, da, u, eps, alo, ahi);
+  LineInterval(b, db, u, eps, blo, bhi);
+  // The intervals' ends carry the plane distances' error over the planes' angle.
+  const double margin = 4.0 * eps / length;
+  return alo <= bhi + margin && blo <= ahi + margin;
+}
+
+// Triangles a = (v, a1, a2) and b = (v, b1, b2) that share the corner v only: true
+// unless they certainly meet at v alone.
+bool MayTouchBeyondVertex(const Triangle& a, int va, const Triangle& b, int vb, double eps)
+{
+  const double* v = a.X[va];
+  const double* a1 = a.X[(va + 1) % 3];
+  const double* a2 = a.X[(va + 2) % 3];
+  const double* b1 = b.X[(vb + 1) % 3];
+  const double* b2 = b.X[(vb + 2) % 3];
+  if (a.Sliver || b.Sliver)
+  {
+    return true;
+  }
+  // One triangle on one side of the other's plane: they meet at v only.
+  const double db[2] = { Side(a.Plane, b1), Side(a.Plane, b2) };
+  if (OneSide(db, 2, eps))
+  {
+    return false;
+  }
+  const double da[2] = { Side(b.Plane, a1), Side(b.Plane, a2) };
+  if (OneSide(da, 2, eps))
+  {
+    return false;
+  }
+  double u[3];
+  G::Cross(a.Plane, b.Plane, u);
+  const double length = std::sqrt(G::Dot(u, u));
+  if (length < 1e-6)
+  {
+    // Coplanar: two convex corner sectors at v (each under 180 degrees) overlap only if
+    // an edge of one from v lies in the other, so they are apart when each edge from v
+    // is strictly outside the other triangle's sector.
+    auto outside = [&](const double* q1, const double* q2, const double* r) {
+      double e1[3], e2[3], w[3], c1[3], c2[3], c12[3];
+      G::Sub(q1, v, e1);
+      G::Sub(q2, v, e2);
+      G::Sub(r, v, w);
+      G::Cross(e1, w, c1);
+      G::Cross(w, e2, c2);
+      G::Cross(e1, e2, c12);
+      const double s1 = G::Dot(c1, a.Plane), s2 = G::Dot(c2, a.Plane), s = G::Dot(c12, a.Plane);
+      const double ww = G::Dot(w, w);
+      const double m = 1e-9 * (std::sqrt(G::Dot(e1, e1) * ww) + std::sqrt(G::Dot(e2, e2) * ww));
+      return (s > 0.0 && (s1 < -m || s2 < -m)) || (s < 0.0 && (s1 > m || s2 > m));
+    };
+    return !(outside(a1, a2, b1) && outside(a1, a2, b2) && outside(b1, b2, a1) && outside(b1, b2, a2));
+  }
+  // The planes meet along the line through v with direction u. Each triangle meets it
+  // in a segment from v, to where its opposite edge crosses the other plane; they meet
+  // beyond v when the two segments leave v the same way.
+  auto direction = [&](const double* p1, const double* p2, const double d[2]) {
+    const double s = d[0] / (d[0] - d[1]);
+    double x[3], w[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      x[k] = p1[k] + s * (p2[k] - p1[k]);
+    }
+    G::Sub(x, v, w);
+    const double t = G::Dot(u, w);
+    const double size = length * std::sqrt(G::Dot(w, w));
+    return t > 1e-9 * size ? 1 : (t < -1e-9 * size ? -1 : 0);
+  };
+  const int sa = direction(a1, a2, da), sb = direction(b1, b2, db);
+  return sa == 0 || sb == 0 || sa == sb;
+}
+
+// Triangles sharing the edge (v, w), with opposite corners a and b: true when they may
+// fold onto each other (coplanar, a and b on the same side of the edge).
+bool MayFold(const Triangle& ta, const double* v, const double* w, const double* a, const Triangle& tb,
+  const double* b, double eps)
+{
+  if (!ta.Sliver && !tb.Sliver && std::fabs(Side(ta.Plane, b)) > eps)
+  {
+    return false;
+  }
+  double e[3], pa[3], pb[3], ca[3], cb[3];
+  G::Sub(w, v, e);
+  G::Sub(a, v, pa);
+  G::Sub(b, v, pb);
+  G::Cross(e, pa, ca);
+  G::Cross(e, pb, cb);
+  return G::Dot(ca, cb) >= -1e-9 * std::sqrt(G::Dot(ca, ca) * G::Dot(cb, cb));
+}
+}
+
+void vtkMedialTriangleBVH::FindIntersectingPairs(const vtkMedialTriangleMesh& mesh, double tolerance, int threads,
+  std::vector<std::pair<vtkIdType, vtkIdType>>& pairs) const
+{
+  pairs.clear();
+  const std::int64_t slots = static_cast<std::int64_t>(this->LeafTriangles.size());
+  if (this->Nodes.empty() || slots == 0)
+  {
+    return;
+  }
+  threads = std::max(1, threads);
+  // Per leaf slot: the corners' point ids (shared corners are found by id, the mesh's
+  // merge made equal coordinates one point) and whether the plane is ill-conditioned.
+  vtkMedialBuffer<std::int32_t> ids(3 * static_cast<size_t>(slots));
+  vtkMedialBuffer<char> sliver(static_cast<size_t>(slots));
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::int64_t i = 0; i < slots; ++i)
+  {
+    const vtkIdType* v = mesh.GetTriangle(this->LeafTriangles[i].Triangle);
+    for (int k = 0; k < 3; ++k)
+    {
+      ids[3 * i + k] = static_cast<std::int32_t>(v[k]);
+    }
+    sliver[i] = IsSliver(mesh.GetPoint(v[0]), mesh.GetPoint(v[1]), mesh.GetPoint(v[2]));
+  }
+  // Boxes (floats relative to Origin, rounded outward) are compared padded by the
+  // tolerance, so that pairs closer than it are tested too.
+  const float pad = static_cast<float>(tolerance) * (1.0f + 1e-6f);
+  auto overlap = [pad](const float* alo, const float* ahi, const float* blo, const float* bhi) {
+    return alo[0] <= bhi[0] + pad && blo[0] <= ahi[0] + pad && alo[1] <= bhi[1] + pad && blo[1] <= ahi[1] + pad &&
+      alo[2] <= bhi[2] + pad && blo[2] <= ahi[2] + pad;
+  };
+  // The corners from the mesh's points (the same bits as the tree's leaf-order copy,
+  // which holds floats when every coordinate is one).
+  auto triangle = [&](std::int32_t slot) {
+    const vtkIdType* v = mesh.GetTriangle(this->LeafTriangles[slot].Triangle);
+    return Triangle{ { mesh.GetPoint(v[0]), mesh.GetPoint(v[1]), mesh.GetPoint(v[2]) },
+      this->LeafTriangles[slot].Plane, sliver[slot] != 0 };
+  };
+  using Pairs = std::vector<std::pair<vtkIdType, vtkIdType>>;
+  // One pair of slots whose boxes overlap: the test by the corners they share.
+  auto test = [&](std::int32_t i, std::int32_t j, Pairs& out) {
+    const std::int32_t* vi = &ids[3 * static_cast<size_t>(i)];
+    const std::int32_t* vj = &ids[3 * static_cast<size_t>(j)];
+    int sharedI[3], sharedJ[3], shared = 0;
+    for (int a = 0; a < 3; ++a)
+    {
+      for (int b = 0; b < 3; ++b)
+      {
+        if (vi[a] == vj[b])
+        {
+          sharedI[shared] = a;
+          sharedJ[shared] = b;
+          ++shared;
+        }
+      }
+    }
+    const Triangle a = triangle(i), b = triangle(j);
+    bool may = true; // three shared corners: a duplicate (the mesh drops them)
+    if (shared == 0)
+    {
+      may = MayTouch(a, b, tolerance);
+    }
+    else if (shared == 1)
+    {
+      may = MayTouchBeyondVertex(a, sharedI[0], b, sharedJ[0], tolerance);
+    }
+    else if (shared == 2)
+    {
+      const int oa = 3 - sharedI[0] - sharedI[1], ob = 3 - sharedJ[0] - sharedJ[1];
+      may = MayFold(a, a.X[sharedI[0]], a.X[sharedI[1]], a.X[oa], b, b.X[ob], tolerance);
+    }
+    if (may)
+    {
+      const vtkIdType ta = this->LeafTriangles[i].Triangle, tb = this->LeafTriangles[j].Triangle;
+      out.emplace_back(std::min(ta, tb), std::max(ta, tb));
+    }
+  };
+  // Work items: a node against itself (B < 0), or two nodes whose boxes overlap.
+  struct Item
+  {
+    std::int32_t A, B;
+  };
+  auto expand = [&](const Item& item, std::vector<Item>& stack, Pairs& out) {
+    const Node& a = this->Nodes[item.A];
+    if (item.B < 0)
+    {
+      if (a.Count > 0)
+      {
+        for (std::int32_t i = a.Start; i < a.Start + a.Count; ++i)
+        {
+          for (std::int32_t j = i + 1; j < a.Start + a.Count; ++j)
+          {
+            if (overlap(this->LeafTriangles[i].Lo, this->LeafTriangles[i].Hi, this->LeafTriangles[j].Lo,
+                  this->LeafTriangles[j].Hi))
+            {
+              test(i, j, out);
+            }
+          }
+        }
+        return;
+      }
+      stack.push_back({ a.Start, -1 });
+      stack.push_back({ a.Start + 1, -1 });
+      const Node& l = this->Nodes[a.Start];
+      const Node& r = this->Nodes[a.Start + 1];
+      if (overlap(l.Lo, l.Hi, r.Lo, r.Hi))
+      {
+        stack.push_back({ a.Start, a.Start + 1 });
+      }
+      return;
+    }
+    const Node& b = this->Nodes[item.B];
+    if (a.Count > 0 && b.Count > 0)
+    {
+      for (std::int32_t i = a.Start; i < a.Start + a.Count; ++i)
+      {
+        const LeafTriangle& ti = this->LeafTriangles[i];
+        if (!overlap(ti.Lo, ti.Hi, b.Lo, b.Hi))
+        {
+          continue;
+        }
+        for (std::int32_t j = b.Start; j < b.Start + b.Count; ++j)
+        {
+          if (overlap(ti.Lo, ti.Hi, this->LeafTriangles[j].Lo, this->LeafTriangles[j].Hi))
+          {
+            test(i, j, out);
+          }
+        }
+      }
+      return;
+    }
+    // Open the node with more triangles (never a leaf); keep the children that overlap.
+    const bool openA = b.Count > 0 || (a.Count == 0 && a.End - a.Begin >= b.End - b.Begin);
+    const std::int32_t open = openA ? item.A : item.B, other = openA ? item.B : item.A;
+    const Node& o = this->Nodes[other];
+    for (std::int32_t child = this->Nodes[open].Start; child <= this->Nodes[open].Start + 1; ++child)
+    {
+      const Node& c = this->Nodes[child];
+      if (overlap(c.Lo, c.Hi, o.Lo, o.Hi))
+      {
+        stack.push_back({ child, other });
+      }
+    }
+  };
+  // The top items, expanded breadth first until there are enough to share out.
+  std::vector<Item> top{ { 0, -1 } };
+  Pairs found;
+  const size_t wanted = 64 * static_cast<size_t>(threads);
+  while (!top.empty() && top.size() < wanted)
+  {
+    std::vector<Item> next;
+    for (const Item& item : top)
+    {
+      expand(item, next, found);
+    }
+    top.swap(next);
+  }
+  std::vector<Pairs> perThread(threads);
+#pragma omp parallel num_threads(threads)
+  {
+    Pairs& out = perThread[omp_get_thread_num()];
+    std::vector<Item> stack;
+    stack.reserve(256);
+#pragma omp for schedule(dynamic, 1)
+    for (std::int64_t i = 0; i < static_cast<std::int64_t>(top.size()); ++i)
+    {
+      stack.assign(1, top[i]);
+      while (!stack.empty())
+      {
+        const Item item = stack.back();
+        stack.pop_back();
+        expand(item, stack, out);
+      }
+    }
+  }
+  for (const Pairs& p : perThread)
+  {
+    found.insert(found.end(), p.begin(), p.end());
+  }
+  std::sort(found.begin(), found.end());
+  found.erase(std::unique(found.begin(), found.end()), found.end());
+  pairs.swap(found);
+}

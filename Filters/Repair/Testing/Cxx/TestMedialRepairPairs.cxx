@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The solid check's self-intersection search (vtkMedialTriangleBVH::FindIntersectingPairs,
+// double precision with margins) must list every triangle pair that CGAL's
+// Polygon_mesh_processing::self_intersections finds, on meshes with many intersections
+// of every kind: a shell crossing itself, two overlapping spheres, crumpled spheres and
+// tori (random folds: pairs that share an edge or a corner), coplanar faces that overlap,
+// and horse.ply when the shared meshes are there. And the repair's exact test of those
+// candidates must keep exactly CGAL's pairs (vtkMedialRepairFilter's IntersectingPairs).
+// This file compiles CGAL itself, for the reference.
+#include "MedialDefectTestUtilities.h"
+#include "MedialTestUtilities.h"
+
+#include "vtkMedialRepairFilter.h"
+#include "vtkMedialSurfaceQuery.h"
+#include "vtkMedialTriangleMesh.h"
+
+#include "vtkPLYReader.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <random>
+#include <set>
+
+namespace
+{
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<K::Point_3>;
+using Pair = std::pair<vtkIdType, vtkIdType>;
+
+// CGAL's pairs on the prepared mesh's own triangles (same ids, same points).
+std::set<Pair> ReferencePairs(const vtkMedialTriangleMesh& prepared)
+{
+  std::vector<K::Point_3> points;
+  for (vtkIdType i = 0; i < prepared.GetNumberOfPoints(); ++i)
+  {
+    const double* x = prepared.GetPoint(i);
+    points.emplace_back(x[0], x[1], x[2]);
+  }
+  std::vector<std::vector<std::size_t>> faces;
+  for (vtkIdType t = 0; t < prepared.GetNumberOfTriangles(); ++t)
+  {
+    const vtkIdType* v = prepared.GetTriangle(t);
+    faces.push_back({ static_cast<std::size_t>(v[0]), static_cast<std::size_t>(v[1]), static_cast<std::size_t>(v[2]) });
+  }
+  Mesh mesh;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, faces, mesh);
+  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> found;
+  CGAL::Polygon_mesh_processing::self_intersections(mesh, std::back_inserter(found));
+  std::set<Pair> pairs;
+  for (const auto& f : found)
+  {
+    const vtkIdType a = static_cast<vtkIdType>(f.first), b = static_cast<vtkIdType>(f.second);
+    pairs.insert({ std::min(a, b), std::max(a, b) });
+  }
+  return pairs;
+}
+
+vtkSmartPointer<vtkPolyData> Crumpled(int shape, int resolution, double amount, unsigned seed)
+{
+  auto pd = medialtest::defects::Shape(shape, resolution);
+  std::vector<medialtest::defects::Point> x = medialtest::defects::Points(pd);
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> jitter(-amount, amount);
+  for (auto& p : x)
+  {
+    for (double& c : p)
+    {
+      c += jitter(random);
+    }
+  }
+  return medialtest::defects::Mesh(x, medialtest::defects::Triangles(pd));
+}
+
+// Two boxes, one sliding over the other's top face by half its width: coplanar faces
+// that overlap, and edges that cross in that plane.
+vtkSmartPointer<vtkPolyData> CoplanarBoxes()
+{
+  using namespace medialtest::defects;
+  auto box = Shape(vtkMedialShapeSource::BOX, 3, [](vtkMedialShapeSource* s) { s->SetBoxLengths(1, 1, 1); });
+  return Append(box, Translated(box, 0.5, 0.25, 1.0));
+}
+}
+
+int TestMedialRepairPairs(int, char*[])
+{
+  struct Case
+  {
+    std::string Name;
+    vtkSmartPointer<vtkPolyData> Surface;
+  };
+  std::vector<Case> cases = {
+    { "crossing shell", medialtest::defects::CrossingShell().Surface },
+    { "overlapping spheres", medialtest::defects::OverlappingSpheres().Surface },
+    { "crumpled sphere", Crumpled(vtkMedialShapeSource::SPHERE, 3, 0.06, 1) },
+    { "crumpled sphere 2", Crumpled(vtkMedialShapeSource::SPHERE, 4, 0.02, 2) },
+    { "crumpled torus", Crumpled(vtkMedialShapeSource::TORUS, 6, 0.03, 3) },
+    { "coplanar boxes", CoplanarBoxes() },
+    { "valid hollow sphere", medialtest::defects::SolidInCavity().Surface },
+  };
+  if (vtkSmartPointer<vtkPolyData> horse = medialtest::ReadSharedPLY("horse.ply"))
+  {
+    cases.push_back({ "horse.ply", horse });
+  }
+  for (const Case& c : cases)
+  {
+    vtkMedialTriangleMesh mesh;
+    vtkMedialSurfaceQuery query;
+    std::string error;
+    MEDIAL_CHECK(mesh.Build(c.Surface, error) && query.Build(&mesh, error), "%s: %s", c.Name.c_str(), error.c_str());
+    std::vector<Pair> candidates;
+    query.FindIntersectingPairs(2, candidates);
+    const std::set<Pair> found(candidates.begin(), candidates.end());
+    const std::set<Pair> reference = ReferencePairs(mesh);
+    vtkIdType missed = 0;
+    for (const Pair& p : reference)
+    {
+      missed += found.count(p) ? 0 : 1;
+    }
+    // The repair's exact test of the candidates: its count of the input's pairs (the
+    // check's candidates are only searched on input that is otherwise a valid solid).
+    vtkNew<vtkMedialRepairFilter> repair;
+    repair->SetInputData(c.Surface);
+    repair->SetReportSteps(false);
+    repair->Update();
+    std::printf("%-20s triangles %lld: CGAL %zu pairs, candidates %zu, missed %lld; repair: %lld exact pairs\n",
+      c.Name.c_str(), static_cast<long long>(mesh.GetNumberOfTriangles()), reference.size(), found.size(),
+      static_cast<long long>(missed), static_cast<long long>(repair->GetIntersectingPairs()));
+    MEDIAL_CHECK(missed == 0, "%s: the search missed %lld of CGAL's %zu pairs", c.Name.c_str(),
+      static_cast<long long>(missed), reference.size());
+    if (mesh.BoundaryEdges == 0 && mesh.NonManifoldEdges == 0 && mesh.Contacts.empty())
+    {
+      MEDIAL_CHECK(repair->GetIntersectingPairs() == static_cast<vtkIdType>(reference.size()),
+        "%s: the repair's exact test kept %lld pairs, CGAL finds %zu", c.Name.c_str(),
+        static_cast<long long>(repair->GetIntersectingPairs()), reference.size());
+    }
+  }
+  // The search's own list does not depend on the thread count.
+  vtkMedialTriangleMesh mesh;
+  vtkMedialSurfaceQuery query;
+  std::string error;
+  mesh.Build(cases[2].Surface, error);
+  query.Build(&mesh, error);
+  std::vector<Pair> one, two;
+  query.FindIntersectingPairs(1, one);
+  query.FindIntersectingPairs(2, two);
+  MEDIAL_CHECK(one == two, "the pairs differ between 1 and 2 threads");
+  return EXIT_SUCCESS;
+}

@@ -1,0 +1,1226 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkMedialRepairFilter.h"
+
+#include "vtkMedialArrayNames.h"
+#include "vtkMedialPieces.h"
+#include "vtkMedialPipeline.h"
+#include "vtkMedialPlane.h"
+#include "vtkMedialProgress.h"
+#include "vtkMedialSolidCheck.h"
+#include "vtkMedialSurfaceQuery.h"
+#include "vtkMedialSurfaceRepair.h"
+#include "vtkMedialThreads.h"
+#include "vtkMedialTriangleMesh.h"
+
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkStaticCleanPolyData.h"
+#include "vtkStringArray.h"
+#include "vtkTriangleFilter.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+vtkStandardNewMacro(vtkMedialRepairFilter);
+
+namespace
+{
+using Soup = vtkMedialSurfaceRepair::Soup;
+using Pairs = std::vector<std::pair<vtkIdType, vtkIdType>>;
+
+// Rounds of union and self-crossing resolution before the wrap takes what is left.
+constexpr int ShellRounds = 4;
+// Input deeper than this inside the repaired solid (relative to the diagonal) is buried
+// (an overlap joined, a sheet removed), not moved.
+constexpr double BuriedDepth = 1e-3;
+// A shell resolved from its self-intersections may move its surface by this much
+// (relative to the diagonal) where it is not buried: CGAL's local removal smooths.
+constexpr double MovedTolerance = 1e-3;
+
+vtkSmartPointer<vtkPolyData> ToPolyData(const Soup& soup)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(soup.Points.size()));
+  for (size_t i = 0; i < soup.Points.size(); ++i)
+  {
+    points->SetPoint(static_cast<vtkIdType>(i), soup.Points[i].data());
+  }
+  vtkNew<vtkCellArray> cells;
+  cells->AllocateExact(static_cast<vtkIdType>(soup.Triangles.size()), 3 * static_cast<vtkIdType>(soup.Triangles.size()));
+  for (const auto& t : soup.Triangles)
+  {
+    cells->InsertNextCell(3, t.data());
+  }
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->SetPoints(points);
+  out->SetPolys(cells);
+  return out;
+}
+
+// The triangles of `mesh` (oriented as it oriented them) for which keep(triangle) is
+// true, over their points only.
+template <class Keep>
+Soup SoupOf(const vtkMedialTriangleMesh& mesh, Keep keep)
+{
+  Soup soup;
+  std::vector<vtkIdType> id(mesh.GetNumberOfPoints(), -1);
+  for (vtkIdType t = 0; t < mesh.GetNumberOfTriangles(); ++t)
+  {
+    if (!keep(t))
+    {
+      continue;
+    }
+    std::array<vtkIdType, 3> tri;
+    for (int k = 0; k < 3; ++k)
+    {
+      const vtkIdType v = mesh.GetTriangle(t)[k];
+      if (id[v] < 0)
+      {
+        id[v] = static_cast<vtkIdType>(soup.Points.size());
+        const double* x = mesh.GetPoint(v);
+        soup.Points.push_back({ x[0], x[1], x[2] });
+      }
+      tri[k] = id[v];
+    }
+    soup.Triangles.push_back(tri);
+  }
+  return soup;
+}
+
+Soup SoupOf(const vtkMedialTriangleMesh& mesh)
+{
+  return SoupOf(mesh, [](vtkIdType) { return true; });
+}
+
+void Append(Soup& to, const Soup& from)
+{
+  const vtkIdType offset = static_cast<vtkIdType>(to.Points.size());
+  to.Points.insert(to.Points.end(), from.Points.begin(), from.Points.end());
+  for (const auto& t : from.Triangles)
+  {
+    to.Triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+  }
+}
+
+// The input's polygons and strips as triangles, on its own points.
+Soup Triangulated(vtkPolyData* input)
+{
+  vtkNew<vtkPolyData> surface;
+  surface->SetPoints(input->GetPoints());
+  surface->SetPolys(input->GetPolys());
+  surface->SetStrips(input->GetStrips());
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputData(surface);
+  triangles->PassVertsOff();
+  triangles->PassLinesOff();
+  triangles->Update();
+  vtkPolyData* out = triangles->GetOutput();
+  Soup soup;
+  soup.Points.resize(out->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    out->GetPoint(i, soup.Points[i].data());
+  }
+  vtkIdType n;
+  const vtkIdType* ids;
+  vtkCellArray* polys = out->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+  {
+    if (n == 3)
+    {
+      soup.Triangles.push_back({ ids[0], ids[1], ids[2] });
+    }
+  }
+  return soup;
+}
+
+// The input's points, and points every `spacing` along its lines: what the wrap of a
+// surface-less input wraps.
+Soup PointsAndLines(vtkPolyData* input, double spacing)
+{
+  Soup soup;
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    std::array<double, 3> x;
+    input->GetPoint(i, x.data());
+    soup.Points.push_back(x);
+  }
+  vtkIdType n;
+  const vtkIdType* ids;
+  vtkCellArray* lines = input->GetLines();
+  for (lines->InitTraversal(); lines->GetNextCell(n, ids);)
+  {
+    for (vtkIdType k = 0; k + 1 < n; ++k)
+    {
+      double a[3], b[3];
+      input->GetPoint(ids[k], a);
+      input->GetPoint(ids[k + 1], b);
+      const double length = std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+      const int steps = static_cast<int>(std::min(1e6, std::ceil(length / spacing)));
+      for (int s = 1; s < steps; ++s)
+      {
+        const double f = static_cast<double>(s) / steps;
+        soup.Points.push_back({ a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2]) });
+      }
+    }
+  }
+  return soup;
+}
+
+vtkIdType UsedPoints(const Soup& soup)
+{
+  std::vector<char> used(soup.Points.size(), 0);
+  for (const auto& t : soup.Triangles)
+  {
+    used[t[0]] = used[t[1]] = used[t[2]] = 1;
+  }
+  return static_cast<vtkIdType>(std::count(used.begin(), used.end(), 1));
+}
+
+// Pairs of `mesh`'s triangles that intersect by CGAL's exact predicates, from the
+// candidates of the double-precision search.
+Pairs ExactPairs(const vtkMedialTriangleMesh& mesh, const Pairs& candidates)
+{
+  std::vector<std::array<double, 18>> corners(candidates.size());
+  std::vector<std::array<vtkIdType, 6>> ids(candidates.size());
+  for (size_t i = 0; i < candidates.size(); ++i)
+  {
+    const vtkIdType tris[2] = { candidates[i].first, candidates[i].second };
+    for (int j = 0; j < 2; ++j)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const vtkIdType v = mesh.GetTriangle(tris[j])[k];
+        ids[i][3 * j + k] = v;
+        std::copy_n(mesh.GetPoint(v), 3, &corners[i][9 * j + 3 * k]);
+      }
+    }
+  }
+  const std::vector<char> meet = vtkMedialSurfaceRepair::IntersectingPairs(corners, ids);
+  Pairs exact;
+  for (size_t i = 0; i < candidates.size(); ++i)
+  {
+    if (meet[i])
+    {
+      exact.push_back(candidates[i]);
+    }
+  }
+  return exact;
+}
+
+std::string Plural(vtkIdType n, const char* one, const char* many)
+{
+  std::ostringstream os;
+  os << n << " " << (n == 1 ? one : many);
+  return os.str();
+}
+}
+
+// The steps of one update (see the class comment), and the state they share.
+class vtkMedialRepairFilter::vtkInternals
+{
+public:
+  vtkInternals(vtkMedialRepairFilter* self)
+    : Self(self)
+    , Threads(vtkMedialThreadCount(self->NumberOfThreads))
+  {
+  }
+
+  /// Fills `output`; false with GetError() when the input cannot be repaired.
+  bool Run(vtkPolyData* input, vtkPolyData* output);
+  const std::string& GetError() const { return this->Error; }
+
+private:
+  // A mesh, its queries and its exact self-intersection pairs.
+  struct Prepared
+  {
+    vtkMedialTriangleMesh Mesh;
+    vtkMedialSurfaceQuery Query;
+    Pairs Exact; // by CGAL's predicates
+  };
+  bool Prepare(vtkPolyData* surface, Prepared& prepared, bool pairs);
+  bool NoVolume(const std::string& why);
+  bool ShellsValid(const Soup& soup, vtkIdType& touching);
+  bool Overlap(const vtkMedialTriangleMesh& mesh, int a, int b);
+  double Moved(const Soup& before, const Soup& after);
+  // Triangles this small are degenerate to the preparation (vtkMedialTriangleMesh
+  // counts those under 1e-14 of the squared diagonal): Clean removes them, with margin.
+  double TinyArea() const { return 1e-12 * this->Diagonal * this->Diagonal; }
+  bool Shells(Soup& work, bool& wrap);
+  bool RemoveSheets(Soup& work, bool& wrap);
+  void Measure(const vtkMedialTriangleMesh& input, vtkPolyData* output);
+  void Line(const std::string& text) { this->Self->Report.push_back(text); }
+  // Ends the current stage's timer and starts one for `next`.
+  void Stage(const char* next)
+  {
+    const auto now = std::chrono::steady_clock::now();
+    if (!this->StageName.empty())
+    {
+      this->Self->StageTimes.emplace_back(this->StageName, std::chrono::duration<double>(now - this->StageStart).count());
+    }
+    this->StageName = next ? next : "";
+    this->StageStart = now;
+  }
+  void Fail(const std::string& text) { this->Error = text; }
+
+  vtkMedialRepairFilter* Self;
+  int Threads;
+  double Diagonal = 0.0;
+  bool NoSolid = false; // nothing closed was left: the wrap is a thin solid around a sheet
+  std::string Error;
+  std::string StageName;
+  std::chrono::steady_clock::time_point StageStart;
+};
+
+bool vtkMedialRepairFilter::vtkInternals::Prepare(vtkPolyData* surface, Prepared& prepared, bool pairs)
+{
+  std::string error;
+  if (!prepared.Mesh.Build(surface, error) || !prepared.Query.Build(&prepared.Mesh, error))
+  {
+    this->Fail(error);
+    return false;
+  }
+  if (pairs)
+  {
+    Pairs candidates;
+    prepared.Query.FindIntersectingPairs(this->Threads, candidates);
+    prepared.Exact = ExactPairs(prepared.Mesh, candidates);
+  }
+  return true;
+}
+
+bool vtkMedialRepairFilter::vtkInternals::NoVolume(const std::string& why)
+{
+  this->Fail(why + ": it bounds no volume; RepairMode WRAP (--repair wrap) makes a thin solid around it");
+  return false;
+}
+
+// Whether shells a and b of `mesh` have a volume in common: a triangle of one crosses
+// the other (touching, even along a face, does not count).
+bool vtkMedialRepairFilter::vtkInternals::Overlap(const vtkMedialTriangleMesh& mesh, int a, int b)
+{
+  const Soup shellB = SoupOf(mesh, [&](vtkIdType t) { return mesh.ShellOfTriangle[t] == b; });
+  vtkSmartPointer<vtkPolyData> surfaceB = ToPolyData(shellB);
+  vtkMedialTriangleMesh meshB;
+  vtkMedialSurfaceQuery queryB;
+  std::string error;
+  if (!meshB.Build(surfaceB, error) || !queryB.Build(&meshB, error))
+  {
+    return true;
+  }
+  for (vtkIdType t = 0; t < mesh.GetNumberOfTriangles(); ++t)
+  {
+    if (mesh.ShellOfTriangle[t] != a)
+    {
+      continue;
+    }
+    const vtkIdType* v = mesh.GetTriangle(t);
+    if (queryB.TriangleCrossesSurface(mesh.GetPoint(v[0]), mesh.GetPoint(v[1]), mesh.GetPoint(v[2])))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// The largest distance from a point of `before` to the surface `after`, over the points
+// that are not buried in its solid (deeper than BuriedDepth).
+double vtkMedialRepairFilter::vtkInternals::Moved(const Soup& before, const Soup& after)
+{
+  vtkSmartPointer<vtkPolyData> surface = ToPolyData(after);
+  vtkMedialTriangleMesh mesh;
+  vtkMedialSurfaceQuery query;
+  std::string error;
+  if (!mesh.Build(surface, error) || !query.Build(&mesh, error))
+  {
+    return HUGE_VAL;
+  }
+  const double bound = 2.0 * this->Diagonal, buried = BuriedDepth * this->Diagonal;
+  const vtkIdType n = static_cast<vtkIdType>(before.Points.size());
+  double largest = 0.0;
+#pragma omp parallel for schedule(static) num_threads(this->Threads) reduction(max : largest)
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    vtkMedialSurfaceQuery::ClosestHit hit;
+    const double* x = before.Points[i].data();
+    const double d = query.ClosestPoint(x, bound, hit) ? hit.Distance : bound;
+    if (!(d > buried && query.IsInside(x)))
+    {
+      largest = std::max(largest, d);
+    }
+  }
+  return largest;
+}
+
+// A valid solid: every shell closed, manifold (as the preparation sees it),
+// consistently oriented, free of exact self-intersections and degenerate triangles,
+// and no two shells with a volume in common (touching ones are counted).
+bool vtkMedialRepairFilter::vtkInternals::ShellsValid(const Soup& soup, vtkIdType& touching)
+{
+  touching = 0;
+  Prepared p;
+  vtkSmartPointer<vtkPolyData> surface = ToPolyData(soup);
+  if (soup.Triangles.empty() || !this->Prepare(surface, p, true))
+  {
+    return false;
+  }
+  const vtkMedialTriangleMesh& m = p.Mesh;
+  if (m.BoundaryEdges > 0 || m.DegenerateTriangles > 0 || m.DuplicateTriangles > 0 || m.NonOrientableComponents > 0)
+  {
+    return false;
+  }
+  std::set<std::pair<int, int>> contacts;
+  for (const auto& pair : p.Exact)
+  {
+    const int a = m.ShellOfTriangle[pair.first], b = m.ShellOfTriangle[pair.second];
+    if (a == b)
+    {
+      return false;
+    }
+    contacts.insert({ std::min(a, b), std::max(a, b) });
+  }
+  for (const auto& c : m.Contacts)
+  {
+    contacts.insert({ c.A, c.B });
+  }
+  for (const auto& c : contacts)
+  {
+    if (this->Overlap(m, c.first, c.second) || this->Overlap(m, c.second, c.first))
+    {
+      return false;
+    }
+  }
+  // A non-manifold edge is accepted only between shells that touch.
+  if (m.NonManifoldEdges > 0 && contacts.empty())
+  {
+    return false;
+  }
+  touching = static_cast<vtkIdType>(contacts.size());
+  return true;
+}
+
+// Steps 4 and 5: closed shells that overlap are joined, shells that cross themselves
+// are resolved, in rounds until neither applies. `wrap` is set when one cannot be done.
+bool vtkMedialRepairFilter::vtkInternals::Shells(Soup& work, bool& wrap)
+{
+  vtkMedialRepairFilter* self = this->Self;
+  std::set<std::pair<int, int>> touching; // by round: reset each round
+  for (int round = 0; round < ShellRounds; ++round)
+  {
+    Prepared p;
+    vtkSmartPointer<vtkPolyData> surface = ToPolyData(work);
+    if (!this->Prepare(surface, p, true))
+    {
+      return false;
+    }
+    const vtkMedialTriangleMesh& m = p.Mesh;
+    const int shells = static_cast<int>(m.Shells.size());
+    std::vector<vtkIdType> selfPairs(shells, 0);
+    std::set<std::pair<int, int>> contacts;
+    for (const auto& pair : p.Exact)
+    {
+      const int a = m.ShellOfTriangle[pair.first], b = m.ShellOfTriangle[pair.second];
+      if (a == b)
+      {
+        ++selfPairs[a];
+      }
+      else
+      {
+        contacts.insert({ std::min(a, b), std::max(a, b) });
+      }
+    }
+    for (const auto& c : m.Contacts)
+    {
+      contacts.insert({ c.A, c.B });
+    }
+    if (round == 0)
+    {
+      self->IntersectingPairs = static_cast<vtkIdType>(p.Exact.size());
+    }
+    // A closed solid shell (not a cavity) free of self-intersections can be joined.
+    auto joinable = [&](int s) { return m.Shells[s].Closed && m.Shells[s].Depth % 2 == 0 && selfPairs[s] == 0; };
+    std::vector<Soup> pieces(shells);
+    std::vector<char> done(shells, 0);
+    for (int s = 0; s < shells; ++s)
+    {
+      pieces[s] = SoupOf(m, [&](vtkIdType t) { return m.ShellOfTriangle[t] == s; });
+    }
+    bool changed = false;
+    // Step 4: unions, each shell in at most one union per round.
+    touching.clear();
+    for (const auto& c : contacts)
+    {
+      if (done[c.first] || done[c.second])
+      {
+        continue;
+      }
+      if (!joinable(c.first) || !joinable(c.second))
+      {
+        if (selfPairs[c.first] == 0 && selfPairs[c.second] == 0)
+        {
+          wrap = true; // a cavity or an open piece in contact: nothing exact applies
+        }
+        continue;
+      }
+      Soup joined;
+      std::string error;
+      if (vtkMedialSurfaceRepair::Union(pieces[c.first], pieces[c.second], joined, error))
+      {
+        vtkMedialSurfaceRepair::CleanCounts counts;
+        if (vtkMedialSurfaceRepair::Clean(joined, counts, error, this->TinyArea()))
+        {
+          pieces[c.first] = joined;
+          pieces[c.second] = Soup();
+          done[c.first] = done[c.second] = 1;
+          ++self->JoinedShells; // one shell fewer per union
+          changed = true;
+          continue;
+        }
+      }
+      // No union: shells that only touch stay separate bodies; overlapping ones go to the wrap.
+      if (this->Overlap(m, c.first, c.second) || this->Overlap(m, c.second, c.first))
+      {
+        wrap = true;
+      }
+      else
+      {
+        touching.insert(c);
+      }
+    }
+    // Step 5: shells that cross themselves.
+    for (int s = 0; s < shells; ++s)
+    {
+      if (selfPairs[s] == 0 || done[s])
+      {
+        continue;
+      }
+      if (!m.Shells[s].Closed)
+      {
+        wrap = true;
+        continue;
+      }
+      // Autorefinement first (exact: the solid's own boundary when the shell crosses
+      // itself through the solid), then CGAL's local removal (for folds: a patch that
+      // turns over on itself has no solid inside it, and the autorefinement may keep the
+      // wrong side of it). A result is taken only if it is a valid solid and keeps the
+      // input's surface: no input point farther than MovedTolerance from it, except the
+      // points buried inside it.
+      Soup shell;
+      std::string error;
+      bool resolved = false;
+      auto tidy = [&](Soup& soup) {
+        vtkMedialSurfaceRepair::CleanCounts counts;
+        vtkIdType unused = 0;
+        return vtkMedialSurfaceRepair::Clean(soup, counts, error, this->TinyArea()) && counts.BorderEdges == 0 &&
+          this->ShellsValid(soup, unused);
+      };
+      // The shell's triangles in the pairs (pieces[s] keeps the mesh's triangle order).
+      std::vector<vtkIdType> near;
+      {
+        std::vector<vtkIdType> local(m.GetNumberOfTriangles(), -1);
+        vtkIdType next = 0;
+        for (vtkIdType t = 0; t < m.GetNumberOfTriangles(); ++t)
+        {
+          local[t] = m.ShellOfTriangle[t] == s ? next++ : -1;
+        }
+        for (const auto& pair : p.Exact)
+        {
+          if (m.ShellOfTriangle[pair.first] == s && m.ShellOfTriangle[pair.second] == s)
+          {
+            near.push_back(local[pair.first]);
+            near.push_back(local[pair.second]);
+          }
+        }
+      }
+      // A few pairs in a large shell are local folds: the local removal first there.
+      const bool local = 100 * selfPairs[s] < static_cast<vtkIdType>(pieces[s].Triangles.size());
+      for (int attempt = 0; attempt < 2 && !resolved; ++attempt)
+      {
+        shell = pieces[s];
+        if ((attempt == 0) != local)
+        {
+          // The rounding of the exact result can leave slivers and a few crossings
+          // along the intersection curves: the local removal takes those.
+          const std::vector<vtkIdType> everywhere;
+          resolved = vtkMedialSurfaceRepair::Autorefine(shell, error) &&
+            (tidy(shell) || (vtkMedialSurfaceRepair::RemoveSelfIntersections(shell, everywhere, error) && tidy(shell)));
+        }
+        else
+        {
+          resolved = vtkMedialSurfaceRepair::RemoveSelfIntersections(shell, near, error) && tidy(shell);
+        }
+        resolved = resolved && this->Moved(pieces[s], shell) <= MovedTolerance * this->Diagonal;
+      }
+      if (resolved)
+      {
+        pieces[s] = shell;
+        done[s] = 1;
+        ++self->ResolvedShells;
+        changed = true;
+      }
+      else
+      {
+        wrap = true;
+      }
+    }
+    if (!changed)
+    {
+      break;
+    }
+    work = Soup();
+    for (const Soup& piece : pieces)
+    {
+      Append(work, piece);
+    }
+  }
+  self->TouchingShells = static_cast<vtkIdType>(touching.size());
+  return true;
+}
+
+// Step 6: open pieces inside the closed shells' solid go; open pieces elsewhere leave
+// the wrap to close them. False (with the reason) when nothing closed is left.
+bool vtkMedialRepairFilter::vtkInternals::RemoveSheets(Soup& work, bool& wrap)
+{
+  Prepared p;
+  vtkSmartPointer<vtkPolyData> surface = ToPolyData(work);
+  if (!this->Prepare(surface, p, false))
+  {
+    return false;
+  }
+  const vtkMedialTriangleMesh& m = p.Mesh;
+  std::vector<char> closed(m.Shells.size());
+  bool anyClosed = false, anyOpen = false;
+  for (size_t s = 0; s < m.Shells.size(); ++s)
+  {
+    closed[s] = m.Shells[s].Closed;
+    anyClosed = anyClosed || closed[s];
+    anyOpen = anyOpen || !closed[s];
+  }
+  if (!anyOpen)
+  {
+    return true;
+  }
+  if (!anyClosed)
+  {
+    // Nothing closed: a flat surface bounds no volume whatever is done to it (an error,
+    // or with WRAP a thin solid); a curved one is a solid with holes too large to fill,
+    // which the wrap closes.
+    double centroid[3], values[3], axes[3][3];
+    const vtkIdType np = m.GetNumberOfPoints();
+    auto point = [&](vtkIdType i, double x[3]) { std::copy_n(m.GetPoint(i), 3, x); };
+    vtkMedialPlane::FitPoints(np, point, centroid, values, axes);
+    const double normal[3] = { axes[0][2], axes[1][2], axes[2][2] };
+    const bool flat = vtkMedialPlane::MaxDistance(np, point, centroid, normal) <= 1e-6 * this->Diagonal;
+    if (flat && this->Self->Mode != WRAP)
+    {
+      std::ostringstream os;
+      os << "the surface is flat (" << Plural(static_cast<vtkIdType>(m.Shells.size()), "open piece", "open pieces")
+         << " in one plane)";
+      return this->NoVolume(os.str());
+    }
+    this->NoSolid = true;
+    wrap = true;
+    return true;
+  }
+  // The solid of the closed shells.
+  const Soup solidSoup = SoupOf(m, [&](vtkIdType t) { return closed[m.ShellOfTriangle[t]] != 0; });
+  vtkSmartPointer<vtkPolyData> solid = ToPolyData(solidSoup);
+  Prepared s;
+  if (!this->Prepare(solid, s, false))
+  {
+    return false;
+  }
+  const double tolerance = 1e-9 * this->Diagonal;
+  std::vector<char> remove(m.Shells.size(), 0);
+  std::vector<char> seen(m.GetNumberOfPoints(), 0);
+  std::vector<char> outside(m.Shells.size(), 0);
+  for (vtkIdType t = 0; t < m.GetNumberOfTriangles(); ++t)
+  {
+    const int shell = m.ShellOfTriangle[t];
+    if (closed[shell] || outside[shell])
+    {
+      continue;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const vtkIdType v = m.GetTriangle(t)[k];
+      if (seen[v])
+      {
+        continue;
+      }
+      seen[v] = 1;
+      vtkMedialSurfaceQuery::ClosestHit hit;
+      const bool onSurface = s.Query.ClosestPoint(m.GetPoint(v), tolerance, hit);
+      if (!onSurface && !s.Query.IsInside(m.GetPoint(v)))
+      {
+        outside[shell] = 1;
+        break;
+      }
+    }
+  }
+  Soup kept;
+  vtkIdType removed = 0;
+  for (size_t shell = 0; shell < m.Shells.size(); ++shell)
+  {
+    if (!closed[shell] && !outside[shell])
+    {
+      remove[shell] = 1;
+      ++removed;
+    }
+    wrap = wrap || (!closed[shell] && outside[shell]);
+  }
+  if (removed > 0)
+  {
+    work = SoupOf(m, [&](vtkIdType t) { return !remove[m.ShellOfTriangle[t]]; });
+    this->Self->RemovedSheets = removed;
+  }
+  return true;
+}
+
+// The distance from the input (points and triangle centroids) to the output, and the
+// share of the input's area buried inside the output's solid.
+void vtkMedialRepairFilter::vtkInternals::Measure(const vtkMedialTriangleMesh& input, vtkPolyData* output)
+{
+  vtkMedialRepairFilter* self = this->Self;
+  vtkMedialTriangleMesh mesh;
+  vtkMedialSurfaceQuery query;
+  std::string error;
+  if (!mesh.Build(output, error) || !query.Build(&mesh, error))
+  {
+    return;
+  }
+  const vtkIdType nt = input.GetNumberOfTriangles();
+  std::vector<vtkIdType> used;
+  {
+    std::vector<char> seen(input.GetNumberOfPoints(), 0);
+    for (vtkIdType t = 0; t < nt; ++t)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const vtkIdType v = input.GetTriangle(t)[k];
+        if (!seen[v])
+        {
+          seen[v] = 1;
+          used.push_back(v);
+        }
+      }
+    }
+  }
+  const vtkIdType np = static_cast<vtkIdType>(used.size());
+  const double bound = 2.0 * std::max(this->Diagonal, mesh.Diagonal);
+  const double buried = BuriedDepth * this->Diagonal;
+  const bool wrapped = self->Wrapped;
+  // Samples: the triangles' centroids (weighted by area for the buried share), then
+  // the points.
+  double largest = 0.0, buriedArea = 0.0, area = 0.0;
+#pragma omp parallel for schedule(static) num_threads(this->Threads) reduction(max : largest) reduction(+ : buriedArea, area)
+  for (vtkIdType i = 0; i < nt + np; ++i)
+  {
+    double x[3];
+    double weight = 0.0;
+    if (i < nt)
+    {
+      const vtkIdType* v = input.GetTriangle(i);
+      for (int k = 0; k < 3; ++k)
+      {
+        x[k] = (input.GetPoint(v[0])[k] + input.GetPoint(v[1])[k] + input.GetPoint(v[2])[k]) / 3.0;
+      }
+      weight = input.Areas[i];
+    }
+    else
+    {
+      std::copy_n(input.GetPoint(used[i - nt]), 3, x);
+    }
+    vtkMedialSurfaceQuery::ClosestHit hit;
+    const double distance = query.ClosestPoint(x, bound, hit) ? hit.Distance : bound;
+    const bool inside = !wrapped && distance > buried && query.IsInside(x);
+    area += weight;
+    if (inside)
+    {
+      buriedArea += weight;
+    }
+    else
+    {
+      largest = std::max(largest, distance);
+    }
+  }
+  self->MaximumDistance = largest / this->Diagonal;
+  self->BuriedArea = area > 0.0 ? buriedArea / area : 0.0;
+}
+
+bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* output)
+{
+  vtkMedialRepairFilter* self = this->Self;
+  if (!input || input->GetNumberOfPoints() == 0)
+  {
+    this->Fail("the input has no points");
+    return false;
+  }
+  this->Diagonal = input->GetLength();
+  const bool wrapNow = self->Mode == WRAP;
+  const double alpha = self->WrapAlpha * this->Diagonal, offset = self->WrapOffset * this->Diagonal;
+  Soup wrapped;
+  auto wrapSoup = [&](const Soup& soup) {
+    std::string error;
+    if (!vtkMedialSurfaceRepair::Wrap(soup, alpha, offset, wrapped, error))
+    {
+      this->Fail("the alpha wrap failed: " + error);
+      return false;
+    }
+    self->Wrapped = true;
+    return true;
+  };
+
+  // No polygons: nothing but the wrap can make a solid.
+  if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+  {
+    const std::string why = "the input has no polygons or triangle strips (only lines or points)";
+    if (!wrapNow)
+    {
+      return this->NoVolume(why);
+    }
+    if (!wrapSoup(PointsAndLines(input, 0.25 * alpha)))
+    {
+      return false;
+    }
+    this->Line("wrap: " + why + ", so it bounds no volume: the alpha wrap is a thin solid around it (" +
+      Plural(static_cast<vtkIdType>(wrapped.Triangles.size()), "triangle", "triangles") + ")");
+    output->ShallowCopy(ToPolyData(wrapped));
+    self->Changed = true;
+    return true;
+  }
+
+  // 0. The check, as every filter's preparation makes it.
+  this->Stage("check");
+  Prepared original;
+  std::string error;
+  if (!original.Mesh.Build(input, error))
+  {
+    if (error.find("no non-degenerate") == std::string::npos)
+    {
+      this->Fail(error);
+      return false;
+    }
+    return this->NoVolume(error);
+  }
+  if (!original.Query.Build(&original.Mesh, error))
+  {
+    this->Fail(error);
+    return false;
+  }
+  const vtkMedialTriangleMesh& m0 = original.Mesh;
+  vtkMedialSolidCheck check;
+  if (!wrapNow)
+  {
+    check.Run(m0, original.Query, this->Threads);
+  }
+  // The input's winding against the outward one the preparation found (the filters
+  // need not care, they orient as they prepare; this filter's output must be oriented):
+  // triangles against the rest of their shell, and shells wound inward as a whole.
+  vtkIdType rewound = 0, turned = 0;
+  for (const auto& shell : m0.Shells)
+  {
+    rewound += std::min(shell.Rewound, shell.Triangles - shell.Rewound);
+    turned += 2 * shell.Rewound > shell.Triangles ? 1 : 0;
+  }
+  if (!wrapNow)
+  {
+    bool valid = check.IsValid();
+    if (check.OnlyPairs())
+    {
+      original.Exact = ExactPairs(m0, check.Pairs);
+      self->IntersectingPairs = static_cast<vtkIdType>(original.Exact.size());
+      valid = original.Exact.empty();
+    }
+    if (valid && rewound == 0 && turned == 0)
+    {
+      self->InputWasValid = true;
+      output->ShallowCopy(input);
+      this->Stage(nullptr);
+      return true;
+    }
+    if (self->Mode == NONE)
+    {
+      std::vector<std::string> problems = valid ? std::vector<std::string>() : check.Problems();
+      if (rewound > 0)
+      {
+        problems.push_back(Plural(rewound, "triangle", "triangles") + " wound against the rest of their shell");
+      }
+      if (turned > 0)
+      {
+        problems.push_back(Plural(turned, "shell", "shells") + " wound inward as a whole");
+      }
+      for (const std::string& problem : problems)
+      {
+        this->Line("check: " + problem + " (not repaired: Mode NONE)");
+      }
+      output->ShallowCopy(input);
+      return true;
+    }
+  }
+  Soup triangulated = Triangulated(input);
+  if (wrapNow)
+  {
+    this->Stage("wrap");
+    if (!wrapSoup(triangulated))
+    {
+      return false;
+    }
+    std::ostringstream os;
+    os << "wrap: the alpha wrap of the input (alpha " << self->WrapAlpha << ", offset " << self->WrapOffset
+       << " of the diagonal), as asked: " << Plural(static_cast<vtkIdType>(wrapped.Triangles.size()), "triangle", "triangles");
+    this->Line(os.str());
+    vtkSmartPointer<vtkPolyData> out = ToPolyData(wrapped);
+    output->ShallowCopy(out);
+    self->Changed = true;
+    this->Stage("measure");
+    this->Measure(m0, output);
+    this->Stage(nullptr);
+    return true;
+  }
+
+  // 1. Weld (an open surface only: a closed one has nothing to weld).
+  this->Stage("weld");
+  Soup work;
+  const vtkIdType inputTriangles = static_cast<vtkIdType>(triangulated.Triangles.size());
+  bool welded = false;
+  if (m0.BoundaryEdges > 0 && self->WeldTolerance > 0.0)
+  {
+    vtkSmartPointer<vtkPolyData> surface = ToPolyData(triangulated);
+    vtkNew<vtkStaticCleanPolyData> weld;
+    weld->SetInputData(surface);
+    weld->ToleranceIsAbsoluteOff();
+    weld->SetTolerance(self->WeldTolerance);
+    weld->ConvertPolysToLinesOff();
+    weld->ConvertLinesToPointsOff();
+    weld->ConvertStripsToPolysOff();
+    weld->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+    weld->Update();
+    work = Triangulated(weld->GetOutput());
+    self->WeldedPoints = m0.UsedPoints - UsedPoints(work);
+    self->DroppedTriangles += inputTriangles - static_cast<vtkIdType>(work.Triangles.size());
+    welded = self->WeldedPoints > 0;
+    if (welded)
+    {
+      std::ostringstream os;
+      os << "weld: " << Plural(self->WeldedPoints, "point", "points") << " merged within " << self->WeldTolerance
+         << " of the diagonal";
+      this->Line(os.str());
+    }
+  }
+  if (!welded)
+  {
+    work = SoupOf(m0);
+    self->DroppedTriangles += inputTriangles - m0.GetNumberOfTriangles();
+  }
+  // The preparation's winding is the input's only where it did not have to weld or
+  // clean; there the soup's orientation is found again (step 2, and at the end).
+  self->RewoundTriangles = welded ? 0 : rewound;
+  self->TurnedShells = welded ? 0 : turned;
+
+  // 2. Clean, orient, stitch.
+  const bool clean = welded || m0.NonManifoldEdges > 0 || m0.NonOrientableComponents > 0 ||
+    m0.DegenerateTriangles > 0 || m0.DuplicateTriangles > 0 || m0.BoundaryEdges > 0;
+  vtkIdType borderEdges = m0.BoundaryEdges;
+  this->Stage("clean");
+  if (clean)
+  {
+    vtkMedialSurfaceRepair::CleanCounts counts;
+    if (!vtkMedialSurfaceRepair::Clean(work, counts, error, this->TinyArea()))
+    {
+      this->Fail(error);
+      return false;
+    }
+    self->DroppedTriangles += counts.DroppedTriangles + counts.DegenerateFaces;
+    self->SplitPoints = counts.SplitPoints;
+    self->StitchedEdges = counts.StitchedEdges;
+    borderEdges = counts.BorderEdges;
+  }
+  if (self->DroppedTriangles > 0)
+  {
+    this->Line("drop: " + Plural(self->DroppedTriangles, "degenerate or duplicate triangle", "degenerate or duplicate triangles") + " removed");
+  }
+  if (self->SplitPoints > 0)
+  {
+    this->Line("orient: " + Plural(self->SplitPoints, "point", "points") + " split where more than two triangles met or windings disagreed");
+  }
+  if (self->StitchedEdges > 0)
+  {
+    this->Line("stitch: " + Plural(self->StitchedEdges, "pair", "pairs") + " of border edges stitched");
+  }
+  if (self->RewoundTriangles > 0)
+  {
+    this->Line("orient: " + Plural(self->RewoundTriangles, "triangle", "triangles") + " turned over to agree with the rest of their shell");
+  }
+  if (self->TurnedShells > 0)
+  {
+    this->Line("orient: " + Plural(self->TurnedShells, "shell", "shells") + " wound inward turned over to face out of the solid");
+  }
+
+  // 3. Holes.
+  this->Stage("holes");
+  if (borderEdges > 0)
+  {
+    std::vector<vtkMedialSurfaceRepair::Hole> holes;
+    if (!vtkMedialSurfaceRepair::FillHoles(work, self->MaximumHoleSize * this->Diagonal, holes, error))
+    {
+      this->Fail(error);
+      return false;
+    }
+    vtkIdType faired = 0;
+    double largest = 0.0, largestLeft = 0.0;
+    for (const auto& hole : holes)
+    {
+      self->FilledHoles += hole.Filled ? 1 : 0;
+      faired += hole.Filled && hole.Faired ? 1 : 0;
+      // A sheet's rim (its hole would be as large as the piece) is no hole.
+      const bool rim = !(hole.Area < 0.5 * hole.PieceArea);
+      self->UnfilledHoles += !hole.Filled && !rim ? 1 : 0;
+      largest = hole.Filled ? std::max(largest, hole.Size) : largest;
+      largestLeft = !hole.Filled && !rim ? std::max(largestLeft, hole.Size) : largestLeft;
+    }
+    if (self->FilledHoles > 0)
+    {
+      std::ostringstream os;
+      os << "holes: " << Plural(self->FilledHoles, "hole", "holes") << " filled (" << faired
+         << " faired), the largest " << largest / this->Diagonal << " of the diagonal";
+      this->Line(os.str());
+    }
+    if (self->UnfilledHoles > 0)
+    {
+      std::ostringstream os;
+      os << "holes: " << Plural(self->UnfilledHoles, "hole", "holes") << " larger than MaximumHoleSize "
+         << self->MaximumHoleSize << " of the diagonal (the largest " << largestLeft / this->Diagonal
+         << "): left to the wrap";
+      this->Line(os.str());
+    }
+  }
+
+  // 4, 5. Unions and self-crossing shells, 6. stray sheets.
+  bool wrap = false;
+  this->Stage("shells");
+  if (!this->Shells(work, wrap))
+  {
+    return false;
+  }
+  this->Stage("sheets");
+  if (!this->RemoveSheets(work, wrap))
+  {
+    return false;
+  }
+  if (self->JoinedShells > 0)
+  {
+    this->Line("union: " + Plural(self->JoinedShells, "union", "unions") + " of overlapping shells (exact corefinement): " +
+      Plural(self->JoinedShells, "shell", "shells") + " fewer");
+  }
+  if (self->ResolvedShells > 0)
+  {
+    this->Line("self-intersections: " + Plural(self->ResolvedShells, "shell", "shells") + " crossing itself made to bound its solid (" +
+      Plural(self->IntersectingPairs, "intersecting triangle pair", "intersecting triangle pairs") + " in the input)");
+  }
+  if (self->TouchingShells > 0)
+  {
+    this->Line("touch: " + Plural(self->TouchingShells, "pair", "pairs") + " of shells touch without a volume in common: kept as separate bodies");
+  }
+  if (self->RemovedSheets > 0)
+  {
+    this->Line("sheets: " + Plural(self->RemovedSheets, "open piece", "open pieces") + " inside the solid removed");
+  }
+
+  // Orientation to bound a volume, and the final check.
+  this->Stage("orient");
+  if (!wrap)
+  {
+    // The steps' own orientation (CGAL's soup orientation picks one per piece) is
+    // settled here: not a change to the input, not reported.
+    vtkIdType settled = 0;
+    vtkMedialSurfaceRepair::OrientToBoundVolume(work, settled, error);
+    vtkIdType touching = 0;
+    wrap = !this->ShellsValid(work, touching);
+    if (wrap && this->Error.empty())
+    {
+      this->Line("check: the repaired surface is still not a valid solid");
+    }
+    this->Error.clear();
+  }
+  // 7. The wrap.
+  this->Stage("wrap");
+  if (wrap)
+  {
+    if (!wrapSoup(work.Triangles.empty() ? triangulated : work))
+    {
+      return false;
+    }
+    std::ostringstream os;
+    os << "wrap: " << (this->NoSolid ? "nothing closed was left (holes too large to fill): the wrap is a thin solid around the surface"
+                                     : "what the exact steps could not make a solid is wrapped")
+       << " (alpha " << self->WrapAlpha << ", offset " << self->WrapOffset << " of the diagonal): "
+       << Plural(static_cast<vtkIdType>(wrapped.Triangles.size()), "triangle", "triangles");
+    this->Line(os.str());
+    work = wrapped;
+  }
+  vtkSmartPointer<vtkPolyData> out = ToPolyData(work);
+  output->ShallowCopy(out);
+  self->Changed = true;
+  this->Stage("measure");
+  this->Measure(m0, output);
+  this->Stage(nullptr);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkMedialRepairFilter::vtkMedialRepairFilter() = default;
+
+const char* vtkMedialRepairFilter::GetModeName(int mode)
+{
+  switch (mode)
+  {
+    case AUTO:
+      return "auto";
+    case NONE:
+      return "none";
+    case WRAP:
+      return "wrap";
+    default:
+      return "unknown";
+  }
+}
+
+int vtkMedialRepairFilter::GetModeFromName(const char* name)
+{
+  for (int mode = AUTO; mode <= WRAP; ++mode)
+  {
+    if (name && std::string(name) == GetModeName(mode))
+    {
+      return mode;
+    }
+  }
+  return -1;
+}
+
+const char* vtkMedialRepairFilter::GetTimedStageName(int i)
+{
+  return i >= 0 && i < static_cast<int>(this->StageTimes.size()) ? this->StageTimes[i].first.c_str() : nullptr;
+}
+
+double vtkMedialRepairFilter::GetTimedStageSeconds(int i)
+{
+  return i >= 0 && i < static_cast<int>(this->StageTimes.size()) ? this->StageTimes[i].second : 0.0;
+}
+
+const char* vtkMedialRepairFilter::GetReportLine(int i)
+{
+  return i >= 0 && i < static_cast<int>(this->Report.size()) ? this->Report[i].c_str() : nullptr;
+}
+
+int vtkMedialRepairFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  vtkMedialRequestWholeInput(inputVector);
+  return 1;
+}
+
+int vtkMedialRepairFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  const auto start = std::chrono::steady_clock::now();
+  this->InputWasValid = this->Changed = this->Wrapped = false;
+  this->IntersectingPairs = this->WeldedPoints = this->DroppedTriangles = this->SplitPoints = 0;
+  this->StitchedEdges = this->RewoundTriangles = this->TurnedShells = this->FilledHoles = 0;
+  this->UnfilledHoles = this->ResolvedShells = this->JoinedShells = this->TouchingShells = 0;
+  this->RemovedSheets = 0;
+  this->MaximumDistance = this->BuriedArea = this->Seconds = 0.0;
+  this->Report.clear();
+  this->StageTimes.clear();
+  if (!vtkMedialPieces::FromRequest(outputVector->GetInformationObject(0)).IsFirst())
+  {
+    return 1; // piece 0 repairs the whole surface; the other pieces stay empty
+  }
+  vtkInternals internals(this);
+  if (!internals.Run(input, output))
+  {
+    vtkErrorMacro(<< "Cannot repair the surface: " << internals.GetError() << ".");
+    return 0;
+  }
+  this->Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  // The report as field data.
+  vtkFieldData* fd = output->GetFieldData();
+  vtkNew<vtkStringArray> lines;
+  lines->SetName(vtkMedialArrayNames::RepairReport);
+  for (const std::string& line : this->Report)
+  {
+    lines->InsertNextValue(line);
+  }
+  fd->AddArray(lines);
+  auto addCount = [fd](const char* name, vtkIdType value) {
+    vtkNew<vtkIdTypeArray> a;
+    a->SetName(name);
+    a->InsertNextValue(value);
+    fd->AddArray(a);
+  };
+  auto addValue = [fd](const char* name, double value) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    a->InsertNextValue(value);
+    fd->AddArray(a);
+  };
+  addCount(vtkMedialArrayNames::RepairInputValid, this->InputWasValid ? 1 : 0);
+  addCount(vtkMedialArrayNames::RepairIntersectingPairs, this->IntersectingPairs);
+  addCount(vtkMedialArrayNames::RepairWeldedPoints, this->WeldedPoints);
+  addCount(vtkMedialArrayNames::RepairDroppedTriangles, this->DroppedTriangles);
+  addCount(vtkMedialArrayNames::RepairSplitPoints, this->SplitPoints);
+  addCount(vtkMedialArrayNames::RepairStitchedEdges, this->StitchedEdges);
+  addCount(vtkMedialArrayNames::RepairRewoundTriangles, this->RewoundTriangles);
+  addCount(vtkMedialArrayNames::RepairTurnedShells, this->TurnedShells);
+  addCount(vtkMedialArrayNames::RepairFilledHoles, this->FilledHoles);
+  addCount(vtkMedialArrayNames::RepairUnfilledHoles, this->UnfilledHoles);
+  addCount(vtkMedialArrayNames::RepairResolvedShells, this->ResolvedShells);
+  addCount(vtkMedialArrayNames::RepairJoinedShells, this->JoinedShells);
+  addCount(vtkMedialArrayNames::RepairTouchingShells, this->TouchingShells);
+  addCount(vtkMedialArrayNames::RepairRemovedSheets, this->RemovedSheets);
+  addCount(vtkMedialArrayNames::RepairWrapped, this->Wrapped ? 1 : 0);
+  addValue(vtkMedialArrayNames::RepairMaximumDistance, this->MaximumDistance);
+  addValue(vtkMedialArrayNames::RepairBuriedArea, this->BuriedArea);
+  if (this->ReportSteps)
+  {
+    for (const std::string& line : this->Report)
+    {
+      vtkWarningMacro(<< "Repair: " << line << ".");
+    }
+  }
+  return 1;
+}
+
+void vtkMedialRepairFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Mode: " << GetModeName(this->Mode) << "\n";
+  os << indent << "WeldTolerance: " << this->WeldTolerance << "\n";
+  os << indent << "MaximumHoleSize: " << this->MaximumHoleSize << "\n";
+  os << indent << "WrapAlpha: " << this->WrapAlpha << "\n";
+  os << indent << "WrapOffset: " << this->WrapOffset << "\n";
+  os << indent << "ReportSteps: " << this->ReportSteps << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "InputWasValid: " << this->InputWasValid << "\n";
+  os << indent << "Changed: " << this->Changed << "\n";
+  os << indent << "Wrapped: " << this->Wrapped << "\n";
+  os << indent << "MaximumDistance: " << this->MaximumDistance << "\n";
+}
