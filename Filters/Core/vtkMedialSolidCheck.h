@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class vtkMedialSolidCheck
- * @brief Internal: whether a prepared surface is a valid solid, from what the mesh's
- * preparation counted and a self-intersection search on the query's tree.
+ * @brief Internal: the one answer to "is this prepared surface a valid solid", and if
+ * not, why and where.
  *
  * A valid solid is closed (no boundary edge), manifold (no edge with more than two
  * triangles), consistently oriented (every shell orientable), has no degenerate or
@@ -10,23 +10,29 @@
  * intersects other than where the two share an edge or a corner, and a volume.
  * Nested shells are not a defect: the preparation turns a cavity's shell inward.
  *
- * Run() reads the counts of vtkMedialTriangleMesh::Build and asks the tree for the
- * pairs that may intersect (vtkMedialTriangleBVH::FindIntersectingPairs, in double
- * precision with margins). Those pairs are a superset: touching pairs and pairs too
- * close to tell apart are listed too, and the exact predicates of the repair
- * (vtkMedialRepairFilter, CGAL) decide them. So Run() answers "certainly valid" or
- * "to be repaired or decided exactly", and reuses the tree the queries need anyway:
- * on clean input its cost is the pair search alone, a third to a half of the
- * preparation's CPU time (0.8 s of 1.7 s on the 1.55M-triangle horse; docs/repair.md).
+ * Two passes:
+ *  - Run(), the screen: reads the counts of vtkMedialTriangleMesh::Build and asks the
+ *    tree for the pairs that may intersect (vtkMedialTriangleBVH::FindIntersectingPairs,
+ *    in double precision with margins; skipped when another defect already decides,
+ *    unless `allPairs`). Those pairs are a superset: touching pairs and pairs too close
+ *    to tell apart are listed too. So Run() answers "certainly valid" (IsValid) or
+ *    "to be repaired or decided exactly", and reuses the tree the queries need anyway.
+ *  - Decide(), the exact answer: the candidate pairs tested with exact predicates
+ *    (CGAL's, as PMP::self_intersections decides them; the test is handed in, since
+ *    this module has no CGAL: vtkMedialRepairFilter::ExactPairTest). Then
+ *    IsValidSolid() and Cause() are exact, and IntersectionPoint says where.
  *
- * Used by vtkMedialSolidPreparation (every filter's RepairMode AUTO) and by
- * vtkMedialRepairFilter's first step.
+ * Used by vtkMedialSolidPreparation (every filter's RepairMode AUTO), by
+ * vtkMedialRepairFilter's first step, and by vtkMedialMeshFilter to name the cause
+ * when the medial mesh's topology is not the solid's.
  */
 #ifndef vtkMedialSolidCheck_h
 #define vtkMedialSolidCheck_h
 
 #include "vtkType.h"
 
+#include <array>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,15 +43,32 @@ class vtkMedialTriangleMesh;
 class vtkMedialSolidCheck
 {
 public:
-  /// Checks the mesh that `query` was built on, with `threads` for the pair search.
-  void Run(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int threads);
+  using PairList = std::vector<std::pair<vtkIdType, vtkIdType>>;
+  /// Per pair of triangles (6 corners, a's then b's, and their point ids): whether
+  /// the two intersect other than along a shared edge or at a shared corner.
+  using ExactTest = std::function<std::vector<char>(
+    const std::vector<std::array<double, 18>>& corners, const std::vector<std::array<vtkIdType, 6>>& ids)>;
+
+  /// The screen, on the mesh that `query` was built on, with `threads` for the pair
+  /// search (run only when no other defect was counted, or always with `allPairs`).
+  void Run(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int threads,
+    bool allPairs = false);
 
   /// Nothing found: a valid solid.
   bool IsValid() const { return this->CountDefects() == 0 && this->Pairs.empty(); }
   /// Only triangle pairs were found, which the exact predicates may still clear.
   bool OnlyPairs() const { return this->CountDefects() == 0 && !this->Pairs.empty(); }
-  /// One line per problem found, e.g. "open: 223 boundary edges".
+  /// One line per problem the screen found, e.g. "223 boundary edges (the surface is open)".
   std::vector<std::string> Problems() const;
+
+  /// The exact pass: Pairs decided by `exact`, into Intersecting and IntersectionPoint.
+  void Decide(const vtkMedialTriangleMesh& mesh, const ExactTest& exact);
+  /// After Decide: exactly a valid solid.
+  bool IsValidSolid() const { return this->Decided && this->CountDefects() == 0 && this->Intersecting.empty(); }
+  /// After Decide, for a surface that is not a valid solid: why, as one clause (the
+  /// first of: not manifold or not orientable, intersecting pairs and where, open,
+  /// degenerate or duplicate triangles, shells in contact, no volume).
+  std::string Cause() const;
 
   vtkIdType BoundaryEdges = 0;
   vtkIdType NonManifoldEdges = 0;
@@ -54,8 +77,14 @@ public:
   vtkIdType DuplicateTriangles = 0;
   vtkIdType ShellContacts = 0; // pairs of shells that touch or intersect
   bool NoVolume = false;       // closed, but the enclosed volume is nil
+  bool PairsSearched = false;  // the pair search ran (Pairs is complete)
   /// Triangle pairs (mesh ids, a < b, sorted) that may intersect.
-  std::vector<std::pair<vtkIdType, vtkIdType>> Pairs;
+  PairList Pairs;
+  bool Decided = false;
+  /// After Decide: the pairs that intersect, by the exact test.
+  PairList Intersecting;
+  /// After Decide: a point of the first intersecting pair (its first triangle's centroid).
+  double IntersectionPoint[3] = { 0, 0, 0 };
 
 private:
   vtkIdType CountDefects() const;

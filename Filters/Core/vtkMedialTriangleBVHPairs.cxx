@@ -22,6 +22,7 @@ struct Triangle
   const double* X[3];
   const double* Plane;
   bool Sliver;
+  double Corners[9]; // where X points when the tree keeps its corners as floats
 };
 
 double Side(const double* plane, const double* x)
@@ -277,12 +278,16 @@ void vtkMedialTriangleBVH::FindIntersectingPairs(const vtkMedialTriangleMesh& me
     return alo[0] <= bhi[0] + pad && blo[0] <= ahi[0] + pad && alo[1] <= bhi[1] + pad && blo[1] <= ahi[1] + pad &&
       alo[2] <= bhi[2] + pad && blo[2] <= ahi[2] + pad;
   };
-  // The corners from the mesh's points (the same bits as the tree's leaf-order copy,
-  // which holds floats when every coordinate is one).
-  auto triangle = [&](std::int32_t slot) {
-    const vtkIdType* v = mesh.GetTriangle(this->LeafTriangles[slot].Triangle);
-    return Triangle{ { mesh.GetPoint(v[0]), mesh.GetPoint(v[1]), mesh.GetPoint(v[2]) },
-      this->LeafTriangles[slot].Plane, sliver[slot] != 0 };
+  // The corners from the tree's leaf-order copy (the mesh's points, the same bits, as
+  // doubles or as floats when every coordinate is one), which nearby slots share in
+  // cache where the mesh's arrays would be read at random.
+  auto triangle = [&](std::int32_t slot, Triangle& t) {
+    const double* x = this->Corners(slot, t.Corners);
+    t.X[0] = x;
+    t.X[1] = x + 3;
+    t.X[2] = x + 6;
+    t.Plane = this->LeafTriangles[slot].Plane;
+    t.Sliver = sliver[slot] != 0;
   };
   using Pairs = std::vector<std::pair<vtkIdType, vtkIdType>>;
   // One pair of slots whose boxes overlap: the test by the corners they share.
@@ -302,7 +307,9 @@ void vtkMedialTriangleBVH::FindIntersectingPairs(const vtkMedialTriangleMesh& me
         }
       }
     }
-    const Triangle a = triangle(i), b = triangle(j);
+    Triangle a, b;
+    triangle(i, a);
+    triangle(j, b);
     bool may = true; // three shared corners: a duplicate (the mesh drops them)
     if (shared == 0)
     {

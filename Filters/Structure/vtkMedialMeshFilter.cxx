@@ -11,7 +11,7 @@
 #include "vtkMedialPipeline.h"
 #include "vtkMedialPowerComplex.h"
 #include "vtkMedialSimplicialComplex.h"
-#include "vtkMedialSolidDiagnosis.h"
+#include "vtkMedialSolidCheck.h"
 #include "vtkMedialSpatialOrder.h"
 #include "vtkMedialProgress.h"
 #include "vtkMedialRepairCallback.h"
@@ -79,12 +79,13 @@ std::vector<vtkIdType> TriangleBodies(const vtkMedialTriangleMesh& mesh)
 }
 
 // Why the medial mesh's topology differs from the one the surface gives its solid: the
-// surface is not a valid solid (CGAL's predicates, vtkMedialSolidDiagnosis), or else the
-// mesh is at fault. Run only on a mismatch (the check costs 0.4 s on horse.ply's 97k
-// triangles).
-std::string TopologyMismatchCause(const vtkMedialTriangleMesh& mesh)
+// surface is not a valid solid (vtkMedialSolidCheck, decided with CGAL's predicates), or
+// else the mesh is at fault. Run only on a mismatch.
+std::string TopologyMismatchCause(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int threads)
 {
-  const vtkMedialSolidDiagnosis::Result check = vtkMedialSolidDiagnosis::Check(mesh);
+  vtkMedialSolidCheck check;
+  check.Run(mesh, query, threads, true);
+  check.Decide(mesh, vtkMedialRepairFilter::ExactPairTest);
   std::ostringstream cause;
   if (check.IsValidSolid())
   {
@@ -92,25 +93,7 @@ std::string TopologyMismatchCause(const vtkMedialTriangleMesh& mesh)
              "medial mesh is at fault; please report the input and the settings.";
     return cause.str();
   }
-  cause << "the surface is not a valid solid (";
-  if (!check.PolygonMesh)
-  {
-    cause << "its triangles do not form a manifold, oriented surface";
-  }
-  else if (check.IntersectingPairs > 0)
-  {
-    cause << check.IntersectingPairs << " pair(s) of its triangles intersect, e.g. near (" << check.IntersectionPoint[0]
-          << ", " << check.IntersectionPoint[1] << ", " << check.IntersectionPoint[2] << ")";
-  }
-  else if (check.CollapsedTriangles > 0)
-  {
-    cause << check.CollapsedTriangles << " of its triangles have collinear corners";
-  }
-  else
-  {
-    cause << "its shells are not oriented as the boundary of a volume";
-  }
-  cause << "), so the topology its Euler characteristic gives is not the shape's and the inside tests the mesh "
+  cause << "the surface is not a valid solid (" << check.Cause() << "), so the topology its Euler characteristic gives is not the shape's and the inside tests the mesh "
            "relies on are ambiguous where it is broken; repair the surface (more samples do not help).";
   return cause.str();
 }
@@ -426,7 +409,7 @@ int vtkMedialMeshFilter::RequestData(
       vtkWarningMacro(<< "The medial mesh has Euler characteristic " << this->EulerCharacteristic
                       << " and " << this->NumberOfComponents << " component(s), the solid "
                       << this->SolidEulerCharacteristic << " and " << this->SolidComponents << ": "
-                      << TopologyMismatchCause(mesh));
+                      << TopologyMismatchCause(mesh, query, threads));
     }
   }
   if (this->RemainingTetrahedra > 0)

@@ -29,7 +29,7 @@
  * taken from the triangle's own power centre (GetTriangleDual), which stays accurate
  * when its tetrahedra's are far off.
  *
- * This class and vtkMedialSolidDiagnosis are the only ones that include CGAL (a private,
+ * This class and vtkMedialExactPredicates are the only ones that include CGAL (a private,
  * header-only dependency of MedialAxis::Structure); this header does not.
  */
 #ifndef vtkMedialPowerComplex_h

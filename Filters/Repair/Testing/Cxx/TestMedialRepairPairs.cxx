@@ -5,12 +5,15 @@
 // of every kind: a shell crossing itself, two overlapping spheres, crumpled spheres and
 // tori (random folds: pairs that share an edge or a corner), coplanar faces that overlap,
 // and horse.ply when the shared meshes are there. And the repair's exact test of those
-// candidates must keep exactly CGAL's pairs (vtkMedialRepairFilter's IntersectingPairs).
+// candidates must keep exactly CGAL's pairs (vtkMedialRepairFilter's IntersectingPairs),
+// and so must the valid-solid check decided exactly (vtkMedialSolidCheck::Decide), on
+// any input, with the verdict and its cause.
 // This file compiles CGAL itself, for the reference.
 #include "MedialDefectTestUtilities.h"
 #include "MedialTestUtilities.h"
 
 #include "vtkMedialRepairFilter.h"
+#include "vtkMedialSolidCheck.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
 
@@ -135,6 +138,27 @@ int TestMedialRepairPairs(int, char*[])
       MEDIAL_CHECK(repair->GetIntersectingPairs() == static_cast<vtkIdType>(reference.size()),
         "%s: the repair's exact test kept %lld pairs, CGAL finds %zu", c.Name.c_str(),
         static_cast<long long>(repair->GetIntersectingPairs()), reference.size());
+    }
+    // The one valid-solid check, decided exactly (as the medial mesh's warning uses it,
+    // on any input): exactly CGAL's pairs, and a verdict with its cause.
+    vtkMedialSolidCheck check;
+    check.Run(mesh, query, 2, true);
+    check.Decide(mesh, vtkMedialRepairFilter::ExactPairTest);
+    const std::set<Pair> decided(check.Intersecting.begin(), check.Intersecting.end());
+    MEDIAL_CHECK(decided == reference, "%s: the check decided %zu intersecting pairs, CGAL finds %zu",
+      c.Name.c_str(), decided.size(), reference.size());
+    const bool valid = reference.empty() && mesh.BoundaryEdges == 0 && mesh.NonManifoldEdges == 0 &&
+      mesh.NonOrientableComponents == 0 && mesh.DegenerateTriangles == 0 && mesh.DuplicateTriangles == 0 &&
+      mesh.Contacts.empty();
+    MEDIAL_CHECK(valid || c.Name.rfind("valid", 0) != 0, "%s: not a valid solid by CGAL's predicates",
+      c.Name.c_str());
+    MEDIAL_CHECK(check.IsValidSolid() == valid && check.Cause().empty() == valid,
+      "%s: the check says %s ('%s')", c.Name.c_str(), check.IsValidSolid() ? "valid" : "not valid",
+      check.Cause().c_str());
+    if (!reference.empty() && check.NonManifoldEdges == 0 && check.NonOrientableShells == 0)
+    {
+      MEDIAL_CHECK(check.Cause().find("pair(s) of its triangles intersect") != std::string::npos,
+        "%s: the cause does not name the intersecting pairs: '%s'", c.Name.c_str(), check.Cause().c_str());
     }
   }
   // The search's own list does not depend on the thread count.
