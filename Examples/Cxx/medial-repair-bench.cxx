@@ -106,7 +106,7 @@ std::string Name(const std::string& mesh)
 
 int Repair(const std::vector<std::string>& meshes, int threads, bool wrap)
 {
-  std::printf("| mesh | triangles in | %s | triangles out | seconds | stages (s) | largest distance (rel.) | buried area | peak RSS MiB | report |\n",
+  std::printf("| mesh | triangles in | %s | triangles out | seconds (CPU) | stages: wall s (CPU s) | largest distance (rel.) | buried area | peak RSS MiB | report |\n",
     wrap ? "mode" : "valid");
   std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
   for (const std::string& name : meshes)
@@ -125,21 +125,24 @@ int Repair(const std::vector<std::string>& meshes, int threads, bool wrap)
     {
       repair->SetModeToWrap();
     }
+    const double cpu = CpuSeconds();
     repair->Update();
+    const double repairCpu = CpuSeconds() - cpu;
     std::string stages, report;
     for (int i = 0; i < repair->GetNumberOfTimedStages(); ++i)
     {
-      char buf[64];
-      std::snprintf(buf, sizeof(buf), "%s%s %.3f", i ? ", " : "", repair->GetTimedStageName(i), repair->GetTimedStageSeconds(i));
+      char buf[96];
+      std::snprintf(buf, sizeof(buf), "%s%s %.3f (%.3f)", i ? ", " : "", repair->GetTimedStageName(i),
+        repair->GetTimedStageSeconds(i), repair->GetTimedStageCpuSeconds(i));
       stages += buf;
     }
     for (int i = 0; i < repair->GetNumberOfReportLines(); ++i)
     {
       report += std::string(i ? "; " : "") + repair->GetReportLine(i);
     }
-    std::printf("| %s | %lld | %s | %lld | %.3f | %s | %.2e | %.4f | %.0f | %s |\n", Name(name).c_str(),
+    std::printf("| %s | %lld | %s | %lld | %.3f (%.3f) | %s | %.2e | %.4f | %.0f | %s |\n", Name(name).c_str(),
       static_cast<long long>(surface->GetNumberOfCells()), wrap ? "wrap" : (repair->GetInputWasValid() ? "yes" : "no"),
-      static_cast<long long>(repair->GetOutput()->GetNumberOfCells()), repair->GetSeconds(), stages.c_str(),
+      static_cast<long long>(repair->GetOutput()->GetNumberOfCells()), repair->GetSeconds(), repairCpu, stages.c_str(),
       repair->GetMaximumDistance(), repair->GetBuriedArea(), PeakMiB(), report.empty() ? "untouched" : report.c_str());
   }
   return 0;

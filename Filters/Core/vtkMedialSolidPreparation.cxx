@@ -34,14 +34,14 @@ bool vtkMedialSolidPreparation::Prepare(vtkPolyData* input, int mode, const Repa
     this->Surface = surface;
     return true;
   };
-  auto runRepair = [&](bool wrap, Repair& result) {
+  auto runRepair = [&](bool wrap, const Checked& checked, Repair& result) {
     begin(REPAIR);
     if (!repair)
     {
       error = "no repair is available";
       return false;
     }
-    if (!repair(input, wrap, result, error))
+    if (!repair(input, wrap, checked, result, error))
     {
       return false;
     }
@@ -53,7 +53,7 @@ bool vtkMedialSolidPreparation::Prepare(vtkPolyData* input, int mode, const Repa
   if (mode == WRAP)
   {
     Repair result;
-    if (!runRepair(true, result) || !build(result.Surface))
+    if (!runRepair(true, Checked(), result) || !build(result.Surface))
     {
       return false;
     }
@@ -82,7 +82,11 @@ bool vtkMedialSolidPreparation::Prepare(vtkPolyData* input, int mode, const Repa
     return false;
   }
   Repair result;
-  if (!runRepair(false, result))
+  Checked checked;
+  checked.Mesh = &mesh;
+  checked.Query = &query;
+  checked.Check = &check;
+  if (!runRepair(false, checked, result))
   {
     return false;
   }

@@ -31,6 +31,7 @@
 #include <vector>
 
 class vtkFieldData;
+class vtkMedialSolidCheck;
 class vtkMedialSurfaceQuery;
 class vtkMedialTriangleMesh;
 class vtkPolyData;
@@ -54,8 +55,17 @@ public:
     std::vector<std::string> Messages;     // one line per step that ran
     vtkSmartPointer<vtkFieldData> Report;  // the report's field data, for the filter's output
   };
+  /// What Prepare() found of the input before asking for its repair, for the repair to
+  /// start from (its mesh, tree and check are not built twice); null members when wrapping.
+  struct Checked
+  {
+    const vtkMedialTriangleMesh* Mesh = nullptr;
+    const vtkMedialSurfaceQuery* Query = nullptr;
+    const vtkMedialSolidCheck* Check = nullptr;
+  };
   /// Repairs `input` (wrap: the alpha wrap at once); false with `error` when it cannot.
-  using Repairer = std::function<bool(vtkPolyData* input, bool wrap, Repair& result, std::string& error)>;
+  using Repairer =
+    std::function<bool(vtkPolyData* input, bool wrap, const Checked& checked, Repair& result, std::string& error)>;
 
   /// The stages Prepare() goes through, for the caller's progress: the mesh, the
   /// queries (with the check in AUTO mode), the repair (then the mesh and the queries

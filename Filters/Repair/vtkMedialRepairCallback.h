@@ -27,8 +27,8 @@
 /// preparation's messages, its error the preparation's error.
 inline vtkMedialSolidPreparation::Repairer vtkMedialMakeRepairer(vtkMedialRepairFilter* repair, int threads)
 {
-  return [repair, threads](vtkPolyData* input, bool wrap, vtkMedialSolidPreparation::Repair& result,
-           std::string& error) {
+  return [repair, threads](vtkPolyData* input, bool wrap, const vtkMedialSolidPreparation::Checked& checked,
+           vtkMedialSolidPreparation::Repair& result, std::string& error) {
     if (!repair)
     {
       error = "no repair filter is set (SetRepair)";
@@ -59,7 +59,10 @@ inline vtkMedialSolidPreparation::Repairer vtkMedialMakeRepairer(vtkMedialRepair
     repair->SetNumberOfThreads(threads);
     const unsigned long tag = repair->AddObserver(vtkCommand::ErrorEvent, catcher);
     const unsigned long muted = repair->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, mute);
+    // Used only if the repair runs (an unchanged input keeps its last output).
+    repair->SetCheckedInput(checked.Mesh, checked.Query, checked.Check);
     repair->Update();
+    repair->ClearCheckedInput();
     repair->RemoveObserver(tag);
     repair->GetExecutive()->RemoveObserver(muted);
     vtkPolyData* output = repair->GetOutput();

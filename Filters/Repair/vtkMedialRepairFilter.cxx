@@ -31,9 +31,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
+#include <unordered_map>
 
 vtkStandardNewMacro(vtkMedialRepairFilter);
 
@@ -50,6 +53,9 @@ constexpr double BuriedDepth = 1e-3;
 // A shell resolved from its self-intersections may move its surface by this much
 // (relative to the diagonal) where it is not buried: CGAL's local removal smooths.
 constexpr double MovedTolerance = 1e-3;
+// Shells with more triangles than this are not autorefined as a whole when their
+// crossings are local (few pairs): a minute and gigabytes on a million triangles.
+constexpr vtkIdType LargeShell = 200000;
 
 vtkSmartPointer<vtkPolyData> ToPolyData(const Soup& soup)
 {
@@ -196,31 +202,18 @@ vtkIdType UsedPoints(const Soup& soup)
 // candidates of the double-precision search.
 Pairs ExactPairs(const vtkMedialTriangleMesh& mesh, const Pairs& candidates)
 {
-  std::vector<std::array<double, 18>> corners(candidates.size());
-  std::vector<std::array<vtkIdType, 6>> ids(candidates.size());
-  for (size_t i = 0; i < candidates.size(); ++i)
-  {
-    const vtkIdType tris[2] = { candidates[i].first, candidates[i].second };
-    for (int j = 0; j < 2; ++j)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        const vtkIdType v = mesh.GetTriangle(tris[j])[k];
-        ids[i][3 * j + k] = v;
-        std::copy_n(mesh.GetPoint(v), 3, &corners[i][9 * j + 3 * k]);
-      }
-    }
-  }
-  const std::vector<char> meet = vtkMedialSurfaceRepair::IntersectingPairs(corners, ids);
-  Pairs exact;
-  for (size_t i = 0; i < candidates.size(); ++i)
-  {
-    if (meet[i])
-    {
-      exact.push_back(candidates[i]);
-    }
-  }
-  return exact;
+  vtkMedialSolidCheck check;
+  check.Pairs = candidates;
+  check.Decide(mesh, vtkMedialSurfaceRepair::IntersectingPairs);
+  return check.Intersecting;
+}
+
+// CPU seconds of the process, every thread.
+double CpuSeconds()
+{
+  timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 std::string Plural(vtkIdType n, const char* one, const char* many)
@@ -246,14 +239,26 @@ public:
   const std::string& GetError() const { return this->Error; }
 
 private:
-  // A mesh, its queries and its exact self-intersection pairs.
+  // A mesh, its queries and (once asked) its exact self-intersection pairs, with the
+  // soup they were built on. The steps share the last one while the soup does not
+  // change (PrepareSoup): a mesh and a tree cost as much as a step on a clean shell.
   struct Prepared
   {
-    vtkMedialTriangleMesh Mesh;
-    vtkMedialSurfaceQuery Query;
-    Pairs Exact; // by CGAL's predicates
+    Soup Source;
+    vtkMedialTriangleMesh OwnMesh;
+    vtkMedialSurfaceQuery OwnQuery;
+    const vtkMedialTriangleMesh* Mesh = &OwnMesh; // or the input's, borrowed
+    const vtkMedialSurfaceQuery* Query = &OwnQuery;
+    Pairs Candidates;     // from the double-precision search, when it ran
+    bool HasCandidates = false;
+    Pairs Exact;          // by CGAL's predicates
+    bool HasExact = false;
   };
-  bool Prepare(vtkPolyData* surface, Prepared& prepared, bool pairs);
+  using PreparedPtr = std::shared_ptr<Prepared>;
+  // The preparation of `soup` (the last one when it was built on the same soup), with
+  // its exact pairs when `pairs`; null (with the error) when it cannot be built.
+  PreparedPtr PrepareSoup(const Soup& soup, bool pairs);
+  void FindExactPairs(Prepared& prepared);
   bool NoVolume(const std::string& why);
   bool ShellsValid(const Soup& soup, vtkIdType& touching);
   bool Overlap(const vtkMedialTriangleMesh& mesh, int a, int b);
@@ -263,18 +268,21 @@ private:
   double TinyArea() const { return 1e-12 * this->Diagonal * this->Diagonal; }
   bool Shells(Soup& work, bool& wrap);
   bool RemoveSheets(Soup& work, bool& wrap);
-  void Measure(const vtkMedialTriangleMesh& input, vtkPolyData* output);
+  void Measure(const vtkMedialTriangleMesh& input, vtkPolyData* output, const vtkMedialSurfaceQuery* outputQuery);
   void Line(const std::string& text) { this->Self->Report.push_back(text); }
   // Ends the current stage's timer and starts one for `next`.
   void Stage(const char* next)
   {
     const auto now = std::chrono::steady_clock::now();
+    const double cpu = CpuSeconds();
     if (!this->StageName.empty())
     {
       this->Self->StageTimes.emplace_back(this->StageName, std::chrono::duration<double>(now - this->StageStart).count());
+      this->Self->StageCpuTimes.push_back(cpu - this->StageCpuStart);
     }
     this->StageName = next ? next : "";
     this->StageStart = now;
+    this->StageCpuStart = cpu;
   }
   void Fail(const std::string& text) { this->Error = text; }
 
@@ -282,26 +290,50 @@ private:
   int Threads;
   double Diagonal = 0.0;
   bool NoSolid = false; // nothing closed was left: the wrap is a thin solid around a sheet
+  bool OpenPieces = true; // the shells step saw an open piece (the sheets step has work)
+  PreparedPtr Last;       // the last preparation, shared by the steps
   std::string Error;
   std::string StageName;
   std::chrono::steady_clock::time_point StageStart;
+  double StageCpuStart = 0.0;
 };
 
-bool vtkMedialRepairFilter::vtkInternals::Prepare(vtkPolyData* surface, Prepared& prepared, bool pairs)
+void vtkMedialRepairFilter::vtkInternals::FindExactPairs(Prepared& prepared)
 {
-  std::string error;
-  if (!prepared.Mesh.Build(surface, error) || !prepared.Query.Build(&prepared.Mesh, error))
+  if (prepared.HasExact)
   {
-    this->Fail(error);
-    return false;
+    return;
+  }
+  if (!prepared.HasCandidates)
+  {
+    prepared.Query->FindIntersectingPairs(this->Threads, prepared.Candidates);
+    prepared.HasCandidates = true;
+  }
+  prepared.Exact = ExactPairs(*prepared.Mesh, prepared.Candidates);
+  prepared.HasExact = true;
+}
+
+vtkMedialRepairFilter::vtkInternals::PreparedPtr vtkMedialRepairFilter::vtkInternals::PrepareSoup(
+  const Soup& soup, bool pairs)
+{
+  if (!this->Last || this->Last->Source.Triangles != soup.Triangles || this->Last->Source.Points != soup.Points)
+  {
+    auto prepared = std::make_shared<Prepared>();
+    prepared->Source = soup;
+    vtkSmartPointer<vtkPolyData> surface = ToPolyData(soup);
+    std::string error;
+    if (!prepared->OwnMesh.Build(surface, error) || !prepared->OwnQuery.Build(&prepared->OwnMesh, error))
+    {
+      this->Fail(error);
+      return nullptr;
+    }
+    this->Last = prepared;
   }
   if (pairs)
   {
-    Pairs candidates;
-    prepared.Query.FindIntersectingPairs(this->Threads, candidates);
-    prepared.Exact = ExactPairs(prepared.Mesh, candidates);
+    this->FindExactPairs(*this->Last);
   }
-  return true;
+  return this->Last;
 }
 
 bool vtkMedialRepairFilter::vtkInternals::NoVolume(const std::string& why)
@@ -342,22 +374,33 @@ bool vtkMedialRepairFilter::vtkInternals::Overlap(const vtkMedialTriangleMesh& m
 // that are not buried in its solid (deeper than BuriedDepth).
 double vtkMedialRepairFilter::vtkInternals::Moved(const Soup& before, const Soup& after)
 {
-  vtkSmartPointer<vtkPolyData> surface = ToPolyData(after);
-  vtkMedialTriangleMesh mesh;
-  vtkMedialSurfaceQuery query;
-  std::string error;
-  if (!mesh.Build(surface, error) || !query.Build(&mesh, error))
+  PreparedPtr p = this->PrepareSoup(after, false);
+  if (!p)
   {
+    this->Error.clear();
     return HUGE_VAL;
   }
+  const vtkMedialSurfaceQuery& query = *p->Query;
+  // A point of `before` that is still a point of `after` has not moved: only the
+  // others are measured (a local step keeps most of the shell's points).
+  std::vector<std::array<double, 3>> kept(after.Points);
+  std::sort(kept.begin(), kept.end());
+  std::vector<vtkIdType> moved;
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(before.Points.size()); ++i)
+  {
+    if (!std::binary_search(kept.begin(), kept.end(), before.Points[i]))
+    {
+      moved.push_back(i);
+    }
+  }
   const double bound = 2.0 * this->Diagonal, buried = BuriedDepth * this->Diagonal;
-  const vtkIdType n = static_cast<vtkIdType>(before.Points.size());
+  const vtkIdType n = static_cast<vtkIdType>(moved.size());
   double largest = 0.0;
 #pragma omp parallel for schedule(static) num_threads(this->Threads) reduction(max : largest)
   for (vtkIdType i = 0; i < n; ++i)
   {
     vtkMedialSurfaceQuery::ClosestHit hit;
-    const double* x = before.Points[i].data();
+    const double* x = before.Points[moved[i]].data();
     const double d = query.ClosestPoint(x, bound, hit) ? hit.Distance : bound;
     if (!(d > buried && query.IsInside(x)))
     {
@@ -373,19 +416,18 @@ double vtkMedialRepairFilter::vtkInternals::Moved(const Soup& before, const Soup
 bool vtkMedialRepairFilter::vtkInternals::ShellsValid(const Soup& soup, vtkIdType& touching)
 {
   touching = 0;
-  Prepared p;
-  vtkSmartPointer<vtkPolyData> surface = ToPolyData(soup);
-  if (soup.Triangles.empty() || !this->Prepare(surface, p, true))
+  PreparedPtr p = soup.Triangles.empty() ? nullptr : this->PrepareSoup(soup, true);
+  if (!p)
   {
     return false;
   }
-  const vtkMedialTriangleMesh& m = p.Mesh;
+  const vtkMedialTriangleMesh& m = *p->Mesh;
   if (m.BoundaryEdges > 0 || m.DegenerateTriangles > 0 || m.DuplicateTriangles > 0 || m.NonOrientableComponents > 0)
   {
     return false;
   }
   std::set<std::pair<int, int>> contacts;
-  for (const auto& pair : p.Exact)
+  for (const auto& pair : p->Exact)
   {
     const int a = m.ShellOfTriangle[pair.first], b = m.ShellOfTriangle[pair.second];
     if (a == b)
@@ -422,17 +464,23 @@ bool vtkMedialRepairFilter::vtkInternals::Shells(Soup& work, bool& wrap)
   std::set<std::pair<int, int>> touching; // by round: reset each round
   for (int round = 0; round < ShellRounds; ++round)
   {
-    Prepared p;
-    vtkSmartPointer<vtkPolyData> surface = ToPolyData(work);
-    if (!this->Prepare(surface, p, true))
+    // Held here: the steps below prepare other soups.
+    const PreparedPtr p = this->PrepareSoup(work, true);
+    if (!p)
     {
       return false;
     }
-    const vtkMedialTriangleMesh& m = p.Mesh;
+    const vtkMedialTriangleMesh& m = *p->Mesh;
     const int shells = static_cast<int>(m.Shells.size());
+    if (round == 0)
+    {
+      // The steps here make closed shells only: without an open piece now, the
+      // sheets step has nothing to do.
+      this->OpenPieces = std::any_of(m.Shells.begin(), m.Shells.end(), [](const auto& s) { return !s.Closed; });
+    }
     std::vector<vtkIdType> selfPairs(shells, 0);
     std::set<std::pair<int, int>> contacts;
-    for (const auto& pair : p.Exact)
+    for (const auto& pair : p->Exact)
     {
       const int a = m.ShellOfTriangle[pair.first], b = m.ShellOfTriangle[pair.second];
       if (a == b)
@@ -450,7 +498,7 @@ bool vtkMedialRepairFilter::vtkInternals::Shells(Soup& work, bool& wrap)
     }
     if (round == 0)
     {
-      self->IntersectingPairs = static_cast<vtkIdType>(p.Exact.size());
+      self->IntersectingPairs = static_cast<vtkIdType>(p->Exact.size());
     }
     // A closed solid shell (not a cavity) free of self-intersections can be joined.
     auto joinable = [&](int s) { return m.Shells[s].Closed && m.Shells[s].Depth % 2 == 0 && selfPairs[s] == 0; };
@@ -529,6 +577,12 @@ bool vtkMedialRepairFilter::vtkInternals::Shells(Soup& work, bool& wrap)
         return vtkMedialSurfaceRepair::Clean(soup, counts, error, this->TinyArea()) && counts.BorderEdges == 0 &&
           this->ShellsValid(soup, unused);
       };
+      // The local removal returns a halfedge mesh (manifold, oriented): its soup is
+      // cleaned (a pass over the whole shell) only when it is not a valid solid as it is.
+      auto tidyLocal = [&](Soup& soup) {
+        vtkIdType unused = 0;
+        return this->ShellsValid(soup, unused) || tidy(soup);
+      };
       // The shell's triangles in the pairs (pieces[s] keeps the mesh's triangle order).
       std::vector<vtkIdType> near;
       {
@@ -538,7 +592,7 @@ bool vtkMedialRepairFilter::vtkInternals::Shells(Soup& work, bool& wrap)
         {
           local[t] = m.ShellOfTriangle[t] == s ? next++ : -1;
         }
-        for (const auto& pair : p.Exact)
+        for (const auto& pair : p->Exact)
         {
           if (m.ShellOfTriangle[pair.first] == s && m.ShellOfTriangle[pair.second] == s)
           {
@@ -547,22 +601,41 @@ bool vtkMedialRepairFilter::vtkInternals::Shells(Soup& work, bool& wrap)
           }
         }
       }
-      // A few pairs in a large shell are local folds: the local removal first there.
-      const bool local = 100 * selfPairs[s] < static_cast<vtkIdType>(pieces[s].Triangles.size());
-      for (int attempt = 0; attempt < 2 && !resolved; ++attempt)
+      // A few pairs in a large shell are local folds: the local removal first there,
+      // on a region grown until it succeeds (a fold of a finely subdivided shell spans
+      // many rings). The whole-shell autorefinement costs a minute on a million
+      // triangles: a large shell with few pairs goes to the wrap instead.
+      const vtkIdType triangles = static_cast<vtkIdType>(pieces[s].Triangles.size());
+      const bool local = 100 * selfPairs[s] < triangles;
+      const bool whole = !local || triangles <= LargeShell;
+      std::vector<int> attempts; // rings of a local attempt, or 0 for the whole shell
+      if (!local)
+      {
+        attempts.push_back(0);
+      }
+      for (int rings : { 3, 12, 48 })
+      {
+        attempts.push_back(rings);
+      }
+      if (local && whole)
+      {
+        attempts.push_back(0);
+      }
+      for (size_t attempt = 0; attempt < attempts.size() && !resolved; ++attempt)
       {
         shell = pieces[s];
-        if ((attempt == 0) != local)
+        if (attempts[attempt] == 0)
         {
           // The rounding of the exact result can leave slivers and a few crossings
           // along the intersection curves: the local removal takes those.
           const std::vector<vtkIdType> everywhere;
           resolved = vtkMedialSurfaceRepair::Autorefine(shell, error) &&
-            (tidy(shell) || (vtkMedialSurfaceRepair::RemoveSelfIntersections(shell, everywhere, error) && tidy(shell)));
+            (tidy(shell) || (vtkMedialSurfaceRepair::RemoveSelfIntersections(shell, everywhere, 0, error) && tidy(shell)));
         }
         else
         {
-          resolved = vtkMedialSurfaceRepair::RemoveSelfIntersections(shell, near, error) && tidy(shell);
+          resolved = vtkMedialSurfaceRepair::RemoveSelfIntersections(shell, near, attempts[attempt], error) &&
+            tidyLocal(shell);
         }
         resolved = resolved && this->Moved(pieces[s], shell) <= MovedTolerance * this->Diagonal;
       }
@@ -596,13 +669,16 @@ bool vtkMedialRepairFilter::vtkInternals::Shells(Soup& work, bool& wrap)
 // the wrap to close them. False (with the reason) when nothing closed is left.
 bool vtkMedialRepairFilter::vtkInternals::RemoveSheets(Soup& work, bool& wrap)
 {
-  Prepared p;
-  vtkSmartPointer<vtkPolyData> surface = ToPolyData(work);
-  if (!this->Prepare(surface, p, false))
+  if (!this->OpenPieces)
+  {
+    return true;
+  }
+  const PreparedPtr p = this->PrepareSoup(work, false);
+  if (!p)
   {
     return false;
   }
-  const vtkMedialTriangleMesh& m = p.Mesh;
+  const vtkMedialTriangleMesh& m = *p->Mesh;
   std::vector<char> closed(m.Shells.size());
   bool anyClosed = false, anyOpen = false;
   for (size_t s = 0; s < m.Shells.size(); ++s)
@@ -639,9 +715,8 @@ bool vtkMedialRepairFilter::vtkInternals::RemoveSheets(Soup& work, bool& wrap)
   }
   // The solid of the closed shells.
   const Soup solidSoup = SoupOf(m, [&](vtkIdType t) { return closed[m.ShellOfTriangle[t]] != 0; });
-  vtkSmartPointer<vtkPolyData> solid = ToPolyData(solidSoup);
-  Prepared s;
-  if (!this->Prepare(solid, s, false))
+  const PreparedPtr s = this->PrepareSoup(solidSoup, false);
+  if (!s)
   {
     return false;
   }
@@ -665,8 +740,8 @@ bool vtkMedialRepairFilter::vtkInternals::RemoveSheets(Soup& work, bool& wrap)
       }
       seen[v] = 1;
       vtkMedialSurfaceQuery::ClosestHit hit;
-      const bool onSurface = s.Query.ClosestPoint(m.GetPoint(v), tolerance, hit);
-      if (!onSurface && !s.Query.IsInside(m.GetPoint(v)))
+      const bool onSurface = s->Query->ClosestPoint(m.GetPoint(v), tolerance, hit);
+      if (!onSurface && !s->Query->IsInside(m.GetPoint(v)))
       {
         outside[shell] = 1;
         break;
@@ -694,16 +769,53 @@ bool vtkMedialRepairFilter::vtkInternals::RemoveSheets(Soup& work, bool& wrap)
 
 // The distance from the input (points and triangle centroids) to the output, and the
 // share of the input's area buried inside the output's solid.
-void vtkMedialRepairFilter::vtkInternals::Measure(const vtkMedialTriangleMesh& input, vtkPolyData* output)
+void vtkMedialRepairFilter::vtkInternals::Measure(
+  const vtkMedialTriangleMesh& input, vtkPolyData* output, const vtkMedialSurfaceQuery* outputQuery)
 {
   vtkMedialRepairFilter* self = this->Self;
   vtkMedialTriangleMesh mesh;
-  vtkMedialSurfaceQuery query;
+  vtkMedialSurfaceQuery built;
   std::string error;
-  if (!mesh.Build(output, error) || !query.Build(&mesh, error))
+  if (!outputQuery && (!mesh.Build(output, error) || !built.Build(&mesh, error)))
   {
     return;
   }
+  const vtkMedialSurfaceQuery& query = outputQuery ? *outputQuery : built;
+  const vtkMedialTriangleMesh& out = outputQuery ? *outputQuery->GetMesh() : mesh;
+  const double outputDiagonal = out.Diagonal;
+  // Input the output kept as it was (its points, its triangles) is at distance 0 and
+  // not buried: only the rest is measured (most of the input after a local step).
+  using Coordinates = std::array<double, 3>;
+  struct Hash
+  {
+    size_t operator()(const Coordinates& c) const
+    {
+      const std::hash<double> h;
+      return h(c[0]) ^ (h(c[1]) * 0x9e3779b97f4a7c15ull) ^ (h(c[2]) * 0xc2b2ae3d27d4eb4full);
+    }
+  };
+  std::unordered_map<Coordinates, vtkIdType, Hash> outPoints(2 * static_cast<size_t>(out.GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < out.GetNumberOfPoints(); ++i)
+  {
+    const double* x = out.GetPoint(i);
+    outPoints.emplace(Coordinates{ x[0], x[1], x[2] }, i);
+  }
+  auto outPoint = [&](const double* x) -> vtkIdType {
+    const auto at = outPoints.find(Coordinates{ x[0], x[1], x[2] });
+    return at != outPoints.end() ? at->second : -1;
+  };
+  auto sorted = [](vtkIdType a, vtkIdType b, vtkIdType c) {
+    std::array<vtkIdType, 3> t{ a, b, c };
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  std::vector<std::array<vtkIdType, 3>> outTriangles(out.GetNumberOfTriangles());
+  for (vtkIdType t = 0; t < out.GetNumberOfTriangles(); ++t)
+  {
+    const vtkIdType* v = out.GetTriangle(t);
+    outTriangles[t] = sorted(v[0], v[1], v[2]);
+  }
+  std::sort(outTriangles.begin(), outTriangles.end());
   const vtkIdType nt = input.GetNumberOfTriangles();
   std::vector<vtkIdType> used;
   {
@@ -722,7 +834,7 @@ void vtkMedialRepairFilter::vtkInternals::Measure(const vtkMedialTriangleMesh& i
     }
   }
   const vtkIdType np = static_cast<vtkIdType>(used.size());
-  const double bound = 2.0 * std::max(this->Diagonal, mesh.Diagonal);
+  const double bound = 2.0 * std::max(this->Diagonal, outputDiagonal);
   const double buried = BuriedDepth * this->Diagonal;
   const bool wrapped = self->Wrapped;
   // Samples: the triangles' centroids (weighted by area for the buried share), then
@@ -733,6 +845,7 @@ void vtkMedialRepairFilter::vtkInternals::Measure(const vtkMedialTriangleMesh& i
   {
     double x[3];
     double weight = 0.0;
+    bool kept = false;
     if (i < nt)
     {
       const vtkIdType* v = input.GetTriangle(i);
@@ -741,10 +854,19 @@ void vtkMedialRepairFilter::vtkInternals::Measure(const vtkMedialTriangleMesh& i
         x[k] = (input.GetPoint(v[0])[k] + input.GetPoint(v[1])[k] + input.GetPoint(v[2])[k]) / 3.0;
       }
       weight = input.Areas[i];
+      const vtkIdType a = outPoint(input.GetPoint(v[0])), b = outPoint(input.GetPoint(v[1])),
+                      c = outPoint(input.GetPoint(v[2]));
+      kept = a >= 0 && b >= 0 && c >= 0 && std::binary_search(outTriangles.begin(), outTriangles.end(), sorted(a, b, c));
     }
     else
     {
       std::copy_n(input.GetPoint(used[i - nt]), 3, x);
+      kept = outPoint(x) >= 0;
+    }
+    if (kept)
+    {
+      area += weight;
+      continue;
     }
     vtkMedialSurfaceQuery::ClosestHit hit;
     const double distance = query.ClosestPoint(x, bound, hit) ? hit.Distance : bound;
@@ -807,27 +929,45 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
 
   // 0. The check, as every filter's preparation makes it.
   this->Stage("check");
-  Prepared original;
+  // The input's mesh, tree and check: the caller's when it made them on this input
+  // (SetCheckedInput: a filter's preparation), else built here.
+  const PreparedPtr original = std::make_shared<Prepared>();
+  vtkMedialSolidCheck ownCheck;
+  const vtkMedialSolidCheck* checked = &ownCheck;
   std::string error;
-  if (!original.Mesh.Build(input, error))
+  if (self->CheckedMesh && self->CheckedQuery && self->CheckedResult && !wrapNow)
   {
-    if (error.find("no non-degenerate") == std::string::npos)
+    original->Mesh = self->CheckedMesh;
+    original->Query = self->CheckedQuery;
+    checked = self->CheckedResult;
+  }
+  else
+  {
+    if (!original->OwnMesh.Build(input, error))
+    {
+      if (error.find("no non-degenerate") == std::string::npos)
+      {
+        this->Fail(error);
+        return false;
+      }
+      return this->NoVolume(error);
+    }
+    if (!original->OwnQuery.Build(&original->OwnMesh, error))
     {
       this->Fail(error);
       return false;
     }
-    return this->NoVolume(error);
+    if (!wrapNow)
+    {
+      ownCheck.Run(original->OwnMesh, original->OwnQuery, this->Threads);
+    }
   }
-  if (!original.Query.Build(&original.Mesh, error))
+  const vtkMedialSolidCheck& check = *checked;
+  const vtkMedialTriangleMesh& m0 = *original->Mesh;
+  if (!wrapNow && (check.IsValid() || check.OnlyPairs()))
   {
-    this->Fail(error);
-    return false;
-  }
-  const vtkMedialTriangleMesh& m0 = original.Mesh;
-  vtkMedialSolidCheck check;
-  if (!wrapNow)
-  {
-    check.Run(m0, original.Query, this->Threads);
+    original->Candidates = check.Pairs; // the pair search ran
+    original->HasCandidates = true;
   }
   // The input's winding against the outward one the preparation found (the filters
   // need not care, they orient as they prepare; this filter's output must be oriented):
@@ -843,9 +983,9 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
     bool valid = check.IsValid();
     if (check.OnlyPairs())
     {
-      original.Exact = ExactPairs(m0, check.Pairs);
-      self->IntersectingPairs = static_cast<vtkIdType>(original.Exact.size());
-      valid = original.Exact.empty();
+      this->FindExactPairs(*original);
+      self->IntersectingPairs = static_cast<vtkIdType>(original->Exact.size());
+      valid = original->Exact.empty();
     }
     if (valid && rewound == 0 && turned == 0)
     {
@@ -889,7 +1029,7 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
     output->ShallowCopy(out);
     self->Changed = true;
     this->Stage("measure");
-    this->Measure(m0, output);
+    this->Measure(m0, output, nullptr);
     this->Stage(nullptr);
     return true;
   }
@@ -1012,6 +1152,14 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
   }
 
   // 4, 5. Unions and self-crossing shells, 6. stray sheets.
+  if (!clean && borderEdges == 0)
+  {
+    // Nothing was welded, cleaned or filled: the soup is the input's mesh, whose
+    // preparation (and pairs) the next steps reuse. What they read of it (shells,
+    // contacts, pairs) is what a preparation of the soup would find.
+    original->Source = work;
+    this->Last = original;
+  }
   bool wrap = false;
   this->Stage("shells");
   if (!this->Shells(work, wrap))
@@ -1042,14 +1190,11 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
     this->Line("sheets: " + Plural(self->RemovedSheets, "open piece", "open pieces") + " inside the solid removed");
   }
 
-  // Orientation to bound a volume, and the final check.
+  // The final check, and the orientation to bound a volume.
   this->Stage("orient");
+  PreparedPtr result;
   if (!wrap)
   {
-    // The steps' own orientation (CGAL's soup orientation picks one per piece) is
-    // settled here: not a change to the input, not reported.
-    vtkIdType settled = 0;
-    vtkMedialSurfaceRepair::OrientToBoundVolume(work, settled, error);
     vtkIdType touching = 0;
     wrap = !this->ShellsValid(work, touching);
     if (wrap && this->Error.empty())
@@ -1057,6 +1202,20 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
       this->Line("check: the repaired surface is still not a valid solid");
     }
     this->Error.clear();
+    if (!wrap)
+    {
+      // The steps' own orientation (CGAL's soup orientation picks one per piece) is
+      // settled here, not a change to the input, not reported: the preparation
+      // orients every shell to bound a volume (cavities inward, as CGAL's
+      // orient_to_bound_a_volume), so its triangles are the output.
+      result = this->Last;
+      const auto& shells = result->Mesh->Shells;
+      if (std::any_of(shells.begin(), shells.end(), [](const auto& s) { return s.Rewound > 0; }))
+      {
+        work = SoupOf(*result->Mesh);
+        result->Source = work;
+      }
+    }
   }
   // 7. The wrap.
   this->Stage("wrap");
@@ -1078,13 +1237,19 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
   output->ShallowCopy(out);
   self->Changed = true;
   this->Stage("measure");
-  this->Measure(m0, output);
+  this->Measure(m0, output, wrap || !result ? nullptr : result->Query);
   this->Stage(nullptr);
   return true;
 }
 
 //------------------------------------------------------------------------------
 vtkMedialRepairFilter::vtkMedialRepairFilter() = default;
+
+std::vector<char> vtkMedialRepairFilter::ExactPairTest(
+  const std::vector<std::array<double, 18>>& corners, const std::vector<std::array<vtkIdType, 6>>& ids)
+{
+  return vtkMedialSurfaceRepair::IntersectingPairs(corners, ids);
+}
 
 const char* vtkMedialRepairFilter::GetModeName(int mode)
 {
@@ -1123,6 +1288,11 @@ double vtkMedialRepairFilter::GetTimedStageSeconds(int i)
   return i >= 0 && i < static_cast<int>(this->StageTimes.size()) ? this->StageTimes[i].second : 0.0;
 }
 
+double vtkMedialRepairFilter::GetTimedStageCpuSeconds(int i)
+{
+  return i >= 0 && i < static_cast<int>(this->StageCpuTimes.size()) ? this->StageCpuTimes[i] : 0.0;
+}
+
 const char* vtkMedialRepairFilter::GetReportLine(int i)
 {
   return i >= 0 && i < static_cast<int>(this->Report.size()) ? this->Report[i].c_str() : nullptr;
@@ -1149,6 +1319,7 @@ int vtkMedialRepairFilter::RequestData(
   this->MaximumDistance = this->BuriedArea = this->Seconds = 0.0;
   this->Report.clear();
   this->StageTimes.clear();
+  this->StageCpuTimes.clear();
   if (!vtkMedialPieces::FromRequest(outputVector->GetInformationObject(0)).IsFirst())
   {
     return 1; // piece 0 repairs the whole surface; the other pieces stay empty

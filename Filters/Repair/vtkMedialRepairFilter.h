@@ -65,9 +65,14 @@
 #include "vtkMedialAxisRepairModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include <array>   // for the exact pair test
 #include <string>  // for the report
 #include <utility> // for the stage times
 #include <vector> // for the report
+
+class vtkMedialSolidCheck;
+class vtkMedialSurfaceQuery;
+class vtkMedialTriangleMesh;
 
 class VTKMEDIALAXISREPAIR_EXPORT vtkMedialRepairFilter : public vtkPolyDataAlgorithm
 {
@@ -171,7 +176,32 @@ public:
   int GetNumberOfTimedStages() { return static_cast<int>(this->StageTimes.size()); }
   const char* GetTimedStageName(int i);
   double GetTimedStageSeconds(int i);
+  /// CPU time of the process (every thread) during each stage: on a loaded machine a
+  /// fairer measure of the work than the wall time.
+  double GetTimedStageCpuSeconds(int i);
   ///@}
+
+#ifndef __VTK_WRAP__
+  /**
+   * Internal, for a filter's preparation (vtkMedialRepairCallback.h): the next update's
+   * input has been prepared as `mesh` and `query` and checked (`check`), so the repair
+   * starts from them instead of building them again. The pointers must stay valid
+   * through that update; ClearCheckedInput() forgets them.
+   */
+  void SetCheckedInput(
+    const vtkMedialTriangleMesh* mesh, const vtkMedialSurfaceQuery* query, const vtkMedialSolidCheck* check)
+  {
+    this->CheckedMesh = mesh;
+    this->CheckedQuery = query;
+    this->CheckedResult = check;
+  }
+  void ClearCheckedInput() { this->SetCheckedInput(nullptr, nullptr, nullptr); }
+
+  /// Internal: CGAL's exact test of triangle pairs (as PMP::self_intersections decides
+  /// them), for vtkMedialSolidCheck::Decide in the modules without CGAL.
+  static std::vector<char> ExactPairTest(
+    const std::vector<std::array<double, 18>>& corners, const std::vector<std::array<vtkIdType, 6>>& ids);
+#endif
 
 protected:
   vtkMedialRepairFilter();
@@ -209,6 +239,10 @@ protected:
   double Seconds = 0.0;
   std::vector<std::string> Report;
   std::vector<std::pair<std::string, double>> StageTimes;
+  std::vector<double> StageCpuTimes;
+  const vtkMedialTriangleMesh* CheckedMesh = nullptr;
+  const vtkMedialSurfaceQuery* CheckedQuery = nullptr;
+  const vtkMedialSolidCheck* CheckedResult = nullptr;
 
 private:
   vtkMedialRepairFilter(const vtkMedialRepairFilter&) = delete;

@@ -75,9 +75,67 @@ void FromMesh(const Mesh& mesh, Soup& soup)
   }
 }
 
+// The soup's faces added one by one: false when one cannot be (a non-manifold edge or
+// corner, an orientation that disagrees) or when a vertex ends with more than one fan
+// of faces. Cheaper than is_polygon_soup_a_polygon_mesh, which sorts every edge first.
+bool AddFaces(const Soup& soup, Mesh& mesh)
+{
+  mesh.reserve(static_cast<Mesh::size_type>(soup.Points.size()), static_cast<Mesh::size_type>(3 * soup.Triangles.size() / 2),
+    static_cast<Mesh::size_type>(soup.Triangles.size()));
+  for (const auto& x : soup.Points)
+  {
+    mesh.add_vertex(Point(x[0], x[1], x[2]));
+  }
+  for (const auto& t : soup.Triangles)
+  {
+    const Mesh::Vertex_index a(static_cast<Mesh::size_type>(t[0])), b(static_cast<Mesh::size_type>(t[1])),
+      c(static_cast<Mesh::size_type>(t[2]));
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || mesh.add_face(a, b, c) == Mesh::null_face())
+    {
+      return false;
+    }
+  }
+  // One fan per vertex: the halfedges around it are all that point to it.
+  std::vector<Mesh::size_type> incoming(mesh.num_vertices(), 0);
+  for (Mesh::Halfedge_index h : mesh.halfedges())
+  {
+    ++incoming[mesh.target(h)];
+  }
+  for (Mesh::Vertex_index v : mesh.vertices())
+  {
+    Mesh::size_type around = 0;
+    if (mesh.halfedge(v) != Mesh::null_halfedge())
+    {
+      for (Mesh::Halfedge_index h : CGAL::halfedges_around_target(mesh.halfedge(v), mesh))
+      {
+        (void)h;
+        ++around;
+      }
+    }
+    if (around != incoming[v])
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 // A mesh of a soup that is already a polygon mesh (oriented, manifold).
 bool ToMesh(const Soup& soup, Mesh& mesh, std::string& error)
 {
+  if (AddFaces(soup, mesh))
+  {
+    for (Mesh::Vertex_index v : mesh.vertices())
+    {
+      if (mesh.is_isolated(v))
+      {
+        mesh.remove_vertex(v); // a point no triangle uses, as the soup's conversion drops it
+      }
+    }
+    mesh.collect_garbage();
+    return true;
+  }
+  mesh.clear();
   std::vector<Point> points;
   Polygons polygons;
   ToPolygons(soup, points, polygons);
@@ -305,7 +363,7 @@ std::vector<char> IntersectingPairs(
   return result;
 }
 
-bool RemoveSelfIntersections(Soup& soup, const std::vector<vtkIdType>& near, std::string& error)
+bool RemoveSelfIntersections(Soup& soup, const std::vector<vtkIdType>& near, int rings, std::string& error)
 {
   try
   {
@@ -314,7 +372,7 @@ bool RemoveSelfIntersections(Soup& soup, const std::vector<vtkIdType>& near, std
     {
       return false;
     }
-    // The working faces: `near` grown by three rings (the mesh's faces are the soup's
+    // The working faces: `near` grown by `rings` rings (the mesh's faces are the soup's
     // triangles in order), so that CGAL searches and smooths there only.
     std::vector<Mesh::Face_index> range;
     if (near.empty())
@@ -332,7 +390,7 @@ bool RemoveSelfIntersections(Soup& soup, const std::vector<vtkIdType>& near, std
           range.push_back(Mesh::Face_index(static_cast<Mesh::size_type>(f)));
         }
       }
-      for (int ring = 0; ring < 3; ++ring)
+      for (int ring = 0; ring < rings; ++ring)
       {
         const std::size_t end = range.size();
         for (std::size_t i = 0; i < end; ++i)

@@ -78,9 +78,9 @@ std::vector<char> IntersectingPairs(const std::vector<std::array<double, 18>>& c
   const std::vector<std::array<vtkIdType, 6>>& ids);
 
 /// PMP::experimental::remove_self_intersections (local smoothing and hole filling) on
-/// the triangles `near` (and their neighbours three rings out; all of them when empty);
-/// true when none is left there.
-bool RemoveSelfIntersections(Soup& soup, const std::vector<vtkIdType>& near, std::string& error);
+/// the triangles `near` (and their neighbours `rings` rings out; all of them when
+/// empty); true when none is left there.
+bool RemoveSelfIntersections(Soup& soup, const std::vector<vtkIdType>& near, int rings, std::string& error);
 
 /// PMP::orient_to_bound_a_volume on a closed soup; `turned` counts the connected
 /// components it turned over.

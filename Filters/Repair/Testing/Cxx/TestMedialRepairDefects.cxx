@@ -9,12 +9,18 @@
 // lies inside the true solid and none is stopped short of it (by a buried surface or a
 // sheet), the largest ball is the true one within 1%, and the medial mesh has the
 // solid's Euler characteristic. The repair's report names the step each defect needs.
+// The filters' repair, which starts from the mesh, tree and check their preparation
+// made (vtkMedialRepairFilter::SetCheckedInput), must give the surface the repair alone
+// gives: the sampler's balls with AUTO on the defect are the same bits as its balls with
+// NONE on the standalone repair's output.
 // Run with the argument "none" the same checks run without the repair (RepairMode
 // NONE) and fail: that is how the test shows it can fail.
 #include "MedialRepairTestUtilities.h"
 #include "MedialTestSupport.h"
 
 #include "vtkMedialRepairFilter.h"
+
+#include "vtkPointData.h"
 
 #include <cstdio>
 #include <cstring>
@@ -66,6 +72,43 @@ bool HasLine(vtkMedialRepairFilter* repair, const char* prefix)
     }
   }
   return false;
+}
+
+// The sampler's balls (2000 samples, seed 1, 2 threads) on `surface` with `mode`.
+vtkSmartPointer<vtkPolyData> Balls(vtkPolyData* surface, int mode)
+{
+  vtkNew<vtkMedialAxisSampler> sampler;
+  sampler->SetInputData(surface);
+  sampler->SetNumberOfSamples(2000);
+  sampler->SetRandomSeed(1);
+  sampler->SetNumberOfThreads(2);
+  sampler->SetRepairMode(mode);
+  sampler->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(sampler->GetOutput());
+  return out;
+}
+
+bool SameBalls(vtkPolyData* a, vtkPolyData* b)
+{
+  const vtkIdType n = a->GetNumberOfPoints();
+  vtkDataArray* ra = a->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
+  vtkDataArray* rb = b->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
+  if (n == 0 || n != b->GetNumberOfPoints() || !ra || !rb)
+  {
+    return false;
+  }
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double x[3], y[3];
+    a->GetPoint(i, x);
+    b->GetPoint(i, y);
+    if (x[0] != y[0] || x[1] != y[1] || x[2] != y[2] || ra->GetComponent(i, 0) != rb->GetComponent(i, 0))
+    {
+      return false;
+    }
+  }
+  return true;
 }
 }
 
@@ -133,6 +176,11 @@ int TestMedialRepairDefects(int argc, char* argv[])
     if (r.Euler != d.Euler)
     {
       fail("the medial mesh's Euler characteristic is not the solid's");
+    }
+    if (!none && !SameBalls(Balls(d.Surface, vtkMedialRepairFilter::AUTO),
+                   Balls(repair->GetOutput(), vtkMedialRepairFilter::NONE)))
+    {
+      fail("the sampler's repair (from its own preparation) differs from the repair alone");
     }
   }
   std::printf("%d failures%s\n", failures, none ? " (without the repair, as expected)" : "");
