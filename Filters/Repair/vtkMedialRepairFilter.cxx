@@ -1226,8 +1226,13 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
       return false;
     }
     std::ostringstream os;
-    os << "wrap: " << (this->NoSolid ? "nothing closed was left (holes too large to fill): the wrap is a thin solid around the surface"
-                                     : "what the exact steps could not make a solid is wrapped")
+    // Why nothing closed was left: holes too large to fill, or open pieces (sheets,
+    // polygons in several planes) that had no hole to fill.
+    os << "wrap: "
+       << (!this->NoSolid ? "what the exact steps could not make a solid is wrapped"
+             : self->UnfilledHoles > 0
+             ? "nothing closed was left (holes too large to fill): the wrap is a thin solid around the surface"
+             : "nothing closed was left (open pieces that bound no volume): the wrap is a thin solid around the surface")
        << " (alpha " << self->WrapAlpha << ", offset " << self->WrapOffset << " of the diagonal): "
        << Plural(static_cast<vtkIdType>(wrapped.Triangles.size()), "triangle", "triangles");
     this->Line(os.str());

@@ -127,6 +127,19 @@ int TestMedialRepairBadInput(int, char*[])
     MEDIAL_CHECK(error.empty() && repair->GetWrapped() && !log.LineWith("nothing closed was left").empty(),
       "the bowl is not wrapped with a warning: %s", log.Text.c_str());
   }
+  // Two parallel squares: nothing closed and no hole either, so the warning must not
+  // blame holes too large to fill.
+  {
+    auto square = Grid(false);
+    auto both = medialtest::defects::Append(square, medialtest::defects::Translated(square, 0, 0, 1));
+    medialtest::EventLog log;
+    vtkSmartPointer<vtkMedialRepairFilter> repair;
+    const std::string error = RepairError(both, vtkMedialRepairFilter::AUTO, repair, log);
+    const std::string line = log.LineWith("nothing closed was left");
+    MEDIAL_CHECK(error.empty() && repair->GetWrapped() && !line.empty() &&
+        line.find("holes too large") == std::string::npos && line.find("bound no volume") != std::string::npos,
+      "two parallel squares: '%s'", log.Text.c_str());
+  }
   // Through the filters: the medial mesh and the thickness refuse a flat sheet with the
   // same reason; the sampler samples a planar sheet in 2D (as before) and, with WRAP,
   // the wrap of a bowl.

@@ -11,17 +11,22 @@
 // solid's Euler characteristic. The repair's report names the step each defect needs.
 // The filters' repair, which starts from the mesh, tree and check their preparation
 // made (vtkMedialRepairFilter::SetCheckedInput), must give the surface the repair alone
-// gives: the sampler's balls with AUTO on the defect are the same bits as its balls with
-// NONE on the standalone repair's output.
+// gives, the same bits.
 // Run with the argument "none" the same checks run without the repair (RepairMode
 // NONE) and fail: that is how the test shows it can fail.
 #include "MedialRepairTestUtilities.h"
 #include "MedialTestSupport.h"
 
 #include "vtkMedialRepairFilter.h"
+#include "vtkMedialSolidCheck.h"
+#include "vtkMedialSurfaceQuery.h"
+#include "vtkMedialTriangleMesh.h"
 
-#include "vtkPointData.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkPoints.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -74,41 +79,63 @@ bool HasLine(vtkMedialRepairFilter* repair, const char* prefix)
   return false;
 }
 
-// The sampler's balls (2000 samples, seed 1, 2 threads) on `surface` with `mode`.
-vtkSmartPointer<vtkPolyData> Balls(vtkPolyData* surface, int mode)
+// The repair of `surface` started from a preparation made outside (as a filter's is).
+vtkSmartPointer<vtkPolyData> RepairFromChecked(vtkPolyData* surface)
 {
-  vtkNew<vtkMedialAxisSampler> sampler;
-  sampler->SetInputData(surface);
-  sampler->SetNumberOfSamples(2000);
-  sampler->SetRandomSeed(1);
-  sampler->SetNumberOfThreads(2);
-  sampler->SetRepairMode(mode);
-  sampler->Update();
+  vtkMedialTriangleMesh mesh;
+  vtkMedialSurfaceQuery query;
+  std::string error;
+  if (!mesh.Build(surface, error) || !query.Build(&mesh, error))
+  {
+    return nullptr;
+  }
+  vtkMedialSolidCheck check;
+  check.Run(mesh, query, 2);
+  vtkNew<vtkMedialRepairFilter> repair;
+  repair->SetInputData(surface);
+  repair->SetReportSteps(false);
+  repair->SetCheckedInput(&mesh, &query, &check);
+  repair->Update();
+  repair->ClearCheckedInput();
   auto out = vtkSmartPointer<vtkPolyData>::New();
-  out->ShallowCopy(sampler->GetOutput());
+  out->ShallowCopy(repair->GetOutput());
   return out;
 }
 
-bool SameBalls(vtkPolyData* a, vtkPolyData* b)
+bool SameSurface(vtkPolyData* a, vtkPolyData* b)
 {
-  const vtkIdType n = a->GetNumberOfPoints();
-  vtkDataArray* ra = a->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
-  vtkDataArray* rb = b->GetPointData()->GetArray(vtkMedialArrayNames::Radius);
-  if (n == 0 || n != b->GetNumberOfPoints() || !ra || !rb)
+  if (!a || !b || a->GetNumberOfPoints() != b->GetNumberOfPoints() || a->GetNumberOfCells() != b->GetNumberOfCells())
   {
     return false;
   }
-  for (vtkIdType i = 0; i < n; ++i)
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
   {
     double x[3], y[3];
     a->GetPoint(i, x);
     b->GetPoint(i, y);
-    if (x[0] != y[0] || x[1] != y[1] || x[2] != y[2] || ra->GetComponent(i, 0) != rb->GetComponent(i, 0))
+    if (x[0] != y[0] || x[1] != y[1] || x[2] != y[2])
     {
       return false;
     }
   }
-  return true;
+  vtkIdType na = 0, nb = 0;
+  const vtkIdType *pa = nullptr, *pb = nullptr;
+  auto ca = vtk::TakeSmartPointer(a->GetPolys()->NewIterator());
+  auto cb = vtk::TakeSmartPointer(b->GetPolys()->NewIterator());
+  for (ca->GoToFirstCell(), cb->GoToFirstCell(); !ca->IsDoneWithTraversal(); ca->GoToNextCell(), cb->GoToNextCell())
+  {
+    if (cb->IsDoneWithTraversal())
+    {
+      return false;
+    }
+    ca->GetCurrentCell(na, pa);
+    cb->GetCurrentCell(nb, pb);
+    if (na != nb || !std::equal(pa, pa + na, pb))
+    {
+      return false;
+    }
+  }
+  return cb->IsDoneWithTraversal();
 }
 }
 
@@ -177,10 +204,9 @@ int TestMedialRepairDefects(int argc, char* argv[])
     {
       fail("the medial mesh's Euler characteristic is not the solid's");
     }
-    if (!none && !SameBalls(Balls(d.Surface, vtkMedialRepairFilter::AUTO),
-                   Balls(repair->GetOutput(), vtkMedialRepairFilter::NONE)))
+    if (!none && !SameSurface(RepairFromChecked(d.Surface), repair->GetOutput()))
     {
-      fail("the sampler's repair (from its own preparation) differs from the repair alone");
+      fail("the repair started from a filter's preparation differs from the repair alone");
     }
   }
   std::printf("%d failures%s\n", failures, none ? " (without the repair, as expected)" : "");
