@@ -26,44 +26,67 @@ void vtkMedialSurfaceNormals::Build(
   vtkMedialBuffer<std::int32_t> around; // 32-bit: 12 bytes a triangle instead of 24
   mesh.TrianglesAroundPoints(start, around);
   const double cosCrease = std::cos(creaseDegrees * 3.14159265358979323846 / 180.0);
-  // Two passes over the points: how many distinct normals each has, then (after the
-  // offsets) the normals and the corners' indices. A smooth point costs a few dot
-  // products and one sum, so computing twice is cheaper than keeping every corner's.
-  vtkMedialBuffer<vtkIdType> first;
-  first.assign(static_cast<size_t>(np) + 1, 0);
+  // Normals holds each point's first distinct normal at the point's index, then the
+  // others of the points that have several (at creases), point by point. The first
+  // pass computes every point's normals and writes the first, the second only those
+  // of the points with several, once their offsets are known.
+  vtkMedialBuffer<vtkIdType> extra; // after the first pass: the normals beyond the first
+  extra.assign(static_cast<size_t>(np) + 1, 0);
   this->CornerNormals.resize(3 * static_cast<size_t>(nt));
+  this->Normals.resize(3 * static_cast<size_t>(np));
   for (int pass = 0; pass < 2; ++pass)
   {
     if (pass == 1)
     {
-      std::partial_sum(first.begin(), first.end(), first.begin());
-      this->Normals.resize(3 * static_cast<size_t>(first.back()));
+      std::partial_sum(extra.begin(), extra.end(), extra.begin());
+      if (extra.back() == 0)
+      {
+        break; // every point smooth
+      }
+      vtkMedialBuffer<float> all(3 * static_cast<size_t>(np + extra.back()));
+      std::copy(this->Normals.begin(), this->Normals.end(), all.begin());
+      this->Normals.swap(all);
     }
 #pragma omp parallel
     {
       std::vector<const double*> facets;
+      std::vector<char> usable;
       std::vector<float> normals;
       std::vector<int> slot;
 #pragma omp for schedule(static)
       for (vtkIdType v = 0; v < np; ++v)
       {
+        if (pass == 1 && extra[v + 1] == extra[v])
+        {
+          continue; // done in the first pass
+        }
         const int count = static_cast<int>(start[v + 1] - start[v]);
         const std::int32_t* triangles = &around[static_cast<size_t>(start[v])];
         facets.resize(count);
+        usable.resize(count);
         normals.resize(3 * static_cast<size_t>(count));
         slot.resize(count);
         for (int i = 0; i < count; ++i)
         {
           facets[i] = query ? query->GetNormal(triangles[i]) : mesh.GetNormal(triangles[i]);
+          usable[i] = mesh.Areas[triangles[i]] > 0.0;
         }
-        const int distinct =
-          this->NormalsAtPoint(mesh, v, triangles, count, facets.data(), cosCrease, normals.data(), slot.data());
+        const int distinct = this->NormalsAtPoint(
+          mesh, v, triangles, count, facets.data(), usable.data(), cosCrease, normals.data(), slot.data());
+        if (distinct == 0)
+        {
+          continue; // no triangle uses the point
+        }
         if (pass == 0)
         {
-          first[v + 1] = distinct;
-          continue;
+          std::copy_n(normals.data(), 3, &this->Normals[3 * static_cast<size_t>(v)]);
+          extra[v + 1] = distinct - 1;
         }
-        std::copy_n(normals.data(), 3 * distinct, &this->Normals[3 * static_cast<size_t>(first[v])]);
+        else
+        {
+          std::copy_n(normals.data() + 3, 3 * (distinct - 1),
+            &this->Normals[3 * static_cast<size_t>(np + extra[v])]);
+        }
         for (int i = 0; i < count; ++i)
         {
           const vtkIdType* tri = mesh.GetTriangle(triangles[i]);
@@ -72,7 +95,7 @@ void vtkMedialSurfaceNormals::Build(
             if (tri[j] == v)
             {
               this->CornerNormals[3 * static_cast<size_t>(triangles[i]) + j] =
-                static_cast<std::int32_t>(first[v] + slot[i]);
+                static_cast<std::int32_t>(slot[i] == 0 ? v : np + extra[v] + slot[i] - 1);
             }
           }
         }
@@ -82,8 +105,8 @@ void vtkMedialSurfaceNormals::Build(
 }
 
 int vtkMedialSurfaceNormals::NormalsAtPoint(const vtkMedialTriangleMesh& mesh, vtkIdType point,
-  const std::int32_t* around, int count, const double* const* facetNormals, double cosCrease, float* normals,
-  int* slot) const
+  const std::int32_t* around, int count, const double* const* facetNormals, const char* usable, double cosCrease,
+  float* normals, int* slot) const
 {
   const double* at = mesh.GetPoint(point);
   // The normal of the corner at `point` of around[own]: the mean of the usable
@@ -93,7 +116,7 @@ int vtkMedialSurfaceNormals::NormalsAtPoint(const vtkMedialTriangleMesh& mesh, v
     for (int i = 0; i < count; ++i)
     {
       const vtkIdType u = around[i];
-      if (mesh.Areas[u] > 0.0 && G::Dot(facetNormals[own], facetNormals[i]) >= cosCrease)
+      if (usable[i] && G::Dot(facetNormals[own], facetNormals[i]) >= cosCrease)
       {
         // Max's weight: the area vector over |b - at|^2 |c - at|^2 (outward: the
         // corners in the mesh's counter-clockwise order).
@@ -120,12 +143,14 @@ int vtkMedialSurfaceNormals::NormalsAtPoint(const vtkMedialTriangleMesh& mesh, v
   };
   // Smooth: every usable triangle counts for every corner, so every corner sums the
   // same terms in the same order and gets the same normal.
+  // (The dot product is symmetric, bit for bit: each pair once, failing when either
+  // side counts for the other.)
   bool smooth = true;
   for (int own = 0; own < count && smooth; ++own)
   {
-    for (int i = 0; i < count && smooth; ++i)
+    for (int i = own; i < count && smooth; ++i)
     {
-      smooth = !(mesh.Areas[around[i]] > 0.0) || G::Dot(facetNormals[own], facetNormals[i]) >= cosCrease;
+      smooth = !(usable[own] || usable[i]) || G::Dot(facetNormals[own], facetNormals[i]) >= cosCrease;
     }
   }
   if (count > 0 && smooth && cornerNormal(0, normals))

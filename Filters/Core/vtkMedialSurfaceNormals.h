@@ -61,18 +61,22 @@ public:
 
   bool IsEmpty() const { return this->CornerNormals.empty(); }
 
-  /// Number of distinct normals stored (one per smooth vertex, more at creases).
+  /// Number of normals stored: one per point (smooth or not), plus one per further
+  /// distinct normal at a crease point.
   vtkIdType GetNumberOfNormals() const { return static_cast<vtkIdType>(this->Normals.size() / 3); }
 
 private:
   // The distinct unit normals at `point`, 3 floats each, into `normals`, and for the
-  // i-th triangle around it (`around`, `count` of them) the index of its corner's
-  // normal among them into `slot`; returns how many.
+  // i-th triangle around it (`around`, `count` of them, with their facet normals and
+  // whether they have an area) the index of its corner's normal among them into
+  // `slot`; returns how many.
   int NormalsAtPoint(const vtkMedialTriangleMesh& mesh, vtkIdType point, const std::int32_t* around, int count,
-    const double* const* facetNormals, double cosCrease, float* normals, int* slot) const;
+    const double* const* facetNormals, const char* usable, double cosCrease, float* normals, int* slot) const;
 
   vtkMedialBuffer<std::int32_t> CornerNormals; // 3 per triangle, the mesh's order: index into Normals
-  vtkMedialBuffer<float> Normals;              // 3 per distinct normal, by point
+  // 3 floats per normal: each point's first at the point's index, then the others of
+  // the points at creases, point by point.
+  vtkMedialBuffer<float> Normals;
 };
 
 #endif

@@ -315,7 +315,7 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(vtkMedialTriangleMesh& mesh
     coverage.reset(new vtkMedialCoverage(mesh, threads));
   }
   std::vector<vtkIdType> index, order;
-  std::vector<vtkIdType> triangles; // each sample's pick, from SelectSamples
+  SampleTriangles triangles; // each sample's pick, from SelectSamples
   // Picking and ordering the samples is per-sample work, not the surface's preparation.
   stages.Begin("Drawing the samples", 0.1, 0.15);
   try
@@ -404,17 +404,17 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(vtkMedialTriangleMesh& mesh
 
 void vtkMedialAxisSampler::vtkInternals::SelectSamples(const vtkMedialTriangleMesh& mesh,
   const vtkMedialSurfaceQuery& query, const vtkMedialPieces& pieces, bool coverage, int threads,
-  std::vector<vtkIdType>& index, std::vector<vtkIdType>& order, std::vector<vtkIdType>& triangles) const
+  std::vector<vtkIdType>& index, std::vector<vtkIdType>& order, SampleTriangles& triangles) const
 {
   const vtkIdType total = this->Self->NumberOfSamples;
   // Every sample's triangle, picked once (a binary search over the areas): the
   // order comes from it, and DrawSamples takes it from here.
   const std::uint64_t seed = static_cast<std::uint64_t>(this->Self->RandomSeed);
-  std::vector<vtkIdType> allTriangles(static_cast<size_t>(total));
+  SampleTriangles allTriangles(static_cast<size_t>(total));
 #pragma omp parallel for num_threads(threads) schedule(static)
   for (vtkIdType i = 0; i < total; ++i)
   {
-    allTriangles[i] = vtkMedialPickSampleTriangle(mesh, seed, i);
+    allTriangles[i] = static_cast<std::int32_t>(vtkMedialPickSampleTriangle(mesh, seed, i));
   }
   if (coverage)
   {
@@ -474,7 +474,7 @@ void vtkMedialAxisSampler::vtkInternals::SelectSamples(const vtkMedialTriangleMe
 }
 
 void vtkMedialAxisSampler::vtkInternals::DrawSamples(const vtkMedialTriangleMesh& mesh, int threads,
-  const std::vector<vtkIdType>& triangles, std::vector<std::uint8_t>& idOrders) const
+  const SampleTriangles& triangles, std::vector<std::uint8_t>& idOrders) const
 {
   vtkMedialAxisSampler* self = this->Self;
   const vtkIdType count = static_cast<vtkIdType>(triangles.size());
@@ -493,7 +493,7 @@ void vtkMedialAxisSampler::vtkInternals::DrawSamples(const vtkMedialTriangleMesh
 }
 
 void vtkMedialAxisSampler::vtkInternals::SortByLeaf(const vtkMedialSurfaceQuery& query,
-  const std::vector<vtkIdType>& triangles, vtkIdType block, std::vector<vtkIdType>& order)
+  const SampleTriangles& triangles, vtkIdType block, std::vector<vtkIdType>& order)
 {
   const vtkIdType count = static_cast<vtkIdType>(triangles.size());
   const auto& rank = query.GetLeafRanks();
@@ -532,7 +532,7 @@ void vtkMedialAxisSampler::vtkInternals::SortByLeaf(const vtkMedialSurfaceQuery&
 
 vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangleMesh& mesh,
   const vtkMedialSurfaceQuery& query, int threads, vtkIdType block, const std::vector<vtkIdType>& index,
-  const std::vector<vtkIdType>& triangles, const std::vector<std::uint8_t>& idOrders,
+  const SampleTriangles& triangles, const std::vector<std::uint8_t>& idOrders,
   const std::vector<vtkIdType>& order, vtkMedialBuffer<vtkMedialSampleRecord>& results, vtkMedialCoverage* coverage)
 {
   const std::uint64_t seed = static_cast<std::uint64_t>(this->Self->RandomSeed);
