@@ -56,6 +56,31 @@ inline vtkIdType vtkMedialPickSampleTriangle(
   return mesh.PickTriangleByArea(random.Uniform());
 }
 
+/// A uniform point on the triangle (a, b, c) drawn from `random`: sqrt warping of two
+/// uniforms. The one formula of every surface sample.
+inline void vtkMedialDrawPointOnCorners(
+  vtkMedialSampleRandom& random, const double a[3], const double b[3], const double c[3], double p[3])
+{
+  const double s = std::sqrt(random.Uniform());
+  const double t = random.Uniform();
+  const double wa = 1.0 - s, wb = s * (1.0 - t), wc = s * t;
+  for (int k = 0; k < 3; ++k)
+  {
+    p[k] = wa * a[k] + wb * b[k] + wc * c[k];
+  }
+}
+
+/// The corners of `triangle` in increasing vertex id, as their positions in the mesh's
+/// order packed two bits each (first in the lowest): what the sample points need of
+/// the mesh's triangles when they are drawn from a copy of its corners.
+inline std::uint8_t vtkMedialCornerIdOrder(const vtkMedialTriangleMesh& mesh, vtkIdType triangle)
+{
+  const vtkIdType* v = mesh.GetTriangle(triangle);
+  int order[3] = { 0, 1, 2 };
+  std::sort(order, order + 3, [v](int i, int j) { return v[i] < v[j]; });
+  return static_cast<std::uint8_t>(order[0] | (order[1] << 2) | (order[2] << 4));
+}
+
 /// The point of vtkMedialDrawSurfacePoint on `triangle`, drawn from `random` after the
 /// pick's draw (the vertices are taken in id order, so re-wound input gives the same point).
 inline void vtkMedialDrawPointOnTriangle(
@@ -64,17 +89,7 @@ inline void vtkMedialDrawPointOnTriangle(
   vtkIdType v[3] = { mesh.GetTriangle(triangle)[0], mesh.GetTriangle(triangle)[1],
     mesh.GetTriangle(triangle)[2] };
   std::sort(v, v + 3);
-  // Uniform on the triangle: sqrt warping of two uniforms.
-  const double s = std::sqrt(random.Uniform());
-  const double t = random.Uniform();
-  const double wa = 1.0 - s, wb = s * (1.0 - t), wc = s * t;
-  const double* a = mesh.GetPoint(v[0]);
-  const double* b = mesh.GetPoint(v[1]);
-  const double* c = mesh.GetPoint(v[2]);
-  for (int k = 0; k < 3; ++k)
-  {
-    p[k] = wa * a[k] + wb * b[k] + wc * c[k];
-  }
+  vtkMedialDrawPointOnCorners(random, mesh.GetPoint(v[0]), mesh.GetPoint(v[1]), mesh.GetPoint(v[2]), p);
 }
 
 /// Surface point of sample `index` of stream `seed`: a triangle picked by area, a uniform
@@ -97,6 +112,19 @@ inline void vtkMedialDrawSurfacePointOnPicked(
   vtkMedialSampleRandom random(seed, static_cast<std::uint64_t>(index));
   random.Next(); // the pick's draw
   vtkMedialDrawPointOnTriangle(mesh, random, triangle, p);
+}
+
+/// The same point from a copy of the picked triangle's corners (9 coordinates in the
+/// mesh's order, e.g. vtkMedialSurfaceQuery::GetTriangleVertices) and its
+/// vtkMedialCornerIdOrder: bit for bit the mesh's point when the copy is exact, with
+/// no access to the mesh (which may have released its geometry).
+inline void vtkMedialDrawSurfacePointOnCorners(
+  std::uint64_t seed, vtkIdType index, const double corners[9], std::uint8_t idOrder, double p[3])
+{
+  vtkMedialSampleRandom random(seed, static_cast<std::uint64_t>(index));
+  random.Next(); // the pick's draw
+  vtkMedialDrawPointOnCorners(random, corners + 3 * (idOrder & 3), corners + 3 * ((idOrder >> 2) & 3),
+    corners + 3 * ((idOrder >> 4) & 3), p);
 }
 
 #endif

@@ -21,10 +21,17 @@
  *    p's barycentric coordinates, normalised; within 1e-6 radians of the facet's
  *    normal (a flat region, where the float storage is the only difference) it is the
  *    facet's normal, bit for bit.
- * Corner normals are stored in single precision (36 bytes a triangle). Build needs the
- * mesh's points, triangles and normals; At reads only this object and the three
- * vertices passed in (the query's copies), so the mesh may release its geometry after
- * Build. Thread-safe after Build.
+ * Corner normals are stored in single precision, once per distinct normal at a vertex:
+ * where every triangle around a vertex is within the crease angle of every other (a
+ * smooth vertex), all its corners have the same normal (the same sum in the same
+ * order) and share one; at a crease vertex each distinct corner normal is stored once.
+ * Each corner holds the index of its normal: about 18 bytes a triangle on a smooth
+ * mesh (36 when every corner had its own copy: 56 MB on 1.55 M triangles). Build needs
+ * the mesh's points, triangles and areas, and the facets' normals from the mesh or
+ * from a built query (its tree keeps the same values, so the mesh's copy may already
+ * be released); At reads only this object and the three vertices passed in (the
+ * query's copies), so the mesh may release its geometry after Build. Thread-safe
+ * after Build.
  */
 #ifndef vtkMedialSurfaceNormals_h
 #define vtkMedialSurfaceNormals_h
@@ -32,6 +39,9 @@
 #include "vtkMedialBuffer.h"
 #include "vtkType.h"
 
+#include <cstdint>
+
+class vtkMedialSurfaceQuery;
 class vtkMedialTriangleMesh;
 
 class vtkMedialSurfaceNormals
@@ -39,8 +49,9 @@ class vtkMedialSurfaceNormals
 public:
   /// Corner normals of every triangle of `mesh`; triangles around a vertex whose
   /// normals differ by more than `creaseDegrees` from a corner's triangle do not count
-  /// for that corner.
-  void Build(const vtkMedialTriangleMesh& mesh, double creaseDegrees);
+  /// for that corner. The facets' normals come from `query` when given (the mesh's
+  /// Normals may then be released), else from the mesh.
+  void Build(const vtkMedialTriangleMesh& mesh, double creaseDegrees, const vtkMedialSurfaceQuery* query = nullptr);
 
   /// The unit outward normal at p on triangle t, whose vertices (9 coordinates, in the
   /// mesh's order) are `vertices` and whose facet normal is `facetNormal`. True when it
@@ -48,10 +59,24 @@ public:
   bool At(vtkIdType t, const double vertices[9], const double facetNormal[3], const double p[3],
     double n[3]) const;
 
-  bool IsEmpty() const { return this->Corners.empty(); }
+  bool IsEmpty() const { return this->CornerNormals.empty(); }
+
+  /// Number of normals stored: one per point (smooth or not), plus one per further
+  /// distinct normal at a crease point.
+  vtkIdType GetNumberOfNormals() const { return static_cast<vtkIdType>(this->Normals.size() / 3); }
 
 private:
-  vtkMedialBuffer<float> Corners; // 9 per triangle: the corners' unit normals, in the mesh's order
+  // The distinct unit normals at `point`, 3 floats each, into `normals`, and for the
+  // i-th triangle around it (`around`, `count` of them, with their facet normals and
+  // whether they have an area) the index of its corner's normal among them into
+  // `slot`; returns how many.
+  int NormalsAtPoint(const vtkMedialTriangleMesh& mesh, vtkIdType point, const std::int32_t* around, int count,
+    const double* const* facetNormals, const char* usable, double cosCrease, float* normals, int* slot) const;
+
+  vtkMedialBuffer<std::int32_t> CornerNormals; // 3 per triangle, the mesh's order: index into Normals
+  // 3 floats per normal: each point's first at the point's index, then the others of
+  // the points at creases, point by point.
+  vtkMedialBuffer<float> Normals;
 };
 
 #endif

@@ -1204,29 +1204,45 @@ bool vtkMedialTriangleMesh::BuildAreaCdf(std::string& error)
   return true;
 }
 
-void vtkMedialTriangleMesh::TrianglesAroundPoints(
-  std::vector<vtkIdType>& start, std::vector<vtkIdType>& around) const
+namespace
 {
-  const vtkIdType np = this->GetNumberOfPoints();
-  const vtkIdType nt = this->GetNumberOfTriangles();
+// TrianglesAroundPoints with `around` of either width.
+template <class Start, class Around>
+void FillTrianglesAround(const vtkMedialTriangleMesh& mesh, Start& start, Around& around)
+{
+  const vtkIdType np = mesh.GetNumberOfPoints();
+  const vtkIdType nt = mesh.GetNumberOfTriangles();
   start.assign(np + 1, 0);
   for (vtkIdType t = 0; t < nt; ++t)
   {
     for (int j = 0; j < 3; ++j)
     {
-      ++start[this->Triangles[3 * t + j] + 1];
+      ++start[mesh.GetTriangle(t)[j] + 1];
     }
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
   around.resize(start.back());
-  std::vector<vtkIdType> next(start.begin(), start.end() - 1);
+  Start next(start.begin(), start.end() - 1);
   for (vtkIdType t = 0; t < nt; ++t)
   {
     for (int j = 0; j < 3; ++j)
     {
-      around[next[this->Triangles[3 * t + j]]++] = t;
+      around[next[mesh.GetTriangle(t)[j]]++] = static_cast<typename Around::value_type>(t);
     }
   }
+}
+}
+
+void vtkMedialTriangleMesh::TrianglesAroundPoints(
+  std::vector<vtkIdType>& start, std::vector<vtkIdType>& around) const
+{
+  FillTrianglesAround(*this, start, around);
+}
+
+void vtkMedialTriangleMesh::TrianglesAroundPoints(
+  vtkMedialBuffer<vtkIdType>& start, vtkMedialBuffer<std::int32_t>& around) const
+{
+  FillTrianglesAround(*this, start, around);
 }
 
 void vtkMedialTriangleMesh::ReleaseGeometry()

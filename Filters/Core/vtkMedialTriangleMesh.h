@@ -78,6 +78,9 @@ public:
   /// The triangles around each point, as offsets `start` (one per point, plus the end)
   /// into `around`; a point no triangle uses has none.
   void TrianglesAroundPoints(std::vector<vtkIdType>& start, std::vector<vtkIdType>& around) const;
+  /// The same with 32-bit triangle ids (half the memory: 12 bytes a triangle), in
+  /// buffers that give their memory back when freed.
+  void TrianglesAroundPoints(vtkMedialBuffer<vtkIdType>& start, vtkMedialBuffer<std::int32_t>& around) const;
 
   /// Index of the triangle whose cumulative area bracket holds u in [0, 1).
   vtkIdType PickTriangleByArea(double u) const;

@@ -198,11 +198,6 @@ int vtkMedialAxisSampler::RequestData(
   }
   else
   {
-    if (this->CoverageTolerance <= 0.0)
-    {
-      // Random sampling reads normals from the query's tree only: the mesh's copy goes.
-      mesh.ReleaseNormals();
-    }
     status = passes.SampleRandom(mesh, query, pieces, output, stages);
   }
   // The repair's report, when the balls are those of a repaired surface.
@@ -260,11 +255,17 @@ bool vtkMedialAxisSampler::vtkInternals::PrepareSurface(vtkPolyData* input, vtkM
   {
     vtkWarningWithObjectMacro(self, << warning);
   }
+  if (self->SamplingStrategy == RANDOM && self->CoverageTolerance <= 0.0)
+  {
+    // Random sampling reads normals from the query's tree only: the mesh's copy goes
+    // (before the smooth normals below are built: the peak of the preparation).
+    mesh.ReleaseNormals();
+  }
   if (self->MinimumSeparationAngle > 0.0 && self->MaximumProtrusion < 1.0 && self->SamplingStrategy == RANDOM)
   {
     // Balls along the smooth surface's normals (vtkMedialSurfaceNormals), with creases
-    // where faces meet at more than theta.
-    this->Normals.Build(mesh, self->MinimumSeparationAngle);
+    // where faces meet at more than theta; the facets' normals from the tree.
+    this->Normals.Build(mesh, self->MinimumSeparationAngle, &query);
   }
   return true;
 }
@@ -314,7 +315,7 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(vtkMedialTriangleMesh& mesh
     coverage.reset(new vtkMedialCoverage(mesh, threads));
   }
   std::vector<vtkIdType> index, order;
-  std::vector<vtkIdType> triangles; // each sample's pick, from SelectSamples
+  SampleTriangles triangles; // each sample's pick, from SelectSamples
   // Picking and ordering the samples is per-sample work, not the surface's preparation.
   stages.Begin("Drawing the samples", 0.1, 0.15);
   try
@@ -327,20 +328,24 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(vtkMedialTriangleMesh& mesh
     return 0;
   }
   const vtkIdType count = static_cast<vtkIdType>(triangles.size());
-  std::vector<double> points; // 3 per sample
-  if (!this->Allocate(3 * count, points))
+  // Each sample's point is drawn where it is solved, from the tree's copy of its
+  // triangle's corners: all it needs of the mesh is the order of those corners' ids,
+  // a byte a sample (the points drawn up front took 24 bytes a sample, 24 MB of the
+  // 1 M job's peak, beside the records).
+  std::vector<std::uint8_t> idOrders;
+  if (!this->Allocate(count, idOrders))
   {
     return 0;
   }
-  // Draw every sample first, then solve them in the BVH's leaf order: samples
-  // close on the surface touch the same nodes, so the caches stay warm. Each
-  // result still goes to its own index, so the order cannot change the output.
+  // Solve the samples in the BVH's leaf order: samples close on the surface touch
+  // the same nodes, so the caches stay warm. Each result still goes to its own
+  // index, so the order cannot change the output.
   // With a coverage stop the order is sorted within each block only, so that the
   // blocks stay prefixes of the sample sequence.
   // With a coverage stop the samples are solved block by block, the coverage
   // checked after each; without one, in one loop (SolveBlocks).
   const vtkIdType block = coverage ? 1024 : count;
-  this->DrawSamples(mesh, index, threads, triangles, points);
+  this->DrawSamples(mesh, threads, triangles, idOrders);
   if (self->GetAbortExecute())
   {
     return 1;
@@ -365,7 +370,7 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(vtkMedialTriangleMesh& mesh
   }
   stages.Begin("Sampling", 0.15, 1.0);
   const vtkIdType used =
-    this->SolveBlocks(mesh, query, threads, block, triangles, points, order, results, coverage.get());
+    this->SolveBlocks(mesh, query, threads, block, index, triangles, idOrders, order, results, coverage.get());
   if (self->GetAbortExecute())
   {
     return 1; // aborted: leave the output empty
@@ -399,17 +404,17 @@ int vtkMedialAxisSampler::vtkInternals::SampleRandom(vtkMedialTriangleMesh& mesh
 
 void vtkMedialAxisSampler::vtkInternals::SelectSamples(const vtkMedialTriangleMesh& mesh,
   const vtkMedialSurfaceQuery& query, const vtkMedialPieces& pieces, bool coverage, int threads,
-  std::vector<vtkIdType>& index, std::vector<vtkIdType>& order, std::vector<vtkIdType>& triangles) const
+  std::vector<vtkIdType>& index, std::vector<vtkIdType>& order, SampleTriangles& triangles) const
 {
   const vtkIdType total = this->Self->NumberOfSamples;
   // Every sample's triangle, picked once (a binary search over the areas): the
   // order comes from it, and DrawSamples takes it from here.
   const std::uint64_t seed = static_cast<std::uint64_t>(this->Self->RandomSeed);
-  std::vector<vtkIdType> allTriangles(static_cast<size_t>(total));
+  SampleTriangles allTriangles(static_cast<size_t>(total));
 #pragma omp parallel for num_threads(threads) schedule(static)
   for (vtkIdType i = 0; i < total; ++i)
   {
-    allTriangles[i] = vtkMedialPickSampleTriangle(mesh, seed, i);
+    allTriangles[i] = static_cast<std::int32_t>(vtkMedialPickSampleTriangle(mesh, seed, i));
   }
   if (coverage)
   {
@@ -468,14 +473,12 @@ void vtkMedialAxisSampler::vtkInternals::SelectSamples(const vtkMedialTriangleMe
   }
 }
 
-void vtkMedialAxisSampler::vtkInternals::DrawSamples(const vtkMedialTriangleMesh& mesh,
-  const std::vector<vtkIdType>& index, int threads, const std::vector<vtkIdType>& triangles,
-  std::vector<double>& points) const
+void vtkMedialAxisSampler::vtkInternals::DrawSamples(const vtkMedialTriangleMesh& mesh, int threads,
+  const SampleTriangles& triangles, std::vector<std::uint8_t>& idOrders) const
 {
   vtkMedialAxisSampler* self = this->Self;
   const vtkIdType count = static_cast<vtkIdType>(triangles.size());
-  const std::uint64_t seed = static_cast<std::uint64_t>(self->RandomSeed);
-  // Blocks: progress, and an abort honoured while millions of samples are drawn.
+  // Blocks: progress, and an abort honoured while millions of samples are prepared.
   const vtkIdType block = 1 << 18;
   for (vtkIdType begin = 0; begin < count && !self->GetAbortExecute(); begin += block)
   {
@@ -483,14 +486,14 @@ void vtkMedialAxisSampler::vtkInternals::DrawSamples(const vtkMedialTriangleMesh
 #pragma omp parallel for num_threads(threads) schedule(static)
     for (vtkIdType i = begin; i < end; ++i)
     {
-      vtkMedialDrawSurfacePointOnPicked(mesh, seed, index.empty() ? i : index[i], triangles[i], &points[3 * i]);
+      idOrders[i] = vtkMedialCornerIdOrder(mesh, triangles[i]);
     }
     self->UpdateProgress(static_cast<double>(end) / static_cast<double>(count));
   }
 }
 
 void vtkMedialAxisSampler::vtkInternals::SortByLeaf(const vtkMedialSurfaceQuery& query,
-  const std::vector<vtkIdType>& triangles, vtkIdType block, std::vector<vtkIdType>& order)
+  const SampleTriangles& triangles, vtkIdType block, std::vector<vtkIdType>& order)
 {
   const vtkIdType count = static_cast<vtkIdType>(triangles.size());
   const auto& rank = query.GetLeafRanks();
@@ -511,7 +514,8 @@ void vtkMedialAxisSampler::vtkInternals::SortByLeaf(const vtkMedialSurfaceQuery&
     return;
   }
   // Counting sort by leaf rank: linear, and stable, so ties keep index order.
-  std::vector<vtkIdType> next(rank.size() + 1, 0);
+  vtkMedialBuffer<vtkIdType> next; // mapped on its own: freed at once, not kept by malloc
+  next.assign(rank.size() + 1, 0);
   for (vtkIdType i = 0; i < count; ++i)
   {
     ++next[rank[triangles[i]] + 1];
@@ -527,10 +531,11 @@ void vtkMedialAxisSampler::vtkInternals::SortByLeaf(const vtkMedialSurfaceQuery&
 }
 
 vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangleMesh& mesh,
-  const vtkMedialSurfaceQuery& query, int threads, vtkIdType block, const std::vector<vtkIdType>& triangles,
-  const std::vector<double>& points, const std::vector<vtkIdType>& order, vtkMedialBuffer<vtkMedialSampleRecord>& results,
-  vtkMedialCoverage* coverage)
+  const vtkMedialSurfaceQuery& query, int threads, vtkIdType block, const std::vector<vtkIdType>& index,
+  const SampleTriangles& triangles, const std::vector<std::uint8_t>& idOrders,
+  const std::vector<vtkIdType>& order, vtkMedialBuffer<vtkMedialSampleRecord>& results, vtkMedialCoverage* coverage)
 {
+  const std::uint64_t seed = static_cast<std::uint64_t>(this->Self->RandomSeed);
   vtkMedialAxisSampler* self = this->Self;
   const vtkMedialBallParameters param = this->MakeBallParameters(mesh.Diagonal);
   const double coverageTolerance = self->CoverageTolerance * mesh.Diagonal;
@@ -547,7 +552,12 @@ vtkIdType vtkMedialAxisSampler::vtkInternals::SolveBlocks(const vtkMedialTriangl
     {
       const vtkIdType i = order[k];
       const vtkIdType hint = k > first ? results[order[k - 1]].ContactTriangle : -1;
-      vtkMedialSolveBall(query, mesh, param, triangles[i], &points[3 * i], results[i], hint, &blockers, largest);
+      // Sample index[i]'s point (vtkMedialDrawSurfacePointOnPicked's, bit for bit: the
+      // tree's corners are the mesh's).
+      double scratch[9], p[3];
+      vtkMedialDrawSurfacePointOnCorners(seed, index.empty() ? i : index[i],
+        query.GetTriangleVertices(triangles[i], scratch), idOrders[i], p);
+      vtkMedialSolveBall(query, mesh, param, triangles[i], p, results[i], hint, &blockers, largest);
     }
   };
   auto largestProtrusion = [&]() {

@@ -21,6 +21,7 @@
 #include "vtkFieldData.h"
 #include "vtkSmartPointer.h"
 
+#include <cstdint>
 #include <new>
 #include <vector>
 
@@ -80,6 +81,9 @@ public:
   void WriteSamples(vtkPolyData* output, vtkIdType requested, const vtkMedialSampleRecord* records, vtkIdType count);
 
 private:
+  // Each sample's triangle, 32-bit (the tree holds fewer than 2^31 triangles): 4 MB
+  // less at 1 M samples, beside the records at the run's peak.
+  using SampleTriangles = std::vector<std::int32_t>;
   // Bisection / shrinking-ball settings in absolute units.
   vtkMedialBallParameters MakeBallParameters(double diagonal) const;
   // The samples a piece solves and their order (see SampleRandom): `index` gets the
@@ -89,21 +93,24 @@ private:
   // samples, ordered by leaf within blocks once drawn.
   void SelectSamples(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query,
     const vtkMedialPieces& pieces, bool coverage, int threads, std::vector<vtkIdType>& index,
-    std::vector<vtkIdType>& order, std::vector<vtkIdType>& triangles) const;
-  // Sample points of the RANDOM strategy: sample index[i] on triangles[i] (its pick,
-  // from SelectSamples) at points[3 i].
-  void DrawSamples(const vtkMedialTriangleMesh& mesh, const std::vector<vtkIdType>& index, int threads,
-    const std::vector<vtkIdType>& triangles, std::vector<double>& points) const;
+    std::vector<vtkIdType>& order, SampleTriangles& triangles) const;
+  // What the RANDOM strategy's sample points need of the mesh: the id order of the
+  // corners of triangles[i] (each sample's pick, from SelectSamples) into idOrders[i]
+  // (vtkMedialCornerIdOrder); SolveBlocks draws the points from the tree's corners.
+  void DrawSamples(const vtkMedialTriangleMesh& mesh, int threads, const SampleTriangles& triangles,
+    std::vector<std::uint8_t>& idOrders) const;
   // Order of items by BVH leaf of their triangle (within blocks of `block` items when a
   // coverage stop needs prefixes, else a global, stable counting sort).
-  static void SortByLeaf(const vtkMedialSurfaceQuery& query, const std::vector<vtkIdType>& triangles,
+  static void SortByLeaf(const vtkMedialSurfaceQuery& query, const SampleTriangles& triangles,
     vtkIdType block, std::vector<vtkIdType>& order);
   // Solves the samples in hint chains: with `coverage`, block by block, stopping after
   // the first block that reaches it; without, in one loop (`block` unused). Returns the
-  // samples used (a prefix).
+  // samples used (a prefix). Sample i is sample index[i] of the stream (i when `index`
+  // is empty), its point drawn on triangles[i] (vtkMedialDrawSurfacePointOnCorners).
   vtkIdType SolveBlocks(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int threads,
-    vtkIdType block, const std::vector<vtkIdType>& triangles, const std::vector<double>& points,
-    const std::vector<vtkIdType>& order, vtkMedialBuffer<vtkMedialSampleRecord>& results, vtkMedialCoverage* coverage);
+    vtkIdType block, const std::vector<vtkIdType>& index, const SampleTriangles& triangles,
+    const std::vector<std::uint8_t>& idOrders, const std::vector<vtkIdType>& order,
+    vtkMedialBuffer<vtkMedialSampleRecord>& results, vtkMedialCoverage* coverage);
   // Warns about samples discarded on an open or folded surface, or where shells touch.
   void WarnDiscarded(const vtkMedialTriangleMesh& mesh, vtkIdType count) const;
   // Warns when FACE_DISTANCE gave up faces and stopped short of the budget and the coverage.
