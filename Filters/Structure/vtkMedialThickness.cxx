@@ -491,7 +491,14 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
     vtkMedialGrowthLimits limits = GrowthLimits(this->SurfaceTolerance, size);
     limits.MaySlide = [&](const vtkIdType* t, int count) { return walls.MaySlide(fan, t, count); };
     vtkMedialSampleRecord grown = along;
-    if (!along.Valid)
+    // The vertex's own faces stopped the ball along the mean normal within the tolerance:
+    // a face more than theta / 2 from the normal rises into every ball tangent at p along
+    // it, however small (a saddle or a concave crease, or a fan whose Max weights put the
+    // normal near one side of the faces' normals). Such a ball reads about 0 (1e-11); it
+    // is grown from the wedge ball instead, as at a sharp vertex.
+    const bool stoppedByOwnFaces = along.Valid && along.Radius < limits.Tolerance &&
+      std::find(fan.begin(), fan.end(), along.ContactTriangle) != fan.end();
+    if (!along.Valid || stoppedByOwnFaces)
     {
       grown = WedgeBall(query, mesh, p, fan, size);
       limits.MaximumSteps = 2; // it touches one face first: a second probe finds the other
