@@ -4,8 +4,11 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Regular_triangulation_3.h>
+#include <CGAL/Spatial_lock_grid_3.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
+
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,20 +21,51 @@ namespace
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<vtkIdType, Kernel,
   CGAL::Regular_triangulation_vertex_base_3<Kernel>>;
+// Hidden balls are not kept in the cells (nothing asks for them: BallIsVertex is read
+// from the vertices). The triangulation is built in parallel (TBB, a grid of locks);
+// a regular triangulation is unique (CGAL's symbolic perturbation), and every simplex
+// is indexed in a canonical order below, so the result does not depend on the thread
+// count or on the order of insertion.
 using CellBase = CGAL::Triangulation_cell_base_with_info_3<vtkIdType, Kernel,
-  CGAL::Regular_triangulation_cell_base_3<Kernel>>;
-using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase>;
-using Triangulation = CGAL::Regular_triangulation_3<Kernel, Tds>;
+  CGAL::Regular_triangulation_cell_base_3<Kernel, CGAL::Triangulation_cell_base_3<Kernel>, CGAL::Discard_hidden_points>>;
+using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase, CGAL::Parallel_tag>;
+using Triangulation =
+  CGAL::Regular_triangulation_3<Kernel, Tds, CGAL::Spatial_lock_grid_3<CGAL::Tag_priority_blocking>>;
 using WeightedPoint = Kernel::Weighted_point_3;
 using Cell = Triangulation::Cell_handle;
 
-// The permutation that sorts `keys`: order[k] is the index of the k-th smallest.
-template <class Key>
-std::vector<vtkIdType> SortedOrder(const std::vector<Key>& keys)
+// The permutation that sorts `keys` (distinct sorted ball ids, each below `balls`):
+// order[k] is the index of the k-th smallest. A counting sort on the first ball, then a
+// sort of each (short) group in place: a few passes over contiguous memory instead of
+// a comparison sort that reads the keys at random.
+template <size_t N>
+std::vector<vtkIdType> SortedOrder(const std::vector<std::array<vtkIdType, N>>& keys, vtkIdType balls, int threads)
 {
-  std::vector<vtkIdType> order(keys.size());
-  std::iota(order.begin(), order.end(), vtkIdType(0));
-  std::sort(order.begin(), order.end(), [&keys](vtkIdType a, vtkIdType b) { return keys[a] < keys[b]; });
+  const vtkIdType n = static_cast<vtkIdType>(keys.size());
+  std::vector<vtkIdType> start(balls + 1, 0);
+  for (const auto& key : keys)
+  {
+    ++start[key[0] + 1];
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<std::pair<std::array<vtkIdType, N>, vtkIdType>> grouped(n);
+  {
+    std::vector<vtkIdType> fill(start.begin(), start.end() - 1);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      grouped[fill[keys[i][0]]++] = { keys[i], i };
+    }
+  }
+  std::vector<vtkIdType> order(n);
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
+  for (vtkIdType b = 0; b < balls; ++b)
+  {
+    std::sort(grouped.begin() + start[b], grouped.begin() + start[b + 1]);
+    for (vtkIdType k = start[b]; k < start[b + 1]; ++k)
+    {
+      order[k] = grouped[k].second;
+    }
+  }
   return order;
 }
 
@@ -181,14 +215,42 @@ bool vtkMedialPowerComplex::Build(
     error = "fewer than four balls";
     return false;
   }
+  // Equal balls (same centre and radius) would leave the vertex to whichever is
+  // inserted first: only the first of them (smallest id) is inserted, the others are
+  // hidden by it as a later copy would be.
+  std::vector<vtkIdType> byPosition(nb);
+  std::iota(byPosition.begin(), byPosition.end(), vtkIdType(0));
+  auto ball = [&](vtkIdType i) {
+    return std::array<double, 4>{ centres[3 * i], centres[3 * i + 1], centres[3 * i + 2], radii[i] };
+  };
+  std::sort(byPosition.begin(), byPosition.end(),
+    [&](vtkIdType a, vtkIdType b) { return ball(a) < ball(b) || (ball(a) == ball(b) && a < b); });
+  std::vector<char> copy(nb, 0);
+  for (vtkIdType k = 1; k < nb; ++k)
+  {
+    copy[byPosition[k]] = ball(byPosition[k]) == ball(byPosition[k - 1]);
+  }
+  byPosition = {};
   std::vector<std::pair<WeightedPoint, vtkIdType>> points;
   points.reserve(nb);
+  double box[6] = { HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL };
   for (vtkIdType i = 0; i < nb; ++i)
   {
     const double* c = &centres[3 * i];
-    points.emplace_back(WeightedPoint(Kernel::Point_3(c[0], c[1], c[2]), radii[i] * radii[i]), i);
+    if (!copy[i])
+    {
+      points.emplace_back(WeightedPoint(Kernel::Point_3(c[0], c[1], c[2]), radii[i] * radii[i]), i);
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      box[2 * k] = std::min(box[2 * k], c[k]);
+      box[2 * k + 1] = std::max(box[2 * k + 1], c[k]);
+    }
   }
-  Triangulation triangulation(points.begin(), points.end());
+  Triangulation::Lock_data_structure locks(CGAL::Bbox_3(box[0], box[2], box[4], box[1], box[3], box[5]), 50);
+  Triangulation triangulation(&locks);
+  tbb::task_arena arena(std::max(1, threads));
+  arena.execute([&]() { triangulation.insert(points.begin(), points.end()); });
   points = {};
   if (triangulation.dimension() < 3)
   {
@@ -202,14 +264,14 @@ bool vtkMedialPowerComplex::Build(
   }
   // Every simplex from here on is in a canonical order (sorted by its sorted ball ids),
   // so that nothing depends on CGAL's internal order.
-  this->IndexTetrahedra(&triangulation);
-  this->IndexTriangles();
+  this->IndexTetrahedra(&triangulation, threads);
+  this->IndexTriangles(threads);
   this->IndexEdges();
   this->ClassifyUnion(threads);
   return true;
 }
 
-void vtkMedialPowerComplex::IndexTetrahedra(void* cgalTriangulation)
+void vtkMedialPowerComplex::IndexTetrahedra(void* cgalTriangulation, int threads)
 {
   Triangulation& triangulation = *static_cast<Triangulation*>(cgalTriangulation);
   vtkIdType raw = 0;
@@ -229,7 +291,8 @@ void vtkMedialPowerComplex::IndexTetrahedra(void* cgalTriangulation)
     }
     std::sort(key.begin(), key.end());
   }
-  const std::vector<vtkIdType> order = SortedOrder(keys);
+  const vtkIdType nb = static_cast<vtkIdType>(this->BallIsVertex.size());
+  const std::vector<vtkIdType> order = SortedOrder(keys, nb, threads);
   const std::vector<vtkIdType> rank = Inverse(order);
   this->TetVertices.resize(raw);
   this->TetNeighbours.resize(raw);
@@ -247,14 +310,20 @@ void vtkMedialPowerComplex::IndexTetrahedra(void* cgalTriangulation)
   }
 }
 
-void vtkMedialPowerComplex::IndexTriangles()
+void vtkMedialPowerComplex::IndexTriangles(int threads)
 {
   // Each triangle once, from the tetrahedron with the smaller index (or the finite one).
   const vtkIdType nt = this->GetNumberOfTetrahedra();
   std::vector<std::array<vtkIdType, 3>> keys;
   std::vector<std::array<vtkIdType, 2>> sides; // (tetrahedron, slot of the opposite vertex)
-  keys.reserve(2 * nt + 16);
-  sides.reserve(2 * nt + 16);
+  // (4 nt + h) / 2 triangles, h of them on the hull: reserved exactly, nothing is copied.
+  vtkIdType hull = 0;
+  for (const auto& neighbours : this->TetNeighbours)
+  {
+    hull += std::count(neighbours.begin(), neighbours.end(), vtkIdType(-1));
+  }
+  keys.reserve((4 * nt + hull) / 2);
+  sides.reserve((4 * nt + hull) / 2);
   for (vtkIdType t = 0; t < nt; ++t)
   {
     const auto& v = this->TetVertices[t];
@@ -277,7 +346,8 @@ void vtkMedialPowerComplex::IndexTriangles()
       sides.push_back({ t, s });
     }
   }
-  const std::vector<vtkIdType> order = SortedOrder(keys);
+  const std::vector<vtkIdType> order =
+    SortedOrder(keys, static_cast<vtkIdType>(this->BallIsVertex.size()), threads);
   const vtkIdType nf = static_cast<vtkIdType>(keys.size());
   this->TriangleVertices.resize(nf);
   this->TriangleTets.resize(nf);
