@@ -282,8 +282,19 @@ vtkSmartPointer<vtkRenderer> vtkMedialScene::ColourBy(vtkPolyDataMapper* mapper,
   bar->SetWidth(0.8);
   bar->SetHeight(0.76);
   bar->SetBarRatio(0.3);
+  this->LegendPixels = 120;
+  if (lut->GetIndexedLookup())
+  {
+    // The names are drawn beside the bar, outside the actor's box, on the side opposite
+    // the title: put the bar at the left of a wider strip so that they are not clipped.
+    bar->SetTextPositionToPrecedeScalarBar();
+    bar->SetPosition(0.02, 0.12);
+    bar->SetWidth(0.55);
+    this->LegendPixels = 170;
+  }
   bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
   bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
+  bar->GetAnnotationTextProperty()->SetColor(0.1, 0.1, 0.1);
   auto strip = vtkSmartPointer<vtkRenderer>::New();
   strip->SetBackground(1, 1, 1);
   strip->AddActor2D(bar);
@@ -584,7 +595,7 @@ vtkRenderWindow* vtkMedialScene::Render()
     size[0] = (rebuilt ? 1800 : 900);
     size[1] = planar ? 700 : 640;
   }
-  const double strip = bar ? std::min(0.4, 120.0 / size[0]) : 0.0;
+  const double strip = bar ? std::min(0.4, this->LegendPixels / static_cast<double>(size[0])) : 0.0;
   const double viewWidth = (1.0 - strip) / (rebuilt ? 2.0 : 1.0);
   renderer->SetViewport(0.0, 0.0, viewWidth, 1.0);
   // One window per scene, emptied for each render: an X connection is not free.

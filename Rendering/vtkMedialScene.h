@@ -250,6 +250,7 @@ private:
   void Frame(vtkRenderer* renderer, double aspect);
 
   vtkSmartPointer<vtkRenderWindow> Window;
+  int LegendPixels = 120; // width of the scale's strip, set by ColourBy
 };
 
 #endif

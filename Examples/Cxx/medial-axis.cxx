@@ -24,6 +24,7 @@
 #include "vtkMedialHTMLWriter.h"
 #include "vtkMedialBallClassifier.h"
 #include "vtkMedialDenoiseFilter.h"
+#include "vtkMedialJson.h"
 #include "vtkMedialJunctionFilter.h"
 #include "vtkMedialMeshFilter.h"
 #include "vtkMedialPruneFilter.h"
@@ -169,30 +170,6 @@ void Write(vtkPolyData* data, const std::string& path, int content, Console& con
   console.End();
 }
 
-std::string JsonString(const std::string& s)
-{
-  std::string out = "\"";
-  for (char c : s)
-  {
-    if (c == '"' || c == '\\')
-    {
-      out += '\\';
-      out += c;
-    }
-    else if (static_cast<unsigned char>(c) < 0x20)
-    {
-      char buf[8];
-      std::snprintf(buf, sizeof(buf), "\\u%04x", c);
-      out += buf;
-    }
-    else
-    {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
 // One run of the program: the data as it is made, and the JSON line of --stats.
 class Program
 {
@@ -283,7 +260,7 @@ void Program::LoadInput()
     this->Surface = ReadFile(input, vtkMedialFileReader::SURFACE, this->Out);
   }
   this->Planar = vtkMedialAxisSampler::IsPlanarInput(this->Surface);
-  this->InputJson << "\"input\": " << JsonString(input.empty() ? "demo:jack" : input);
+  this->InputJson << "\"input\": " << vtkMedialJsonString(input.empty() ? "demo:jack" : input);
   if (this->Planar && (!this->Opt.Thickness.empty() || this->Opt.ThicknessBelow > 0.0))
   {
     Fail("--thickness and --thickness-below need a 3D surface; '" + input + "' is planar");
@@ -417,11 +394,11 @@ void Program::Sample()
   js << ", \"triangles\": " << sampler->GetNumberOfTriangles() << ", \"samples\": " << o.Samples
      << ", \"medial_points\": " << this->Balls->GetNumberOfPoints()
      << ", \"discarded\": " << sampler->GetDiscardedSamples()
-     << ", \"method\": " << JsonString(vtkMedialAxisSampler::GetMethodName(o.Method))
+     << ", \"method\": " << vtkMedialJsonString(vtkMedialAxisSampler::GetMethodName(o.Method))
      << ", \"threads\": " << (o.Threads > 0 ? o.Threads : omp_get_num_procs()) << ", \"min_angle\": " << o.MinAngle
      << ", \"tolerance\": " << o.Tolerance << ", \"iterations_mean\": " << sampler->GetMeanIterations()
      << ", \"capped\": " << sampler->GetCappedSamples()
-     << ", \"strategy\": " << JsonString(vtkMedialAxisSampler::GetSamplingStrategyName(strategy));
+     << ", \"strategy\": " << vtkMedialJsonString(vtkMedialAxisSampler::GetSamplingStrategyName(strategy));
   if (!this->Planar && (o.Strategy != vtkMedialAxisSampler::RANDOM || o.Coverage > 0.0))
   {
     js << ", \"evaluated\": " << sampler->GetEvaluatedSamples() << ", \"seeds\": " << sampler->GetSeedSamples()
@@ -443,7 +420,7 @@ void Program::ReadBalls()
   }
   double range[2];
   radius->GetRange(range);
-  this->Json << ", \"balls\": " << JsonString(this->Opt.Balls)
+  this->Json << ", \"balls\": " << vtkMedialJsonString(this->Opt.Balls)
              << ", \"medial_points\": " << this->Balls->GetNumberOfPoints() << ", \"radius_min\": " << range[0]
              << ", \"radius_max\": " << range[1];
 }
@@ -803,10 +780,10 @@ void Program::AfterRepair(bool repaired, vtkMedialRepairFilter* repair)
   this->Surface = Copy(repair->GetOutput());
   this->Closed = true;
   auto& js = this->RepairJson;
-  js << ", \"repair\": " << JsonString(vtkMedialRepairFilter::GetModeName(this->Opt.Repair)) << ", \"repair_steps\": [";
+  js << ", \"repair\": " << vtkMedialJsonString(vtkMedialRepairFilter::GetModeName(this->Opt.Repair)) << ", \"repair_steps\": [";
   for (int i = 0; i < repair->GetNumberOfReportLines(); ++i)
   {
-    js << (i ? ", " : "") << JsonString(repair->GetReportLine(i));
+    js << (i ? ", " : "") << vtkMedialJsonString(repair->GetReportLine(i));
   }
   js << "], \"repair_intersecting_pairs\": " << repair->GetIntersectingPairs()
      << ", \"repair_welded_points\": " << repair->GetWeldedPoints()

@@ -3,6 +3,7 @@
 #include "vtkMedialViewerBundle.h"
 
 #include "vtkMedialArrayNames.h"
+#include "vtkMedialJson.h"
 #include "vtkMedialMessageRelay.h"
 #include "vtkMedialOutline.h"
 #include "vtkMedialPlane.h"
@@ -78,46 +79,10 @@ std::string Deflate(const std::string& bytes)
   return out;
 }
 
-// A JSON string literal that is also safe inside a <script> element.
+// JSON string literals here sit inside a <script> element.
 std::string Json(const std::string& s)
 {
-  std::string out = "\"";
-  for (const char c : s)
-  {
-    switch (c)
-    {
-      case '"':
-        out += "\\\"";
-        break;
-      case '\\':
-        out += "\\\\";
-        break;
-      case '<':
-        out += "\\u003c";
-        break;
-      case '>':
-        out += "\\u003e";
-        break;
-      case '&':
-        out += "\\u0026";
-        break;
-      case '\n':
-        out += "\\n";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20)
-        {
-          char buf[8];
-          std::snprintf(buf, sizeof(buf), "\\u%04x", c);
-          out += buf;
-        }
-        else
-        {
-          out += c;
-        }
-    }
-  }
-  return out + "\"";
+  return vtkMedialJsonString(s, /*scriptSafe=*/true);
 }
 
 std::string Html(const std::string& s)

@@ -19,6 +19,7 @@ writes and what it prints:
 
 Arguments: MEDIAL_AXIS SCRATCH_DIR. Exits 0 on success, 1 on failure.
 """
+import json
 import os
 import pty
 import re
@@ -138,6 +139,15 @@ check("nothing to write" in nothing.stderr and "Sampling" not in nothing.stderr,
       "a run that writes nothing is refused before any work: " + nothing.stderr.strip())
 check("takes no value" in run("--stats=yes", code=1).stderr, "--stats=yes is refused")
 check("expects a whole number" in run("-n", "10q", "--stats", code=1).stderr, "-n 10q is refused")
+# --stats is JSON whatever the input's name holds (quotes, a backslash, a tab, <, &).
+odd = path('odd "name" \\ \t <b>&.ma')
+run("-n", "500", "-o", odd, "--quiet")
+out = run("--balls", odd, "--stats", "--quiet")
+try:
+    odd_stats = json.loads(out.stdout)
+except ValueError as error:
+    odd_stats = {"error": str(error)}
+check(odd_stats.get("balls") == odd, "--stats quotes the input's name as JSON: " + out.stdout.strip()[:160])
 
 # 4. Progress.
 plain = run("-n", "2000", "--stats", "-o", path("p.vtp"))
