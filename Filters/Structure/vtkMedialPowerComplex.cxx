@@ -247,7 +247,14 @@ bool vtkMedialPowerComplex::Build(
       box[2 * k + 1] = std::max(box[2 * k + 1], c[k]);
     }
   }
-  Triangulation::Lock_data_structure locks(CGAL::Bbox_3(box[0], box[2], box[4], box[1], box[3], box[5]), 50);
+  // The lock grid's box, padded so that it has a volume also when the centres are
+  // coplanar (rejected below) or equal.
+  const double pad = 1e-6 * std::sqrt((box[1] - box[0]) * (box[1] - box[0]) + (box[3] - box[2]) * (box[3] - box[2]) +
+                             (box[5] - box[4]) * (box[5] - box[4])) +
+    1e-9 * (1.0 + std::max({ std::fabs(box[0]), std::fabs(box[1]), std::fabs(box[2]), std::fabs(box[3]),
+                   std::fabs(box[4]), std::fabs(box[5]) }));
+  Triangulation::Lock_data_structure locks(
+    CGAL::Bbox_3(box[0] - pad, box[2] - pad, box[4] - pad, box[1] + pad, box[3] + pad, box[5] + pad), 50);
   Triangulation triangulation(&locks);
   tbb::task_arena arena(std::max(1, threads));
   arena.execute([&]() { triangulation.insert(points.begin(), points.end()); });
@@ -266,7 +273,7 @@ bool vtkMedialPowerComplex::Build(
   // so that nothing depends on CGAL's internal order.
   this->IndexTetrahedra(&triangulation, threads);
   this->IndexTriangles(threads);
-  this->IndexEdges();
+  this->IndexEdges(threads);
   this->ClassifyUnion(threads);
   return true;
 }
@@ -370,7 +377,7 @@ void vtkMedialPowerComplex::IndexTriangles(int threads)
   }
 }
 
-void vtkMedialPowerComplex::IndexEdges()
+void vtkMedialPowerComplex::IndexEdges(int threads)
 {
   // The sides of the triangles, grouped by their first ball (a counting sort), then
   // sorted by the second within each group: the edges in canonical order, and for
@@ -408,9 +415,17 @@ void vtkMedialPowerComplex::IndexEdges()
   this->EdgeVertices.clear();
   this->EdgeTriangleStart.clear();
   this->EdgeTriangleList.resize(3 * nf);
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
   for (vtkIdType a = 0; a < nb; ++a)
   {
     std::sort(uses.begin() + start[a], uses.begin() + start[a + 1]);
+  }
+  // V - E + F - T = 1 for a triangulated ball: the edges' number, reserved.
+  const vtkIdType vertices = std::count(this->BallIsVertex.begin(), this->BallIsVertex.end(), char(1));
+  this->EdgeVertices.reserve(std::max<vtkIdType>(0, vertices + nf - this->GetNumberOfTetrahedra() - 1));
+  this->EdgeTriangleStart.reserve(this->EdgeVertices.capacity() + 1);
+  for (vtkIdType a = 0; a < nb; ++a)
+  {
     for (vtkIdType k = start[a]; k < start[a + 1]; ++k)
     {
       const Use& u = uses[k];

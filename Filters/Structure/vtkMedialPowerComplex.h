@@ -94,7 +94,7 @@ public:
 private:
   void IndexTetrahedra(void* cgalTriangulation, int threads);
   void IndexTriangles(int threads);
-  void IndexEdges();
+  void IndexEdges(int threads);
   void ClassifyUnion(int threads);
 
   const std::vector<double>* Centres = nullptr;
