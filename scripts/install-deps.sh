@@ -10,7 +10,7 @@ export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq \
   cmake ninja-build g++ make libvtk9-dev python3-vtk9 vtk9 python3-numpy \
-  libboost-dev libcgal-dev libtbb-dev libeigen3-dev xvfb xauth libgl1-mesa-dri openmpi-bin libopenmpi-dev chromium doxygen >/dev/null
+  libboost-dev libcgal-dev libeigen3-dev xvfb xauth libgl1-mesa-dri openmpi-bin libopenmpi-dev chromium doxygen >/dev/null
 if ! command -v npm >/dev/null 2>&1 || ! command -v node >/dev/null 2>&1; then
   $SUDO apt-get install -y -qq nodejs npm >/dev/null
 fi

@@ -4,11 +4,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Regular_triangulation_3.h>
-#include <CGAL/Spatial_lock_grid_3.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
-
-#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,15 +19,11 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<vtkIdType, Kernel,
   CGAL::Regular_triangulation_vertex_base_3<Kernel>>;
 // Hidden balls are not kept in the cells (nothing asks for them: BallIsVertex is read
-// from the vertices). The triangulation is built in parallel (TBB, a grid of locks);
-// a regular triangulation is unique (CGAL's symbolic perturbation), and every simplex
-// is indexed in a canonical order below, so the result does not depend on the thread
-// count or on the order of insertion.
+// from the vertices).
 using CellBase = CGAL::Triangulation_cell_base_with_info_3<vtkIdType, Kernel,
   CGAL::Regular_triangulation_cell_base_3<Kernel, CGAL::Triangulation_cell_base_3<Kernel>, CGAL::Discard_hidden_points>>;
-using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase, CGAL::Parallel_tag>;
-using Triangulation =
-  CGAL::Regular_triangulation_3<Kernel, Tds, CGAL::Spatial_lock_grid_3<CGAL::Tag_priority_blocking>>;
+using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase>;
+using Triangulation = CGAL::Regular_triangulation_3<Kernel, Tds>;
 using WeightedPoint = Kernel::Weighted_point_3;
 using Cell = Triangulation::Cell_handle;
 
@@ -215,49 +208,14 @@ bool vtkMedialPowerComplex::Build(
     error = "fewer than four balls";
     return false;
   }
-  // Equal balls (same centre and radius) would leave the vertex to whichever is
-  // inserted first: only the first of them (smallest id) is inserted, the others are
-  // hidden by it as a later copy would be.
-  std::vector<vtkIdType> byPosition(nb);
-  std::iota(byPosition.begin(), byPosition.end(), vtkIdType(0));
-  auto ball = [&](vtkIdType i) {
-    return std::array<double, 4>{ centres[3 * i], centres[3 * i + 1], centres[3 * i + 2], radii[i] };
-  };
-  std::sort(byPosition.begin(), byPosition.end(),
-    [&](vtkIdType a, vtkIdType b) { return ball(a) < ball(b) || (ball(a) == ball(b) && a < b); });
-  std::vector<char> copy(nb, 0);
-  for (vtkIdType k = 1; k < nb; ++k)
-  {
-    copy[byPosition[k]] = ball(byPosition[k]) == ball(byPosition[k - 1]);
-  }
-  byPosition = {};
   std::vector<std::pair<WeightedPoint, vtkIdType>> points;
   points.reserve(nb);
-  double box[6] = { HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL };
   for (vtkIdType i = 0; i < nb; ++i)
   {
     const double* c = &centres[3 * i];
-    if (!copy[i])
-    {
-      points.emplace_back(WeightedPoint(Kernel::Point_3(c[0], c[1], c[2]), radii[i] * radii[i]), i);
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      box[2 * k] = std::min(box[2 * k], c[k]);
-      box[2 * k + 1] = std::max(box[2 * k + 1], c[k]);
-    }
+    points.emplace_back(WeightedPoint(Kernel::Point_3(c[0], c[1], c[2]), radii[i] * radii[i]), i);
   }
-  // The lock grid's box, padded so that it has a volume also when the centres are
-  // coplanar (rejected below) or equal.
-  const double pad = 1e-6 * std::sqrt((box[1] - box[0]) * (box[1] - box[0]) + (box[3] - box[2]) * (box[3] - box[2]) +
-                             (box[5] - box[4]) * (box[5] - box[4])) +
-    1e-9 * (1.0 + std::max({ std::fabs(box[0]), std::fabs(box[1]), std::fabs(box[2]), std::fabs(box[3]),
-                   std::fabs(box[4]), std::fabs(box[5]) }));
-  Triangulation::Lock_data_structure locks(
-    CGAL::Bbox_3(box[0] - pad, box[2] - pad, box[4] - pad, box[1] + pad, box[3] + pad, box[5] + pad), 50);
-  Triangulation triangulation(&locks);
-  tbb::task_arena arena(std::max(1, threads));
-  arena.execute([&]() { triangulation.insert(points.begin(), points.end()); });
+  Triangulation triangulation(points.begin(), points.end());
   points = {};
   if (triangulation.dimension() < 3)
   {

@@ -2,11 +2,10 @@
 // The medial mesh is the same, bit for bit, on 1, 2 and 4 threads where the regular
 // triangulation is most degenerate: balls on a cubic lattice inside a box (every cell's
 // eight centres cospherical, radii equal in whole layers), some of them given twice. The
-// triangulation is inserted in parallel (CGAL with TBB); it is unique only through CGAL's
-// symbolic perturbation and the canonical indexing of vtkMedialPowerComplex, and equal
-// balls must leave the vertex to the same one whatever the insertion order. Then a
-// sampled torus at 12,000 balls (enough for the lock grid to be contended). Each mesh
-// also has the solid's topology.
+// triangulation is unique only through CGAL's symbolic perturbation; its simplices are
+// indexed canonically (vtkMedialPowerComplex, groups sorted in parallel) and the complex's
+// query loops run in a thread-independent order. Then a sampled torus at 12,000 balls.
+// Each mesh also has the solid's topology.
 #include "MedialMeshTestUtilities.h"
 
 #include "vtkDoubleArray.h"
