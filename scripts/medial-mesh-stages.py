@@ -3,11 +3,14 @@
 """Process CPU and wall time of each stage of vtkMedialMeshFilter (and of the sampling).
 
 usage: /usr/bin/python3 scripts/medial-mesh-stages.py PYTHONPATH SURFACE SAMPLES THREADS [SEED] [--no-exact]
+       [--repair=none]
 
 PYTHONPATH is the build's package folder (build/lib/python3/dist-packages). The stages are the
 filter's progress texts and its ball classifier's; a stage ends where the next one begins.
 CPU time (time.process_time, all threads) is the figure to compare on a shared machine.
 --no-exact: the classifier without its exact seam and junction balls.
+--repair=none: neither the sampler nor the mesh filter checks or repairs the surface (RepairMode
+NONE), so that the mesh filter's own stages are timed without the repair's.
 """
 import os
 import sys
@@ -37,6 +40,9 @@ def main():
     sampler.SetNumberOfSamples(samples)
     sampler.SetNumberOfThreads(threads)
     sampler.SetRandomSeed(seed)
+    no_repair = "--repair=none" in sys.argv
+    if no_repair:
+        sampler.SetRepairMode(medialaxis.vtkMedialRepairFilter.NONE)
     cpu, wall = time.process_time(), time.time()
     sampler.Update()
     sampling = (time.process_time() - cpu, time.time() - wall)
@@ -45,6 +51,8 @@ def main():
     mesh.SetInputData(reader.GetOutput())
     mesh.SetBallsConnection(sampler.GetOutputPort())
     mesh.SetNumberOfThreads(threads)
+    if no_repair:
+        mesh.SetRepairMode(medialaxis.vtkMedialRepairFilter.NONE)
     stages = []  # [text, cpu, wall] in order of first appearance, summed over returns
     current = {"text": None, "cpu": 0.0, "wall": 0.0}
 
@@ -78,7 +86,8 @@ def main():
 
     with open("/proc/loadavg") as f:
         load = f.read().split()[0]
-    print("%s, %d samples, %d threads, seed %d, load %s" % (os.path.basename(path), samples, threads, seed, load))
+    print("%s, %d samples, %d threads, seed %d, repair %s, load %s"
+          % (os.path.basename(path), samples, threads, seed, "none" if no_repair else "default", load))
     print("  %-40s %9s %9s" % ("stage", "cpu_s", "wall_s"))
     print("  %-40s %9.2f %9.2f" % ("sampling", sampling[0], sampling[1]))
     for text, c, w in stages:

@@ -25,12 +25,25 @@ enum ContainmentState : char
   CROSSES = 2
 };
 
-// The n simplices in the spatial order of one of their balls, ballOf(i)
-// (vtkMedialSpatialOrder.h): the loops of surface queries run in this order.
+// The n simplices in the spatial order of one of their balls, ballOf(i), given each
+// ball's rank in that order (vtkMedialSpatialOrder.h): the loops of surface queries run
+// in this order. A stable counting sort on the rank; only the order in which independent
+// queries run depends on it, never a result.
 template <class BallOf>
-std::vector<vtkIdType> OrderByBall(const std::vector<std::uint64_t>& ballKeys, vtkIdType n, BallOf ballOf)
+std::vector<vtkIdType> OrderByBall(const std::vector<vtkIdType>& ballRanks, vtkIdType n, BallOf ballOf)
 {
-  return vtkMedialSpatialOrder::Order(n, [&](vtkIdType i) { return ballKeys[ballOf(i)]; });
+  std::vector<vtkIdType> start(ballRanks.size() + 1, 0);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    ++start[ballRanks[ballOf(i)] + 1];
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<vtkIdType> order(static_cast<size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    order[start[ballRanks[ballOf(i)]]++] = i;
+  }
+  return order;
 }
 }
 
@@ -44,10 +57,12 @@ bool vtkMedialMeshComplex::Build(const vtkMedialPowerComplex& power, const vtkMe
   this->Stats = Statistics();
   this->EdgeState.assign(power.GetNumberOfEdges(), UNKNOWN);
   const vtkIdType nb = static_cast<vtkIdType>(balls.Radii->size());
-  this->BallKeys.resize(nb);
-  for (vtkIdType b = 0; b < nb; ++b)
+  const std::vector<vtkIdType> ballOrder = vtkMedialSpatialOrder::Order(
+    nb, [&](vtkIdType b) { return vtkMedialSpatialOrder::Key(this->Centre(b), query.GetMesh()->Bounds); });
+  this->BallRanks.resize(nb);
+  for (vtkIdType k = 0; k < nb; ++k)
   {
-    this->BallKeys[b] = vtkMedialSpatialOrder::Key(this->Centre(b), query.GetMesh()->Bounds);
+    this->BallRanks[ballOrder[k]] = k;
   }
   this->TriangleState.assign(power.GetNumberOfTriangles(), UNKNOWN);
   auto stop = [&aborted]() { return aborted && aborted(); };
@@ -124,7 +139,7 @@ void vtkMedialMeshComplex::SelectCandidates()
     lo[k] = mesh.Bounds[2 * k] - 1e-3 * mesh.Diagonal;
     hi[k] = mesh.Bounds[2 * k + 1] + 1e-3 * mesh.Diagonal;
   }
-  const std::vector<vtkIdType> tetOrder = OrderByBall(this->BallKeys, nt, [&](vtkIdType t) { return p.TetVertices[t][0]; });
+  const std::vector<vtkIdType> tetOrder = OrderByBall(this->BallRanks, nt, [&](vtkIdType t) { return p.TetVertices[t][0]; });
 #pragma omp parallel for schedule(dynamic, 256) num_threads(this->Threads)
   for (vtkIdType k = 0; k < nt; ++k)
   {
@@ -136,7 +151,7 @@ void vtkMedialMeshComplex::SelectCandidates()
   // through the triangle's own power centre (GetTriangleDual), which keeps its digits
   // near the shape when those power centres are far off.
   const std::vector<vtkIdType> triangleOrder =
-    OrderByBall(this->BallKeys, nf, [&](vtkIdType f) { return p.TriangleVertices[f][0]; });
+    OrderByBall(this->BallRanks, nf, [&](vtkIdType f) { return p.TriangleVertices[f][0]; });
 #pragma omp parallel for schedule(dynamic, 256) num_threads(this->Threads)
   for (vtkIdType k = 0; k < nf; ++k)
   {
@@ -175,7 +190,7 @@ void vtkMedialMeshComplex::KeepContained()
   }
   // Edges, then triangles (which read their edges' states): each state is written by
   // one thread only.
-  const std::vector<vtkIdType> edgeOrder = OrderByBall(this->BallKeys, ne, [&](vtkIdType e) { return p.EdgeVertices[e][0]; });
+  const std::vector<vtkIdType> edgeOrder = OrderByBall(this->BallRanks, ne, [&](vtkIdType e) { return p.EdgeVertices[e][0]; });
 #pragma omp parallel for schedule(dynamic, 256) num_threads(this->Threads)
   for (vtkIdType k = 0; k < ne; ++k)
   {
@@ -186,7 +201,7 @@ void vtkMedialMeshComplex::KeepContained()
     }
   }
   const std::vector<vtkIdType> triangleOrder =
-    OrderByBall(this->BallKeys, nf, [&](vtkIdType f) { return p.TriangleVertices[f][0]; });
+    OrderByBall(this->BallRanks, nf, [&](vtkIdType f) { return p.TriangleVertices[f][0]; });
 #pragma omp parallel for schedule(dynamic, 64) num_threads(this->Threads)
   for (vtkIdType k = 0; k < nf; ++k)
   {
@@ -548,7 +563,7 @@ public:
     const vtkIdType ne = static_cast<vtkIdType>(edges.size()), nt = static_cast<vtkIdType>(triangles.size());
     const vtkMedialPowerComplex& p = *this->Complex.Power;
     const std::vector<vtkIdType> edgeOrder =
-      OrderByBall(this->Complex.BallKeys, ne, [&](vtkIdType k) { return p.EdgeVertices[edges[k]][0]; });
+      OrderByBall(this->Complex.BallRanks, ne, [&](vtkIdType k) { return p.EdgeVertices[edges[k]][0]; });
 #pragma omp parallel for schedule(dynamic, 256) num_threads(this->Complex.Threads)
     for (vtkIdType k = 0; k < ne; ++k)
     {
@@ -556,7 +571,7 @@ public:
       this->Edge[e] = this->ProbeEdge(e);
     }
     const std::vector<vtkIdType> triangleOrder =
-      OrderByBall(this->Complex.BallKeys, nt, [&](vtkIdType k) { return p.TriangleVertices[triangles[k]][0]; });
+      OrderByBall(this->Complex.BallRanks, nt, [&](vtkIdType k) { return p.TriangleVertices[triangles[k]][0]; });
 #pragma omp parallel for schedule(dynamic, 64) num_threads(this->Complex.Threads)
     for (vtkIdType k = 0; k < nt; ++k)
     {

@@ -163,7 +163,7 @@ private:
   std::vector<char> TetIn, TriangleIn, EdgeIn, VertexIn;
   std::vector<char> TetCandidate, TriangleCandidate;
   std::vector<char> EdgeState, TriangleState;
-  std::vector<std::uint64_t> BallKeys; // spatial order of the balls (vtkMedialSpatialOrder.h)
+  std::vector<vtkIdType> BallRanks; // each ball's rank in the spatial order (vtkMedialSpatialOrder.h)
 };
 
 #endif

@@ -18,20 +18,47 @@ namespace
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<vtkIdType, Kernel,
   CGAL::Regular_triangulation_vertex_base_3<Kernel>>;
+// Hidden balls are not kept in the cells (nothing asks for them: BallIsVertex is read
+// from the vertices).
 using CellBase = CGAL::Triangulation_cell_base_with_info_3<vtkIdType, Kernel,
-  CGAL::Regular_triangulation_cell_base_3<Kernel>>;
+  CGAL::Regular_triangulation_cell_base_3<Kernel, CGAL::Triangulation_cell_base_3<Kernel>, CGAL::Discard_hidden_points>>;
 using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase>;
 using Triangulation = CGAL::Regular_triangulation_3<Kernel, Tds>;
 using WeightedPoint = Kernel::Weighted_point_3;
 using Cell = Triangulation::Cell_handle;
 
-// The permutation that sorts `keys`: order[k] is the index of the k-th smallest.
-template <class Key>
-std::vector<vtkIdType> SortedOrder(const std::vector<Key>& keys)
+// The permutation that sorts `keys` (distinct sorted ball ids, each below `balls`):
+// order[k] is the index of the k-th smallest. A counting sort on the first ball, then a
+// sort of each (short) group in place: a few passes over contiguous memory instead of
+// a comparison sort that reads the keys at random.
+template <size_t N>
+std::vector<vtkIdType> SortedOrder(const std::vector<std::array<vtkIdType, N>>& keys, vtkIdType balls, int threads)
 {
-  std::vector<vtkIdType> order(keys.size());
-  std::iota(order.begin(), order.end(), vtkIdType(0));
-  std::sort(order.begin(), order.end(), [&keys](vtkIdType a, vtkIdType b) { return keys[a] < keys[b]; });
+  const vtkIdType n = static_cast<vtkIdType>(keys.size());
+  std::vector<vtkIdType> start(balls + 1, 0);
+  for (const auto& key : keys)
+  {
+    ++start[key[0] + 1];
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<std::pair<std::array<vtkIdType, N>, vtkIdType>> grouped(n);
+  {
+    std::vector<vtkIdType> fill(start.begin(), start.end() - 1);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      grouped[fill[keys[i][0]]++] = { keys[i], i };
+    }
+  }
+  std::vector<vtkIdType> order(n);
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
+  for (vtkIdType b = 0; b < balls; ++b)
+  {
+    std::sort(grouped.begin() + start[b], grouped.begin() + start[b + 1]);
+    for (vtkIdType k = start[b]; k < start[b + 1]; ++k)
+    {
+      order[k] = grouped[k].second;
+    }
+  }
   return order;
 }
 
@@ -202,14 +229,14 @@ bool vtkMedialPowerComplex::Build(
   }
   // Every simplex from here on is in a canonical order (sorted by its sorted ball ids),
   // so that nothing depends on CGAL's internal order.
-  this->IndexTetrahedra(&triangulation);
-  this->IndexTriangles();
-  this->IndexEdges();
+  this->IndexTetrahedra(&triangulation, threads);
+  this->IndexTriangles(threads);
+  this->IndexEdges(threads);
   this->ClassifyUnion(threads);
   return true;
 }
 
-void vtkMedialPowerComplex::IndexTetrahedra(void* cgalTriangulation)
+void vtkMedialPowerComplex::IndexTetrahedra(void* cgalTriangulation, int threads)
 {
   Triangulation& triangulation = *static_cast<Triangulation*>(cgalTriangulation);
   vtkIdType raw = 0;
@@ -229,7 +256,8 @@ void vtkMedialPowerComplex::IndexTetrahedra(void* cgalTriangulation)
     }
     std::sort(key.begin(), key.end());
   }
-  const std::vector<vtkIdType> order = SortedOrder(keys);
+  const vtkIdType nb = static_cast<vtkIdType>(this->BallIsVertex.size());
+  const std::vector<vtkIdType> order = SortedOrder(keys, nb, threads);
   const std::vector<vtkIdType> rank = Inverse(order);
   this->TetVertices.resize(raw);
   this->TetNeighbours.resize(raw);
@@ -247,14 +275,20 @@ void vtkMedialPowerComplex::IndexTetrahedra(void* cgalTriangulation)
   }
 }
 
-void vtkMedialPowerComplex::IndexTriangles()
+void vtkMedialPowerComplex::IndexTriangles(int threads)
 {
   // Each triangle once, from the tetrahedron with the smaller index (or the finite one).
   const vtkIdType nt = this->GetNumberOfTetrahedra();
   std::vector<std::array<vtkIdType, 3>> keys;
   std::vector<std::array<vtkIdType, 2>> sides; // (tetrahedron, slot of the opposite vertex)
-  keys.reserve(2 * nt + 16);
-  sides.reserve(2 * nt + 16);
+  // (4 nt + h) / 2 triangles, h of them on the hull: reserved exactly, nothing is copied.
+  vtkIdType hull = 0;
+  for (const auto& neighbours : this->TetNeighbours)
+  {
+    hull += std::count(neighbours.begin(), neighbours.end(), vtkIdType(-1));
+  }
+  keys.reserve((4 * nt + hull) / 2);
+  sides.reserve((4 * nt + hull) / 2);
   for (vtkIdType t = 0; t < nt; ++t)
   {
     const auto& v = this->TetVertices[t];
@@ -277,7 +311,8 @@ void vtkMedialPowerComplex::IndexTriangles()
       sides.push_back({ t, s });
     }
   }
-  const std::vector<vtkIdType> order = SortedOrder(keys);
+  const std::vector<vtkIdType> order =
+    SortedOrder(keys, static_cast<vtkIdType>(this->BallIsVertex.size()), threads);
   const vtkIdType nf = static_cast<vtkIdType>(keys.size());
   this->TriangleVertices.resize(nf);
   this->TriangleTets.resize(nf);
@@ -300,7 +335,7 @@ void vtkMedialPowerComplex::IndexTriangles()
   }
 }
 
-void vtkMedialPowerComplex::IndexEdges()
+void vtkMedialPowerComplex::IndexEdges(int threads)
 {
   // The sides of the triangles, grouped by their first ball (a counting sort), then
   // sorted by the second within each group: the edges in canonical order, and for
@@ -338,9 +373,17 @@ void vtkMedialPowerComplex::IndexEdges()
   this->EdgeVertices.clear();
   this->EdgeTriangleStart.clear();
   this->EdgeTriangleList.resize(3 * nf);
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
   for (vtkIdType a = 0; a < nb; ++a)
   {
     std::sort(uses.begin() + start[a], uses.begin() + start[a + 1]);
+  }
+  // V - E + F - T = 1 for a triangulated ball: the edges' number, reserved.
+  const vtkIdType vertices = std::count(this->BallIsVertex.begin(), this->BallIsVertex.end(), char(1));
+  this->EdgeVertices.reserve(std::max<vtkIdType>(0, vertices + nf - this->GetNumberOfTetrahedra() - 1));
+  this->EdgeTriangleStart.reserve(this->EdgeVertices.capacity() + 1);
+  for (vtkIdType a = 0; a < nb; ++a)
+  {
     for (vtkIdType k = start[a]; k < start[a + 1]; ++k)
     {
       const Use& u = uses[k];

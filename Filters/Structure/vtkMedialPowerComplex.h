@@ -5,9 +5,10 @@
  * indexed, with the dual complex of their union marked on it.
  *
  * Build() triangulates the centres with weights r^2 (CGAL's Regular_triangulation_3,
- * exact predicates) and copies every simplex into plain arrays in a canonical order
- * (simplices sorted by their sorted ball ids), so that nothing depends on CGAL's
- * internal order; the edges come with the triangles on each. Balls hidden by the
+ * exact predicates; hidden balls are not kept) and copies every simplex into plain
+ * arrays in a canonical order (simplices sorted by their sorted ball ids, a counting sort
+ * on the first), so that nothing depends on CGAL's internal order or on the thread
+ * count; the edges come with the triangles on each. Balls hidden by the
  * others (an empty power cell) are not vertices; their ball is covered by the union of
  * the others.
  *
@@ -45,8 +46,8 @@ class vtkMedialPowerComplex
 {
 public:
   /// Triangulates the balls (3 coordinates per centre, one radius each; both must
-  /// outlive this object), with `threads` OpenMP threads for the classification (the
-  /// result does not depend on it). Returns false with a reason when there are fewer
+  /// outlive this object), with `threads` OpenMP threads for the indexing and the
+  /// classification (the result does not depend on it). Returns false with a reason when there are fewer
   /// than four balls or the centres are coplanar.
   bool Build(const std::vector<double>& centres, const std::vector<double>& radii, int threads, std::string& error);
 
@@ -90,9 +91,9 @@ public:
   std::vector<char> VertexInUnion;
 
 private:
-  void IndexTetrahedra(void* cgalTriangulation);
-  void IndexTriangles();
-  void IndexEdges();
+  void IndexTetrahedra(void* cgalTriangulation, int threads);
+  void IndexTriangles(int threads);
+  void IndexEdges(int threads);
   void ClassifyUnion(int threads);
 
   const std::vector<double>* Centres = nullptr;
