@@ -11,7 +11,8 @@
 // solid's Euler characteristic. The repair's report names the step each defect needs.
 // The filters' repair, which starts from the mesh, tree and check their preparation
 // made (vtkMedialRepairFilter::SetCheckedInput), must give the surface the repair alone
-// gives: the same triangles, bit for bit.
+// gives: the same triangles, bit for bit (where the repair is repeatable: not after the
+// union or the autorefinement, whose triangles vary from run to run).
 // Run with the argument "none" the same checks run without the repair (RepairMode
 // NONE) and fail: that is how the test shows it can fail.
 #include "MedialRepairTestUtilities.h"
@@ -209,21 +210,12 @@ int TestMedialRepairDefects(int argc, char* argv[])
     {
       fail("the medial mesh's Euler characteristic is not the solid's");
     }
-    if (!none && !SameSurface(RepairFromChecked(d.Surface), repair->GetOutput()))
+    // CGAL's exact steps (the union, the autorefinement) do not give the same triangles
+    // from one run to the next: those defects are left out of the bit-for-bit comparison.
+    const bool exactSteps = HasLine(repair, "union:") || HasLine(repair, "self-intersections:");
+    if (!none && !exactSteps && !SameSurface(RepairFromChecked(d.Surface), repair->GetOutput()))
     {
-      // Only where the repair alone gives the same surface twice (CGAL's exact steps
-      // may not: the union and the autorefinement).
-      vtkNew<vtkMedialRepairFilter> again;
-      again->SetInputData(d.Surface);
-      again->SetReportSteps(false);
-      again->Update();
-      const bool repeatable = SameSurface(again->GetOutput(), repair->GetOutput());
-      std::printf("  %s: the repair alone %s the same surface twice\n", d.Name.c_str(),
-        repeatable ? "gives" : "does not give");
-      if (repeatable)
-      {
-        fail("the repair started from a filter's preparation differs from the repair alone");
-      }
+      fail("the repair started from a filter's preparation differs from the repair alone");
     }
   }
   std::printf("%d failures%s\n", failures, none ? " (without the repair, as expected)" : "");
