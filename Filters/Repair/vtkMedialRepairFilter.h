@@ -195,6 +195,7 @@ public:
     this->CheckedQuery = query;
     this->CheckedResult = check;
   }
+  /// Forgets what SetCheckedInput gave: the next update prepares its input itself.
   void ClearCheckedInput() { this->SetCheckedInput(nullptr, nullptr, nullptr); }
 
   /// Internal: CGAL's exact test of triangle pairs (as PMP::self_intersections decides
