@@ -667,7 +667,6 @@ struct Scratch
   std::vector<PendingLane> CapLanes; // InscribeInCap's stack
   std::vector<std::int32_t> LowNodes; // lanes wholly below the cap's plane when met
   std::vector<float> LowHeights;      // the top of each (an upper bound of n.(q - p))
-  std::vector<std::int32_t> LooseLanes; // let go by the loose mode (measured with MeasureProtrusion)
 };
 Scratch& ThreadScratch()
 {
@@ -680,7 +679,6 @@ Scratch& ThreadScratch()
   scratch.CapLanes.clear();
   scratch.LowNodes.clear();
   scratch.LowHeights.clear();
-  scratch.LooseLanes.clear();
   return scratch;
 }}
 
@@ -1746,15 +1744,16 @@ public:
       }
     }
     this->Result.Radius = this->Radius;
+    if (this->CutShort && this->Measure)
+    {
+      // Surface that the loose culling skipped may enter the ball by up to LooseDepth.
+      this->Result.LargestProtrusion = std::max(this->Result.LargestProtrusion, this->LooseDepth);
+    }
     const bool shrink = this->Inscribe && this->Allowed < this->Radius;
     const bool measure = this->Measure && this->Result.LargestProtrusion < this->Radius;
     if (shrink || measure)
     {
       this->InscribeInCap(shrink, measure);
-    }
-    if (this->Measure && this->CutShort)
-    {
-      this->MeasureLooseLanes();
     }
   }
 
@@ -2049,66 +2048,8 @@ private:
     {
       return false;
     }
-    if (!(bound >= (this->Radius - this->Slack) * (1.0 + 1e-9) + 10.0 * this->Tree.RoundingPad))
-    {
-      this->CutShort = true;
-      if (this->Measure)
-      {
-        this->Work.LooseLanes.push_back(ref);
-      }
-    }
+    this->CutShort = this->CutShort || !(bound >= (this->Radius - this->Slack) * (1.0 + 1e-9) + 10.0 * this->Tree.RoundingPad);
     return true;
-  }
-
-  // With MeasureProtrusion: the surface under the lanes that the loose mode let go may
-  // enter the final ball (by less than LooseDepth); its closest point to the centre within
-  // Radius - LargestProtrusion raises the ball's protrusion, so the measure stays exact.
-  // The ball itself is not changed.
-  void MeasureLooseLanes()
-  {
-    double reach = this->Radius - this->Result.LargestProtrusion;
-    std::vector<std::int32_t>& stack = this->Work.Stack;
-    stack.clear();
-    for (std::int32_t root : this->Work.LooseLanes)
-    {
-      stack.push_back(root);
-      while (!stack.empty() && reach > 0.0)
-      {
-        const std::int32_t ref = stack.back();
-        stack.pop_back();
-        if (this->SphereBound(ref) >= reach * (1.0 + 1e-9) + 10.0 * this->Tree.RoundingPad)
-        {
-          continue;
-        }
-        const std::int32_t child = this->Tree.WideNodes[WideOf(ref)].Child[LaneOf(ref)];
-        if (child < 0)
-        {
-          const LeafSlots leaf(child);
-          for (std::int32_t slot = leaf.Start; slot < leaf.End; ++slot)
-          {
-            double scratch[9], q[3];
-            const double* a = this->Tree.Corners(slot, scratch);
-            if (G::NearestVertexDistance2(this->Centre, a, a + 3, a + 6) - this->Tree.LeafTriangles[slot].EdgeThird >=
-              this->ClearOf(reach))
-            {
-              continue;
-            }
-            const double d = std::sqrt(G::ClosestPointOnTriangle(this->Centre, a, a + 3, a + 6, q));
-            reach = std::min(reach, d);
-          }
-          continue;
-        }
-        const WideNode& wide = this->Tree.WideNodes[child];
-        for (int i = 0; i < 4; ++i)
-        {
-          if (wide.Lo[0][i] <= wide.Hi[0][i]) // not empty
-          {
-            stack.push_back(4 * child + i);
-          }
-        }
-      }
-    }
-    this->Result.LargestProtrusion = std::max(this->Result.LargestProtrusion, this->Radius - reach);
   }
 
   // A lower bound of the distance from the centre to the surface under lane `ref`,

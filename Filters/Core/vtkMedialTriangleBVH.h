@@ -149,8 +149,8 @@ public:
    * A search that has visited 1024 triangles with an allowed protrusion (theta > 0)
    * turns loose: lanes whose inner sphere (LaneSphere) keeps their surface within
    * allowed / 2 of the ball's sphere are not opened, so the ball may be entered by up
-   * to that (still within `allowed`); with MeasureProtrusion the surface under those
-   * lanes is searched afterwards, so the measure stays exact (the ball is the same). This bounds the cost of balls centred in a finely
+   * to that (still within `allowed`); with MeasureProtrusion such a ball counts as
+   * protruding by allowed / 2. This bounds the cost of balls centred in a finely
    * tessellated sphere, which lie within rounding of every facet. No shared mesh's
    * search comes near the count (at most about 1000 on the Stanford bunny, 500 elsewhere).
    */
