@@ -877,12 +877,7 @@ bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh, const std::f
     return false;
   }
   this->CopyInLeafOrder(mesh);
-  if (!this->BuildWideNodes(mesh))
-  {
-    return false;
-  }
-  this->MeasureLaneSpheres();
-  return true;
+  return this->BuildWideNodes(mesh);
 }
 
 bool vtkMedialTriangleBVH::BuildNodes(const vtkMedialTriangleMesh& mesh, const std::function<bool()>& aborted)
@@ -1124,207 +1119,6 @@ void vtkMedialTriangleBVH::WriteWideNode(
     if (node.Count > 0)
     {
       std::fill_n(&this->LeafLane[node.Start], node.Count, 4 * index + i);
-    }
-  }
-}
-
-namespace
-{
-// Sums over a set of points for fitting a sphere to them (Kasa's algebraic fit: least
-// squares of |x|^2 - 2 c.x - k), additive over subsets.
-struct SphereMoments
-{
-  double Count = 0.0;
-  double S[3] = { 0, 0, 0 };
-  double SS[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
-  double Q = 0.0;                // sum |x|^2
-  double QS[3] = { 0, 0, 0 };    // sum |x|^2 x
-  void Add(const double x[3])
-  {
-    const double q = G::Dot(x, x);
-    this->Count += 1.0;
-    this->Q += q;
-    for (int i = 0; i < 3; ++i)
-    {
-      this->S[i] += x[i];
-      this->QS[i] += q * x[i];
-      for (int j = 0; j < 3; ++j)
-      {
-        this->SS[i][j] += x[i] * x[j];
-      }
-    }
-  }
-  void Add(const SphereMoments& o)
-  {
-    this->Count += o.Count;
-    this->Q += o.Q;
-    for (int i = 0; i < 3; ++i)
-    {
-      this->S[i] += o.S[i];
-      this->QS[i] += o.QS[i];
-      for (int j = 0; j < 3; ++j)
-      {
-        this->SS[i][j] += o.SS[i][j];
-      }
-    }
-  }
-  // The fitted sphere's centre, solved about the points' mean (y = x - m: the centre
-  // is m + (sum y y^T)^-1 sum |y|^2 y / 2). False for fewer than 4 points or a flat set.
-  bool Centre(double c[3]) const
-  {
-    if (this->Count < 4.0)
-    {
-      return false;
-    }
-    const double n = this->Count;
-    const double m[3] = { this->S[0] / n, this->S[1] / n, this->S[2] / n };
-    const double mm = G::Dot(m, m);
-    const double qy = this->Q - n * mm;
-    double a[3][3], b[3];
-    for (int i = 0; i < 3; ++i)
-    {
-      for (int j = 0; j < 3; ++j)
-      {
-        a[i][j] = this->SS[i][j] - n * m[i] * m[j];
-      }
-      b[i] = 0.5 *
-        (this->QS[i] - 2.0 * (this->SS[i][0] * m[0] + this->SS[i][1] * m[1] + this->SS[i][2] * m[2]) +
-          n * mm * m[i] - m[i] * qy);
-    }
-    const double c00 = a[1][1] * a[2][2] - a[1][2] * a[2][1];
-    const double c01 = a[1][2] * a[2][0] - a[1][0] * a[2][2];
-    const double c02 = a[1][0] * a[2][1] - a[1][1] * a[2][0];
-    const double det = a[0][0] * c00 + a[0][1] * c01 + a[0][2] * c02;
-    const double scale = (a[0][0] + a[1][1] + a[2][2]) / 3.0;
-    if (!(std::fabs(det) > 1e-13 * scale * scale * scale))
-    {
-      return false;
-    }
-    const double x = (b[0] * c00 + b[1] * (a[0][2] * a[2][1] - a[0][1] * a[2][2]) +
-                       b[2] * (a[0][1] * a[1][2] - a[0][2] * a[1][1])) / det;
-    const double y = (b[0] * c01 + b[1] * (a[0][0] * a[2][2] - a[0][2] * a[2][0]) +
-                       b[2] * (a[0][2] * a[1][0] - a[0][0] * a[1][2])) / det;
-    const double z = (b[0] * c02 + b[1] * (a[0][1] * a[2][0] - a[0][0] * a[2][1]) +
-                       b[2] * (a[0][0] * a[1][1] - a[0][1] * a[1][0])) / det;
-    c[0] = m[0] + x;
-    c[1] = m[1] + y;
-    c[2] = m[2] + z;
-    return std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]);
-  }
-};
-
-// The float at or below v.
-float FloatBelow(double v)
-{
-  float f = static_cast<float>(v);
-  if (static_cast<double>(f) > v)
-  {
-    f = std::nextafter(f, -HUGE_VALF);
-  }
-  return f;
-}
-}
-
-void vtkMedialTriangleBVH::MeasureLaneSpheres()
-{
-  const std::int64_t wides = static_cast<std::int64_t>(this->WideNodes.size());
-  this->LaneSpheres.resize(4 * static_cast<size_t>(wides));
-  std::vector<SphereMoments> sums(static_cast<size_t>(wides)); // each wide node's, over its lanes
-  const double pad = 4.0 * this->RoundingPad;
-  const auto none = [](LaneSphere& sphere) {
-    sphere.Centre[0] = sphere.Centre[1] = sphere.Centre[2] = 0.0f;
-    sphere.Reach = -HUGE_VALF;
-  };
-  // The leaves, in parallel: each one's fit and its exact reach.
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::int64_t index = 0; index < wides; ++index)
-  {
-    const WideNode& wide = this->WideNodes[index];
-    for (int i = 0; i < 4; ++i)
-    {
-      LaneSphere& sphere = this->LaneSpheres[4 * index + i];
-      none(sphere);
-      if (wide.Child[i] >= 0)
-      {
-        continue; // inner or empty
-      }
-      const LeafSlots leaf(wide.Child[i]);
-      SphereMoments moments;
-      double scratch[9];
-      for (std::int32_t slot = leaf.Start; slot < leaf.End; ++slot)
-      {
-        const double* v = this->Corners(slot, scratch);
-        for (int corner = 0; corner < 3; ++corner)
-        {
-          double x[3];
-          G::Sub(v + 3 * corner, this->Origin, x);
-          moments.Add(x);
-        }
-      }
-      sums[index].Add(moments);
-      double c[3];
-      if (!moments.Centre(c))
-      {
-        continue;
-      }
-      double centre[3], reach2 = HUGE_VAL;
-      for (int k = 0; k < 3; ++k)
-      {
-        sphere.Centre[k] = static_cast<float>(c[k]);
-        centre[k] = static_cast<double>(sphere.Centre[k]) + this->Origin[k];
-      }
-      for (std::int32_t slot = leaf.Start; slot < leaf.End; ++slot)
-      {
-        const double* v = this->Corners(slot, scratch);
-        double q[3];
-        reach2 = std::min(reach2, G::ClosestPointOnTriangle(centre, v, v + 3, v + 6, q));
-      }
-      const double reach = std::sqrt(reach2);
-      sphere.Reach = FloatBelow(reach * (1.0 - 1e-12) - pad);
-    }
-  }
-  // The inner lanes bottom up (a child's wide node comes after its parent): the fit of
-  // the children's sums, the reach from the children's spheres (a point within the
-  // child's reach of its centre minus their distance is within it of the child's).
-  for (std::int64_t index = wides - 1; index >= 0; --index)
-  {
-    const WideNode& wide = this->WideNodes[index];
-    for (int i = 0; i < 4; ++i)
-    {
-      const std::int32_t child = wide.Child[i];
-      if (child <= 0)
-      {
-        continue; // a leaf (done), or empty
-      }
-      sums[index].Add(sums[child]);
-      LaneSphere& sphere = this->LaneSpheres[4 * index + i];
-      double c[3];
-      if (!sums[child].Centre(c))
-      {
-        continue;
-      }
-      for (int k = 0; k < 3; ++k)
-      {
-        sphere.Centre[k] = static_cast<float>(c[k]);
-      }
-      double reach = HUGE_VAL;
-      for (int j = 0; j < 4 && reach > -HUGE_VAL; ++j)
-      {
-        const WideNode& below = this->WideNodes[child];
-        if (below.Lo[0][j] > below.Hi[0][j])
-        {
-          continue; // empty lane
-        }
-        const LaneSphere& inner = this->LaneSpheres[4 * child + j];
-        double d[3];
-        for (int k = 0; k < 3; ++k)
-        {
-          d[k] = static_cast<double>(sphere.Centre[k]) - static_cast<double>(inner.Centre[k]);
-        }
-        const double r = static_cast<double>(inner.Reach) - std::sqrt(G::Dot(d, d));
-        reach = std::min(reach, r - 1e-12 * std::fabs(r) - pad);
-      }
-      sphere.Reach = reach < HUGE_VAL ? FloatBelow(reach) : -HUGE_VALF;
     }
   }
 }
@@ -1638,14 +1432,6 @@ std::int32_t vtkMedialTriangleBVH::SplitNode(BuildState& state, std::int32_t beg
 // The one-pass search of MaximalTangentBall: the shrinking ball and its culling
 // state, with the passes ShrinkOn (one triangle), Traverse (a subtree), InscribeInCap
 // and Run.
-namespace
-{
-// The tangent search's loose mode (TangentSearch::LooseDepth): after this many
-// triangles, lanes within this fraction of the allowed protrusion are let go.
-constexpr int LooseAfter = 1024;
-constexpr double LooseFraction = 0.5;
-}
-
 class vtkMedialTriangleBVH::TangentSearch
 {
 public:
@@ -1664,7 +1450,6 @@ public:
     , Inscribe(cosMinAngle < 1.0 && allowed < result.Radius)
     , Measure(cosMinAngle < 1.0 && result.MeasureProtrusion)
     , CollectCap(this->Inscribe || (this->Measure && result.LargestProtrusion < result.Radius))
-    , LooseDepth(cosMinAngle < 1.0 && std::isfinite(allowed) ? LooseFraction * allowed : 0.0)
     , Radius(result.Radius)
     , Result(result)
     , Work(ThreadScratch())
@@ -1744,11 +1529,6 @@ public:
       }
     }
     this->Result.Radius = this->Radius;
-    if (this->CutShort && this->Measure)
-    {
-      // Surface that the loose culling skipped may enter the ball by up to LooseDepth.
-      this->Result.LargestProtrusion = std::max(this->Result.LargestProtrusion, this->LooseDepth);
-    }
     const bool shrink = this->Inscribe && this->Allowed < this->Radius;
     const bool measure = this->Measure && this->Result.LargestProtrusion < this->Radius;
     if (shrink || measure)
@@ -1988,10 +1768,6 @@ private:
   // only in the cap is set aside for another look.
   void Visit(std::int32_t slot)
   {
-    if (++this->Visits == LooseAfter && this->LooseDepth > 0.0)
-    {
-      this->Loose = true;
-    }
     if (this->Tree.LeafTriangles[slot].Triangle != this->OwnTriangle && this->ShrinkOn(slot))
     {
       this->Work.Deferred.push_back(slot);
@@ -2002,7 +1778,7 @@ private:
   // The lanes among `within` (bit i: lane i) of wide node `index` that may hold
   // blockers of the current ball, their distances in `d2`. Lanes dropped for the cone
   // only are kept aside for InscribeInCap.
-  int OpenLanes(std::int32_t index, float d2[4], int within = 0xF)
+  int OpenLanes(std::int32_t index, float d2[4], int within = 0xF) const
   {
     FloatNodeTests::Lanes lanes;
     this->Fast->TestLanes(this->Tree.WideNodes[index], lanes);
@@ -2028,41 +1804,7 @@ private:
       }
     }
     std::copy_n(lanes.D2, 4, d2);
-    int keep = lanes.Keep & ~low & within;
-    for (int i = 0; this->Loose && keep && i < 4; ++i)
-    {
-      if ((keep & (1 << i)) && this->SphereClears(4 * index + i))
-      {
-        keep &= ~(1 << i);
-      }
-    }
-    return keep;
-  }
-
-  // Loose mode: the lane's inner sphere keeps its triangles out of the ball but for
-  // LooseDepth at most (CutShort when only that allowance let it go).
-  bool SphereClears(std::int32_t ref)
-  {
-    const double bound = this->SphereBound(ref);
-    if (!(bound >= this->Radius - this->LooseDepth))
-    {
-      return false;
-    }
-    this->CutShort = this->CutShort || !(bound >= (this->Radius - this->Slack) * (1.0 + 1e-9) + 10.0 * this->Tree.RoundingPad);
-    return true;
-  }
-
-  // A lower bound of the distance from the centre to the surface under lane `ref`,
-  // from its inner sphere (-inf where it has none).
-  double SphereBound(std::int32_t ref) const
-  {
-    const LaneSphere& sphere = this->Tree.LaneSpheres[ref];
-    double d[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      d[k] = this->CentreRel[k] - static_cast<double>(sphere.Centre[k]);
-    }
-    return static_cast<double>(sphere.Reach) - std::sqrt(G::Dot(d, d));
+    return lanes.Keep & ~low & within;
   }
 
   // Depth first, nearer lane first, from lane `root` without lane `skip`. A wide
@@ -2102,10 +1844,6 @@ private:
         {
           continue;
         }
-      }
-      if (this->Loose && this->SphereClears(ref))
-      {
-        continue;
       }
       const std::int32_t child = holder.Child[lane];
       if (child < 0)
@@ -2222,16 +1960,13 @@ private:
         }
         const WideNode& holder = this->Tree.WideNodes[WideOf(ref)];
         const int lane = LaneOf(ref);
-        // In float, as the children's tests (Fast follows best2): a looser test, never a wrong drop.
-        if (steps != shrinks && this->Fast->LaneMissesBall(holder, lane))
+        if (steps != shrinks)
         {
-          continue;
-        }
-        // The lane's inner sphere: in a finely tessellated sphere the cap's facets are
-        // all about as far from the centre, and no box keeps them out.
-        if (this->SphereBound(ref) >= std::sqrt(best2) * (1.0 + 1e-9) + 10.0 * this->Tree.RoundingPad)
-        {
-          continue;
+          // In float, as the children's tests (Fast follows best2): a looser test, never a wrong drop.
+          if (this->Fast->LaneMissesBall(holder, lane))
+          {
+            continue;
+          }
         }
         const std::int32_t child = holder.Child[lane];
         if (child < 0)
@@ -2284,14 +2019,6 @@ private:
   const bool Inscribe;   // a ball the cap enters deeper than Allowed is shrunk
   const bool Measure;    // the ball's protrusion raises Result.LargestProtrusion
   const bool CollectCap; // the cap's surface is set aside for InscribeInCap
-  // With an allowed protrusion (theta > 0), a search that has visited LooseAfter
-  // triangles becomes loose: lanes whose inner sphere keeps their surface within
-  // LooseDepth of the ball's sphere are not opened (CutShort: one that could have
-  // entered it was skipped). A ball centred in a finely tessellated sphere is within
-  // rounding of every facet, and an exact search would have to visit them all.
-  const double LooseDepth;
-  int Visits = 0;
-  bool Loose = false, CutShort = false;
   double Radius;
   double Clear2; // ClearOf(Radius - Slack)
   double Centre[3], PRel[3], CentreRel[3];

@@ -146,13 +146,6 @@ public:
    * enters the ball by more than the slack, and a ball shrunk to be inscribed only
    * touches. The search visits the same triangles in the same order, only further,
    * so the ball and its inscribed contact do not change.
-   * A search that has visited 1024 triangles with an allowed protrusion (theta > 0)
-   * turns loose: lanes whose inner sphere (LaneSphere) keeps their surface within
-   * allowed / 2 of the ball's sphere are not opened, so the ball may be entered by up
-   * to that (still within `allowed`); with MeasureProtrusion such a ball counts as
-   * protruding by allowed / 2. This bounds the cost of balls centred in a finely
-   * tessellated sphere, which lie within rounding of every facet. No shared mesh's
-   * search comes near the count (at most about 1000 on the Stanford bunny, 500 elsewhere).
    */
   void MaximalTangentBall(const double p[3], const double n[3], vtkIdType ownTriangle,
     double cosMinAngle, double slack, double allowed, TangentBall& result) const;
@@ -254,17 +247,6 @@ public:
     std::int32_t Child[4];
   };
 
-  // A lane's inner sphere: every triangle under the lane lies at least Reach from Centre
-  // (relative to Origin; Reach rounded down). The centre is the sphere fitted to the
-  // lane's corners, so on a curved patch seen from inside (a finely tessellated sphere's
-  // facets seen from near its centre) it bounds the distance within the facets' sagitta,
-  // where a box or a slab is off by the patch's bulge; elsewhere it culls little.
-  struct LaneSphere
-  {
-    float Centre[3];
-    float Reach; // -inf: none (a flat patch)
-  };
-
   // What the searches read of a triangle before its vertices, in one cache line (one
   // stream per leaf instead of three: plane, box and mesh id were separate arrays).
   struct alignas(64) LeafTriangle
@@ -337,9 +319,6 @@ private:
   // The wide subtree over inner binary node `binary`, numbered from `first`: its size,
   // and with `write` its nodes (the root's parent lane is left to the caller).
   std::int32_t WideSubtree(std::int32_t binary, std::int32_t first, const vtkMedialTriangleMesh& mesh, bool write);
-  // Build's very last pass: LaneSpheres, bottom up (a leaf's reach exact from its
-  // triangles, an inner lane's from its children's spheres).
-  void MeasureLaneSpheres();
   // Builds the subtree of triangles order[begin, end), whose bounds are `bounds`,
   // into nodes[node]. With `later`, ranges of at most `grain` triangles are only
   // recorded there, to be built in parallel.
@@ -381,7 +360,6 @@ private:
   vtkMedialBuffer<LeafTriangle> LeafTriangles; // leaf order
   vtkMedialBuffer<std::int32_t> LeafRank; // position of each mesh triangle in leaf order
   vtkMedialBuffer<std::int32_t> LeafLane;  // the lane of the leaf holding each leaf-order slot
-  vtkMedialBuffer<LaneSphere> LaneSpheres; // by lane reference (wide node * 4 + lane)
 };
 
 #endif
