@@ -12,9 +12,10 @@
 // (vertex to surface, both directions, and the two-sided area measure; % of the
 // diagonal).
 //
-// --check-solids: instead, whether each mesh bounds a valid solid by CGAL's predicates
-// (vtkMedialSolidDiagnosis: manifold and oriented, closed, outward, collapsed triangles,
-// intersecting triangle pairs) beside its surface's and solid's Euler characteristics.
+// --check-solids: instead, whether each mesh bounds a valid solid (vtkMedialSolidCheck,
+// its pairs decided by CGAL's exact predicates: manifold and oriented, closed, outward,
+// collapsed triangles, intersecting triangle pairs) beside its surface's and solid's Euler
+// characteristics.
 //
 // --sweep: instead, for every sample count of --counts and every seed of --seeds, the
 // sampling time, the medial mesh time and their ratio (the target: at most 4, or a mesh

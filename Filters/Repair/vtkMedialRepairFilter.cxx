@@ -839,12 +839,14 @@ void vtkMedialRepairFilter::vtkInternals::Measure(
   const bool wrapped = self->Wrapped;
   // Samples: the triangles' centroids (weighted by area for the buried share), then
   // the points.
-  double largest = 0.0, buriedArea = 0.0, area = 0.0;
-#pragma omp parallel for schedule(static) num_threads(this->Threads) reduction(max : largest) reduction(+ : buriedArea, area)
+  // The areas are summed afterwards in triangle order, so that the share is the same bits
+  // on any number of threads (a parallel + reduction is not); the maximum is exact anyway.
+  double largest = 0.0;
+  std::vector<unsigned char> buriedTriangle(nt, 0);
+#pragma omp parallel for schedule(static) num_threads(this->Threads) reduction(max : largest)
   for (vtkIdType i = 0; i < nt + np; ++i)
   {
     double x[3];
-    double weight = 0.0;
     bool kept = false;
     if (i < nt)
     {
@@ -853,7 +855,6 @@ void vtkMedialRepairFilter::vtkInternals::Measure(
       {
         x[k] = (input.GetPoint(v[0])[k] + input.GetPoint(v[1])[k] + input.GetPoint(v[2])[k]) / 3.0;
       }
-      weight = input.Areas[i];
       const vtkIdType a = outPoint(input.GetPoint(v[0])), b = outPoint(input.GetPoint(v[1])),
                       c = outPoint(input.GetPoint(v[2]));
       kept = a >= 0 && b >= 0 && c >= 0 && std::binary_search(outTriangles.begin(), outTriangles.end(), sorted(a, b, c));
@@ -865,20 +866,27 @@ void vtkMedialRepairFilter::vtkInternals::Measure(
     }
     if (kept)
     {
-      area += weight;
       continue;
     }
     vtkMedialSurfaceQuery::ClosestHit hit;
     const double distance = query.ClosestPoint(x, bound, hit) ? hit.Distance : bound;
     const bool inside = !wrapped && distance > buried && query.IsInside(x);
-    area += weight;
-    if (inside)
-    {
-      buriedArea += weight;
-    }
-    else
+    if (!inside)
     {
       largest = std::max(largest, distance);
+    }
+    else if (i < nt)
+    {
+      buriedTriangle[i] = 1;
+    }
+  }
+  double buriedArea = 0.0, area = 0.0;
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    area += input.Areas[t];
+    if (buriedTriangle[t])
+    {
+      buriedArea += input.Areas[t];
     }
   }
   self->MaximumDistance = largest / this->Diagonal;

@@ -111,4 +111,13 @@ plain = subprocess.run([cli, path, "-n", "2000", "--stats", "--quiet", "--repair
                        capture_output=True, text=True)
 check(plain.returncode == 0 and "repair" not in json.loads(plain.stdout)
       and json.loads(plain.stdout)["discarded"] > 0, "--repair none: today's behaviour")
+# The repaired run's file, field data included (RepairBuriedArea), is the same bytes on 1
+# and 2 threads.
+outputs = []
+for threads in ("1", "2"):
+    out_path = os.path.join(temp, f"spheres-balls-{threads}.vtp")
+    subprocess.run([cli, path, "-n", "2000", "--quiet", "--threads", threads, "-o", out_path], check=True)
+    with open(out_path, "rb") as f:
+        outputs.append(f.read())
+check(outputs[0] == outputs[1], "the repaired run's output is the same bytes on 1 and 2 threads")
 finish()
