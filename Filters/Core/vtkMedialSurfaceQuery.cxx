@@ -39,10 +39,12 @@ bool vtkMedialSurfaceQuery::Build(
   return true;
 }
 
-// One ray from `rayOrigin` (the origin itself, or nudged off it) through the own
-// tree; hit distances are redone against the hit triangle's plane along the ray from `origin`.
-bool vtkMedialSurfaceQuery::IntersectFrom(const double rayOrigin[3], const double origin[3],
-  const double direction[3], double tMin, double tMax, vtkIdType ignoreTriangle, RayHit& hit) const
+// The first hit beyond tMin of a ray from `origin`, from first(start, along, triangle),
+// the ray's first triangle in (start, tMax); hit distances are redone against the hit
+// triangle's plane along the ray from `origin`.
+template <class FirstHit>
+bool vtkMedialSurfaceQuery::FirstHitFrom(
+  const double origin[3], const double direction[3], double tMin, FirstHit first, RayHit& hit) const
 {
   double start = tMin;
   // At most a few retries: each one steps past a hit at the origin.
@@ -50,7 +52,7 @@ bool vtkMedialSurfaceQuery::IntersectFrom(const double rayOrigin[3], const doubl
   {
     double along;
     vtkIdType t;
-    if (!this->Tree.IntersectRay(rayOrigin, direction, start, tMax, ignoreTriangle, along, t))
+    if (!first(start, along, t))
     {
       return false;
     }
@@ -80,6 +82,17 @@ bool vtkMedialSurfaceQuery::IntersectFrom(const double rayOrigin[3], const doubl
     return true;
   }
   return false;
+}
+
+// One ray from `rayOrigin` (the origin itself, or nudged off it) through the own tree.
+bool vtkMedialSurfaceQuery::IntersectFrom(const double rayOrigin[3], const double origin[3],
+  const double direction[3], double tMin, double tMax, vtkIdType ignoreTriangle, RayHit& hit) const
+{
+  return this->FirstHitFrom(origin, direction, tMin,
+    [&](double start, double& along, vtkIdType& t) {
+      return this->Tree.IntersectRay(rayOrigin, direction, start, tMax, ignoreTriangle, along, t);
+    },
+    hit);
 }
 
 bool vtkMedialSurfaceQuery::Intersect(const double origin[3], const double direction[3],
@@ -148,17 +161,26 @@ void vtkMedialSurfaceQuery::MaximalTangentBall(const double p[3], const double n
 int vtkMedialSurfaceQuery::CountCrossings(
   const double origin[3], const double direction[3], double tMax) const
 {
-  int crossings = 0;
+  // Every triangle on the ray in one walk; the hits are then read off that list, the
+  // same as Intersect() restarted past each one would give (vtkMedialTriangleBVH::
+  // FirstCrossing), at a fraction of the cost (a walk per hit, and a last one that
+  // meets nothing).
+  thread_local std::vector<vtkMedialTriangleBVH::RayCrossing> crossings;
+  this->Tree.RayCrossings(origin, direction, 0.0, -1, crossings);
+  auto first = [&](double start, double& along, vtkIdType& t) {
+    return vtkMedialTriangleBVH::FirstCrossing(crossings, start, tMax, along, t);
+  };
+  int count = 0;
   double start = 0.0;
   RayHit hit;
   // Each hit restarts the ray just past it (a hit on an edge shared by two triangles
   // counts once); the cap only guards against a stall.
-  while (crossings < 100000 && this->Intersect(origin, direction, start, tMax, -1, hit))
+  while (count < 100000 && this->FirstHitFrom(origin, direction, start, first, hit))
   {
-    ++crossings;
-    start = std::max(hit.Distance, start) + 4.0 * this->RayPad;
+    ++count;
+    start = std::max(hit.Distance, start) + this->CrossingStep();
   }
-  return crossings;
+  return count;
 }
 
 bool vtkMedialSurfaceQuery::IsInside(const double x[3]) const

@@ -118,9 +118,13 @@ public:
   /**
    * Number of surface crossings of the ray origin + t * direction (unit), t in
    * (0, tMax): hits counted one after the other (a hit on an edge shared by
-   * two triangles counts once).
+   * two triangles counts once): Intersect() from 0, restarted CrossingStep() past
+   * each hit's distance, counts the same (answered from one walk over the ray).
    */
   int CountCrossings(const double origin[3], const double direction[3], double tMax) const;
+
+  /// How far past a hit CountCrossings restarts: hits closer together count once.
+  double CrossingStep() const { return 4.0 * this->RayPad; }
 
   /**
    * True when x lies inside the closed surface: the parity of the crossings along
@@ -180,6 +184,9 @@ public:
   const vtkMedialTriangleMesh* GetMesh() const { return this->Mesh; }
 
 private:
+  template <class FirstHit>
+  bool FirstHitFrom(
+    const double origin[3], const double direction[3], double tMin, FirstHit first, RayHit& hit) const;
   bool IntersectFrom(const double rayOrigin[3], const double origin[3], const double direction[3],
     double tMin, double tMax, vtkIdType ignoreTriangle, RayHit& hit) const;
 

@@ -2054,10 +2054,45 @@ struct WaitingLane
   float Key;
 };
 
+// The waiting lanes of one walk: on the stack while they fit (a walk holds at most
+// three lanes per level of the wide tree), on the heap beyond. Saves the walk the
+// thread-local vector's lookup and its growth checks.
+class LaneStack
+{
+public:
+  bool empty() const { return this->Size == 0; }
+  const WaitingLane& back() const { return this->Size <= Inline ? this->Near[this->Size - 1] : this->Far.back(); }
+  void pop_back()
+  {
+    if (this->Size-- > Inline)
+    {
+      this->Far.pop_back();
+    }
+  }
+  void push_back(const WaitingLane& lane)
+  {
+    if (this->Size < Inline)
+    {
+      this->Near[this->Size] = lane;
+    }
+    else
+    {
+      this->Far.push_back(lane);
+    }
+    ++this->Size;
+  }
+
+private:
+  static constexpr size_t Inline = 128;
+  WaitingLane Near[Inline];
+  size_t Size = 0;
+  std::vector<WaitingLane> Far;
+};
+
 // Pushes the lanes of `node` set in `mask` with their keys, the smallest key on top
 // (ties: the lower lane), so that a depth-first walk takes the nearest first.
-void PushNearestOnTop(
-  const vtkMedialTriangleBVH::WideNode& node, int mask, const float key[4], std::vector<WaitingLane>& lanes)
+template <class Lanes>
+void PushNearestOnTop(const vtkMedialTriangleBVH::WideNode& node, int mask, const float key[4], Lanes& lanes)
 {
   int order[4], count = 0;
   for (int i = 0; i < 4; ++i)
@@ -2167,12 +2202,21 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
   G::Sub(x, this->Origin, xRel);
   // A leaf's triangles, cheapest test first; false when visit asked to stop.
   auto visitLeaf = [&](std::int32_t start, std::int32_t end) {
+    // Room for the rounding of an exact squared distance (as in the tangent search's
+    // ClearOf), taken at the reach on entry, which only shrinks.
+    const double rounding = 10.0 * this->RoundingPad * std::sqrt(reach2);
     for (std::int32_t slot = start; slot < end; ++slot)
     {
       // The triangle's plane misses the ball.
       const LeafTriangle& leaf = this->LeafTriangles[slot];
       const double off = G::Dot(leaf.Plane, x) - leaf.Plane[3];
       if (leaf.Triangle == ownTriangle || off * off >= reach2)
+      {
+        continue;
+      }
+      // Its box misses the ball (with room for the rounding): its closest point would
+      // come out at reach2 or beyond, which no visit counts.
+      if (BoxDistance2(leaf.Lo, leaf.Hi, xRel) >= reach2 * (1.0 + 1e-9) + rounding)
       {
         continue;
       }
@@ -2201,8 +2245,7 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
     const WideBall ball(xRel, extent, capped ? w : nullptr,
       capped ? k - G::Dot(w, this->Origin) : 0.0);
     auto reach = [&]() { return FloatAbove(static_cast<float>(std::sqrt(reach2))) + ball.Pad; };
-    thread_local std::vector<WaitingLane> lanes;
-    lanes.clear();
+    LaneStack lanes;
     alignas(16) float d2[4];
     float r = reach();
     if (ball.Test(this->WideNodes[0], r, d2) & 1)
@@ -2349,17 +2392,58 @@ public:
     const double det = u + v + w;
     if (det == 0.0)
     {
-      return HitInPlane(A, B, C, tMin, t);
+      double lo, hi;
+      InPlaneSpan(A, B, C, lo, hi);
+      return FirstInSpan(lo, hi, tMin, t);
     }
     t = (u * A[2] + v * B[2] + w * C[2]) / det;
+    return true;
+  }
+
+  // Hit without its tMin: false when the ray misses; else the triangle is met at t, or,
+  // when the ray runs in its plane (inPlane), anywhere in [t, end]: Hit(tMin) is then
+  // FirstInSpan(t, end, tMin). For a walk that collects a whole ray's hits at once.
+  bool Meets(const double* a, const double* b, const double* c, double& t, double& end, bool& inPlane) const
+  {
+    double A[3], B[3], C[3];
+    this->Shear(a, A);
+    this->Shear(b, B);
+    this->Shear(c, C);
+    const double u = C[0] * B[1] - C[1] * B[0];
+    const double v = A[0] * C[1] - A[1] * C[0];
+    const double w = B[0] * A[1] - B[1] * A[0];
+    if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0))
+    {
+      return false;
+    }
+    const double det = u + v + w;
+    inPlane = det == 0.0;
+    if (inPlane)
+    {
+      InPlaneSpan(A, B, C, t, end);
+      return end >= t;
+    }
+    t = (u * A[2] + v * B[2] + w * C[2]) / det;
+    end = t;
+    return true;
+  }
+
+  // The first t beyond tMin of a triangle met by the ray in its plane along [lo, hi].
+  static bool FirstInSpan(double lo, double hi, double tMin, double& t)
+  {
+    if (!(hi > tMin))
+    {
+      return false;
+    }
+    t = std::max(lo, std::nextafter(tMin, HUGE_VAL));
     return true;
   }
 
 private:
   // The ray runs in the triangle's plane (a face seen edge-on, e.g. from a box's edge
   // along the next face): it meets the triangle where the sheared triangle, a segment
-  // through the axis, crosses the axis; the first such t beyond tMin.
-  static bool HitInPlane(const double A[3], const double B[3], const double C[3], double tMin, double& t)
+  // through the axis, crosses the axis, along [lo, hi] (empty, lo > hi, when it does not).
+  static void InPlaneSpan(const double A[3], const double B[3], const double C[3], double& lo, double& hi)
   {
     const double* p[3] = { A, B, C };
     int far = 0;
@@ -2375,7 +2459,8 @@ private:
     {
       s[i] = p[i][0] * p[far][0] + p[i][1] * p[far][1];
     }
-    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    lo = HUGE_VAL;
+    hi = -HUGE_VAL;
     for (int i = 0; i < 3; ++i)
     {
       const int j = (i + 1) % 3;
@@ -2387,12 +2472,6 @@ private:
         hi = std::max({ hi, z0, z1 });
       }
     }
-    if (!(hi > tMin))
-    {
-      return false;
-    }
-    t = std::max(lo, std::nextafter(tMin, HUGE_VAL));
-    return true;
   }
 
   void Shear(const double* p, double out[3]) const
@@ -2537,8 +2616,7 @@ bool vtkMedialTriangleBVH::IntersectRay(const double origin[3], const double dir
     const WideRay wide(o, direction, static_cast<float>(1e-5 * extent));
     const float from = FloatBelow(static_cast<float>(tMin));
     float until = FloatAbove(static_cast<float>(best));
-    thread_local std::vector<WaitingLane> lanes;
-    lanes.clear();
+    LaneStack lanes;
     alignas(16) float enter[4];
     if (wide.Test(this->WideNodes[0], from, until, enter) & 1)
     {
@@ -2609,6 +2687,123 @@ bool vtkMedialTriangleBVH::IntersectRay(const double origin[3], const double dir
       continue;
     }
     hitLeaf(node.Start, node.Start + node.Count);
+  }
+  t = best;
+  return triangle >= 0;
+}
+
+void vtkMedialTriangleBVH::RayCrossings(const double origin[3], const double direction[3], double tMin,
+  vtkIdType ignoreTriangle, std::vector<RayCrossing>& crossings) const
+{
+  crossings.clear();
+  if (this->Nodes.empty())
+  {
+    return;
+  }
+  const WatertightRay ray(origin, direction);
+  double o[3];
+  G::Sub(origin, this->Origin, o);
+  // Kept when some restart from tMin on may return it: as IntersectRay's test with
+  // tMax infinite, only without the hit's own tMin.
+  auto hitLeaf = [&](std::int32_t start, std::int32_t end) {
+    for (std::int32_t slot = start; slot < end; ++slot)
+    {
+      double scratch[9];
+      const double* v = this->Corners(slot, scratch);
+      RayCrossing c;
+      c.Triangle = this->LeafTriangles[slot].Triangle;
+      if (c.Triangle != ignoreTriangle && ray.Meets(v, v + 3, v + 6, c.T, c.End, c.InPlane) && c.End > tMin)
+      {
+        crossings.push_back(c);
+      }
+    }
+  };
+  // The walks of IntersectRay with the hit never coming nearer: every leaf they may
+  // visit for any restart.
+#if defined(__SSE2__)
+  const double extent = this->Extent();
+  const double length2 = G::Dot(direction, direction);
+  const bool near = std::fabs(o[0]) <= 4.0 * extent && std::fabs(o[1]) <= 4.0 * extent &&
+    std::fabs(o[2]) <= 4.0 * extent;
+  if (extent > 0.0 && near && length2 >= 0.25 && length2 <= 4.0 && !this->WideNodes.empty())
+  {
+    const WideRay wide(o, direction, static_cast<float>(1e-5 * extent));
+    const float from = FloatBelow(static_cast<float>(tMin));
+    const float until = FloatAbove(static_cast<float>(HUGE_VAL));
+    thread_local std::vector<std::int32_t> stack;
+    stack.clear();
+    alignas(16) float enter[4];
+    if (wide.Test(this->WideNodes[0], from, until, enter) & 1)
+    {
+      stack.push_back(this->WideNodes[0].Child[0]);
+    }
+    while (!stack.empty())
+    {
+      const std::int32_t child = stack.back();
+      stack.pop_back();
+      if (child < 0)
+      {
+        const LeafSlots leaf(child);
+        hitLeaf(leaf.Start, leaf.End);
+        continue;
+      }
+      const WideNode& node = this->WideNodes[child];
+      const int met = wide.Test(node, from, until, enter);
+      for (int i = 0; i < 4; ++i)
+      {
+        if (met & (1 << i))
+        {
+          stack.push_back(node.Child[i]);
+        }
+      }
+    }
+    return;
+  }
+#endif
+  double inv[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    inv[k] = 1.0 / direction[k];
+  }
+  thread_local std::vector<std::int32_t> stack;
+  stack.assign(1, 0);
+  while (!stack.empty())
+  {
+    const std::int32_t index = stack.back();
+    stack.pop_back();
+    if (!RaySpan(this->Nodes, index, o, inv, tMin).Before(HUGE_VAL))
+    {
+      continue;
+    }
+    const Node& node = this->Nodes[index];
+    if (node.Count == 0)
+    {
+      stack.push_back(node.Start + 1);
+      stack.push_back(node.Start);
+      continue;
+    }
+    hitLeaf(node.Start, node.Start + node.Count);
+  }
+}
+
+bool vtkMedialTriangleBVH::FirstCrossing(
+  const std::vector<RayCrossing>& crossings, double tMin, double tMax, double& t, vtkIdType& triangle)
+{
+  // IntersectRay's choice over the crossings: the nearest beyond tMin, ties to the lower id.
+  double best = tMax;
+  triangle = -1;
+  for (const RayCrossing& c : crossings)
+  {
+    double hit = c.T;
+    if (c.InPlane ? !WatertightRay::FirstInSpan(c.T, c.End, tMin, hit) : !(hit > tMin))
+    {
+      continue;
+    }
+    if (hit < best || (hit == best && triangle >= 0 && c.Triangle < triangle))
+    {
+      best = hit;
+      triangle = c.Triangle;
+    }
   }
   t = best;
   return triangle >= 0;

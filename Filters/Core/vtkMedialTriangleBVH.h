@@ -197,6 +197,30 @@ public:
   bool IntersectRay(const double origin[3], const double direction[3], double tMin, double tMax,
     vtkIdType ignoreTriangle, double& t, vtkIdType& triangle) const;
 
+  /// A triangle that a ray meets (RayCrossings): at T, or, where the ray runs in the
+  /// triangle's plane (InPlane), anywhere along [T, End]; End = T otherwise.
+  struct RayCrossing
+  {
+    double T, End;
+    std::int32_t Triangle;
+    bool InPlane;
+  };
+
+  /**
+   * Every triangle other than ignoreTriangle that the ray origin + t direction meets
+   * by IntersectRay's test beyond tMin, in no set order (replaces `crossings`): one
+   * walk over the whole ray, for callers that would restart IntersectRay past each
+   * hit. FirstCrossing(crossings, s, tMax) is then IntersectRay(origin, direction, s,
+   * tMax, ignoreTriangle) for every s >= tMin, the same t and triangle: both walks
+   * cull only what cannot be met, and the hit test is the same.
+   */
+  void RayCrossings(const double origin[3], const double direction[3], double tMin, vtkIdType ignoreTriangle,
+    std::vector<RayCrossing>& crossings) const;
+  /// IntersectRay's answer from RayCrossings' list: the nearest hit in (tMin, tMax),
+  /// ties to the lower mesh id. False when there is none.
+  static bool FirstCrossing(
+    const std::vector<RayCrossing>& crossings, double tMin, double tMax, double& t, vtkIdType& triangle);
+
   /**
    * Every triangle whose closest point to x is at most `distance` away: visit(d2, q,
    * triangle) gets the squared distance, that closest point and the mesh triangle
