@@ -136,8 +136,10 @@ vtkSmartPointer<vtkPolyData> SweptTube(int steps, int section, Corner corner)
 // the two tops (and the two bottoms) cross along r = 1.5. Every normal of a top is
 // within 90 degrees of +z: a patch holding both layers passes a normal-cone test alone,
 // and only its boundary's projection (which winds around twice) shows the overlap.
-// A small tilt makes a nearly flat patch that crosses itself at a shallow angle.
-vtkSmartPointer<vtkPolyData> SpiralRamp(double tilt, int steps, double turns = 1.2)
+// A small tilt makes a nearly flat patch that crosses itself at a shallow angle; a
+// thick ramp, a subtree holding the whole top (one strip whose boundary is one loop,
+// crossing itself in projection).
+vtkSmartPointer<vtkPolyData> SpiralRamp(double tilt, int steps, double turns = 1.2, double thickness = 1.0)
 {
   const int across = 8; // segments across the top and across the bottom
   return SweptTube(steps, 2 * (across + 1), [=](int i, int j) {
@@ -147,7 +149,7 @@ vtkSmartPointer<vtkPolyData> SpiralRamp(double tilt, int steps, double turns = 1
     const bool top = j <= across;
     const double r = top ? 1.0 + static_cast<double>(j) / across : 2.0 - static_cast<double>(j - across - 1) / across;
     // A slight rise, so that no corner of the end falls on one of the start.
-    const double z = k * (r - 1.5) + 0.1 * tilt * t - (top ? 0.0 : 1.0);
+    const double z = k * (r - 1.5) + 0.1 * tilt * t - (top ? 0.0 : thickness);
     return medialtest::defects::Point{ r * std::cos(phi), r * std::sin(phi), z };
   });
 }
@@ -205,6 +207,7 @@ int TestMedialRepairPairs(int, char*[])
     { "valid hollow sphere", medialtest::defects::SolidInCavity().Surface },
     { "spiral ramp", SpiralRamp(0.3, 240) },
     { "nearly flat spiral", SpiralRamp(0.002, 240) },
+    { "thick spiral ramp", SpiralRamp(0.3, 240, 1.2, 6.0) },
     { "looped strip", LoopedStrip(400) },
     { "valid ramp (one turn)", SpiralRampValid() },
   };
