@@ -66,11 +66,13 @@ bool vtkMedialSolidPreparation::Prepare(vtkPolyData* input, int mode, const Repa
   }
   if (mode != AUTO)
   {
+    mesh.FreeEdgeNeighbours(); // only the check reads them
     this->Messages = mesh.Warnings();
     return true;
   }
   vtkMedialSolidCheck check;
   check.Run(mesh, query, threads);
+  mesh.FreeEdgeNeighbours(); // read by the check only: 12 bytes a triangle off the peak
   if (check.IsValid())
   {
     this->Messages = mesh.Warnings();

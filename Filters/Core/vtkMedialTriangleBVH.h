@@ -324,6 +324,8 @@ private:
   };
   // Build only: each triangle's box and centroid, and the order being partitioned.
   struct BuildState;
+  // FindIntersectingPairs' normal-cone culling (vtkMedialTriangleBVHPairs.cxx).
+  class PatchCulling;
   // The nodes (Build's first pass), then from the build items the leaf order
   // (LeafTriangles' ids and boxes) and LeafRank. False when aborted.
   bool BuildNodes(const vtkMedialTriangleMesh& mesh, const std::function<bool()>& aborted);

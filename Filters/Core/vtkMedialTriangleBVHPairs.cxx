@@ -247,6 +247,251 @@ bool MayFold(const Triangle& ta, const double* v, const double* w, const double*
 }
 }
 
+// Normal-cone culling (Volino and Thalmann 1994), kept exact. A node's triangles form
+// a patch S of the closed, manifold, consistently oriented mesh. Project S along a
+// direction v such that every triangle's normal n has n.v > 0: every projected
+// triangle is then positively oriented, so the number of triangles of S over a point of
+// the plane is the winding number of S's projected boundary around it (the degree of
+// the projection). If that boundary is one simple loop (winding 0 or 1 everywhere), no
+// two triangles of S overlap in projection, so none intersect or touch in space other
+// than along the edge or at the corner they share (a touching pair overlaps in
+// projection with itself or a neighbour, or makes the boundary touch itself). The
+// boundary is checked to be one loop (each corner starts one boundary edge, and they
+// chain through all of them), whose edges that follow each other do not fold back and
+// whose other edges are apart by more than the search's tolerance (far above the
+// projection's rounding).
+// The patch's self-tests are then skipped; pairs between patches are still searched.
+// Only on meshes whose triangles' edge neighbours the mesh kept (closed, manifold) and
+// that are oriented, without degenerate triangles or slivers in the patch.
+class vtkMedialTriangleBVH::PatchCulling
+{
+public:
+  // A boundary edge from corner From to corner To (mesh point ids), projected: X[0..1]
+  // then X[2..3].
+  struct Edge
+  {
+    double X[4];
+    vtkIdType From, To;
+  };
+  struct Scratch
+  {
+    std::vector<Edge> Edges; // the boundary, projected
+    std::vector<std::int32_t> Order;
+  };
+
+  PatchCulling(const vtkMedialTriangleBVH& tree, const vtkMedialTriangleMesh& mesh,
+    const vtkMedialBuffer<char>& sliver, double tolerance)
+    : Tree(tree)
+    , Mesh(mesh)
+    , Sliver(sliver)
+    , Tolerance(tolerance)
+  {
+    const size_t triangles = static_cast<size_t>(mesh.GetNumberOfTriangles());
+    this->Enabled = mesh.EdgeNeighbours.size() == 3 * triangles && tree.LeafTriangles.size() == triangles &&
+      mesh.BoundaryEdges == 0 && mesh.NonManifoldEdges == 0 && mesh.NonOrientableComponents == 0 &&
+      mesh.DegenerateTriangles == 0;
+  }
+
+  // True when the patch of inner node `node` certainly has no intersecting pair.
+  bool CannotSelfIntersect(std::int32_t node, Scratch& scratch) const
+  {
+    const Node& n = this->Tree.Nodes[node];
+    const std::int32_t begin = n.Begin, end = n.End;
+    if (!this->Enabled || n.Count > 0 || end - begin > MaxPatch)
+    {
+      return false;
+    }
+    const LeafTriangle* leaves = this->Tree.LeafTriangles.data();
+    // The direction: the mean normal of up to 64 of its triangles (any direction is
+    // sound; every triangle is tested against the one taken).
+    double v[3] = { 0, 0, 0 };
+    const std::int32_t step = std::max<std::int32_t>(1, (end - begin) / 64);
+    for (std::int32_t s = begin; s < end; s += step)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        v[k] += leaves[s].Plane[k];
+      }
+    }
+    const double norm = std::sqrt(G::Dot(v, v));
+    if (!(norm > 0.0))
+    {
+      return false;
+    }
+    for (double& c : v)
+    {
+      c /= norm;
+    }
+    for (std::int32_t s = begin; s < end; ++s)
+    {
+      if (G::Dot(leaves[s].Plane, v) < MinCosine || this->Sliver[s])
+      {
+        return false;
+      }
+    }
+    // The plane's axes (u, w) with u x w = v, and a reference point: the box's centre.
+    double u[3], w[3];
+    const int least = std::fabs(v[0]) < std::fabs(v[1]) ? (std::fabs(v[0]) < std::fabs(v[2]) ? 0 : 2)
+                                                        : (std::fabs(v[1]) < std::fabs(v[2]) ? 1 : 2);
+    double unit[3] = { 0, 0, 0 };
+    unit[least] = 1.0;
+    G::Cross(v, unit, u);
+    const double ul = std::sqrt(G::Dot(u, u));
+    for (double& c : u)
+    {
+      c /= ul;
+    }
+    G::Cross(v, u, w);
+    double centre[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      centre[k] = this->Tree.Origin[k] + 0.5 * (static_cast<double>(n.Lo[k]) + static_cast<double>(n.Hi[k]));
+    }
+    // The boundary: edges whose neighbour across lies outside the patch.
+    std::vector<Edge>& edges = scratch.Edges;
+    edges.clear();
+    const std::int32_t* across = this->Mesh.EdgeNeighbours.data();
+    const std::int32_t* rank = this->Tree.LeafRank.data();
+    for (std::int32_t s = begin; s < end; ++s)
+    {
+      const vtkIdType t = leaves[s].Triangle;
+      for (int j = 0; j < 3; ++j)
+      {
+        const std::int32_t other = across[3 * t + j];
+        const std::int32_t r = rank[other];
+        if (r >= begin && r < end)
+        {
+          continue;
+        }
+        // The edge shared with `other`: the one opposite t's corner that `other` lacks.
+        const vtkIdType* vt = this->Mesh.GetTriangle(t);
+        const vtkIdType* vo = this->Mesh.GetTriangle(other);
+        int m = 0;
+        while (m < 3 && (vt[m] == vo[0] || vt[m] == vo[1] || vt[m] == vo[2]))
+        {
+          ++m;
+        }
+        if (m == 3)
+        {
+          return false; // a duplicate (the mesh drops them)
+        }
+        double corners[9];
+        const double* x = this->Tree.Corners(s, corners);
+        Edge edge;
+        edge.From = vt[(m + 1) % 3];
+        edge.To = vt[(m + 2) % 3];
+        for (int end = 0; end < 2; ++end)
+        {
+          const int c = (m + 1 + end) % 3;
+          const double d[3] = { x[3 * c] - centre[0], x[3 * c + 1] - centre[1], x[3 * c + 2] - centre[2] };
+          edge.X[2 * end] = G::Dot(u, d);
+          edge.X[2 * end + 1] = G::Dot(w, d);
+        }
+        edges.push_back(edge);
+      }
+    }
+    const size_t count = edges.size();
+    if (count < 3)
+    {
+      return false;
+    }
+    // One loop: each boundary corner starts one boundary edge (else the patch is
+    // pinched there), and following them from the first comes back after all of them.
+    std::vector<std::int32_t>& order = scratch.Order;
+    order.resize(count);
+    for (size_t i = 0; i < count; ++i)
+    {
+      order[i] = static_cast<std::int32_t>(i);
+    }
+    const std::vector<Edge>& e = edges;
+    std::sort(order.begin(), order.end(), [&](std::int32_t i, std::int32_t j) { return e[i].From < e[j].From; });
+    for (size_t i = 1; i < count; ++i)
+    {
+      if (e[order[i]].From == e[order[i - 1]].From)
+      {
+        return false;
+      }
+    }
+    auto next = [&](const Edge& edge) {
+      const auto it = std::lower_bound(order.begin(), order.end(), edge.To,
+        [&](std::int32_t i, vtkIdType from) { return e[i].From < from; });
+      return it != order.end() && e[*it].From == edge.To ? *it : -1;
+    };
+    size_t length = 0;
+    std::int32_t at = 0;
+    do
+    {
+      at = next(e[at]);
+      ++length;
+    } while (at > 0 && length <= count);
+    if (at != 0 || length != count)
+    {
+      return false;
+    }
+    // Simple: edges that follow each other do not fold back onto each other, and every
+    // other two are apart by more than the tolerance (one on one side of the other's
+    // line). A sweep along x over the edges sorted by their lowest x.
+    std::sort(order.begin(), order.end(), [&](std::int32_t i, std::int32_t j) {
+      return std::min(e[i].X[0], e[i].X[2]) < std::min(e[j].X[0], e[j].X[2]);
+    });
+    const double tol = this->Tolerance;
+    // Both ends of g beyond tol on one side of f's line.
+    auto beside = [tol](const Edge& f, const Edge& g) {
+      const double dx = f.X[2] - f.X[0], dy = f.X[3] - f.X[1];
+      const double margin = tol * std::sqrt(dx * dx + dy * dy);
+      const double s0 = dx * (g.X[1] - f.X[1]) - dy * (g.X[0] - f.X[0]);
+      const double s1 = dx * (g.X[3] - f.X[1]) - dy * (g.X[2] - f.X[0]);
+      return (s0 > margin && s1 > margin) || (s0 < -margin && s1 < -margin);
+    };
+    // f ends where g starts: they overlap when g turns back along f.
+    auto foldsBack = [tol](const Edge& f, const Edge& g) {
+      const double ux = f.X[0] - f.X[2], uy = f.X[1] - f.X[3]; // from the shared corner back along f
+      const double wx = g.X[2] - g.X[0], wy = g.X[3] - g.X[1]; // and along g
+      const double cross = ux * wy - uy * wx;
+      const double size = std::sqrt(ux * ux + uy * uy) + std::sqrt(wx * wx + wy * wy);
+      return std::fabs(cross) <= tol * size && ux * wx + uy * wy > 0.0;
+    };
+    for (size_t i = 0; i < count; ++i)
+    {
+      const Edge& f = e[order[i]];
+      const double hi = std::max(f.X[0], f.X[2]) + tol;
+      for (size_t j = i + 1; j < count; ++j)
+      {
+        const Edge& g = e[order[j]];
+        if (std::min(g.X[0], g.X[2]) > hi)
+        {
+          break;
+        }
+        if (f.To == g.From || g.To == f.From)
+        {
+          if (f.To == g.From ? foldsBack(f, g) : foldsBack(g, f))
+          {
+            return false;
+          }
+        }
+        else if (!beside(f, g) && !beside(g, f))
+        {
+          return false;
+        }
+      }
+    }
+    return true;
+  }
+
+private:
+  // Patches larger than this are left to their children (a wide normal cone is likely,
+  // and a failed test costs a pass over the patch).
+  static constexpr std::int32_t MaxPatch = 1 << 15;
+  // n.v below this (about 89.4 degrees) does not count as positive: far above the
+  // normals' rounding, which slivers (not culled) would exceed.
+  static constexpr double MinCosine = 0.01;
+  const vtkMedialTriangleBVH& Tree;
+  const vtkMedialTriangleMesh& Mesh;
+  const vtkMedialBuffer<char>& Sliver;
+  const double Tolerance;
+  bool Enabled = false;
+};
+
 void vtkMedialTriangleBVH::FindIntersectingPairs(const vtkMedialTriangleMesh& mesh, double tolerance, int threads,
   std::vector<std::pair<vtkIdType, vtkIdType>>& pairs) const
 {
@@ -290,6 +535,7 @@ void vtkMedialTriangleBVH::FindIntersectingPairs(const vtkMedialTriangleMesh& me
     t.Sliver = sliver[slot] != 0;
   };
   using Pairs = std::vector<std::pair<vtkIdType, vtkIdType>>;
+  const PatchCulling culling(*this, mesh, sliver, tolerance);
   // One pair of slots whose boxes overlap: the test by the corners they share.
   auto test = [&](std::int32_t i, std::int32_t j, Pairs& out) {
     const std::int32_t* vi = &ids[3 * static_cast<size_t>(i)];
@@ -335,10 +581,14 @@ void vtkMedialTriangleBVH::FindIntersectingPairs(const vtkMedialTriangleMesh& me
   {
     std::int32_t A, B;
   };
-  auto expand = [&](const Item& item, std::vector<Item>& stack, Pairs& out) {
+  auto expand = [&](const Item& item, std::vector<Item>& stack, Pairs& out, PatchCulling::Scratch& patch) {
     const Node& a = this->Nodes[item.A];
     if (item.B < 0)
     {
+      if (culling.CannotSelfIntersect(item.A, patch))
+      {
+        return;
+      }
       if (a.Count > 0)
       {
         for (std::int32_t i = a.Start; i < a.Start + a.Count; ++i)
@@ -400,13 +650,14 @@ void vtkMedialTriangleBVH::FindIntersectingPairs(const vtkMedialTriangleMesh& me
   // The top items, expanded breadth first until there are enough to share out.
   std::vector<Item> top{ { 0, -1 } };
   Pairs found;
+  PatchCulling::Scratch topPatch;
   const size_t wanted = 64 * static_cast<size_t>(threads);
   while (!top.empty() && top.size() < wanted)
   {
     std::vector<Item> next;
     for (const Item& item : top)
     {
-      expand(item, next, found);
+      expand(item, next, found, topPatch);
     }
     top.swap(next);
   }
@@ -414,6 +665,7 @@ void vtkMedialTriangleBVH::FindIntersectingPairs(const vtkMedialTriangleMesh& me
 #pragma omp parallel num_threads(threads)
   {
     Pairs& out = perThread[omp_get_thread_num()];
+    PatchCulling::Scratch patch;
     std::vector<Item> stack;
     stack.reserve(256);
 #pragma omp for schedule(dynamic, 1)
@@ -424,7 +676,7 @@ void vtkMedialTriangleBVH::FindIntersectingPairs(const vtkMedialTriangleMesh& me
       {
         const Item item = stack.back();
         stack.pop_back();
-        expand(item, stack, out);
+        expand(item, stack, out, patch);
       }
     }
   }

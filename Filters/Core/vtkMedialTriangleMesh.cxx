@@ -348,6 +348,10 @@ bool vtkMedialTriangleMesh::Build(
       return false;
     }
     this->MarkClosedShells(adjacency);
+    if (this->BoundaryEdges == 0 && this->NonManifoldEdges == 0)
+    {
+      this->EdgeNeighbours = std::move(adjacency.Neighbour); // every triangle has three
+    }
   }
   if (stop())
   {

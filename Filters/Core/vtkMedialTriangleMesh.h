@@ -57,6 +57,8 @@ public:
   const double* GetPoint(vtkIdType i) const { return &this->Points[3 * i]; }
   const vtkIdType* GetTriangle(vtkIdType t) const { return &this->Triangles[3 * t]; }
   const double* GetNormal(vtkIdType t) const { return &this->Normals[3 * t]; }
+  /// Frees EdgeNeighbours (12 bytes a triangle) once the solid check has run.
+  void FreeEdgeNeighbours() { this->EdgeNeighbours = vtkMedialBuffer<std::int32_t>(); }
   /// Frees the normals (24 bytes a triangle) for a caller that reads them from a built
   /// vtkMedialSurfaceQuery instead (its tree keeps the same values); GetNormal and the
   /// Normals array must not be used afterwards.
@@ -124,6 +126,10 @@ public:
   // instead of one per level of a binary search over millions).
   vtkMedialBuffer<std::uint32_t> AreaGuide;
   vtkMedialBuffer<int> ShellOfTriangle;
+  // On a closed mesh without non-manifold edges (else empty): the three triangles that
+  // share an edge with each triangle, 3 per triangle in no particular edge order. The
+  // solid check's normal-cone culling reads a patch's boundary from them.
+  vtkMedialBuffer<std::int32_t> EdgeNeighbours;
   std::vector<Shell> Shells; // in the order of their first triangle
   std::vector<ShellContact> Contacts;
 

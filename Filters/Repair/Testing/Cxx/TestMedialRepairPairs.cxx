@@ -17,6 +17,7 @@
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
 
+#include "vtkMath.h"
 #include "vtkPLYReader.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -77,6 +78,108 @@ vtkSmartPointer<vtkPolyData> Crumpled(int shape, int resolution, double amount, 
   return medialtest::defects::Mesh(x, medialtest::defects::Triangles(pd));
 }
 
+// A closed tube: a cross-section of `section` corners (Corner(step, j), a convex polygon
+// for every step) swept over `steps` + 1 positions, its ends closed by fans around their
+// centroids. The search's normal-cone culling (vtkMedialTriangleBVHPairs.cxx) is on for
+// it (closed, manifold, oriented), so these shapes test the culling's rule.
+template <class Corner>
+vtkSmartPointer<vtkPolyData> SweptTube(int steps, int section, Corner corner)
+{
+  using namespace medialtest::defects;
+  std::vector<Point> x;
+  for (int i = 0; i <= steps; ++i)
+  {
+    for (int j = 0; j < section; ++j)
+    {
+      x.push_back(corner(i, j));
+    }
+  }
+  std::vector<std::array<vtkIdType, 3>> tris;
+  auto id = [section](int i, int j) { return static_cast<vtkIdType>(i * section + (j % section)); };
+  for (int i = 0; i < steps; ++i)
+  {
+    for (int j = 0; j < section; ++j)
+    {
+      tris.push_back({ id(i, j), id(i + 1, j), id(i + 1, j + 1) });
+      tris.push_back({ id(i, j), id(i + 1, j + 1), id(i, j + 1) });
+    }
+  }
+  for (const int i : { 0, steps })
+  {
+    Point c = { 0, 0, 0 };
+    for (int j = 0; j < section; ++j)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        c[k] += x[id(i, j)][k] / section;
+      }
+    }
+    const vtkIdType centre = static_cast<vtkIdType>(x.size());
+    x.push_back(c);
+    for (int j = 0; j < section; ++j)
+    {
+      if (i == 0)
+      {
+        tris.push_back({ centre, id(i, j + 1), id(i, j) });
+      }
+      else
+      {
+        tris.push_back({ centre, id(i, j), id(i, j + 1) });
+      }
+    }
+  }
+  return medialtest::defects::Mesh(x, tris);
+}
+
+// A spiral ramp over 1.2 turns, radii 1 to 2, 1 thick, its top tilted across by `tilt`
+// at the start and by -tilt at the end, so that where the end passes over the start
+// the two tops (and the two bottoms) cross along r = 1.5. Every normal of a top is
+// within 90 degrees of +z: a patch holding both layers passes a normal-cone test alone,
+// and only its boundary's projection (which winds around twice) shows the overlap.
+// A small tilt makes a nearly flat patch that crosses itself at a shallow angle; a
+// thick ramp, a subtree holding the whole top (one strip whose boundary is one loop,
+// crossing itself in projection).
+vtkSmartPointer<vtkPolyData> SpiralRamp(double tilt, int steps, double turns = 1.2, double thickness = 1.0)
+{
+  const int across = 8; // segments across the top and across the bottom
+  return SweptTube(steps, 2 * (across + 1), [=](int i, int j) {
+    const double t = static_cast<double>(i) / steps;
+    const double phi = 2.0 * turns * vtkMath::Pi() * t;
+    const double k = tilt * (1.0 - 2.0 * t);
+    const bool top = j <= across;
+    const double r = top ? 1.0 + static_cast<double>(j) / across : 2.0 - static_cast<double>(j - across - 1) / across;
+    // A slight rise, so that no corner of the end falls on one of the start.
+    const double z = k * (r - 1.5) + 0.1 * tilt * t - (top ? 0.0 : thickness);
+    return medialtest::defects::Point{ r * std::cos(phi), r * std::sin(phi), z };
+  });
+}
+
+// The same ramp over 0.9 turns: a valid solid, whose tops and bottoms the culling skips.
+vtkSmartPointer<vtkPolyData> SpiralRampValid()
+{
+  return SpiralRamp(0.3, 180, 0.9);
+}
+
+// A flat strip (0.6 wide, 0.1 thick) along a prolate cycloid in the xz-plane, which
+// loops over itself: the strip folds back through itself, where the normal cones of
+// the patches around the crossing are wide.
+vtkSmartPointer<vtkPolyData> LoopedStrip(int steps)
+{
+  const int across = 6;
+  return SweptTube(steps, 2 * (across + 1), [=](int i, int j) {
+    const double s = -1.2 * vtkMath::Pi() + 2.4 * vtkMath::Pi() * i / steps;
+    const double a = 1.8;
+    const double p[2] = { s - a * std::sin(s), -a * std::cos(s) };
+    double tangent[2] = { 1.0 - a * std::cos(s), a * std::sin(s) };
+    const double length = std::sqrt(tangent[0] * tangent[0] + tangent[1] * tangent[1]);
+    const double normal[2] = { -tangent[1] / length, tangent[0] / length };
+    const bool top = j <= across;
+    const double y = top ? -0.3 + 0.6 * j / across : 0.3 - 0.6 * (j - across - 1) / across;
+    const double h = top ? 0.05 : -0.05;
+    return medialtest::defects::Point{ p[0] + h * normal[0], y, p[1] + h * normal[1] };
+  });
+}
+
 // Two boxes, one sliding over the other's top face by half its width: coplanar faces
 // that overlap, and edges that cross in that plane.
 vtkSmartPointer<vtkPolyData> CoplanarBoxes()
@@ -102,6 +205,11 @@ int TestMedialRepairPairs(int, char*[])
     { "crumpled torus", Crumpled(vtkMedialShapeSource::TORUS, 6, 0.03, 3) },
     { "coplanar boxes", CoplanarBoxes() },
     { "valid hollow sphere", medialtest::defects::SolidInCavity().Surface },
+    { "spiral ramp", SpiralRamp(0.3, 240) },
+    { "nearly flat spiral", SpiralRamp(0.002, 240) },
+    { "thick spiral ramp", SpiralRamp(0.3, 240, 1.2, 6.0) },
+    { "looped strip", LoopedStrip(400) },
+    { "valid ramp (one turn)", SpiralRampValid() },
   };
   if (vtkSmartPointer<vtkPolyData> horse = medialtest::ReadSharedPLY("horse.ply"))
   {
@@ -113,6 +221,12 @@ int TestMedialRepairPairs(int, char*[])
     vtkMedialSurfaceQuery query;
     std::string error;
     MEDIAL_CHECK(mesh.Build(c.Surface, error) && query.Build(&mesh, error), "%s: %s", c.Name.c_str(), error.c_str());
+    // The swept shapes are there for the search's culling: it must be on for them.
+    const bool swept = c.Name.find("spiral") != std::string::npos || c.Name.find("ramp") != std::string::npos ||
+      c.Name.find("strip") != std::string::npos;
+    MEDIAL_CHECK(!swept || mesh.EdgeNeighbours.size() == 3 * static_cast<size_t>(mesh.GetNumberOfTriangles()),
+      "%s: not a closed manifold mesh (%lld boundary, %lld non-manifold edges), so the search's culling is off",
+      c.Name.c_str(), static_cast<long long>(mesh.BoundaryEdges), static_cast<long long>(mesh.NonManifoldEdges));
     std::vector<Pair> candidates;
     query.FindIntersectingPairs(2, candidates);
     const std::set<Pair> found(candidates.begin(), candidates.end());
