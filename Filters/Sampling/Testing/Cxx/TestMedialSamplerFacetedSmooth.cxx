@@ -13,11 +13,10 @@
 // The balls still cross the surface by at most MaximumProtrusion (checked by
 // TestMedialSamplerOnePassBruteForce); theta = 0 is unchanged (TestMedialSamplerSphere).
 #include "MedialTestUtilities.h"
+#include "MedialShapeTestUtilities.h"
 
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialShapeSource.h"
-#include "vtkTransform.h"
-#include "vtkTransformPolyDataFilter.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -30,18 +29,10 @@ namespace
 {
 vtkSmartPointer<vtkPolyData> Shape(int shape, int resolution, double turn)
 {
-  vtkNew<vtkMedialShapeSource> source;
-  source->SetShape(shape);
-  source->SetResolution(resolution);
-  source->SetRadius(1.0);
-  source->SetTubeRadius(0.3);
-  vtkNew<vtkTransform> rotation;
-  rotation->RotateWXYZ(turn, 1.0, 2.0, 3.0);
-  vtkNew<vtkTransformPolyDataFilter> turned;
-  turned->SetInputConnection(source->GetOutputPort());
-  turned->SetTransform(rotation);
-  turned->Update();
-  return turned->GetOutput();
+  return Turned(MakeShape(shape, resolution, [](vtkMedialShapeSource* s) {
+    s->SetRadius(1.0);
+    s->SetTubeRadius(0.3);
+  }), turn);
 }
 
 vtkPolyData* Balls(vtkMedialAxisSampler* sampler, vtkPolyData* surface)

@@ -11,6 +11,7 @@
 //    point (vtkMedialDrawSurfacePointOnPicked) bit for bit, with double coordinates
 //    and with float ones (the tree then keeps float corners), whatever the winding.
 #include "MedialTestUtilities.h"
+#include "MedialShapeTestUtilities.h"
 
 #include "vtkMedialGeometry.h"
 #include "vtkMedialRandom.h"
@@ -22,8 +23,6 @@
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
 #include "vtkPoints.h"
-#include "vtkTransform.h"
-#include "vtkTransformPolyDataFilter.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -39,17 +38,7 @@ namespace G = vtkMedialGeometry;
 
 vtkSmartPointer<vtkPolyData> Shape(int shape, double turn, bool floats, bool rewind)
 {
-  vtkNew<vtkMedialShapeSource> source;
-  source->SetShape(shape);
-  source->SetResolution(3);
-  vtkNew<vtkTransform> rotation;
-  rotation->RotateWXYZ(turn, 1.0, 2.0, 3.0);
-  vtkNew<vtkTransformPolyDataFilter> turned;
-  turned->SetInputConnection(source->GetOutputPort());
-  turned->SetTransform(rotation);
-  turned->Update();
-  auto surface = vtkSmartPointer<vtkPolyData>::New();
-  surface->DeepCopy(turned->GetOutput());
+  vtkSmartPointer<vtkPolyData> surface = Turned(MakeShape(shape, 3), turn);
   if (floats)
   {
     vtkNew<vtkPoints> points;
