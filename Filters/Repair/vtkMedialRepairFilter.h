@@ -33,7 +33,9 @@
  *     exactly (experimental::autorefine_and_remove_self_intersections: the patches
  *     inside are removed, so the shell bounds the solid it means, with that solid's
  *     topology); failing that, CGAL's local removal (experimental::
- *     remove_self_intersections); failing that, step 7. Corefinement needs shells
+ *     remove_self_intersections, on a patch around the crossing pairs cut out of the
+ *     shell and stitched back along its unchanged border; first when the pairs are few);
+ *     failing that, step 7. Corefinement needs shells
  *     that do not cross themselves, so a shell resolved here is joined to the shells
  *     it overlaps in the next round of steps 4 and 5.
  *  6. Stray sheets: open pieces that lie inside the closed shells' solid are removed.

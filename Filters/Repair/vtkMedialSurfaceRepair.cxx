@@ -4,6 +4,9 @@
 // here costs compile time and memory: keep this file to the calls it makes.
 #include "vtkMedialSurfaceRepair.h"
 
+// First of the CGAL headers: the order of CGAL's box intersection (see there).
+#include "vtkMedialCGALBoxOrder.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>

@@ -5,6 +5,9 @@
 // nothing else. The results are rounded to doubles; vtkMedialRepairFilter tidies them.
 #include "vtkMedialSurfaceRepair.h"
 
+// First of the CGAL headers: the order of CGAL's box intersection (see there).
+#include "vtkMedialCGALBoxOrder.h"
+
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
