@@ -15,6 +15,8 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -59,6 +61,20 @@ inline vtkSmartPointer<vtkPolyData> WithGaussianNoise(vtkPolyData* surface, doub
   }
   noisy->GetPoints()->Modified();
   return noisy;
+}
+
+/// A copy of `surface` turned by `degrees` about the axis (1, 2, 3): the tests' one generic
+/// rotation, so that no face or edge of a generated shape lies along a coordinate axis.
+inline vtkSmartPointer<vtkPolyData> Turned(vtkPolyData* surface, double degrees)
+{
+  vtkNew<vtkTransform> rotation;
+  rotation->RotateWXYZ(degrees, 1.0, 2.0, 3.0);
+  vtkNew<vtkTransformPolyDataFilter> turned;
+  turned->SetInputData(surface);
+  turned->SetTransform(rotation);
+  turned->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  turned->Update();
+  return turned->GetOutput();
 }
 
 inline double Diagonal(vtkPolyData* pd)

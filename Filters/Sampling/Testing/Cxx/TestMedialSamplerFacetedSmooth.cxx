@@ -16,8 +16,6 @@
 
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialShapeSource.h"
-#include "vtkTransform.h"
-#include "vtkTransformPolyDataFilter.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -35,13 +33,8 @@ vtkSmartPointer<vtkPolyData> Shape(int shape, int resolution, double turn)
   source->SetResolution(resolution);
   source->SetRadius(1.0);
   source->SetTubeRadius(0.3);
-  vtkNew<vtkTransform> rotation;
-  rotation->RotateWXYZ(turn, 1.0, 2.0, 3.0);
-  vtkNew<vtkTransformPolyDataFilter> turned;
-  turned->SetInputConnection(source->GetOutputPort());
-  turned->SetTransform(rotation);
-  turned->Update();
-  return turned->GetOutput();
+  source->Update();
+  return Turned(source->GetOutput(), turn);
 }
 
 vtkPolyData* Balls(vtkMedialAxisSampler* sampler, vtkPolyData* surface)

@@ -22,8 +22,6 @@
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
 #include "vtkPoints.h"
-#include "vtkTransform.h"
-#include "vtkTransformPolyDataFilter.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -42,14 +40,8 @@ vtkSmartPointer<vtkPolyData> Shape(int shape, double turn, bool floats, bool rew
   vtkNew<vtkMedialShapeSource> source;
   source->SetShape(shape);
   source->SetResolution(3);
-  vtkNew<vtkTransform> rotation;
-  rotation->RotateWXYZ(turn, 1.0, 2.0, 3.0);
-  vtkNew<vtkTransformPolyDataFilter> turned;
-  turned->SetInputConnection(source->GetOutputPort());
-  turned->SetTransform(rotation);
-  turned->Update();
-  auto surface = vtkSmartPointer<vtkPolyData>::New();
-  surface->DeepCopy(turned->GetOutput());
+  source->Update();
+  vtkSmartPointer<vtkPolyData> surface = Turned(source->GetOutput(), turn);
   if (floats)
   {
     vtkNew<vtkPoints> points;
