@@ -1779,15 +1779,9 @@ private:
     FloatNodeTests::Lanes lanes;
     const WideNode& wide = this->Tree.WideNodes[index];
     this->Fast->TestLanes(wide, lanes);
-    const int inner = (lanes.Keep | lanes.Cap) & within;
-    for (int i = 0; inner && this->SpheresOn() && i < 4; ++i)
+    if (this->SpheresOn())
     {
-      if ((inner & (1 << i)) && wide.Child[i] > 0 && this->SphereClears(wide, i, wide.Child[i]))
-      {
-        lanes.Keep &= ~(1 << i);
-        lanes.Cap &= ~(1 << i);
-        lanes.Low &= ~(1 << i);
-      }
+      this->DropCleared(wide, within, lanes);
     }
     if ((lanes.Cap & within) && this->CollectCap)
     {
@@ -1826,6 +1820,25 @@ private:
   bool SphereClears(const WideNode& holder, int lane, std::int32_t child) const
   {
     return this->Tree.SphereDistance2Below(holder, lane, child, this->CentreRel) >= this->ClearOf(this->Radius);
+  }
+
+  // The inner lanes among `within` that OpenLanes would keep or set aside, dropped where
+  // their sphere clears the ball. (Out of line: most searches never get here.)
+#if defined(__GNUC__)
+  __attribute__((noinline))
+#endif
+  void DropCleared(const WideNode& wide, int within, FloatNodeTests::Lanes& lanes) const
+  {
+    const int open = (lanes.Keep | lanes.Cap) & within;
+    for (int i = 0; i < 4; ++i)
+    {
+      if ((open & (1 << i)) && wide.Child[i] > 0 && this->SphereClears(wide, i, wide.Child[i]))
+      {
+        lanes.Keep &= ~(1 << i);
+        lanes.Cap &= ~(1 << i);
+        lanes.Low &= ~(1 << i);
+      }
+    }
   }
 
   // Depth first, nearer lane first, from lane `root` without lane `skip`. A wide
@@ -1968,6 +1981,7 @@ private:
     // (in float, conservatively) when it is opened; a lane is tested again in double
     // when popped only if the reach shrank since it was pushed (Steps counts that).
     int shrinks = 0;
+    const bool spheres = this->SpheresOn();
     this->Fast->SetBall(this->CentreRel, std::sqrt(best2));
     std::vector<PendingLane>& stack = this->Work.CapLanes;
     // (The root goes in without a trip through the stack, and a lane is read from it
@@ -1996,7 +2010,7 @@ private:
         const std::int32_t child = holder.Child[lane];
         // The subtree's inner sphere: in a finely tessellated sphere the cap's facets
         // are all about as far from the centre, and no box keeps them out.
-        if (child > 0 && this->SpheresOn() &&
+        if (spheres && child > 0 &&
           !(this->Tree.SphereDistance2Below(holder, lane, child, this->CentreRel) < clear2))
         {
           continue;

@@ -16,8 +16,10 @@ namespace
 {
 namespace G = vtkMedialGeometry;
 
-// The triangles a centre is fitted to: at most this many, spread over the subtree.
-constexpr std::int32_t FitTriangles = 16;
+// A subtree of at least FitMinimum triangles gets the sphere fitted to the corners of
+// FitTriangles of them, spread over it; a smaller one takes its parent's centre.
+constexpr std::int32_t FitMinimum = 64;
+constexpr std::int32_t FitTriangles = 8;
 
 // Sums over points y for Kasa's algebraic sphere fit (least squares of
 // |y|^2 - 2 c.y - k), taken about a reference point for conditioning.
@@ -107,6 +109,7 @@ void vtkMedialTriangleBVH::MeasureWideSpheres()
   // Each subtree's triangles are consecutive in leaf order; a child's wide node comes
   // after its parent's, so one pass from the end finds every range.
   vtkMedialBuffer<std::int32_t> first(static_cast<size_t>(wides)), last(static_cast<size_t>(wides));
+  vtkMedialBuffer<std::int32_t> parent(static_cast<size_t>(wides));
   for (std::int64_t index = wides - 1; index >= 0; --index)
   {
     const WideNode& wide = this->WideNodes[index];
@@ -124,33 +127,34 @@ void vtkMedialTriangleBVH::MeasureWideSpheres()
       {
         lo = std::min(lo, first[child]);
         hi = std::max(hi, last[child]);
+        parent[child] = static_cast<std::int32_t>(index);
       }
     }
     first[index] = lo;
     last[index] = hi;
   }
-  // The centres, and the exact distance from each to the triangles of the node's own
-  // leaves (relative to Origin, as the searches measure the bound).
-  vtkMedialBuffer<double> leafReach2(static_cast<size_t>(wides));
+  parent[0] = -1;
+  // The centres of the subtrees of FitMinimum triangles or more, fitted in parallel
+  // (reach2 +inf: fitted, -inf: none).
+  vtkMedialBuffer<double> reach2(static_cast<size_t>(wides));
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::int64_t index = 0; index < wides; ++index)
   {
     WideSphere& sphere = this->WideSpheres[index];
     sphere.Centre[0] = sphere.Centre[1] = sphere.Centre[2] = 0.0f;
     sphere.Reach = -HUGE_VALF;
-    leafReach2[index] = -HUGE_VAL; // no fit
+    reach2[index] = -HUGE_VAL;
     const std::int32_t count = last[index] - first[index];
-    if (count <= 0)
+    if (count < FitMinimum)
     {
       continue;
     }
-    double corners[9], scratch[9], reference[3];
+    double scratch[9], reference[3];
     SphereMoments moments;
-    const std::int32_t fitted = std::min(count, FitTriangles);
-    for (std::int32_t j = 0; j < fitted; ++j)
+    for (std::int32_t j = 0; j < FitTriangles; ++j)
     {
       const std::int32_t slot =
-        first[index] + static_cast<std::int32_t>(static_cast<std::int64_t>(j) * count / fitted);
+        first[index] + static_cast<std::int32_t>(static_cast<std::int64_t>(j) * count / FitTriangles);
       const double* v = this->Corners(slot, scratch);
       for (int c = 0; c < 3; ++c)
       {
@@ -164,22 +168,41 @@ void vtkMedialTriangleBVH::MeasureWideSpheres()
       }
     }
     double centre[3];
-    if (!moments.Centre(centre))
+    if (moments.Centre(centre))
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        sphere.Centre[k] = static_cast<float>(centre[k] + (reference[k] - this->Origin[k]));
+      }
+      reach2[index] = std::isfinite(sphere.Centre[0] + sphere.Centre[1] + sphere.Centre[2]) ? HUGE_VAL : -HUGE_VAL;
+    }
+  }
+  // A smaller subtree takes its parent's centre (parents first): on a curved patch it
+  // fits as well, and the fit would cost more than the rest of this pass.
+  for (std::int64_t index = 1; index < wides; ++index)
+  {
+    if (last[index] - first[index] < FitMinimum && parent[index] >= 0)
+    {
+      std::copy_n(this->WideSpheres[parent[index]].Centre, 3, this->WideSpheres[index].Centre);
+      reach2[index] = reach2[parent[index]];
+    }
+  }
+  // A lower bound of the distance from each centre to the triangles of the node's own
+  // leaves (relative to Origin, as the searches measure the bound): the larger of the
+  // distance to the triangle's plane less its corners' distance from that plane, and
+  // the nearest corner's less a third of the longest edge's square
+  // (vtkMedialGeometry::TriangleDistance2Below); both hold for slivers too.
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::int64_t index = 0; index < wides; ++index)
+  {
+    if (!(reach2[index] > 0.0))
     {
       continue;
     }
-
-    for (int k = 0; k < 3; ++k)
-    {
-      sphere.Centre[k] = static_cast<float>(centre[k] + (reference[k] - this->Origin[k]));
-      centre[k] = static_cast<double>(sphere.Centre[k]);
-    }
-    if (!std::isfinite(sphere.Centre[0] + sphere.Centre[1] + sphere.Centre[2]))
-    {
-      continue;
-    }
+    const WideSphere& sphere = this->WideSpheres[index];
+    const double centre[3] = { sphere.Centre[0], sphere.Centre[1], sphere.Centre[2] };
     const WideNode& wide = this->WideNodes[index];
-    double reach2 = HUGE_VAL;
+    double nearest2 = HUGE_VAL, scratch[9];
     for (int i = 0; i < 4; ++i)
     {
       if (wide.Child[i] >= 0)
@@ -190,40 +213,44 @@ void vtkMedialTriangleBVH::MeasureWideSpheres()
       for (std::int32_t slot = leaf.Start; slot < leaf.End; ++slot)
       {
         const double* v = this->Corners(slot, scratch);
+        const double* plane = this->LeafTriangles[slot].Plane;
+        double corners[9], off = 0.0;
         for (int c = 0; c < 3; ++c)
         {
           G::Sub(v + 3 * c, this->Origin, corners + 3 * c);
+          off = std::max(off, std::fabs(G::Dot(plane, v + 3 * c) - plane[3]));
         }
-        double q[3];
-        reach2 = std::min(reach2, G::ClosestPointOnTriangle(centre, corners, corners + 3, corners + 6, q));
+        const double height = std::fabs(G::Dot(plane, centre) + (G::Dot(plane, this->Origin) - plane[3])) - off;
+        const double below = G::TriangleDistance2Below(centre, corners, corners + 3, corners + 6);
+        nearest2 = std::min(nearest2, std::max(height > 0.0 ? height * height : 0.0, below));
       }
     }
-    leafReach2[index] = reach2;
+    reach2[index] = nearest2;
   }
-  // The reach from the end (children first): the node's own leaves, exact, and each
-  // inner lane's subtree through its own sphere, the same bound as the searches use.
-  // Rounded down past the rounding of the corners relative to Origin.
+  // The reach from the end (children first): the node's own leaves, and each inner
+  // lane's subtree through its own sphere, the same bound as the searches use. Rounded
+  // down past the rounding of the corners relative to Origin.
   const double pad = 4.0 * this->RoundingPad;
   for (std::int64_t index = wides - 1; index >= 0; --index)
   {
-    WideSphere& sphere = this->WideSpheres[index];
-    double reach2 = leafReach2[index];
-    if (!(reach2 >= 0.0))
+    double r2 = reach2[index];
+    if (!(r2 >= 0.0))
     {
-      continue; // no fit: Reach stays -inf
+      continue; // no centre: Reach stays -inf
     }
+    WideSphere& sphere = this->WideSpheres[index];
     const WideNode& wide = this->WideNodes[index];
     const double centre[3] = { sphere.Centre[0], sphere.Centre[1], sphere.Centre[2] };
-    for (int i = 0; i < 4 && reach2 > 0.0; ++i)
+    for (int i = 0; i < 4 && r2 > 0.0; ++i)
     {
       if (wide.Child[i] > 0)
       {
-        reach2 = std::min(reach2, this->SphereDistance2Below(wide, i, wide.Child[i], centre));
+        r2 = std::min(r2, this->SphereDistance2Below(wide, i, wide.Child[i], centre));
       }
     }
-    if (reach2 > 0.0 && reach2 < HUGE_VAL)
+    if (r2 > 0.0 && r2 < HUGE_VAL)
     {
-      const double reach = std::sqrt(reach2) * (1.0 - 1e-12) - pad;
+      const double reach = std::sqrt(r2) * (1.0 - 1e-12) - pad;
       sphere.Reach = reach > 0.0 ? FloatAtOrBelow(reach) : -HUGE_VALF;
     }
   }
