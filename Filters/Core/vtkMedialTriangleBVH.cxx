@@ -31,7 +31,7 @@ constexpr int Bins = 16;
 constexpr int StepsBeforeBracketing = 4;
 // The tangent search tests inner lanes against their subtrees' inner spheres once it
 // has looked at this many triangles.
-constexpr int SpheresAfter = 32;
+constexpr int SpheresAfter = 128;
 constexpr std::int32_t SlabMaximumTriangles = 1 << 14;
 // Build passes over more triangles than this (the top levels) run on every thread.
 constexpr std::int32_t ParallelRange = 1 << 16;

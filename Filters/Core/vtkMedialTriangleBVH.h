@@ -218,6 +218,11 @@ public:
   void SetInnerSpheres(bool use) { this->UseInnerSpheres = use; }
   bool GetInnerSpheres() const { return this->UseInnerSpheres; }
 
+  /// For tests: the number of wide nodes whose inner sphere claims more room than it
+  /// has (a triangle under the node comes closer to its centre than its Reach, by an
+  /// exact closest point); 0 when every bound holds. Slow: every subtree's triangles.
+  vtkIdType CountInnerSphereViolations() const;
+
   /// Mesh triangle t's unit outward normal and offset (n.x = offset on its plane): the
   /// tree's copy of the mesh's normal, the same bits.
   const double* GetPlane(vtkIdType t) const { return this->LeafTriangles[this->LeafRank[t]].Plane; }

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <vector>
 
 #include <omp.h>
 
@@ -254,4 +255,54 @@ void vtkMedialTriangleBVH::MeasureWideSpheres()
       sphere.Reach = reach > 0.0 ? FloatAtOrBelow(reach) : -HUGE_VALF;
     }
   }
+}
+
+vtkIdType vtkMedialTriangleBVH::CountInnerSphereViolations() const
+{
+  const std::int64_t wides = static_cast<std::int64_t>(this->WideNodes.size());
+  std::vector<std::int32_t> first(static_cast<size_t>(wides)), last(static_cast<size_t>(wides));
+  for (std::int64_t index = wides - 1; index >= 0; --index)
+  {
+    const WideNode& wide = this->WideNodes[index];
+    std::int32_t lo = INT_MAX, hi = -1;
+    for (int i = 0; i < 4; ++i)
+    {
+      const std::int32_t child = wide.Child[i];
+      if (child < 0)
+      {
+        const LeafSlots leaf(child);
+        lo = std::min(lo, leaf.Start);
+        hi = std::max(hi, leaf.End);
+      }
+      else if (child > 0)
+      {
+        lo = std::min(lo, first[child]);
+        hi = std::max(hi, last[child]);
+      }
+    }
+    first[index] = lo;
+    last[index] = hi;
+  }
+  vtkIdType violations = 0;
+  for (std::int64_t index = 0; index < wides; ++index)
+  {
+    const WideSphere& sphere = this->WideSpheres[index];
+    if (!(sphere.Reach > 0.0f))
+    {
+      continue;
+    }
+    const double centre[3] = { sphere.Centre[0], sphere.Centre[1], sphere.Centre[2] };
+    double nearest2 = HUGE_VAL, scratch[9], corners[9], q[3];
+    for (std::int32_t slot = first[index]; slot < last[index]; ++slot)
+    {
+      const double* v = this->Corners(slot, scratch);
+      for (int c = 0; c < 9; ++c)
+      {
+        corners[c] = v[c] - this->Origin[c % 3];
+      }
+      nearest2 = std::min(nearest2, G::ClosestPointOnTriangle(centre, corners, corners + 3, corners + 6, q));
+    }
+    violations += std::sqrt(nearest2) < static_cast<double>(sphere.Reach);
+  }
+  return violations;
 }

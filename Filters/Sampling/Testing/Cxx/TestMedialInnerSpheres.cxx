@@ -8,7 +8,8 @@
 // rounding of most of their surface (geodesic spheres at four resolutions, a UV sphere,
 // a hollow sphere, a torus, a capsule, the contoured torus) and on the jack, at two
 // seeds; with the shared meshes present, on horse.ply too. Every field of every record,
-// the blocker chains and the running protrusion must agree bit for bit.
+// the blocker chains and the running protrusion must agree bit for bit, and every inner
+// sphere's bound must hold against an exact closest point of each triangle under it.
 // The cost guard counts triangles, not time (TangentBall::Visited): inside the geodesic
 // sphere of 81,920 triangles a search looked at nearly all of them without the spheres;
 // with them it must look at fewer than 2% on average, and without them it must look at
@@ -216,6 +217,9 @@ int TestMedialInnerSpheres(int, char*[])
     Solver s;
     std::string error;
     MEDIAL_CHECK(s.Build(c.Surface, error), "%s: %s", c.Label.c_str(), error.c_str());
+    const vtkIdType violations = s.Query.CountInnerSphereViolations();
+    MEDIAL_CHECK(violations == 0, "%s: %lld inner spheres claim more room than they have", c.Label.c_str(),
+      static_cast<long long>(violations));
     for (std::uint64_t seed : { 1u, 7u })
     {
       if (CompareBalls(s, c.Label.c_str(), seed, 400) != EXIT_SUCCESS)
