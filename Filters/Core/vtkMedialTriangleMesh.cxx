@@ -1286,25 +1286,33 @@ std::vector<std::string> vtkMedialTriangleMesh::Warnings() const
        << " component(s) cannot be oriented consistently (non-orientable surface).";
     warnings.push_back(os.str());
   }
-  if (this->Cavities > 0)
+  // A cavity is no defect: only cavities whose input winding was that of a solid (most
+  // of their triangles turned to face into the cavity) are worth a word.
+  auto woundAsSolid = [](const Shell& shell) {
+    return shell.Closed && shell.Depth % 2 == 1 && 2 * shell.Rewound > shell.Triangles;
+  };
+  const vtkIdType turnedCavities = static_cast<vtkIdType>(
+    std::count_if(this->Shells.begin(), this->Shells.end(), woundAsSolid));
+  if (turnedCavities > 0)
   {
     std::ostringstream os;
     os << "Nested shells handled: " << this->Shells.size() << " shells make " << this->Bodies
        << (this->Bodies == 1 ? " solid body" : " solid bodies") << " and " << this->Cavities
        << (this->Cavities == 1 ? " cavity" : " cavities")
-       << ". A shell inside an odd number of others bounds a cavity; its normals now point into "
-          "the cavity: ";
+       << ". A shell inside an odd number of others bounds a cavity; "
+       << (turnedCavities == 1 ? "one was wound as a solid and now faces" : "these were wound as solids and now face")
+       << " into its cavity: ";
     size_t listed = 0;
     for (size_t s = 0; s < this->Shells.size() && listed < ListedInMessages; ++s)
     {
       const Shell& shell = this->Shells[s];
-      if (shell.Closed && shell.Depth % 2 == 1)
+      if (woundAsSolid(shell))
       {
         os << (listed++ ? ", " : "") << this->ShellName(static_cast<int>(s)) << " inside "
            << this->ShellName(shell.Parent);
       }
     }
-    os << (static_cast<vtkIdType>(listed) < this->Cavities ? ", ..." : "") << ".";
+    os << (static_cast<vtkIdType>(listed) < turnedCavities ? ", ..." : "") << ".";
     warnings.push_back(os.str());
   }
   if (!this->Contacts.empty())

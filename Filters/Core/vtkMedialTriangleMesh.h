@@ -86,7 +86,7 @@ public:
   vtkIdType PickTriangleByArea(double u) const;
 
   /// One line per problem or notable fact of the input (duplicate triangles,
-  /// non-manifold edges, non-orientable shells, cavities taken from nesting, touching
+  /// non-manifold edges, non-orientable shells, cavities that were wound as solids, touching
   /// or intersecting shells), for the filters to print as warnings. Open surfaces
   /// and discarded samples are reported by the sampler, which knows the counts.
   std::vector<std::string> Warnings() const;

@@ -13,6 +13,7 @@
 //       S and relative to the diagonal, equal those of REF's run (within 1e-6);
 //       --cli-output checks the command-line program's .vtp against REF's run the same way.
 #include "vtkMedialArrayNames.h"
+#include "MedialShapeTestUtilities.h"
 #include "MedialTestSupport.h"
 
 #include "vtkMedialAxisSampler.h"
@@ -106,17 +107,6 @@ vtkSmartPointer<vtkPolyData> Make(const std::vector<std::array<double, 3>>& pts,
   {
     pd->SetLines(lineCells);
   }
-  return pd;
-}
-
-vtkSmartPointer<vtkPolyData> Shape(int shape, int resolution)
-{
-  vtkNew<vtkMedialShapeSource> source;
-  source->SetShape(shape);
-  source->SetResolution(resolution);
-  source->Update();
-  auto pd = vtkSmartPointer<vtkPolyData>::New();
-  pd->DeepCopy(source->GetOutput());
   return pd;
 }
 
@@ -296,7 +286,7 @@ int Generate(const std::string& dir)
   ok &= WriteText(dir + "/nan.ply", TetraPly("0 nan 0"));
   ok &= WriteText(dir + "/inf.ply", TetraPly("0 inf 0"));
 
-  const auto sphere = Shape(vtkMedialShapeSource::SPHERE, 4);
+  const auto sphere = medialtest::MakeShape(vtkMedialShapeSource::SPHERE, 4);
   // A sphere with its polar cap (centroid z > 0.8) cut away.
   ok &= WriteVtp(dir + "/open-sphere.vtp", EditTriangles(sphere, [&](vtkIdType, std::vector<vtkIdType>& t) {
     double z = 0;
@@ -347,7 +337,7 @@ int Generate(const std::string& dir)
     ok &= WriteVtp(dir + "/degenerate-triangles.vtp", degenerate);
   }
 
-  const auto jack = Shape(vtkMedialShapeSource::JACK, 12);
+  const auto jack = medialtest::MakeShape(vtkMedialShapeSource::JACK, 12);
   ok &= WriteVtp(dir + "/jack.vtp", jack);
   ok &= WriteVtp(dir + "/jack-1e12.vtp", Scaled(jack, 1e12));
   ok &= WriteVtp(dir + "/jack-1e-12.vtp", Scaled(jack, 1e-12));

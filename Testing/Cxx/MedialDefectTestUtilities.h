@@ -7,6 +7,8 @@
 #ifndef MedialDefectTestUtilities_h
 #define MedialDefectTestUtilities_h
 
+#include "MedialShapeTestUtilities.h"
+
 #include "vtkAppendPolyData.h"
 #include "vtkCellArray.h"
 #include "vtkMedialShapeSource.h"
@@ -48,17 +50,7 @@ inline double Norm(const double x[3])
 
 inline vtkSmartPointer<vtkPolyData> Shape(int shape, int resolution, const std::function<void(vtkMedialShapeSource*)>& set = {})
 {
-  vtkNew<vtkMedialShapeSource> source;
-  source->SetShape(shape);
-  source->SetResolution(resolution);
-  if (set)
-  {
-    set(source);
-  }
-  source->Update();
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  out->DeepCopy(source->GetOutput());
-  return out;
+  return MakeShape(shape, resolution, set);
 }
 
 /// A polydata of the given points and triangles.

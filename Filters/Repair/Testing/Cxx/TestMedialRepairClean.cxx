@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Clean input is not touched: on generated valid solids (sphere, box, torus, capsule, a
 // hollow sphere, a genus-2 solid, the jack, a solid inside a cavity) the repair passes
-// the input through (the same points object, InputWasValid, no report line) or, for the
-// contoured shapes that are wound inward as a whole, only turns them over; and the
+// the input through (the same points object, InputWasValid, no report line); a sphere
+// wound inward as a whole (every triangle turned) is only turned over; and the
 // sampler's balls and the medial mesh with RepairMode AUTO (the default) are the same
 // bits as with NONE, as are the thickness filter's arrays.
 #include "MedialDefectTestUtilities.h"
@@ -22,16 +22,31 @@ int TestMedialRepairClean(int, char*[])
   {
     const char* Name;
     vtkSmartPointer<vtkPolyData> Surface;
-    bool Inward = false; // contoured (RINGS, JACK): every triangle faces into the solid
+    bool Inward = false; // every triangle faces into the solid
   };
+  // The sphere with every triangle turned over: a valid solid wound inward as a whole.
+  auto inward = Shape(vtkMedialShapeSource::SPHERE, 3);
+  {
+    vtkNew<vtkCellArray> turned;
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    for (inward->GetPolys()->InitTraversal(); inward->GetPolys()->GetNextCell(n, ids);)
+    {
+      const vtkIdType back[3] = { ids[2], ids[1], ids[0] };
+      turned->InsertNextCell(3, back);
+    }
+    inward->SetPolys(turned);
+  }
   const std::vector<Case> cases = {
     { "sphere", Shape(vtkMedialShapeSource::SPHERE, 4) },
     { "box", Shape(vtkMedialShapeSource::BOX, 8) },
     { "torus", Shape(vtkMedialShapeSource::TORUS, 16) },
     { "capsule", Shape(vtkMedialShapeSource::CAPSULE, 12) },
     { "hollow sphere", Shape(vtkMedialShapeSource::HOLLOW_SPHERE, 4) },
-    { "rings of genus 2", Shape(vtkMedialShapeSource::RINGS, 12, [](vtkMedialShapeSource* s) { s->SetGenus(2); }), true },
-    { "jack", Shape(vtkMedialShapeSource::JACK, 16), true },
+    { "rings of genus 2", Shape(vtkMedialShapeSource::RINGS, 12, [](vtkMedialShapeSource* s) { s->SetGenus(2); }) },
+    { "jack", Shape(vtkMedialShapeSource::JACK, 16) },
+    { "contoured torus", Shape(vtkMedialShapeSource::CONTOURED_TORUS, 40) },
+    { "sphere wound inward", inward, true },
     { "solid in a cavity", medialtest::defects::SolidInCavity().Surface },
   };
   for (const Case& c : cases)

@@ -13,6 +13,7 @@
 // The balls still cross the surface by at most MaximumProtrusion (checked by
 // TestMedialSamplerOnePassBruteForce); theta = 0 is unchanged (TestMedialSamplerSphere).
 #include "MedialTestUtilities.h"
+#include "MedialShapeTestUtilities.h"
 
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialShapeSource.h"
@@ -28,13 +29,10 @@ namespace
 {
 vtkSmartPointer<vtkPolyData> Shape(int shape, int resolution, double turn)
 {
-  vtkNew<vtkMedialShapeSource> source;
-  source->SetShape(shape);
-  source->SetResolution(resolution);
-  source->SetRadius(1.0);
-  source->SetTubeRadius(0.3);
-  source->Update();
-  return Turned(source->GetOutput(), turn);
+  return Turned(MakeShape(shape, resolution, [](vtkMedialShapeSource* s) {
+    s->SetRadius(1.0);
+    s->SetTubeRadius(0.3);
+  }), turn);
 }
 
 vtkPolyData* Balls(vtkMedialAxisSampler* sampler, vtkPolyData* surface)

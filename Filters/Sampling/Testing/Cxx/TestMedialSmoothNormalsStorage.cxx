@@ -11,6 +11,7 @@
 //    point (vtkMedialDrawSurfacePointOnPicked) bit for bit, with double coordinates
 //    and with float ones (the tree then keeps float corners), whatever the winding.
 #include "MedialTestUtilities.h"
+#include "MedialShapeTestUtilities.h"
 
 #include "vtkMedialGeometry.h"
 #include "vtkMedialRandom.h"
@@ -37,11 +38,7 @@ namespace G = vtkMedialGeometry;
 
 vtkSmartPointer<vtkPolyData> Shape(int shape, double turn, bool floats, bool rewind)
 {
-  vtkNew<vtkMedialShapeSource> source;
-  source->SetShape(shape);
-  source->SetResolution(3);
-  source->Update();
-  vtkSmartPointer<vtkPolyData> surface = Turned(source->GetOutput(), turn);
+  vtkSmartPointer<vtkPolyData> surface = Turned(MakeShape(shape, 3), turn);
   if (floats)
   {
     vtkNew<vtkPoints> points;

@@ -4,6 +4,7 @@
 #ifndef MedialMeshTestUtilities_h
 #define MedialMeshTestUtilities_h
 
+#include "MedialShapeTestUtilities.h"
 #include "MedialTestUtilities.h"
 
 #include "vtkCellArray.h"
@@ -37,12 +38,7 @@ namespace medialtest
 /// A closed test solid from vtkMedialShapeSource.
 inline vtkSmartPointer<vtkPolyData> MakeSolid(int shape, int genus = 1, int resolution = 16)
 {
-  vtkNew<vtkMedialShapeSource> source;
-  source->SetShape(shape);
-  source->SetGenus(genus);
-  source->SetResolution(resolution);
-  source->Update();
-  return source->GetOutput();
+  return MakeShape(shape, resolution, [genus](vtkMedialShapeSource* s) { s->SetGenus(genus); });
 }
 
 /// The medial mesh of a solid from `samples` of the sampler's balls (3000 keep a test

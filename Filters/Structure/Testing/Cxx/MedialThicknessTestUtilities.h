@@ -3,6 +3,7 @@
 #ifndef MedialThicknessTestUtilities_h
 #define MedialThicknessTestUtilities_h
 
+#include "MedialShapeTestUtilities.h"
 #include "MedialTestUtilities.h"
 
 #include "vtkCellData.h"
@@ -14,21 +15,6 @@
 
 namespace medialtest
 {
-/// A generated shape (see vtkMedialShapeSource), its settings applied by `set`.
-inline vtkSmartPointer<vtkPolyData> MakeShape(int shape, int resolution,
-  const std::function<void(vtkMedialShapeSource*)>& set = {})
-{
-  vtkNew<vtkMedialShapeSource> source;
-  source->SetShape(shape);
-  source->SetResolution(resolution);
-  if (set)
-  {
-    set(source);
-  }
-  source->Update();
-  return source->GetOutput();
-}
-
 /// Minimum, median and maximum of a point (or cell) array over the ids that `keep` accepts.
 struct Summary
 {

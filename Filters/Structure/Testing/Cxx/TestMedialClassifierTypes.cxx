@@ -20,6 +20,7 @@
 //     governors: 3.5% of the sphere's balls, 11% of the capsule's.
 //  4. The output is the same for 1 and 2 threads.
 #include "MedialStructureTestUtilities.h"
+#include "MedialShapeTestUtilities.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkMedialShapeSource.h"
@@ -63,12 +64,7 @@ vtkSmartPointer<vtkPolyData> Balls(const std::vector<Placed>& placed, bool withS
 
 vtkSmartPointer<vtkPolyData> Shape(int shape, int resolution)
 {
-  vtkNew<vtkMedialShapeSource> source;
-  source->SetShape(shape);
-  source->SetBoxLengths(3.0, 2.0, 1.3);
-  source->SetResolution(resolution);
-  source->Update();
-  return source->GetOutput();
+  return medialtest::MakeShape(shape, resolution, [](vtkMedialShapeSource* s) { s->SetBoxLengths(3.0, 2.0, 1.3); });
 }
 
 int CheckPlaced(vtkPolyData* box, const std::vector<Placed>& placed, double theta, bool withSurfacePoints,

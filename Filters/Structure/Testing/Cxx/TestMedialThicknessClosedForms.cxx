@@ -17,9 +17,9 @@ using namespace medialtest;
 
 namespace
 {
-// The filter's output; null (and a printed reason) on an error or on a warning other
-// than `expected`.
-vtkSmartPointer<vtkPolyData> Thickness(vtkPolyData* surface, bool cells = true, const char* expected = nullptr)
+// The filter's output; null (and a printed reason) on any error or warning: the closed
+// forms, the hollow sphere's cavity included, are valid solids.
+vtkSmartPointer<vtkPolyData> Thickness(vtkPolyData* surface, bool cells = true)
 {
   vtkNew<vtkMedialThickness> thickness;
   thickness->SetInputData(surface);
@@ -27,7 +27,7 @@ vtkSmartPointer<vtkPolyData> Thickness(vtkPolyData* surface, bool cells = true, 
   EventLog log;
   log.Watch(thickness);
   thickness->Update();
-  if (log.Errors || log.Warnings > (expected ? 1 : 0) || (expected && log.LineWith(expected).empty()))
+  if (log.Errors || log.Warnings)
   {
     std::printf("unexpected messages: %s\n", log.Text.c_str());
     return nullptr;
@@ -70,7 +70,7 @@ int TestMedialThicknessClosedForms(int, char*[])
   auto hollow = Thickness(MakeShape(vtkMedialShapeSource::HOLLOW_SPHERE, 4, [&](vtkMedialShapeSource* s) {
     s->SetRadius(R1);
     s->SetInnerRadius(R2);
-  }), true, "Nested shells handled: 2 shells make 1 solid body and 1 cavity");
+  }));
   MEDIAL_CHECK(hollow, "hollow sphere");
   auto onShell = [&](double radius) {
     return [hollow, radius](vtkIdType i) {

@@ -70,11 +70,15 @@ int TestMedialThicknessNested(int, char*[])
     log.Watch(thickness);
     thickness->Update();
     vtkPolyData* out = thickness->GetOutput();
+    // A note only when the cavity's shell (radius 0.7) was wound as a solid.
+    const bool cavityWoundAsSolid = !reversed[1];
     const std::string nestedNote = log.LineWith("Nested shells handled");
     std::printf("warning: %s\n", nestedNote.c_str());
-    MEDIAL_CHECK(log.Errors == 0 && log.Warnings == 1 &&
-        nestedNote.find("3 shells make 2 solid bodies and 1 cavity") != std::string::npos &&
-        nestedNote.find("shell 1 (input cell 5120) inside shell 0 (input cell 0)") != std::string::npos,
+    MEDIAL_CHECK(log.Errors == 0 &&
+        (cavityWoundAsSolid ? log.Warnings == 1 &&
+              nestedNote.find("3 shells make 2 solid bodies and 1 cavity") != std::string::npos &&
+              nestedNote.find("shell 1 (input cell 5120) inside shell 0 (input cell 0)") != std::string::npos
+                            : log.Warnings == 0),
       "messages: %s", log.Text.c_str());
     vtkDataArray* values = out->GetPointData()->GetArray(vtkMedialArrayNames::Thickness);
     std::printf("| shell | expected | min | median | max | points |\n|---|---|---|---|---|---|\n");
