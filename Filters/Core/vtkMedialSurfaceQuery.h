@@ -175,6 +175,11 @@ public:
   /// Rank of each triangle in the internal tree's leaf order (spatially coherent).
   const vtkMedialBuffer<std::int32_t>& GetLeafRanks() const { return this->Tree.GetLeafRanks(); }
 
+  /// Whether the searches may drop a subtree on its inner sphere (on by default; the
+  /// same answers either way, see vtkMedialTriangleBVH::SetInnerSpheres). For tests.
+  void SetInnerSpheres(bool use) { this->Tree.SetInnerSpheres(use); }
+  vtkIdType CountInnerSphereViolations() const { return this->Tree.CountInnerSphereViolations(); }
+
   /// Frees the tree; no query may run afterwards. For callers done with querying that
   /// build a large output next (the tree is about 150 bytes per triangle).
   void ReleaseTree() { this->Tree = vtkMedialTriangleBVH(); }

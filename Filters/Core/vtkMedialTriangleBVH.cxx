@@ -29,9 +29,10 @@ constexpr int Bins = 16;
 // a ball still shrinking after this many steps is settling on the cap's cone, and the
 // lower end of that triangle's blocked radii is bracketed (LowerEndOfBlocking).
 constexpr int StepsBeforeBracketing = 4;
+// The tangent search tests inner lanes against their subtrees' inner spheres once it
+// has looked at this many triangles.
+constexpr int SpheresAfter = 128;
 constexpr std::int32_t SlabMaximumTriangles = 1 << 14;
-// A leaf lane holds ~(start * LeafCodeScale + count): starts below 2^28 fit.
-constexpr std::int32_t LeafCodeScale = 8;
 // Build passes over more triangles than this (the top levels) run on every thread.
 constexpr std::int32_t ParallelRange = 1 << 16;
 // Partitions of more triangles than this (the first levels) run on every thread. Each
@@ -636,19 +637,6 @@ inline int LaneOf(std::int32_t ref)
   return static_cast<int>(static_cast<std::uint32_t>(ref) % 4u);
 }
 
-// The leaf-order slots [Start, End) of a leaf lane, whose child code is ~(start *
-// LeafCodeScale + count).
-struct LeafSlots
-{
-  std::int32_t Start, End;
-  explicit LeafSlots(std::int32_t child)
-  {
-    const std::uint32_t code = ~static_cast<std::uint32_t>(child);
-    this->Start = static_cast<std::int32_t>(code / static_cast<std::uint32_t>(LeafCodeScale));
-    this->End = this->Start + static_cast<std::int32_t>(code % static_cast<std::uint32_t>(LeafCodeScale));
-  }
-};
-
 // A lane waiting in the tangent search, with the number of radius updates when it was pushed.
 struct PendingLane
 {
@@ -877,7 +865,12 @@ bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh, const std::f
     return false;
   }
   this->CopyInLeafOrder(mesh);
-  return this->BuildWideNodes(mesh);
+  if (!this->BuildWideNodes(mesh))
+  {
+    return false;
+  }
+  this->MeasureWideSpheres();
+  return true;
 }
 
 bool vtkMedialTriangleBVH::BuildNodes(const vtkMedialTriangleMesh& mesh, const std::function<bool()>& aborted)
@@ -1450,10 +1443,12 @@ public:
     , Inscribe(cosMinAngle < 1.0 && allowed < result.Radius)
     , Measure(cosMinAngle < 1.0 && result.MeasureProtrusion)
     , CollectCap(this->Inscribe || (this->Measure && result.LargestProtrusion < result.Radius))
+    , Spheres(bvh.UseInnerSpheres && !bvh.WideSpheres.empty())
     , Radius(result.Radius)
     , Result(result)
     , Work(ThreadScratch())
   {
+    result.Visited = 0;
     G::AddScaled(p, this->Radius, n, this->Centre);
     // The same two points relative to the origin, for the node bounds.
     G::Sub(p, bvh.Origin, this->PRel);
@@ -1768,6 +1763,7 @@ private:
   // only in the cap is set aside for another look.
   void Visit(std::int32_t slot)
   {
+    ++this->Result.Visited;
     if (this->Tree.LeafTriangles[slot].Triangle != this->OwnTriangle && this->ShrinkOn(slot))
     {
       this->Work.Deferred.push_back(slot);
@@ -1781,7 +1777,12 @@ private:
   int OpenLanes(std::int32_t index, float d2[4], int within = 0xF) const
   {
     FloatNodeTests::Lanes lanes;
-    this->Fast->TestLanes(this->Tree.WideNodes[index], lanes);
+    const WideNode& wide = this->Tree.WideNodes[index];
+    this->Fast->TestLanes(wide, lanes);
+    if (this->SpheresOn())
+    {
+      this->DropCleared(wide, within, lanes);
+    }
     if ((lanes.Cap & within) && this->CollectCap)
     {
       for (int i = 0; i < 4; ++i)
@@ -1805,6 +1806,39 @@ private:
     }
     std::copy_n(lanes.D2, 4, d2);
     return lanes.Keep & ~low & within;
+  }
+
+  // After a few triangles (a search that culls well never gets there and pays nothing),
+  // inner lanes are also tested against their subtree's inner sphere.
+  bool SpheresOn() const { return this->Spheres && this->Result.Visited >= SpheresAfter; }
+
+  // Nothing under lane `lane` of `holder` (whose child is wide node `child`) comes
+  // within the current radius of the centre, by its inner sphere: none of its triangles
+  // could block this ball or a smaller one (each lies inside this one), or lie in the
+  // final ball for InscribeInCap, so dropping the lane changes nothing but the cost.
+  // (With room for the rounding of an exact distance, as ClearOf.)
+  bool SphereClears(const WideNode& holder, int lane, std::int32_t child) const
+  {
+    return this->Tree.SphereDistance2Below(holder, lane, child, this->CentreRel) >= this->ClearOf(this->Radius);
+  }
+
+  // The inner lanes among `within` that OpenLanes would keep or set aside, dropped where
+  // their sphere clears the ball. (Out of line: most searches never get here.)
+#if defined(__GNUC__)
+  __attribute__((noinline))
+#endif
+  void DropCleared(const WideNode& wide, int within, FloatNodeTests::Lanes& lanes) const
+  {
+    const int open = (lanes.Keep | lanes.Cap) & within;
+    for (int i = 0; i < 4; ++i)
+    {
+      if ((open & (1 << i)) && wide.Child[i] > 0 && this->SphereClears(wide, i, wide.Child[i]))
+      {
+        lanes.Keep &= ~(1 << i);
+        lanes.Cap &= ~(1 << i);
+        lanes.Low &= ~(1 << i);
+      }
+    }
   }
 
   // Depth first, nearer lane first, from lane `root` without lane `skip`. A wide
@@ -1853,6 +1887,10 @@ private:
         {
           this->Visit(slot);
         }
+        continue;
+      }
+      if (shrunk && this->SpheresOn() && this->SphereClears(holder, lane, child))
+      {
         continue;
       }
       const int keep = this->OpenLanes(child, d2);
@@ -1943,6 +1981,7 @@ private:
     // (in float, conservatively) when it is opened; a lane is tested again in double
     // when popped only if the reach shrank since it was pushed (Steps counts that).
     int shrinks = 0;
+    const bool spheres = this->SpheresOn();
     this->Fast->SetBall(this->CentreRel, std::sqrt(best2));
     std::vector<PendingLane>& stack = this->Work.CapLanes;
     // (The root goes in without a trip through the stack, and a lane is read from it
@@ -1969,6 +2008,13 @@ private:
           }
         }
         const std::int32_t child = holder.Child[lane];
+        // The subtree's inner sphere: in a finely tessellated sphere the cap's facets
+        // are all about as far from the centre, and no box keeps them out.
+        if (spheres && child > 0 &&
+          !(this->Tree.SphereDistance2Below(holder, lane, child, this->CentreRel) < clear2))
+        {
+          continue;
+        }
         if (child < 0)
         {
           const LeafSlots leaf(child);
@@ -2019,6 +2065,7 @@ private:
   const bool Inscribe;   // a ball the cap enters deeper than Allowed is shrunk
   const bool Measure;    // the ball's protrusion raises Result.LargestProtrusion
   const bool CollectCap; // the cap's surface is set aside for InscribeInCap
+  const bool Spheres;    // the tree's inner spheres may drop lanes
   double Radius;
   double Clear2; // ClearOf(Radius - Slack)
   double Centre[3], PRel[3], CentreRel[3];

@@ -48,6 +48,7 @@
 #include "vtkMedialBuffer.h"
 #include "vtkType.h"
 
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <utility>
@@ -95,6 +96,8 @@ public:
     // changes the speed only. Out: this ball's.
     BlockerChain Blockers;
     int Steps = 0;       // radius updates
+    // Out: the triangles the search looked at (its cost; the ball does not depend on it).
+    int Visited = 0;
     bool Capped = false; // a triangle needed more than the per-triangle step cap
     // Out, when a protrusion is allowed: the surface of the cap around p (which the
     // angle rule ignores) enters the ball deeper than that; the ball about the same
@@ -230,6 +233,20 @@ public:
   void VisitWithin(const double x[3], double distance, const double samplePoint[3], double cosMinAngle,
     const std::function<void(double, const double*, vtkIdType)>& visit) const;
 
+  /**
+   * Whether the searches may drop a lane on its subtree's inner sphere (WideSphere), on
+   * by default. The balls are the same either way (the lanes dropped hold nothing that
+   * could change them); off, a search visits what it did before the spheres, which the
+   * tests compare against. Not thread-safe: set it before querying.
+   */
+  void SetInnerSpheres(bool use) { this->UseInnerSpheres = use; }
+  bool GetInnerSpheres() const { return this->UseInnerSpheres; }
+
+  /// For tests: the number of wide nodes whose inner sphere claims more room than it
+  /// has (a triangle under the node comes closer to its centre than its Reach, by an
+  /// exact closest point); 0 when every bound holds. Slow: every subtree's triangles.
+  vtkIdType CountInnerSphereViolations() const;
+
   /// Mesh triangle t's unit outward normal and offset (n.x = offset on its plane): the
   /// tree's copy of the mesh's normal, the same bits.
   const double* GetPlane(vtkIdType t) const { return this->LeafTriangles[this->LeafRank[t]].Plane; }
@@ -271,6 +288,20 @@ public:
     std::int32_t Child[4];
   };
 
+  // The inner sphere of a wide node's subtree (the one its parent's lane points at):
+  // no triangle under it comes closer than Reach to Centre (relative to Origin; Reach
+  // rounded down; -inf: none). The centre is the sphere fitted to some of its corners.
+  // With the lane's box it bounds from below the distance from a ball's centre x to
+  // the subtree: |q - x|^2 = |q - s|^2 - 2 (q - s).(x - s) + |x - s|^2 and (q - s).(x - s)
+  // is at most its largest value over the box. Inside a finely tessellated sphere a
+  // ball lies within rounding of every facet, and no box or slab keeps a curved patch
+  // out of it; this bound does, unless the patch is within rounding of the ball too.
+  struct WideSphere
+  {
+    float Centre[3];
+    float Reach;
+  };
+
   // What the searches read of a triangle before its vertices, in one cache line (one
   // stream per leaf instead of three: plane, box and mesh id were separate arrays).
   struct alignas(64) LeafTriangle
@@ -289,6 +320,20 @@ public:
 
 private:
   class TangentSearch; // the passes of MaximalTangentBall
+
+  // A leaf lane holds ~(start * LeafCodeScale + count): starts below 2^28 fit.
+  static constexpr std::int32_t LeafCodeScale = 8;
+  // The leaf-order slots [Start, End) of a leaf lane, from its child code.
+  struct LeafSlots
+  {
+    std::int32_t Start, End;
+    explicit LeafSlots(std::int32_t child)
+    {
+      const std::uint32_t code = ~static_cast<std::uint32_t>(child);
+      this->Start = static_cast<std::int32_t>(code / static_cast<std::uint32_t>(LeafCodeScale));
+      this->End = this->Start + static_cast<std::int32_t>(code % static_cast<std::uint32_t>(LeafCodeScale));
+    }
+  };
 
   // The corners of the triangle at leaf-order `slot`, 9 doubles: a pointer into the
   // double copy, or the float copy read into `scratch`.
@@ -336,6 +381,30 @@ private:
   // the binary nodes that they hold. False when the mesh is too large for the leaf
   // encoding.
   bool BuildWideNodes(const vtkMedialTriangleMesh& mesh);
+  // Build's very last pass: WideSpheres (in vtkMedialTriangleBVHSpheres.cxx).
+  void MeasureWideSpheres();
+  // A lower bound of the squared distance from x (relative to Origin) to every triangle
+  // under lane `lane` of `holder`, whose child is wide node `child` (> 0), with room for
+  // the rounding of the bound itself; -inf when the child has no sphere.
+  double SphereDistance2Below(const WideNode& holder, int lane, std::int32_t child, const double x[3]) const
+  {
+    const WideSphere& sphere = this->WideSpheres[child];
+    if (!(sphere.Reach > 0.0f))
+    {
+      return -HUGE_VAL;
+    }
+    double d2 = 0.0, h = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double s = sphere.Centre[k];
+      const double d = x[k] - s;
+      d2 += d * d;
+      // The largest (q - s).(x - s) over the lane's box: its corner along d.
+      h += d * ((d >= 0.0 ? static_cast<double>(holder.Hi[k][lane]) : static_cast<double>(holder.Lo[k][lane])) - s);
+    }
+    const double reach2 = static_cast<double>(sphere.Reach) * static_cast<double>(sphere.Reach);
+    return reach2 - 2.0 * h + d2 - 1e-12 * (reach2 + 2.0 * std::fabs(h) + d2);
+  }
   // The binary nodes that the wide node over `binary` holds (its children, opened two
   // levels down or so; `root`: wide node 0, the binary root alone); returns how many.
   int WideLanes(std::int32_t binary, bool root, std::int32_t lanes[4]) const;
@@ -379,6 +448,8 @@ private:
   // The tangent search's tree. A lane is named by its reference, wide node * 4 + lane;
   // wide node 0 holds the binary root in lane 0 and nothing else.
   vtkMedialBuffer<WideNode> WideNodes;
+  vtkMedialBuffer<WideSphere> WideSpheres; // one per wide node
+  bool UseInnerSpheres = true;
   double Origin[3] = { 0, 0, 0 };          // the bounding-box centre: node bounds are relative to it
   double RoundingPad = 0.0;                // absolute padding of the float bounds
   vtkMedialBuffer<double> Vertices;        // 9 per triangle, leaf order (as floats with FloatCorners)
