@@ -383,6 +383,8 @@ private:
   bool BuildWideNodes(const vtkMedialTriangleMesh& mesh);
   // Build's very last pass: WideSpheres (in vtkMedialTriangleBVHSpheres.cxx).
   void MeasureWideSpheres();
+  // The leaf slots [first, last) under each wide node, and its parent (when asked).
+  void WideSlotRanges(std::int32_t* first, std::int32_t* last, std::int32_t* parent) const;
   // A lower bound of the squared distance from x (relative to Origin) to every triangle
   // under lane `lane` of `holder`, whose child is wide node `child` (> 0), with room for
   // the rounding of the bound itself; -inf when the child has no sphere.

@@ -103,14 +103,13 @@ float FloatAtOrBelow(double v)
 }
 }
 
-void vtkMedialTriangleBVH::MeasureWideSpheres()
+// Each wide node's subtree holds the leaf slots [first, last): a subtree's triangles are
+// consecutive in leaf order and a child's wide node comes after its parent's, so one pass
+// from the end finds every range. `parent` (optional) gets each wide node's parent, -1 at
+// the root.
+void vtkMedialTriangleBVH::WideSlotRanges(std::int32_t* first, std::int32_t* last, std::int32_t* parent) const
 {
   const std::int64_t wides = static_cast<std::int64_t>(this->WideNodes.size());
-  this->WideSpheres.resize(static_cast<size_t>(wides));
-  // Each subtree's triangles are consecutive in leaf order; a child's wide node comes
-  // after its parent's, so one pass from the end finds every range.
-  vtkMedialBuffer<std::int32_t> first(static_cast<size_t>(wides)), last(static_cast<size_t>(wides));
-  vtkMedialBuffer<std::int32_t> parent(static_cast<size_t>(wides));
   for (std::int64_t index = wides - 1; index >= 0; --index)
   {
     const WideNode& wide = this->WideNodes[index];
@@ -128,13 +127,28 @@ void vtkMedialTriangleBVH::MeasureWideSpheres()
       {
         lo = std::min(lo, first[child]);
         hi = std::max(hi, last[child]);
-        parent[child] = static_cast<std::int32_t>(index);
+        if (parent)
+        {
+          parent[child] = static_cast<std::int32_t>(index);
+        }
       }
     }
     first[index] = lo;
     last[index] = hi;
   }
-  parent[0] = -1;
+  if (parent && wides > 0)
+  {
+    parent[0] = -1;
+  }
+}
+
+void vtkMedialTriangleBVH::MeasureWideSpheres()
+{
+  const std::int64_t wides = static_cast<std::int64_t>(this->WideNodes.size());
+  this->WideSpheres.resize(static_cast<size_t>(wides));
+  vtkMedialBuffer<std::int32_t> first(static_cast<size_t>(wides)), last(static_cast<size_t>(wides));
+  vtkMedialBuffer<std::int32_t> parent(static_cast<size_t>(wides));
+  this->WideSlotRanges(first.data(), last.data(), parent.data());
   // The centres of the subtrees of FitMinimum triangles or more, fitted in parallel
   // (reach2 +inf: fitted, -inf: none).
   vtkMedialBuffer<double> reach2(static_cast<size_t>(wides));
@@ -261,28 +275,7 @@ vtkIdType vtkMedialTriangleBVH::CountInnerSphereViolations() const
 {
   const std::int64_t wides = static_cast<std::int64_t>(this->WideNodes.size());
   std::vector<std::int32_t> first(static_cast<size_t>(wides)), last(static_cast<size_t>(wides));
-  for (std::int64_t index = wides - 1; index >= 0; --index)
-  {
-    const WideNode& wide = this->WideNodes[index];
-    std::int32_t lo = INT_MAX, hi = -1;
-    for (int i = 0; i < 4; ++i)
-    {
-      const std::int32_t child = wide.Child[i];
-      if (child < 0)
-      {
-        const LeafSlots leaf(child);
-        lo = std::min(lo, leaf.Start);
-        hi = std::max(hi, leaf.End);
-      }
-      else if (child > 0)
-      {
-        lo = std::min(lo, first[child]);
-        hi = std::max(hi, last[child]);
-      }
-    }
-    first[index] = lo;
-    last[index] = hi;
-  }
+  this->WideSlotRanges(first.data(), last.data(), nullptr);
   vtkIdType violations = 0;
   for (std::int64_t index = 0; index < wides; ++index)
   {
