@@ -13,6 +13,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkReverseSense.h"
 
 #include <algorithm>
 #include <array>
@@ -427,22 +428,16 @@ void ContourDistance(vtkPolyData* out, const double lo[3], const double hi[3], i
   contour->ComputeNormalsOff();
   contour->ComputeGradientsOff();
   contour->ComputeScalarsOff();
-  contour->Update();
-  out->ShallowCopy(contour->GetOutput());
   // The distance is negative inside, and vtkFlyingEdges3D winds its triangles so that
-  // they face the lower values: inward. Turn each triangle (first and last corner
-  // swapped, as the preparation's own flip does) so the shapes face outward as
+  // they face the lower values: inward. Reversing each triangle's corners (the first and
+  // last swapped, as the preparation's own flip does) makes the shapes face outward as
   // documented, and the filters see the same triangles as before.
-  vtkNew<vtkCellArray> outward;
-  outward->AllocateExact(out->GetNumberOfPolys(), out->GetPolys()->GetNumberOfConnectivityIds());
-  vtkIdType n = 0;
-  const vtkIdType* ids = nullptr;
-  for (out->GetPolys()->InitTraversal(); out->GetPolys()->GetNextCell(n, ids);)
-  {
-    const vtkIdType turned[3] = { ids[2], ids[1], ids[0] };
-    outward->InsertNextCell(3, turned);
-  }
-  out->SetPolys(outward);
+  vtkNew<vtkReverseSense> outward;
+  outward->SetInputConnection(contour->GetOutputPort());
+  outward->ReverseCellsOn();
+  outward->ReverseNormalsOff();
+  outward->Update();
+  out->ShallowCopy(outward->GetOutput());
 }
 
 void MakeJack(vtkPolyData* out, int resolution)

@@ -14,6 +14,7 @@
 #include "vtkMedialMeshFilter.h"
 #include "vtkMedialRepairFilter.h"
 #include "vtkMedialThickness.h"
+#include "vtkReverseSense.h"
 
 int TestMedialRepairClean(int, char*[])
 {
@@ -25,18 +26,11 @@ int TestMedialRepairClean(int, char*[])
     bool Inward = false; // every triangle faces into the solid
   };
   // The sphere with every triangle turned over: a valid solid wound inward as a whole.
-  auto inward = Shape(vtkMedialShapeSource::SPHERE, 3);
-  {
-    vtkNew<vtkCellArray> turned;
-    vtkIdType n = 0;
-    const vtkIdType* ids = nullptr;
-    for (inward->GetPolys()->InitTraversal(); inward->GetPolys()->GetNextCell(n, ids);)
-    {
-      const vtkIdType back[3] = { ids[2], ids[1], ids[0] };
-      turned->InsertNextCell(3, back);
-    }
-    inward->SetPolys(turned);
-  }
+  vtkNew<vtkReverseSense> turned;
+  turned->SetInputData(Shape(vtkMedialShapeSource::SPHERE, 3));
+  turned->ReverseCellsOn();
+  turned->Update();
+  vtkSmartPointer<vtkPolyData> inward = turned->GetOutput();
   const std::vector<Case> cases = {
     { "sphere", Shape(vtkMedialShapeSource::SPHERE, 4) },
     { "box", Shape(vtkMedialShapeSource::BOX, 8) },
