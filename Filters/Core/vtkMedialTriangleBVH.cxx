@@ -2137,21 +2137,48 @@ private:
 };
 
 // Pushes the lanes of `node` set in `mask` with their keys, the smallest key on top
-// (ties: the lower lane), so that a depth-first walk takes the nearest first.
+// (ties: the lower lane), so that a depth-first walk takes the nearest first. Each
+// kept lane's place is its rank among the kept lanes (those with a smaller key, or
+// an equal key and a lower lane, come first): the order of a stable sort, found
+// without the data-dependent branches of an insertion sort, which mispredict.
 template <class Lanes>
 void PushNearestOnTop(const vtkMedialTriangleBVH::WideNode& node, int mask, const float key[4], Lanes& lanes)
 {
   int order[4], count = 0;
+  bool ordered = true; // false with a NaN key, which compares false with everything
   for (int i = 0; i < 4; ++i)
   {
+    count += (mask >> i) & 1;
+    ordered = ordered && !((mask & (1 << i)) && key[i] != key[i]);
+  }
+  if (!ordered)
+  {
+    // The insertion sort the ranks stand for, whose order NaN keys leave defined.
+    count = 0;
+    for (int i = 0; i < 4; ++i)
+    {
+      if (mask & (1 << i))
+      {
+        int j = count++;
+        for (; j > 0 && key[order[j - 1]] > key[i]; --j)
+        {
+          order[j] = order[j - 1];
+        }
+        order[j] = i;
+      }
+    }
+  }
+  for (int i = 0; i < 4 && ordered; ++i)
+  {
+    int rank = 0;
+    for (int j = 0; j < 4; ++j)
+    {
+      const int before = static_cast<int>(key[j] < key[i]) | (static_cast<int>(key[j] == key[i]) & static_cast<int>(j < i));
+      rank += (mask >> j) & before;
+    }
     if (mask & (1 << i))
     {
-      int j = count++;
-      for (; j > 0 && key[order[j - 1]] > key[i]; --j)
-      {
-        order[j] = order[j - 1];
-      }
-      order[j] = i;
+      order[rank] = i;
     }
   }
   for (int j = count - 1; j >= 0; --j)
