@@ -2939,3 +2939,60 @@ void vtkMedialTriangleBVH::VisitWithin(const double x[3], double distance, const
       return true;
     });
 }
+
+bool vtkMedialTriangleBVH::VisitWithinIfEmpty(const double x[3], double distance, double emptyRadius,
+  const std::function<void(double, const double*, vtkIdType)>& visit) const
+{
+  double xRel[3];
+  G::Sub(x, this->Origin, xRel);
+  const double extent = this->Extent();
+  bool wide = false;
+#if defined(__SSE2__)
+  wide = extent > 0.0 && std::fabs(xRel[0]) <= 4.0 * extent && std::fabs(xRel[1]) <= 4.0 * extent &&
+    std::fabs(xRel[2]) <= 4.0 * extent && !this->WideNodes.empty();
+#endif
+  if (!(emptyRadius > 0.0))
+  {
+    this->VisitWithin(x, distance, nullptr, 1.0, visit);
+    return true; // ContainsBall's reach is empty
+  }
+  if (!wide || !(emptyRadius <= distance))
+  {
+    // Not the padded wide walk the argument below needs: the two queries.
+    if (!this->ContainsBall(x, emptyRadius, -1, nullptr, 1.0, false))
+    {
+      return false;
+    }
+    this->VisitWithin(x, distance, nullptr, 1.0, visit);
+    return true;
+  }
+  // ContainsBall(x, emptyRadius) is false exactly when its walk meets a triangle that
+  // passes its leaf tests (plane, box) and lies nearer than emptyRadius. The wide walk
+  // drops a lane only when its float box, widened by 1e-5 of the extent, lies beyond
+  // the reach, so every triangle nearer than emptyRadius is in a lane that both walks
+  // keep (this one's reach is larger); the leaf tests are repeated here at
+  // ContainsBall's reach, with its expressions, and the distance is the same number.
+  const double empty2 = emptyRadius * emptyRadius; // ContainsBall's reach2
+  const double emptyRounding = 10.0 * this->RoundingPad * std::sqrt(empty2);
+  const double limit2 = distance * distance;
+  double reach2 = limit2 * (1.0 + 1e-12) + 1e-300; // as VisitWithin
+  bool blocked = false;
+  this->VisitAdmissible(x, -1, nullptr, 1.0, false, reach2, [&](double d2, const double q[3], vtkIdType t) {
+    if (d2 < empty2)
+    {
+      const LeafTriangle& leaf = this->LeafTriangles[this->LeafRank[t]];
+      const double off = G::Dot(leaf.Plane, x) - leaf.Plane[3];
+      if (!(off * off >= empty2) && !(BoxDistance2(leaf.Lo, leaf.Hi, xRel) >= empty2 * (1.0 + 1e-9) + emptyRounding))
+      {
+        blocked = true;
+        return false;
+      }
+    }
+    if (d2 <= limit2)
+    {
+      visit(d2, q, t);
+    }
+    return true;
+  });
+  return !blocked;
+}
