@@ -516,6 +516,7 @@ private:
     std::vector<char>& in, Soup& before);
   double MovedInPatch(const vtkMedialRepairPatch& patch);
   void MeasurePatch(const vtkMedialTriangleMesh& input, const vtkMedialRepairPatch& patch);
+  void SetMeasured(const vtkMedialTriangleMesh& input, double largest, const std::vector<unsigned char>& buriedTriangle);
   bool RemoveSheets(Soup& work, bool& wrap);
   void Measure(const vtkMedialTriangleMesh& input, vtkPolyData* output, const vtkMedialSurfaceQuery* outputQuery);
   void Line(const std::string& text) { this->Self->Report.push_back(text); }
@@ -1223,8 +1224,17 @@ void vtkMedialRepairFilter::vtkInternals::Measure(
       buriedTriangle[i] = 1;
     }
   }
+  this->SetMeasured(input, largest, buriedTriangle);
+}
+
+// The report's figures from a measure: the largest distance relative to the diagonal,
+// and the buried share of the input's area, summed in triangle order (the same bits on
+// any thread count).
+void vtkMedialRepairFilter::vtkInternals::SetMeasured(
+  const vtkMedialTriangleMesh& input, double largest, const std::vector<unsigned char>& buriedTriangle)
+{
   double buriedArea = 0.0, area = 0.0;
-  for (vtkIdType t = 0; t < nt; ++t)
+  for (vtkIdType t = 0; t < input.GetNumberOfTriangles(); ++t)
   {
     area += input.Areas[t];
     if (buriedTriangle[t])
@@ -1232,8 +1242,8 @@ void vtkMedialRepairFilter::vtkInternals::Measure(
       buriedArea += input.Areas[t];
     }
   }
-  self->MaximumDistance = largest / this->Diagonal;
-  self->BuriedArea = area > 0.0 ? buriedArea / area : 0.0;
+  this->Self->MaximumDistance = largest / this->Diagonal;
+  this->Self->BuriedArea = area > 0.0 ? buriedArea / area : 0.0;
 }
 
 // Measure() when the output is the input with one patch replaced (vtkMedialRepairPatch):
@@ -1241,7 +1251,6 @@ void vtkMedialRepairFilter::vtkInternals::Measure(
 // patch's triangles and points are measured.
 void vtkMedialRepairFilter::vtkInternals::MeasurePatch(const vtkMedialTriangleMesh& input, const vtkMedialRepairPatch& patch)
 {
-  vtkMedialRepairFilter* self = this->Self;
   const vtkIdType nt = input.GetNumberOfTriangles();
   std::vector<vtkIdType> samples; // triangles of the patch, then -1 - i for point i of the patch
   for (vtkIdType t = 0; t < nt; ++t)
@@ -1294,17 +1303,7 @@ void vtkMedialRepairFilter::vtkInternals::MeasurePatch(const vtkMedialTriangleMe
       buriedTriangle[sample] = 1;
     }
   }
-  double buriedArea = 0.0, area = 0.0;
-  for (vtkIdType t = 0; t < nt; ++t)
-  {
-    area += input.Areas[t];
-    if (buriedTriangle[t])
-    {
-      buriedArea += input.Areas[t];
-    }
-  }
-  self->MaximumDistance = largest / this->Diagonal;
-  self->BuriedArea = area > 0.0 ? buriedArea / area : 0.0;
+  this->SetMeasured(input, largest, buriedTriangle);
 }
 
 bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* output)
