@@ -34,6 +34,7 @@
 #include <cmath>
 #include <numeric>
 #include <string>
+#include <unordered_set>
 
 vtkStandardNewMacro(vtkMedialThickness);
 
@@ -195,32 +196,60 @@ std::array<double, 3> Key(const double x[3])
 // the solid's two faces meet at less than 180 degrees). Only a ball that touches walls
 // meeting so rounds an edge and may slide off it: on one smooth wall, a ball whose
 // contacts are close together is a rim's, and its size is the wall's.
+// A crease may fade out (a rounded wall that meets a flat one along a crease that ends
+// where their facets turn less than the crease angle apart): the two sides are then one
+// wall, joined around the crease's end, though the crease runs between them. So for two
+// triangles of such a wall (one with a crease inside it) the question is asked near the
+// ball instead: the triangles joined to each across smooth edges within reach of the
+// ball (LocalReach times its radius from its centre) are its local wall, and two local
+// walls meet along a convex crease there if one of its edges joins them.
 struct vtkMedialThickness::Walls
 {
+  enum EdgeKind : unsigned char
+  {
+    Smooth,
+    ConvexCrease,
+    ConcaveCrease,
+    Other // a boundary or non-manifold edge, or a degenerate face
+  };
+  // How far from a ball's centre (times its radius) its local walls reach: a convex
+  // crease between contacts less than WallAngle apart lies within 1 / sin(30 degrees)
+  // = 2 radii of the centre.
+  static constexpr double LocalReach = 2.5;
+
   std::vector<vtkIdType> OfTriangle;
   std::vector<std::pair<vtkIdType, vtkIdType>> Convex; // (a < b), sorted, unique
+  // Walls with a crease inside them (between two of their own triangles).
+  std::vector<char> Creased;
+  // Each triangle's neighbour across its edge j (vertices j, j + 1) and that edge's kind.
+  std::vector<vtkIdType> Neighbour;
+  std::vector<EdgeKind> Kind;
   // The local facet size at each point: the longest edge that ends there (the
   // tolerance's unit; a cell's is the largest of its corners').
   std::vector<double> Size;
+  const vtkMedialTriangleMesh* Mesh = nullptr;
 
   void Build(const vtkMedialTriangleMesh& mesh, double creaseDegrees)
   {
+    this->Mesh = &mesh;
     const double cosCrease = std::cos(creaseDegrees * Pi / 180.0);
     const vtkIdType nt = mesh.GetNumberOfTriangles();
-    // Each edge as (lower point, higher point, triangle); an edge of exactly two
-    // triangles joins them, unless it is a crease.
-    std::vector<std::array<vtkIdType, 3>> edges;
+    // Each edge as (lower point, higher point, triangle, edge index in it); an edge of
+    // exactly two triangles joins them, unless it is a crease.
+    std::vector<std::array<vtkIdType, 4>> edges;
     edges.reserve(3 * static_cast<size_t>(nt));
     for (vtkIdType t = 0; t < nt; ++t)
     {
       const vtkIdType* v = mesh.GetTriangle(t);
       for (int j = 0; j < 3; ++j)
       {
-        edges.push_back({ std::min(v[j], v[(j + 1) % 3]), std::max(v[j], v[(j + 1) % 3]), t });
+        edges.push_back({ std::min(v[j], v[(j + 1) % 3]), std::max(v[j], v[(j + 1) % 3]), t, j });
       }
     }
     std::sort(edges.begin(), edges.end());
     this->Size.assign(mesh.GetNumberOfPoints(), 0.0);
+    this->Neighbour.assign(3 * static_cast<size_t>(nt), -1);
+    this->Kind.assign(3 * static_cast<size_t>(nt), Other);
     for (const auto& e : edges)
     {
       const double length = std::sqrt(G::Distance2(mesh.GetPoint(e[0]), mesh.GetPoint(e[1])));
@@ -228,7 +257,7 @@ struct vtkMedialThickness::Walls
       this->Size[e[1]] = std::max(this->Size[e[1]], length);
     }
     vtkMedialDisjointSets sets(nt);
-    std::vector<std::pair<vtkIdType, vtkIdType>> convex;
+    std::vector<std::pair<vtkIdType, vtkIdType>> convex, creases;
     for (size_t i = 0; i < edges.size();)
     {
       size_t j = i + 1;
@@ -239,6 +268,7 @@ struct vtkMedialThickness::Walls
       const vtkIdType a = edges[i][2], b = edges[j - 1][2];
       if (j == i + 2 && mesh.Areas[a] > 0.0 && mesh.Areas[b] > 0.0)
       {
+        EdgeKind kind = Smooth;
         if (G::Dot(mesh.GetNormal(a), mesh.GetNormal(b)) >= cosCrease)
         {
           sets.Join(a, b);
@@ -254,11 +284,17 @@ struct vtkMedialThickness::Walls
           }
           double d[3];
           G::Sub(mesh.GetPoint(tb[k]), mesh.GetPoint(edges[i][0]), d);
-          if (G::Dot(mesh.GetNormal(a), d) < 0.0)
+          kind = G::Dot(mesh.GetNormal(a), d) < 0.0 ? ConvexCrease : ConcaveCrease;
+          if (kind == ConvexCrease)
           {
             convex.emplace_back(a, b);
           }
+          creases.emplace_back(a, b);
         }
+        this->Neighbour[3 * a + edges[i][3]] = b;
+        this->Neighbour[3 * b + edges[i + 1][3]] = a;
+        this->Kind[3 * a + edges[i][3]] = kind;
+        this->Kind[3 * b + edges[i + 1][3]] = kind;
       }
       i = j;
     }
@@ -266,6 +302,14 @@ struct vtkMedialThickness::Walls
     for (vtkIdType t = 0; t < nt; ++t)
     {
       this->OfTriangle[t] = sets.Find(t);
+    }
+    this->Creased.assign(nt, 0);
+    for (const auto& c : creases)
+    {
+      if (this->OfTriangle[c.first] == this->OfTriangle[c.second])
+      {
+        this->Creased[this->OfTriangle[c.first]] = 1;
+      }
     }
     this->Convex.clear();
     for (const auto& c : convex)
@@ -278,6 +322,112 @@ struct vtkMedialThickness::Walls
     }
     std::sort(this->Convex.begin(), this->Convex.end());
     this->Convex.erase(std::unique(this->Convex.begin(), this->Convex.end()), this->Convex.end());
+  }
+
+  // The walls that the contacts on `triangles` lie on, as seen by a ball (centre,
+  // radius): a wall without a crease inside it is one; a creased one is split into
+  // its local walls near the ball. `of[i]` is the index in the result of triangles[i].
+  struct Local
+  {
+    vtkIdType Wall;
+    std::vector<vtkIdType> Triangles; // sorted; empty: the whole (uncreased) wall
+  };
+  std::vector<Local> LocalWalls(const std::vector<vtkIdType>& triangles, const double centre[3], double radius,
+    std::vector<int>& of) const
+  {
+    std::vector<Local> locals;
+    of.assign(triangles.size(), -1);
+    const double reach2 = LocalReach * LocalReach * radius * radius;
+    for (size_t i = 0; i < triangles.size(); ++i)
+    {
+      const vtkIdType t = triangles[i];
+      const vtkIdType w = this->OfTriangle[t];
+      for (size_t k = 0; k < locals.size() && of[i] < 0; ++k)
+      {
+        if (locals[k].Wall == w &&
+          (locals[k].Triangles.empty() ||
+            std::binary_search(locals[k].Triangles.begin(), locals[k].Triangles.end(), t)))
+        {
+          of[i] = static_cast<int>(k);
+        }
+      }
+      if (of[i] >= 0)
+      {
+        continue;
+      }
+      Local local{ w, {} };
+      if (this->Creased[w])
+      {
+        // The triangles reached from t across smooth edges, near the ball.
+        std::vector<vtkIdType> front{ t };
+        std::unordered_set<vtkIdType> seen{ t };
+        local.Triangles.push_back(t);
+        while (!front.empty())
+        {
+          const vtkIdType u = front.back();
+          front.pop_back();
+          for (int j = 0; j < 3; ++j)
+          {
+            const vtkIdType n = this->Neighbour[3 * u + j];
+            if (n < 0 || this->Kind[3 * u + j] != Smooth || seen.count(n) ||
+              this->BoxDistance2(n, centre) > reach2)
+            {
+              continue;
+            }
+            seen.insert(n);
+            local.Triangles.push_back(n);
+            front.push_back(n);
+          }
+        }
+        std::sort(local.Triangles.begin(), local.Triangles.end());
+      }
+      of[i] = static_cast<int>(locals.size());
+      locals.push_back(std::move(local));
+    }
+    return locals;
+  }
+
+  // Whether two of LocalWalls' walls meet along a convex crease: different walls, as
+  // the whole surface's walls do; two parts of one creased wall, where an edge joins them.
+  bool MeetConvex(const Local& a, const Local& b) const
+  {
+    if (a.Wall != b.Wall)
+    {
+      return this->MeetConvex(a.Wall, b.Wall);
+    }
+    if (a.Triangles.empty() || b.Triangles.empty())
+    {
+      return false;
+    }
+    for (vtkIdType t : a.Triangles)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        if (this->Kind[3 * t + j] == ConvexCrease &&
+          std::binary_search(b.Triangles.begin(), b.Triangles.end(), this->Neighbour[3 * t + j]))
+        {
+          return true;
+        }
+      }
+    }
+    return false;
+  }
+
+  // The squared distance from x to triangle t's bounding box.
+  double BoxDistance2(vtkIdType t, const double x[3]) const
+  {
+    const vtkIdType* v = this->Mesh->GetTriangle(t);
+    const double* a = this->Mesh->GetPoint(v[0]);
+    const double* b = this->Mesh->GetPoint(v[1]);
+    const double* c = this->Mesh->GetPoint(v[2]);
+    double d2 = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double lo = std::min({ a[k], b[k], c[k] }), hi = std::max({ a[k], b[k], c[k] });
+      const double d = x[k] < lo ? lo - x[k] : x[k] > hi ? x[k] - hi : 0.0;
+      d2 += d * d;
+    }
+    return d2;
   }
 
   // Whether a tangent ball at a point of `faces` may grow: the surface near its point
@@ -298,9 +448,27 @@ struct vtkMedialThickness::Walls
       return false;
     }
     const vtkIdType w = this->OfTriangle[ball.ContactTriangle];
+    bool local = false;
     for (vtkIdType f : faces)
     {
       if (this->MeetConvex(w, this->OfTriangle[f]))
+      {
+        return true;
+      }
+      local = local || (w == this->OfTriangle[f] && this->Creased[w]);
+    }
+    if (!local)
+    {
+      return false;
+    }
+    std::vector<vtkIdType> touched(faces);
+    touched.push_back(ball.ContactTriangle);
+    std::vector<int> of;
+    const std::vector<Local> walls = this->LocalWalls(touched, ball.Centre, ball.Radius, of);
+    const Local& contact = walls[of.back()];
+    for (size_t i = 0; i + 1 < touched.size(); ++i)
+    {
+      if (of[i] != of.back() && this->MeetConvex(walls[of[i]], contact))
       {
         return true;
       }
@@ -314,29 +482,52 @@ struct vtkMedialThickness::Walls
       std::binary_search(this->Convex.begin(), this->Convex.end(), std::make_pair(std::min(a, b), std::max(a, b)));
   }
 
-  // True when the contacts on `triangles` (-1: one of `faces`) lie on at least two walls,
-  // each of which meets another one of them along a convex crease.
-  bool MaySlide(const std::vector<vtkIdType>& faces, const vtkIdType* triangles, int count) const
+  // True when the contacts on `triangles` (-1: one of `faces`) of a ball (centre,
+  // radius) lie on at least two walls, each of which meets another one of them along a
+  // convex crease (local walls, near the ball, where a wall has a crease inside it).
+  bool MaySlide(const std::vector<vtkIdType>& faces, const vtkIdType* triangles, int count,
+    const double centre[3], double radius) const
   {
     std::vector<vtkIdType> touched;
+    bool creased = false;
     for (int i = 0; i < count; ++i)
     {
       const vtkIdType t = triangles[i] >= 0 ? triangles[i] : (faces.empty() ? -1 : faces.front());
-      if (t >= 0 && std::find(touched.begin(), touched.end(), this->OfTriangle[t]) == touched.end())
+      if (t >= 0 && std::find(touched.begin(), touched.end(), t) == touched.end())
       {
-        touched.push_back(this->OfTriangle[t]);
+        touched.push_back(t);
+        creased = creased || this->Creased[this->OfTriangle[t]];
       }
     }
-    if (touched.size() < 2)
+    std::vector<int> of;
+    std::vector<Local> walls;
+    if (creased)
+    {
+      walls = this->LocalWalls(touched, centre, radius, of);
+    }
+    else
+    {
+      // Every wall whole (the common case, and the only one without creased walls).
+      for (vtkIdType t : touched)
+      {
+        const vtkIdType w = this->OfTriangle[t];
+        auto same = std::find_if(walls.begin(), walls.end(), [w](const Local& l) { return l.Wall == w; });
+        if (same == walls.end())
+        {
+          walls.push_back({ w, {} });
+        }
+      }
+    }
+    if (walls.size() < 2)
     {
       return false;
     }
-    for (vtkIdType a : touched)
+    for (const Local& a : walls)
     {
       bool meets = false;
-      for (vtkIdType b : touched)
+      for (const Local& b : walls)
       {
-        meets = meets || this->MeetConvex(a, b);
+        meets = meets || (&a != &b && this->MeetConvex(a, b));
       }
       if (!meets)
       {
@@ -489,7 +680,9 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
     // vertex from a small ball in its wedge.
     const double size = walls.Size[v];
     vtkMedialGrowthLimits limits = GrowthLimits(this->SurfaceTolerance, size);
-    limits.MaySlide = [&](const vtkIdType* t, int count) { return walls.MaySlide(fan, t, count); };
+    limits.MaySlide = [&](const vtkIdType* t, int count, const double* centre, double radius) {
+      return walls.MaySlide(fan, t, count, centre, radius);
+    };
     vtkMedialSampleRecord grown = along;
     // The vertex's own faces stopped the ball along the mean normal within the tolerance:
     // a face more than theta / 2 from the normal rises into every ball tangent at p along
@@ -585,7 +778,9 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
     {
       const double size = std::max({ walls.Size[v[0]], walls.Size[v[1]], walls.Size[v[2]] });
       vtkMedialGrowthLimits limits = GrowthLimits(this->SurfaceTolerance, size);
-      limits.MaySlide = [&](const vtkIdType* touched, int count) { return walls.MaySlide(faces, touched, count); };
+      limits.MaySlide = [&](const vtkIdType* touched, int count, const double* centre, double radius) {
+        return walls.MaySlide(faces, touched, count, centre, radius);
+      };
       vtkMedialGrowBall(query, p, limits, &t, 1, start);
     }
     if (start.Valid && start.Radius > m.Radius)
