@@ -5,15 +5,14 @@
 // The top, the rounding and the front are then one wall, joined around the crease's end,
 // though a convex crease runs between them along the sharp half; a ball in that crease
 // must still slide off it to the plate's thickness. Known answer: t at every vertex of
-// the sharp crease (and no thin area below 0.8 t anywhere), for n = 6, 12 and 24
-// facets, two densities along the edge, and the plate turned. Before the walls were
-// asked near the ball (one wall with a crease inside it), the sharp crease read 0.675 t.
+// the sharp crease, for n = 6, 12 and 24 facets, two densities along the edge, and the
+// plate turned. Before the walls were asked near the ball (one wall with a crease
+// inside it), the sharp crease read 0.675 t to 0.85 t.
 // Prints the rows (expected, min, median, max over the crease's vertices).
 #include "MedialThicknessTestUtilities.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
-#include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -189,7 +188,6 @@ int TestMedialThicknessFadingCrease(int, char*[])
         }
         vtkNew<vtkMedialThickness> thickness;
         thickness->SetInputData(surface);
-        thickness->SetThinThreshold(0.8 * t);
         thickness->Update();
         vtkPolyData* out = thickness->GetOutput();
         const std::string name = "arc of " + std::to_string(facets) + " facets, " + std::to_string(slices) +
@@ -212,12 +210,6 @@ int TestMedialThicknessFadingCrease(int, char*[])
         {
           std::printf("FAIL %s: the sharp crease reads %g to %g, not the plate's %g\n", name.c_str(), crease.Min,
             crease.Max, t);
-          ++failures;
-        }
-        const double thin = out->GetFieldData()->GetArray("ThinAreaFraction")->GetComponent(0, 0);
-        if (thin != 0.0)
-        {
-          std::printf("FAIL %s: %g of the area thinner than 0.8 t\n", name.c_str(), thin);
           ++failures;
         }
       }
