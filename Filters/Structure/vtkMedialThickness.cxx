@@ -224,6 +224,11 @@ struct vtkMedialThickness::Walls
   // Each triangle's neighbour across its edge j (vertices j, j + 1) and that edge's kind.
   std::vector<vtkIdType> Neighbour;
   std::vector<EdgeKind> Kind;
+  // Each triangle's distance (between centroids, along the surface) to the nearest
+  // triangle beside a crease inside its wall: the local question is asked only where
+  // such a crease is within reach of the ball (a smooth surface's noise creases far
+  // away cost nothing).
+  std::vector<double> CreaseNear;
   // The local facet size at each point: the longest edge that ends there (the
   // tolerance's unit; a cell's is the largest of its corners').
   std::vector<double> Size;
@@ -309,6 +314,60 @@ struct vtkMedialThickness::Walls
       if (this->OfTriangle[c.first] == this->OfTriangle[c.second])
       {
         this->Creased[this->OfTriangle[c.first]] = 1;
+      }
+    }
+    // Multi-source Dijkstra over the triangles' adjacency from those beside an inner crease.
+    this->CreaseNear.assign(nt, HUGE_VAL);
+    std::vector<std::pair<double, vtkIdType>> heap;
+    for (const auto& c : creases)
+    {
+      if (this->OfTriangle[c.first] == this->OfTriangle[c.second])
+      {
+        for (vtkIdType t : { c.first, c.second })
+        {
+          this->CreaseNear[t] = 0.0;
+          heap.emplace_back(0.0, t);
+        }
+      }
+    }
+    auto later = [](const std::pair<double, vtkIdType>& a, const std::pair<double, vtkIdType>& b) {
+      return a.first > b.first || (a.first == b.first && a.second > b.second);
+    };
+    std::make_heap(heap.begin(), heap.end(), later);
+    auto centroid = [&](vtkIdType t, double c[3]) {
+      const vtkIdType* v = mesh.GetTriangle(t);
+      for (int k = 0; k < 3; ++k)
+      {
+        c[k] = (mesh.GetPoint(v[0])[k] + mesh.GetPoint(v[1])[k] + mesh.GetPoint(v[2])[k]) / 3.0;
+      }
+    };
+    while (!heap.empty())
+    {
+      std::pop_heap(heap.begin(), heap.end(), later);
+      const auto [d, t] = heap.back();
+      heap.pop_back();
+      if (d > this->CreaseNear[t])
+      {
+        continue;
+      }
+      double ct[3];
+      centroid(t, ct);
+      for (int j = 0; j < 3; ++j)
+      {
+        const vtkIdType n = this->Neighbour[3 * t + j];
+        if (n < 0)
+        {
+          continue;
+        }
+        double cn[3];
+        centroid(n, cn);
+        const double next = d + std::sqrt(G::Distance2(ct, cn));
+        if (next < this->CreaseNear[n])
+        {
+          this->CreaseNear[n] = next;
+          heap.emplace_back(next, n);
+          std::push_heap(heap.begin(), heap.end(), later);
+        }
       }
     }
     this->Convex.clear();
@@ -413,6 +472,13 @@ struct vtkMedialThickness::Walls
     return false;
   }
 
+  // Whether a crease inside t's wall may lie within reach of a ball of this radius
+  // touching t (along the surface, twice the reach: the paths run between centroids).
+  bool NearCrease(vtkIdType t, double radius) const
+  {
+    return this->CreaseNear[t] <= 2.0 * LocalReach * radius;
+  }
+
   // The squared distance from x to triangle t's bounding box.
   double BoxDistance2(vtkIdType t, const double x[3]) const
   {
@@ -455,7 +521,7 @@ struct vtkMedialThickness::Walls
       {
         return true;
       }
-      local = local || (w == this->OfTriangle[f] && this->Creased[w]);
+      local = local || (w == this->OfTriangle[f] && this->Creased[w] && this->NearCrease(f, ball.Radius));
     }
     if (!local)
     {
@@ -496,7 +562,7 @@ struct vtkMedialThickness::Walls
       if (t >= 0 && std::find(touched.begin(), touched.end(), t) == touched.end())
       {
         touched.push_back(t);
-        creased = creased || this->Creased[this->OfTriangle[t]];
+        creased = creased || (this->Creased[this->OfTriangle[t]] && this->NearCrease(t, radius));
       }
     }
     std::vector<int> of;
