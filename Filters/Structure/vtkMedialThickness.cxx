@@ -34,7 +34,6 @@
 #include <cmath>
 #include <numeric>
 #include <string>
-#include <unordered_set>
 
 vtkStandardNewMacro(vtkMedialThickness);
 
@@ -199,10 +198,18 @@ std::array<double, 3> Key(const double x[3])
 // A crease may fade out (a rounded wall that meets a flat one along a crease that ends
 // where their facets turn less than the crease angle apart): the two sides are then one
 // wall, joined around the crease's end, though the crease runs between them. So for two
-// triangles of such a wall (one with a crease inside it) the question is asked near the
+// triangles of a wall with a convex crease inside it the question is asked near the
 // ball instead: the triangles joined to each across smooth edges within reach of the
 // ball (LocalReach times its radius from its centre) are its local wall, and two local
 // walls meet along a convex crease there if one of its edges joins them.
+// Asked so, the local walls would be floods of (r / h)^2 triangles (r the radius, h the
+// facet size) at every sliding step, and a scanned surface's noise creases make most
+// walls creased: so the question is answered by searches that stop early. Two contacts
+// share a local wall if a search from one, nearest to the other first, reaches it; only
+// when it does not (it ran out of triangles: it visited the whole local wall) are the
+// convex crease edges out of that local wall followed. A search that visits more than
+// LocalBudget triangles gives up, and the whole wall's answer (one wall: they do not
+// meet) stands.
 struct vtkMedialThickness::Walls
 {
   enum EdgeKind : unsigned char
@@ -216,27 +223,26 @@ struct vtkMedialThickness::Walls
   // crease between contacts less than WallAngle apart lies within 1 / sin(30 degrees)
   // = 2 radii of the centre.
   static constexpr double LocalReach = 2.5;
+  // Triangles one local search may visit before it gives up.
+  static constexpr int LocalBudget = 8192;
 
   std::vector<vtkIdType> OfTriangle;
   std::vector<std::pair<vtkIdType, vtkIdType>> Convex; // (a < b), sorted, unique
-  // Walls with a crease inside them (between two of their own triangles).
-  std::vector<char> Creased;
+  // Walls (by their OfTriangle) with a convex crease edge between two of their triangles.
+  std::vector<char> InnerConvex;
   // Each triangle's neighbour across its edge j (vertices j, j + 1) and that edge's kind.
   std::vector<vtkIdType> Neighbour;
   std::vector<EdgeKind> Kind;
-  // Each triangle's distance (between centroids, along the surface) to the nearest
-  // triangle beside a crease inside its wall: the local question is asked only where
-  // such a crease is within reach of the ball (a smooth surface's noise creases far
-  // away cost nothing).
-  std::vector<double> CreaseNear;
+  // Each triangle's bounding box (low x, y, z, high x, y, z) and centroid, for the
+  // local searches.
+  std::vector<std::array<double, 6>> Box;
+  std::vector<std::array<double, 3>> Middle;
   // The local facet size at each point: the longest edge that ends there (the
   // tolerance's unit; a cell's is the largest of its corners').
   std::vector<double> Size;
-  const vtkMedialTriangleMesh* Mesh = nullptr;
 
   void Build(const vtkMedialTriangleMesh& mesh, double creaseDegrees)
   {
-    this->Mesh = &mesh;
     const double cosCrease = std::cos(creaseDegrees * Pi / 180.0);
     const vtkIdType nt = mesh.GetNumberOfTriangles();
     // Each edge as (lower point, higher point, triangle, edge index in it); an edge of
@@ -252,6 +258,19 @@ struct vtkMedialThickness::Walls
       }
     }
     std::sort(edges.begin(), edges.end());
+    this->Box.resize(nt);
+    this->Middle.resize(nt);
+    for (vtkIdType t = 0; t < nt; ++t)
+    {
+      const vtkIdType* v = mesh.GetTriangle(t);
+      const double *a = mesh.GetPoint(v[0]), *b = mesh.GetPoint(v[1]), *c = mesh.GetPoint(v[2]);
+      for (int k = 0; k < 3; ++k)
+      {
+        this->Box[t][k] = std::min({ a[k], b[k], c[k] });
+        this->Box[t][k + 3] = std::max({ a[k], b[k], c[k] });
+        this->Middle[t][k] = (a[k] + b[k] + c[k]) / 3.0;
+      }
+    }
     this->Size.assign(mesh.GetNumberOfPoints(), 0.0);
     this->Neighbour.assign(3 * static_cast<size_t>(nt), -1);
     this->Kind.assign(3 * static_cast<size_t>(nt), Other);
@@ -262,7 +281,7 @@ struct vtkMedialThickness::Walls
       this->Size[e[1]] = std::max(this->Size[e[1]], length);
     }
     vtkMedialDisjointSets sets(nt);
-    std::vector<std::pair<vtkIdType, vtkIdType>> convex, creases;
+    std::vector<std::pair<vtkIdType, vtkIdType>> convex;
     for (size_t i = 0; i < edges.size();)
     {
       size_t j = i + 1;
@@ -294,7 +313,6 @@ struct vtkMedialThickness::Walls
           {
             convex.emplace_back(a, b);
           }
-          creases.emplace_back(a, b);
         }
         this->Neighbour[3 * a + edges[i][3]] = b;
         this->Neighbour[3 * b + edges[i + 1][3]] = a;
@@ -308,69 +326,8 @@ struct vtkMedialThickness::Walls
     {
       this->OfTriangle[t] = sets.Find(t);
     }
-    this->Creased.assign(nt, 0);
-    for (const auto& c : creases)
-    {
-      if (this->OfTriangle[c.first] == this->OfTriangle[c.second])
-      {
-        this->Creased[this->OfTriangle[c.first]] = 1;
-      }
-    }
-    // Multi-source Dijkstra over the triangles' adjacency from those beside an inner crease.
-    this->CreaseNear.assign(nt, HUGE_VAL);
-    std::vector<std::pair<double, vtkIdType>> heap;
-    for (const auto& c : creases)
-    {
-      if (this->OfTriangle[c.first] == this->OfTriangle[c.second])
-      {
-        for (vtkIdType t : { c.first, c.second })
-        {
-          this->CreaseNear[t] = 0.0;
-          heap.emplace_back(0.0, t);
-        }
-      }
-    }
-    auto later = [](const std::pair<double, vtkIdType>& a, const std::pair<double, vtkIdType>& b) {
-      return a.first > b.first || (a.first == b.first && a.second > b.second);
-    };
-    std::make_heap(heap.begin(), heap.end(), later);
-    auto centroid = [&](vtkIdType t, double c[3]) {
-      const vtkIdType* v = mesh.GetTriangle(t);
-      for (int k = 0; k < 3; ++k)
-      {
-        c[k] = (mesh.GetPoint(v[0])[k] + mesh.GetPoint(v[1])[k] + mesh.GetPoint(v[2])[k]) / 3.0;
-      }
-    };
-    while (!heap.empty())
-    {
-      std::pop_heap(heap.begin(), heap.end(), later);
-      const auto [d, t] = heap.back();
-      heap.pop_back();
-      if (d > this->CreaseNear[t])
-      {
-        continue;
-      }
-      double ct[3];
-      centroid(t, ct);
-      for (int j = 0; j < 3; ++j)
-      {
-        const vtkIdType n = this->Neighbour[3 * t + j];
-        if (n < 0)
-        {
-          continue;
-        }
-        double cn[3];
-        centroid(n, cn);
-        const double next = d + std::sqrt(G::Distance2(ct, cn));
-        if (next < this->CreaseNear[n])
-        {
-          this->CreaseNear[n] = next;
-          heap.emplace_back(next, n);
-          std::push_heap(heap.begin(), heap.end(), later);
-        }
-      }
-    }
     this->Convex.clear();
+    this->InnerConvex.assign(nt, 0);
     for (const auto& c : convex)
     {
       const vtkIdType a = this->OfTriangle[c.first], b = this->OfTriangle[c.second];
@@ -378,119 +335,145 @@ struct vtkMedialThickness::Walls
       {
         this->Convex.emplace_back(std::min(a, b), std::max(a, b));
       }
+      else
+      {
+        this->InnerConvex[a] = 1;
+      }
     }
     std::sort(this->Convex.begin(), this->Convex.end());
     this->Convex.erase(std::unique(this->Convex.begin(), this->Convex.end()), this->Convex.end());
   }
 
-  // The walls that the contacts on `triangles` lie on, as seen by a ball (centre,
-  // radius): a wall without a crease inside it is one; a creased one is split into
-  // its local walls near the ball. `of[i]` is the index in the result of triangles[i].
-  struct Local
+  // Per-thread scratch of the local searches: a stamp per triangle marks what one
+  // search reached without clearing (Reached lists it).
+  struct Scratch
   {
-    vtkIdType Wall;
-    std::vector<vtkIdType> Triangles; // sorted; empty: the whole (uncreased) wall
+    std::vector<unsigned> Mark;
+    unsigned Stamp = 0;
+    std::vector<std::pair<double, vtkIdType>> Heap;
+    std::vector<vtkIdType> Reached;
   };
-  std::vector<Local> LocalWalls(const std::vector<vtkIdType>& triangles, const double centre[3], double radius,
-    std::vector<int>& of) const
+  static Scratch& LocalScratch()
   {
-    std::vector<Local> locals;
-    of.assign(triangles.size(), -1);
-    const double reach2 = LocalReach * LocalReach * radius * radius;
-    for (size_t i = 0; i < triangles.size(); ++i)
-    {
-      const vtkIdType t = triangles[i];
-      const vtkIdType w = this->OfTriangle[t];
-      for (size_t k = 0; k < locals.size() && of[i] < 0; ++k)
-      {
-        if (locals[k].Wall == w &&
-          (locals[k].Triangles.empty() ||
-            std::binary_search(locals[k].Triangles.begin(), locals[k].Triangles.end(), t)))
-        {
-          of[i] = static_cast<int>(k);
-        }
-      }
-      if (of[i] >= 0)
-      {
-        continue;
-      }
-      Local local{ w, {} };
-      if (this->Creased[w])
-      {
-        // The triangles reached from t across smooth edges, near the ball.
-        std::vector<vtkIdType> front{ t };
-        std::unordered_set<vtkIdType> seen{ t };
-        local.Triangles.push_back(t);
-        while (!front.empty())
-        {
-          const vtkIdType u = front.back();
-          front.pop_back();
-          for (int j = 0; j < 3; ++j)
-          {
-            const vtkIdType n = this->Neighbour[3 * u + j];
-            if (n < 0 || this->Kind[3 * u + j] != Smooth || seen.count(n) ||
-              this->BoxDistance2(n, centre) > reach2)
-            {
-              continue;
-            }
-            seen.insert(n);
-            local.Triangles.push_back(n);
-            front.push_back(n);
-          }
-        }
-        std::sort(local.Triangles.begin(), local.Triangles.end());
-      }
-      of[i] = static_cast<int>(locals.size());
-      locals.push_back(std::move(local));
-    }
-    return locals;
+    thread_local Scratch scratch;
+    return scratch;
   }
 
-  // Whether two of LocalWalls' walls meet along a convex crease: different walls, as
-  // the whole surface's walls do; two parts of one creased wall, where an edge joins them.
-  bool MeetConvex(const Local& a, const Local& b) const
+  // How a local search ended: it reached its target, it ran out of triangles (all
+  // those of the source's local wall carry the search's stamp), or it gave up.
+  enum class Search
   {
-    if (a.Wall != b.Wall)
+    Joined,
+    Apart,
+    GaveUp
+  };
+  // Whether triangles a and b lie on one local wall: a search from a across smooth
+  // edges through the triangles within reach of the ball, nearest to b first.
+  Search Join(vtkIdType a, vtkIdType b, const double centre[3], double reach2, Scratch& scratch) const
+  {
+    const size_t nt = this->OfTriangle.size();
+    if (scratch.Mark.size() < nt)
     {
-      return this->MeetConvex(a.Wall, b.Wall);
+      scratch.Mark.assign(nt, 0);
+      scratch.Stamp = 0;
     }
-    if (a.Triangles.empty() || b.Triangles.empty())
+    if (++scratch.Stamp == 0) // wrapped: clear the old marks
     {
-      return false;
+      std::fill(scratch.Mark.begin(), scratch.Mark.end(), 0u);
+      scratch.Stamp = 1;
     }
-    for (vtkIdType t : a.Triangles)
+    scratch.Mark[a] = scratch.Stamp;
+    scratch.Reached.assign(1, a);
+    if (a == b)
+    {
+      return Search::Joined;
+    }
+    const double* target = this->Middle[b].data();
+    auto later = [](const std::pair<double, vtkIdType>& x, const std::pair<double, vtkIdType>& y) {
+      return x.first > y.first || (x.first == y.first && x.second > y.second);
+    };
+    std::vector<std::pair<double, vtkIdType>>& heap = scratch.Heap;
+    heap.clear();
+    heap.emplace_back(0.0, a);
+    for (int visited = 0; !heap.empty(); ++visited)
+    {
+      if (visited == LocalBudget)
+      {
+        return Search::GaveUp;
+      }
+      std::pop_heap(heap.begin(), heap.end(), later);
+      const vtkIdType u = heap.back().second;
+      heap.pop_back();
+      for (int j = 0; j < 3; ++j)
+      {
+        const vtkIdType n = this->Neighbour[3 * u + j];
+        if (n < 0 || this->Kind[3 * u + j] != Smooth || scratch.Mark[n] == scratch.Stamp)
+        {
+          continue;
+        }
+        if (n == b)
+        {
+          return Search::Joined;
+        }
+        if (this->BoxDistance2(n, centre) > reach2)
+        {
+          continue;
+        }
+        scratch.Mark[n] = scratch.Stamp;
+        scratch.Reached.push_back(n);
+        heap.emplace_back(G::Distance2(this->Middle[n].data(), target), n);
+        std::push_heap(heap.begin(), heap.end(), later);
+      }
+    }
+    return Search::Apart;
+  }
+
+  // After a search from a that ran out of triangles (a's local wall carries the
+  // scratch's stamp and is listed in Reached): whether a convex crease edge out of it
+  // joins it to b's local wall, near the ball.
+  bool JoinedAcross(vtkIdType b, const double centre[3], double reach2, Scratch& scratch) const
+  {
+    const unsigned ofA = scratch.Stamp;
+    const vtkIdType w = this->OfTriangle[b];
+    std::vector<vtkIdType> across;
+    for (vtkIdType u : scratch.Reached)
     {
       for (int j = 0; j < 3; ++j)
       {
-        if (this->Kind[3 * t + j] == ConvexCrease &&
-          std::binary_search(b.Triangles.begin(), b.Triangles.end(), this->Neighbour[3 * t + j]))
+        const vtkIdType n = this->Neighbour[3 * u + j];
+        if (this->Kind[3 * u + j] == ConvexCrease && scratch.Mark[n] != ofA && this->OfTriangle[n] == w &&
+          (n == b || this->BoxDistance2(n, centre) <= reach2))
         {
-          return true;
+          across.push_back(n);
         }
+      }
+    }
+    for (vtkIdType t : across)
+    {
+      if (this->Join(t, b, centre, reach2, scratch) == Search::Joined)
+      {
+        return true;
       }
     }
     return false;
   }
 
-  // Whether a crease inside t's wall may lie within reach of a ball of this radius
-  // touching t (along the surface, twice the reach: the paths run between centroids).
-  bool NearCrease(vtkIdType t, double radius) const
+  // Whether triangles a and b of one wall lie on two local walls that meet along a
+  // convex crease near the ball.
+  bool MeetLocally(vtkIdType a, vtkIdType b, const double centre[3], double reach2, Scratch& scratch) const
   {
-    return this->CreaseNear[t] <= 2.0 * LocalReach * radius;
+    return this->InnerConvex[this->OfTriangle[a]] && this->Join(a, b, centre, reach2, scratch) == Search::Apart &&
+      this->JoinedAcross(b, centre, reach2, scratch);
   }
 
   // The squared distance from x to triangle t's bounding box.
   double BoxDistance2(vtkIdType t, const double x[3]) const
   {
-    const vtkIdType* v = this->Mesh->GetTriangle(t);
-    const double* a = this->Mesh->GetPoint(v[0]);
-    const double* b = this->Mesh->GetPoint(v[1]);
-    const double* c = this->Mesh->GetPoint(v[2]);
+    const std::array<double, 6>& box = this->Box[t];
     double d2 = 0.0;
     for (int k = 0; k < 3; ++k)
     {
-      const double lo = std::min({ a[k], b[k], c[k] }), hi = std::max({ a[k], b[k], c[k] });
-      const double d = x[k] < lo ? lo - x[k] : x[k] > hi ? x[k] - hi : 0.0;
+      const double d = x[k] < box[k] ? box[k] - x[k] : x[k] > box[k + 3] ? x[k] - box[k + 3] : 0.0;
       d2 += d * d;
     }
     return d2;
@@ -498,7 +481,8 @@ struct vtkMedialThickness::Walls
 
   // Whether a tangent ball at a point of `faces` may grow: the surface near its point
   // shrank it (a facet's tilt or a ripple), or what stopped it lies less than the wall
-  // angle away on a wall that meets the point's along a convex crease (an edge).
+  // angle away on a wall that meets the point's along a convex crease (an edge), near
+  // the ball where one wall holds both.
   bool MayGrow(const std::vector<vtkIdType>& faces, const vtkMedialSampleRecord& ball) const
   {
     if (!ball.Valid || !(ball.Radius > 0.0))
@@ -521,22 +505,37 @@ struct vtkMedialThickness::Walls
       {
         return true;
       }
-      local = local || (w == this->OfTriangle[f] && this->Creased[w] && this->NearCrease(f, ball.Radius));
+      local = local || w == this->OfTriangle[f];
     }
-    if (!local)
+    if (!local || !this->InnerConvex[w])
     {
       return false;
     }
-    std::vector<vtkIdType> touched(faces);
-    touched.push_back(ball.ContactTriangle);
-    std::vector<int> of;
-    const std::vector<Local> walls = this->LocalWalls(touched, ball.Centre, ball.Radius, of);
-    const Local& contact = walls[of.back()];
-    for (size_t i = 0; i + 1 < touched.size(); ++i)
+    // The faces on the contact's wall, each unless a search from it reaches the
+    // contact's local wall (or a face already known on it, for the fan's faces meet).
+    const double reach2 = LocalReach * LocalReach * ball.Radius * ball.Radius;
+    Scratch& scratch = LocalScratch();
+    vtkIdType onContactWall = -1;
+    for (vtkIdType f : faces)
     {
-      if (of[i] != of.back() && this->MeetConvex(walls[of[i]], contact))
+      if (this->OfTriangle[f] != w ||
+        (onContactWall >= 0 && this->Join(f, onContactWall, ball.Centre, reach2, scratch) == Search::Joined))
       {
-        return true;
+        continue;
+      }
+      switch (this->Join(f, ball.ContactTriangle, ball.Centre, reach2, scratch))
+      {
+        case Search::Joined:
+          onContactWall = f;
+          break;
+        case Search::Apart:
+          if (this->JoinedAcross(ball.ContactTriangle, ball.Centre, reach2, scratch))
+          {
+            return true;
+          }
+          break;
+        case Search::GaveUp:
+          break;
       }
     }
     return false;
@@ -550,38 +549,41 @@ struct vtkMedialThickness::Walls
 
   // True when the contacts on `triangles` (-1: one of `faces`) of a ball (centre,
   // radius) lie on at least two walls, each of which meets another one of them along a
-  // convex crease (local walls, near the ball, where a wall has a crease inside it).
+  // convex crease (local walls, near the ball, where a wall has a convex crease inside it).
   bool MaySlide(const std::vector<vtkIdType>& faces, const vtkIdType* triangles, int count,
     const double centre[3], double radius) const
   {
-    std::vector<vtkIdType> touched;
-    bool creased = false;
+    // Each contact's wall, and one contact per local wall (a wall without a convex
+    // crease near the ball is one).
+    struct Local
+    {
+      vtkIdType Wall;
+      vtkIdType Triangle;
+    };
+    std::vector<Local> walls;
+    const double reach2 = LocalReach * LocalReach * radius * radius;
+    Scratch& scratch = LocalScratch();
     for (int i = 0; i < count; ++i)
     {
       const vtkIdType t = triangles[i] >= 0 ? triangles[i] : (faces.empty() ? -1 : faces.front());
-      if (t >= 0 && std::find(touched.begin(), touched.end(), t) == touched.end())
+      if (t < 0)
       {
-        touched.push_back(t);
-        creased = creased || (this->Creased[this->OfTriangle[t]] && this->NearCrease(t, radius));
+        continue;
       }
-    }
-    std::vector<int> of;
-    std::vector<Local> walls;
-    if (creased)
-    {
-      walls = this->LocalWalls(touched, centre, radius, of);
-    }
-    else
-    {
-      // Every wall whole (the common case, and the only one without creased walls).
-      for (vtkIdType t : touched)
+      // A new local wall unless a contact already listed lies on t's wall, and it is
+      // whole or a search from t reaches that contact (a search that gives up counts as
+      // reaching it: the whole wall's answer).
+      const vtkIdType w = this->OfTriangle[t];
+      bool joined = false;
+      for (const Local& l : walls)
       {
-        const vtkIdType w = this->OfTriangle[t];
-        auto same = std::find_if(walls.begin(), walls.end(), [w](const Local& l) { return l.Wall == w; });
-        if (same == walls.end())
-        {
-          walls.push_back({ w, {} });
-        }
+        joined = joined ||
+          (l.Wall == w &&
+            (!this->InnerConvex[w] || this->Join(t, l.Triangle, centre, reach2, scratch) != Search::Apart));
+      }
+      if (!joined)
+      {
+        walls.push_back({ w, t });
       }
     }
     if (walls.size() < 2)
@@ -593,7 +595,10 @@ struct vtkMedialThickness::Walls
       bool meets = false;
       for (const Local& b : walls)
       {
-        meets = meets || (&a != &b && this->MeetConvex(a, b));
+        meets = meets ||
+          (&a != &b &&
+            (a.Wall != b.Wall ? this->MeetConvex(a.Wall, b.Wall)
+                              : this->MeetLocally(a.Triangle, b.Triangle, centre, reach2, scratch)));
       }
       if (!meets)
       {

@@ -46,7 +46,8 @@
  *     sides; for a wall with a crease inside it, whether two contacts lie on walls
  *     meeting along a convex crease is asked near the ball: the triangles joined to
  *     each across smooth edges within 2.5 radii of its centre, and a convex crease edge
- *     between them.
+ *     between them; answered by searches that stop at the other contact (at most 8192
+ *     triangles each, beyond which the whole wall's answer stands).
  *  4. VertexBalls: the tangent ball, the maximal ball tangent at each vertex along its
  *     inward normal, by the sampler's one-pass solver and its rules
  *     (MinimumSeparationAngle theta, and MaximumProtrusion: a ball that crosses the
