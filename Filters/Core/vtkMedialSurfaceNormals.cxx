@@ -111,12 +111,13 @@ int vtkMedialSurfaceNormals::NormalsAtPoint(const vtkMedialTriangleMesh& mesh, v
   const double* at = mesh.GetPoint(point);
   // The normal of the corner at `point` of around[own]: the mean of the usable
   // triangles' normals within the crease angle of its own, or its own when none is.
-  auto cornerNormal = [&](int own, float f[3]) {
+  // `withinCrease`: every usable triangle is known to be within it (a smooth point).
+  auto cornerNormal = [&](int own, bool withinCrease, float f[3]) {
     double n[3] = { 0, 0, 0 };
     for (int i = 0; i < count; ++i)
     {
       const vtkIdType u = around[i];
-      if (usable[i] && G::Dot(facetNormals[own], facetNormals[i]) >= cosCrease)
+      if (usable[i] && (withinCrease || G::Dot(facetNormals[own], facetNormals[i]) >= cosCrease))
       {
         // Max's weight: the area vector over |b - at|^2 |c - at|^2 (outward: the
         // corners in the mesh's counter-clockwise order).
@@ -142,7 +143,8 @@ int vtkMedialSurfaceNormals::NormalsAtPoint(const vtkMedialTriangleMesh& mesh, v
     return length > 0.0;
   };
   // Smooth: every usable triangle counts for every corner, so every corner sums the
-  // same terms in the same order and gets the same normal.
+  // same terms in the same order and gets the same normal, and corner 0's sum need
+  // not test the angles again (its pairs were tested with the same dot products).
   // (The dot product is symmetric, bit for bit: each pair once, failing when either
   // side counts for the other.)
   bool smooth = true;
@@ -153,7 +155,7 @@ int vtkMedialSurfaceNormals::NormalsAtPoint(const vtkMedialTriangleMesh& mesh, v
       smooth = !(usable[own] || usable[i]) || G::Dot(facetNormals[own], facetNormals[i]) >= cosCrease;
     }
   }
-  if (count > 0 && smooth && cornerNormal(0, normals))
+  if (count > 0 && smooth && cornerNormal(0, true, normals))
   {
     std::fill_n(slot, count, 0);
     return 1;
@@ -163,7 +165,7 @@ int vtkMedialSurfaceNormals::NormalsAtPoint(const vtkMedialTriangleMesh& mesh, v
   for (int own = 0; own < count; ++own)
   {
     float f[3];
-    cornerNormal(own, f);
+    cornerNormal(own, false, f);
     int s = 0;
     while (s < distinct && std::memcmp(normals + 3 * s, f, sizeof(f)) != 0)
     {

@@ -270,6 +270,25 @@ void vtkMedialSurfaceQuery::VisitNear(
   });
 }
 
+bool vtkMedialSurfaceQuery::TrianglesWithinIfEmpty(
+  const double x[3], double distance, double emptyRadius, std::vector<ClosestHit>& hits) const
+{
+  hits.clear();
+  // ContainsBall's limit: at or below zero the ball is empty.
+  const double limit = emptyRadius - this->Slack;
+  const bool empty = this->Tree.VisitWithinIfEmpty(x, distance, limit > 0.0 ? limit : 0.0,
+    [&](double d2, const double* q, vtkIdType t) {
+      ClosestHit hit;
+      std::copy(q, q + 3, hit.Point);
+      hit.Distance = std::sqrt(d2);
+      hit.Triangle = t;
+      hits.push_back(hit);
+    });
+  std::sort(hits.begin(), hits.end(),
+    [](const ClosestHit& a, const ClosestHit& b) { return a.Triangle < b.Triangle; });
+  return empty;
+}
+
 void vtkMedialSurfaceQuery::TrianglesWithin(
   const double x[3], double distance, std::vector<ClosestHit>& hits, const ContactFilter* filter) const
 {

@@ -106,6 +106,14 @@ public:
     const ContactFilter* filter = nullptr) const;
 
   /**
+   * ContainsBall(x, emptyRadius) && TrianglesWithin(x, distance, hits), in one walk
+   * (for emptyRadius <= distance): the same answer and, when true, the same hits.
+   * When false, `hits` holds only some of them. No filter.
+   */
+  bool TrianglesWithinIfEmpty(
+    const double x[3], double distance, double emptyRadius, std::vector<ClosestHit>& hits) const;
+
+  /**
    * Largest admissible ball tangent at p with centre p + r n (n unit, inward),
    * found in one traversal that shrinks the ball at every blocking point (see
    * vtkMedialTriangleBVH). On entry `ball` holds an upper bound and its contact. With

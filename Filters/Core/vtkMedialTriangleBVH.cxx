@@ -2137,21 +2137,48 @@ private:
 };
 
 // Pushes the lanes of `node` set in `mask` with their keys, the smallest key on top
-// (ties: the lower lane), so that a depth-first walk takes the nearest first.
+// (ties: the lower lane), so that a depth-first walk takes the nearest first. Each
+// kept lane's place is its rank among the kept lanes (those with a smaller key, or
+// an equal key and a lower lane, come first): the order of a stable sort, found
+// without the data-dependent branches of an insertion sort, which mispredict.
 template <class Lanes>
 void PushNearestOnTop(const vtkMedialTriangleBVH::WideNode& node, int mask, const float key[4], Lanes& lanes)
 {
   int order[4], count = 0;
+  bool ordered = true; // false with a NaN key, which compares false with everything
   for (int i = 0; i < 4; ++i)
   {
+    count += (mask >> i) & 1;
+    ordered = ordered && !((mask & (1 << i)) && key[i] != key[i]);
+  }
+  if (!ordered)
+  {
+    // The insertion sort the ranks stand for, whose order NaN keys leave defined.
+    count = 0;
+    for (int i = 0; i < 4; ++i)
+    {
+      if (mask & (1 << i))
+      {
+        int j = count++;
+        for (; j > 0 && key[order[j - 1]] > key[i]; --j)
+        {
+          order[j] = order[j - 1];
+        }
+        order[j] = i;
+      }
+    }
+  }
+  for (int i = 0; i < 4 && ordered; ++i)
+  {
+    int rank = 0;
+    for (int j = 0; j < 4; ++j)
+    {
+      const int before = static_cast<int>(key[j] < key[i]) | (static_cast<int>(key[j] == key[i]) & static_cast<int>(j < i));
+      rank += (mask >> j) & before;
+    }
     if (mask & (1 << i))
     {
-      int j = count++;
-      for (; j > 0 && key[order[j - 1]] > key[i]; --j)
-      {
-        order[j] = order[j - 1];
-      }
-      order[j] = i;
+      order[rank] = i;
     }
   }
   for (int j = count - 1; j >= 0; --j)
@@ -2911,4 +2938,61 @@ void vtkMedialTriangleBVH::VisitWithin(const double x[3], double distance, const
       }
       return true;
     });
+}
+
+bool vtkMedialTriangleBVH::VisitWithinIfEmpty(const double x[3], double distance, double emptyRadius,
+  const std::function<void(double, const double*, vtkIdType)>& visit) const
+{
+  double xRel[3];
+  G::Sub(x, this->Origin, xRel);
+  const double extent = this->Extent();
+  bool wide = false;
+#if defined(__SSE2__)
+  wide = extent > 0.0 && std::fabs(xRel[0]) <= 4.0 * extent && std::fabs(xRel[1]) <= 4.0 * extent &&
+    std::fabs(xRel[2]) <= 4.0 * extent && !this->WideNodes.empty();
+#endif
+  if (!(emptyRadius > 0.0))
+  {
+    this->VisitWithin(x, distance, nullptr, 1.0, visit);
+    return true; // ContainsBall's reach is empty
+  }
+  if (!wide || !(emptyRadius <= distance))
+  {
+    // Not the padded wide walk the argument below needs: the two queries.
+    if (!this->ContainsBall(x, emptyRadius, -1, nullptr, 1.0, false))
+    {
+      return false;
+    }
+    this->VisitWithin(x, distance, nullptr, 1.0, visit);
+    return true;
+  }
+  // ContainsBall(x, emptyRadius) is false exactly when its walk meets a triangle that
+  // passes its leaf tests (plane, box) and lies nearer than emptyRadius. The wide walk
+  // drops a lane only when its float box, widened by 1e-5 of the extent, lies beyond
+  // the reach, so every triangle nearer than emptyRadius is in a lane that both walks
+  // keep (this one's reach is larger); the leaf tests are repeated here at
+  // ContainsBall's reach, with its expressions, and the distance is the same number.
+  const double empty2 = emptyRadius * emptyRadius; // ContainsBall's reach2
+  const double emptyRounding = 10.0 * this->RoundingPad * std::sqrt(empty2);
+  const double limit2 = distance * distance;
+  double reach2 = limit2 * (1.0 + 1e-12) + 1e-300; // as VisitWithin
+  bool blocked = false;
+  this->VisitAdmissible(x, -1, nullptr, 1.0, false, reach2, [&](double d2, const double q[3], vtkIdType t) {
+    if (d2 < empty2)
+    {
+      const LeafTriangle& leaf = this->LeafTriangles[this->LeafRank[t]];
+      const double off = G::Dot(leaf.Plane, x) - leaf.Plane[3];
+      if (!(off * off >= empty2) && !(BoxDistance2(leaf.Lo, leaf.Hi, xRel) >= empty2 * (1.0 + 1e-9) + emptyRounding))
+      {
+        blocked = true;
+        return false;
+      }
+    }
+    if (d2 <= limit2)
+    {
+      visit(d2, q, t);
+    }
+    return true;
+  });
+  return !blocked;
 }

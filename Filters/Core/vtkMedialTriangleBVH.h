@@ -234,6 +234,16 @@ public:
     const std::function<void(double, const double*, vtkIdType)>& visit) const;
 
   /**
+   * VisitWithin(x, distance) without a cap, in one walk, when ContainsBall(x,
+   * emptyRadius) with no own triangle and no cap holds (true); false as soon as it is
+   * known not to hold, and then visit may have seen only some triangles. The same
+   * answers as the two queries (the visits in the same order), for emptyRadius <=
+   * distance; saves the contains-ball walk for the balls that are empty.
+   */
+  bool VisitWithinIfEmpty(const double x[3], double distance, double emptyRadius,
+    const std::function<void(double, const double*, vtkIdType)>& visit) const;
+
+  /**
    * Whether the searches may drop a lane on its subtree's inner sphere (WideSphere), on
    * by default. The balls are the same either way (the lanes dropped hold nothing that
    * could change them); off, a search visits what it did before the spheres, which the

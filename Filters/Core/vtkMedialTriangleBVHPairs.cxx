@@ -502,19 +502,14 @@ void vtkMedialTriangleBVH::FindIntersectingPairs(const vtkMedialTriangleMesh& me
     return;
   }
   threads = std::max(1, threads);
-  // Per leaf slot: the corners' point ids (shared corners are found by id, the mesh's
-  // merge made equal coordinates one point) and whether the plane is ill-conditioned.
-  vtkMedialBuffer<std::int32_t> ids(3 * static_cast<size_t>(slots));
+  // Per leaf slot: whether the plane is ill-conditioned.
   vtkMedialBuffer<char> sliver(static_cast<size_t>(slots));
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::int64_t i = 0; i < slots; ++i)
   {
-    const vtkIdType* v = mesh.GetTriangle(this->LeafTriangles[i].Triangle);
-    for (int k = 0; k < 3; ++k)
-    {
-      ids[3 * i + k] = static_cast<std::int32_t>(v[k]);
-    }
-    sliver[i] = IsSliver(mesh.GetPoint(v[0]), mesh.GetPoint(v[1]), mesh.GetPoint(v[2]));
+    double scratch[9];
+    const double* x = this->Corners(static_cast<std::int32_t>(i), scratch);
+    sliver[i] = IsSliver(x, x + 3, x + 6);
   }
   // Boxes (floats relative to Origin, rounded outward) are compared padded by the
   // tolerance, so that pairs closer than it are tested too.
@@ -536,26 +531,28 @@ void vtkMedialTriangleBVH::FindIntersectingPairs(const vtkMedialTriangleMesh& me
   };
   using Pairs = std::vector<std::pair<vtkIdType, vtkIdType>>;
   const PatchCulling culling(*this, mesh, sliver, tolerance);
-  // One pair of slots whose boxes overlap: the test by the corners they share.
+  // One pair of slots whose boxes overlap: the test by the corners they share. Shared
+  // corners are found by their coordinates, without a per-slot copy of the point ids
+  // (12 bytes a triangle at the check's memory peak): the mesh merged every two points
+  // with equal coordinates into one, so equal corners are the same point, and the
+  // tree's corners are the mesh's values (as floats only when they are floats).
   auto test = [&](std::int32_t i, std::int32_t j, Pairs& out) {
-    const std::int32_t* vi = &ids[3 * static_cast<size_t>(i)];
-    const std::int32_t* vj = &ids[3 * static_cast<size_t>(j)];
+    Triangle a, b;
+    triangle(i, a);
+    triangle(j, b);
     int sharedI[3], sharedJ[3], shared = 0;
-    for (int a = 0; a < 3; ++a)
+    for (int p = 0; p < 3; ++p)
     {
-      for (int b = 0; b < 3; ++b)
+      for (int q = 0; q < 3; ++q)
       {
-        if (vi[a] == vj[b])
+        if (a.X[p][0] == b.X[q][0] && a.X[p][1] == b.X[q][1] && a.X[p][2] == b.X[q][2])
         {
-          sharedI[shared] = a;
-          sharedJ[shared] = b;
+          sharedI[shared] = p;
+          sharedJ[shared] = q;
           ++shared;
         }
       }
     }
-    Triangle a, b;
-    triangle(i, a);
-    triangle(j, b);
     bool may = true; // three shared corners: a duplicate (the mesh drops them)
     if (shared == 0)
     {

@@ -6,6 +6,7 @@
 #include "vtkMedialPipeline.h"
 #include "vtkMedialPlane.h"
 #include "vtkMedialProgress.h"
+#include "vtkMedialRepairPatch.h"
 #include "vtkMedialSolidCheck.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialSurfaceRepair.h"
@@ -63,26 +64,7 @@ constexpr vtkIdType LargeShell = 200000;
 // region: CGAL widens a region it cannot mend by up to 6 rings, and by its box.
 constexpr int PatchMargin = 12;
 
-vtkSmartPointer<vtkPolyData> ToPolyData(const Soup& soup)
-{
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(soup.Points.size()));
-  for (size_t i = 0; i < soup.Points.size(); ++i)
-  {
-    points->SetPoint(static_cast<vtkIdType>(i), soup.Points[i].data());
-  }
-  vtkNew<vtkCellArray> cells;
-  cells->AllocateExact(static_cast<vtkIdType>(soup.Triangles.size()), 3 * static_cast<vtkIdType>(soup.Triangles.size()));
-  for (const auto& t : soup.Triangles)
-  {
-    cells->InsertNextCell(3, t.data());
-  }
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  out->SetPoints(points);
-  out->SetPolys(cells);
-  return out;
-}
+using vtkMedialSurfaceRepair::ToPolyData;
 
 // The triangles of `mesh` (oriented as it oriented them) for which keep(triangle) is
 // true, over their points only.
@@ -398,6 +380,59 @@ bool Stitch(Soup& soup, const std::vector<char>& in, const std::vector<vtkIdType
   return true;
 }
 
+// The soup's pieces (triangles connected through shared edges, by point ids) that have
+// no border edge.
+vtkIdType ClosedPieces(const Soup& soup)
+{
+  const size_t nt = soup.Triangles.size();
+  std::vector<size_t> parent(nt);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](size_t i) {
+    while (parent[i] != i)
+    {
+      i = parent[i] = parent[parent[i]];
+    }
+    return i;
+  };
+  std::vector<std::array<vtkIdType, 3>> edges; // lower point, higher point, triangle
+  edges.reserve(3 * nt);
+  for (size_t t = 0; t < nt; ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const vtkIdType a = soup.Triangles[t][k], b = soup.Triangles[t][(k + 1) % 3];
+      edges.push_back({ std::min(a, b), std::max(a, b), static_cast<vtkIdType>(t) });
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  std::vector<char> open(nt, 0);
+  for (size_t i = 0; i < edges.size();)
+  {
+    size_t j = i + 1;
+    while (j < edges.size() && edges[j][0] == edges[i][0] && edges[j][1] == edges[i][1])
+    {
+      parent[find(static_cast<size_t>(edges[j][2]))] = find(static_cast<size_t>(edges[i][2]));
+      ++j;
+    }
+    if (j == i + 1)
+    {
+      open[edges[i][2]] = 1;
+    }
+    i = j;
+  }
+  std::vector<char> openPiece(nt, 0);
+  for (size_t t = 0; t < nt; ++t)
+  {
+    openPiece[find(t)] |= open[t];
+  }
+  vtkIdType closed = 0;
+  for (size_t t = 0; t < nt; ++t)
+  {
+    closed += find(t) == t && !openPiece[t] ? 1 : 0;
+  }
+  return closed;
+}
+
 vtkIdType UsedPoints(const Soup& soup)
 {
   std::vector<char> used(soup.Points.size(), 0);
@@ -477,7 +512,10 @@ private:
   // counts those under 1e-14 of the squared diagonal): Clean removes them, with margin.
   double TinyArea() const { return 1e-12 * this->Diagonal * this->Diagonal; }
   bool Shells(Soup& work, bool& wrap);
-  bool RemoveInPatch(Soup& shell, const std::vector<vtkIdType>& near, int rings, std::string& error);
+  bool RemoveInPatch(Soup& shell, const std::vector<vtkIdType>& near, int rings, std::string& error,
+    std::vector<char>& in, Soup& before);
+  double MovedInPatch(const vtkMedialRepairPatch& patch);
+  void MeasurePatch(const vtkMedialTriangleMesh& input, const vtkMedialRepairPatch& patch);
   bool RemoveSheets(Soup& work, bool& wrap);
   void Measure(const vtkMedialTriangleMesh& input, vtkPolyData* output, const vtkMedialSurfaceQuery* outputQuery);
   void Line(const std::string& text) { this->Self->Report.push_back(text); }
@@ -502,7 +540,12 @@ private:
   double Diagonal = 0.0;
   bool NoSolid = false; // nothing closed was left: the wrap is a thin solid around a sheet
   bool OpenPieces = true; // the shells step saw an open piece (the sheets step has work)
+  bool FilledShut = false; // holes larger than MaximumHoleSize were filled to close a piece
   PreparedPtr Last;       // the last preparation, shared by the steps
+  bool WorkIsInput = false; // the shells step starts from the input's own mesh
+  // The one shell, resolved by a local removal whose result was checked locally: the
+  // final check and the measure are local too (see vtkMedialRepairPatch).
+  std::unique_ptr<vtkMedialRepairPatch> Patch;
   std::string Error;
   std::string StageName;
   std::chrono::steady_clock::time_point StageStart;
@@ -621,6 +664,35 @@ double vtkMedialRepairFilter::vtkInternals::Moved(const Soup& before, const Soup
   return largest;
 }
 
+// Moved() for a shell whose patch vtkMedialRepairPatch certified: the points of the patch
+// that the result dropped are the only ones that moved.
+double vtkMedialRepairFilter::vtkInternals::MovedInPatch(const vtkMedialRepairPatch& patch)
+{
+  const Soup& before = patch.GetBefore();
+  std::vector<vtkIdType> moved;
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(before.Points.size()); ++i)
+  {
+    if (!patch.KeptPoint(before.Points[i].data()))
+    {
+      moved.push_back(i);
+    }
+  }
+  const double bound = 2.0 * this->Diagonal, buried = BuriedDepth * this->Diagonal;
+  const vtkIdType n = static_cast<vtkIdType>(moved.size());
+  double largest = 0.0;
+#pragma omp parallel for schedule(static) num_threads(this->Threads) reduction(max : largest)
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double* x = before.Points[moved[i]].data();
+    const double d = patch.Distance(x, bound);
+    if (!(d > buried && patch.IsInside(x)))
+    {
+      largest = std::max(largest, d);
+    }
+  }
+  return largest;
+}
+
 // A valid solid: every shell closed, manifold (as the preparation sees it),
 // consistently oriented, free of exact self-intersections and degenerate triangles,
 // and no two shells with a volume in common (touching ones are counted).
@@ -672,12 +744,12 @@ bool vtkMedialRepairFilter::vtkInternals::ShellsValid(const Soup& soup, vtkIdTyp
 // PatchMargin rings more, for CGAL's own widening) and stitched back along the patch's
 // border, which must not move: CGAL's work then costs as much on a million triangles as
 // on a thousand (the halfedge mesh of the whole shell took longer than the removal).
-bool vtkMedialRepairFilter::vtkInternals::RemoveInPatch(
-  Soup& shell, const std::vector<vtkIdType>& near, int rings, std::string& error)
+bool vtkMedialRepairFilter::vtkInternals::RemoveInPatch(Soup& shell, const std::vector<vtkIdType>& near, int rings,
+  std::string& error, std::vector<char>& in, Soup& before)
 {
-  const std::vector<char> in = Grow(shell, near, rings + PatchMargin);
+  in = Grow(shell, near, rings + PatchMargin);
   std::vector<vtkIdType> shellPoint;
-  const Soup before = Extract(shell, in, shellPoint);
+  before = Extract(shell, in, shellPoint);
   // `near` in the patch's numbering (it keeps the shell's triangle order).
   std::vector<vtkIdType> patchTriangle(shell.Triangles.size(), -1);
   vtkIdType next = 0;
@@ -881,7 +953,26 @@ bool vtkMedialRepairFilter::vtkInternals::Shells(Soup& work, bool& wrap)
         }
         else
         {
-          resolved = this->RemoveInPatch(shell, near, attempts[attempt], error) && tidyLocal(shell);
+          std::vector<char> in;
+          Soup before;
+          resolved = this->RemoveInPatch(shell, near, attempts[attempt], error, in, before);
+          // The one shell of the first round: checked and measured locally when
+          // vtkMedialRepairPatch can certify it, else as a whole.
+          if (resolved && round == 0 && shells == 1)
+          {
+            auto patch = std::make_unique<vtkMedialRepairPatch>();
+            std::string why;
+            if (patch->Certify(pieces[s], *p->Query, in, before, shell, why))
+            {
+              resolved = this->MovedInPatch(*patch) <= MovedTolerance * this->Diagonal;
+              if (resolved)
+              {
+                this->Patch = std::move(patch);
+              }
+              continue;
+            }
+          }
+          resolved = resolved && tidyLocal(shell);
         }
         resolved = resolved && this->Moved(pieces[s], shell) <= MovedTolerance * this->Diagonal;
       }
@@ -905,6 +996,10 @@ bool vtkMedialRepairFilter::vtkInternals::Shells(Soup& work, bool& wrap)
     for (const Soup& piece : pieces)
     {
       Append(work, piece);
+    }
+    if (this->Patch)
+    {
+      break; // one valid shell: another round would find nothing to do
     }
   }
   self->TouchingShells = static_cast<vtkIdType>(touching.size());
@@ -955,7 +1050,9 @@ bool vtkMedialRepairFilter::vtkInternals::RemoveSheets(Soup& work, bool& wrap)
          << " in one plane)";
       return this->NoVolume(os.str());
     }
-    this->NoSolid = true;
+    // (After the larger holes were filled shut, some piece is closed by its own
+    // points: what is left is wrapped with it, not a thin solid.)
+    this->NoSolid = !this->FilledShut;
     wrap = true;
     return true;
   }
@@ -1124,6 +1221,77 @@ void vtkMedialRepairFilter::vtkInternals::Measure(
     else if (i < nt)
     {
       buriedTriangle[i] = 1;
+    }
+  }
+  double buriedArea = 0.0, area = 0.0;
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    area += input.Areas[t];
+    if (buriedTriangle[t])
+    {
+      buriedArea += input.Areas[t];
+    }
+  }
+  self->MaximumDistance = largest / this->Diagonal;
+  self->BuriedArea = area > 0.0 ? buriedArea / area : 0.0;
+}
+
+// Measure() when the output is the input with one patch replaced (vtkMedialRepairPatch):
+// the input outside the patch is kept, at distance 0 and not buried, so only the
+// patch's triangles and points are measured.
+void vtkMedialRepairFilter::vtkInternals::MeasurePatch(const vtkMedialTriangleMesh& input, const vtkMedialRepairPatch& patch)
+{
+  vtkMedialRepairFilter* self = this->Self;
+  const vtkIdType nt = input.GetNumberOfTriangles();
+  std::vector<vtkIdType> samples; // triangles of the patch, then -1 - i for point i of the patch
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    if (patch.InPatch(t))
+    {
+      samples.push_back(t);
+    }
+  }
+  const Soup& before = patch.GetBefore();
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(before.Points.size()); ++i)
+  {
+    samples.push_back(-1 - i);
+  }
+  const double bound = 2.0 * this->Diagonal, buried = BuriedDepth * this->Diagonal;
+  const vtkIdType n = static_cast<vtkIdType>(samples.size());
+  double largest = 0.0;
+  std::vector<unsigned char> buriedTriangle(nt, 0);
+#pragma omp parallel for schedule(static) num_threads(this->Threads) reduction(max : largest)
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const vtkIdType sample = samples[i];
+    double x[3];
+    bool kept = false;
+    if (sample >= 0)
+    {
+      const vtkIdType* v = input.GetTriangle(sample);
+      for (int k = 0; k < 3; ++k)
+      {
+        x[k] = (input.GetPoint(v[0])[k] + input.GetPoint(v[1])[k] + input.GetPoint(v[2])[k]) / 3.0;
+      }
+      kept = patch.KeptTriangle(input.GetPoint(v[0]), input.GetPoint(v[1]), input.GetPoint(v[2]));
+    }
+    else
+    {
+      std::copy_n(before.Points[-1 - sample].data(), 3, x);
+      kept = patch.KeptPoint(x);
+    }
+    if (kept)
+    {
+      continue;
+    }
+    const double distance = patch.Distance(x, bound);
+    if (!(distance > buried && patch.IsInside(x)))
+    {
+      largest = std::max(largest, distance);
+    }
+    else if (sample >= 0)
+    {
+      buriedTriangle[sample] = 1;
     }
   }
   double buriedArea = 0.0, area = 0.0;
@@ -1395,6 +1563,46 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
          << " faired), the largest " << largest / this->Diagonal << " of the diagonal";
       this->Line(os.str());
     }
+    // Holes too large to fill and nothing closed: the wrap would make a thin solid around
+    // the surface, not the solid it means. The larger holes are filled too when that
+    // closes a piece (a sheet's rim is still no hole, so a sheet stays open).
+    if (self->UnfilledHoles > 0 && self->Mode == AUTO)
+    {
+      const PreparedPtr p = this->PrepareSoup(work, false);
+      if (!p)
+      {
+        return false;
+      }
+      const auto& shells = p->Mesh->Shells;
+      if (std::none_of(shells.begin(), shells.end(), [](const auto& shell) { return shell.Closed; }))
+      {
+        Soup filled = work;
+        std::vector<vtkMedialSurfaceRepair::Hole> large;
+        // Kept when some piece is closed now: the later steps then treat the rest
+        // (stray sheets inside the solid removed; open pieces outside wrapped with it).
+        const vtkIdType closed =
+          vtkMedialSurfaceRepair::FillHoles(filled, HUGE_VAL, large, error) ? ClosedPieces(filled) : 0;
+        if (closed > 0)
+        {
+          vtkIdType filledLarge = 0;
+          for (const auto& hole : large)
+          {
+            filledLarge += hole.Filled ? 1 : 0;
+          }
+          std::ostringstream os;
+          os << "holes: " << Plural(filledLarge, "hole", "holes") << " larger than MaximumHoleSize "
+             << self->MaximumHoleSize << " of the diagonal filled too (the largest " << largestLeft / this->Diagonal
+             << "): nothing closed was left, and filled they close "
+             << Plural(closed, "piece", "pieces");
+          this->Line(os.str());
+          self->FilledHoles += filledLarge;
+          this->FilledShut = true;
+          self->UnfilledHoles = 0;
+          work = std::move(filled);
+        }
+        error.clear();
+      }
+    }
     if (self->UnfilledHoles > 0)
     {
       std::ostringstream os;
@@ -1413,6 +1621,7 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
     // contacts, pairs) is what a preparation of the soup would find.
     original->Source = work;
     this->Last = original;
+    this->WorkIsInput = true;
   }
   bool wrap = false;
   this->Stage("shells");
@@ -1447,7 +1656,7 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
   // The final check, and the orientation to bound a volume.
   this->Stage("orient");
   PreparedPtr result;
-  if (!wrap)
+  if (!wrap && !this->Patch)
   {
     vtkIdType touching = 0;
     wrap = !this->ShellsValid(work, touching);
@@ -1496,7 +1705,14 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
   output->ShallowCopy(out);
   self->Changed = true;
   this->Stage("measure");
-  this->Measure(m0, output, wrap || !result ? nullptr : result->Query);
+  if (!wrap && this->Patch && this->WorkIsInput)
+  {
+    this->MeasurePatch(m0, *this->Patch);
+  }
+  else
+  {
+    this->Measure(m0, output, wrap || !result ? nullptr : result->Query);
+  }
   this->Stage(nullptr);
   return true;
 }

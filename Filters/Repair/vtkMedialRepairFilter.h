@@ -25,6 +25,9 @@
  *     relative to the surface's) that bounds less than half of its piece's area is
  *     filled (triangulate_refine_and_fair_hole); larger ones are left to step 7, and a
  *     piece whose border spans more than half of it is a sheet, not a holed shell.
+ *     When no piece is closed and holes were too large (an open car body), the wrap
+ *     would make a thin solid around the sheet: the larger holes are then filled too,
+ *     and kept when that closes every piece.
  *  4. Union: closed shells whose solids overlap are joined exactly
  *     (corefine_and_compute_union), so two overlapping spheres become one solid.
  *     Shells that only touch (along an edge or at points, without a volume in common)
@@ -34,8 +37,10 @@
  *     inside are removed, so the shell bounds the solid it means, with that solid's
  *     topology); failing that, CGAL's local removal (experimental::
  *     remove_self_intersections, on a patch around the crossing pairs cut out of the
- *     shell and stitched back along its unchanged border; first when the pairs are few);
- *     failing that, step 7. Corefinement needs shells
+ *     shell and stitched back along its unchanged border; first when the pairs are few;
+ *     the result of one shell is then checked and measured on the patch alone,
+ *     vtkMedialRepairPatch); failing that, step 7. A point where two fans of triangles
+ *     meet (a pinch) is split for CGAL's halfedge mesh. Corefinement needs shells
  *     that do not cross themselves, so a shell resolved here is joined to the shells
  *     it overlaps in the next round of steps 4 and 5.
  *  6. Stray sheets: open pieces that lie inside the closed shells' solid are removed.

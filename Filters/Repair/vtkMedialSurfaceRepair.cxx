@@ -144,8 +144,15 @@ bool ToMesh(const Soup& soup, Mesh& mesh, std::string& error)
   ToPolygons(soup, points, polygons);
   if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
   {
-    error = "the surface is not an oriented manifold";
-    return false;
+    // A point where two fans of triangles meet (a pinch, which the preparation does not
+    // count as a defect) is split as orient_polygon_soup splits it: the copies keep
+    // their coordinates, and the preparation merges them again.
+    PMP::orient_polygon_soup(points, polygons);
+    if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    {
+      error = "the surface is not an oriented manifold";
+      return false;
+    }
   }
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   return true;

@@ -10,6 +10,7 @@
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -39,8 +40,14 @@ bool ToMesh(const Soup& soup, Mesh& mesh, std::string& error)
   }
   if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
   {
-    error = "a shell is not an oriented manifold";
-    return false;
+    // A pinch (two fans of triangles at a point) is split, as in
+    // vtkMedialSurfaceRepair.cxx.
+    PMP::orient_polygon_soup(points, polygons);
+    if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    {
+      error = "a shell is not an oriented manifold";
+      return false;
+    }
   }
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   return true;

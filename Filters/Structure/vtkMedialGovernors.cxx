@@ -557,15 +557,32 @@ void vtkMedialGovernors::Classify(
 void vtkMedialGovernors::Classify(const double c[3], double radius, const double* surfacePoint,
   double tolerance, double thetaDegrees, BallGovernors& out) const
 {
+  this->Classify(c, radius, surfacePoint, tolerance, thetaDegrees, false, out);
+}
+
+bool vtkMedialGovernors::ClassifyIfEmpty(
+  const double c[3], double radius, double tolerance, double thetaDegrees, BallGovernors& out) const
+{
+  return this->Classify(c, radius, nullptr, tolerance, thetaDegrees, true, out);
+}
+
+bool vtkMedialGovernors::Classify(const double c[3], double radius, const double* surfacePoint,
+  double tolerance, double thetaDegrees, bool requireEmpty, BallGovernors& out) const
+{
   out.Features.clear();
   out.Compound.clear();
   out.ContactFeatures.clear();
   out.NearestDistance = HUGE_VAL;
   thread_local vtkMedialGovernors::ClassifyScratch s;
-  const int capFeature = this->GatherContacts(c, radius, surfacePoint, tolerance, thetaDegrees, s);
+  bool blocked = false;
+  const int capFeature = this->GatherContacts(c, radius, surfacePoint, tolerance, thetaDegrees, requireEmpty, blocked, s);
+  if (blocked)
+  {
+    return false;
+  }
   if (s.Hits.empty() && capFeature < 0)
   {
-    return;
+    return true;
   }
   out.NearestDistance = s.Nearest;
   const double reach = std::max(0.0, radius) + tolerance;
@@ -681,36 +698,52 @@ void vtkMedialGovernors::Classify(const double c[3], double radius, const double
     out.Features.push_back(g.first);
     out.Compound.push_back(g.second);
   }
+  return true;
 }
 
 int vtkMedialGovernors::GatherContacts(const double c[3], double radius, const double* surfacePoint,
-  double tolerance, double thetaDegrees, ClassifyScratch& s) const
+  double tolerance, double thetaDegrees, bool requireEmpty, bool& blocked, ClassifyScratch& s) const
 {
   const double reach = std::max(0.0, radius) + tolerance;
   vtkMedialSurfaceQuery::ClosestHit deepest;
-  if (thetaDegrees > 0.0 && radius > tolerance && !this->Query->ContainsBall(c, radius - tolerance) &&
-    this->Query->ClosestPoint(c, radius, deepest))
+  // Whether the ball is empty (at radius - tolerance) and its contacts, in one walk:
+  // the contacts are read again only for a ball that is not.
+  bool read = false;
+  blocked = false;
+  if ((thetaDegrees > 0.0 || requireEmpty) && radius > tolerance)
   {
-    // The ball overlaps the surface inside its cap (the sampler ignores contacts
-    // there): the cap is one compound governor, and only the contacts beyond it,
-    // on the far side of the sampler's plane cut, are read.
-    const double* anchor = surfacePoint ? surfacePoint : deepest.Point;
-    double u[3];
-    G::Sub(anchor, c, u);
-    const double ul = std::sqrt(G::Dot(u, u));
-    if (ul > 0.0)
+    read = this->Query->TrianglesWithinIfEmpty(c, reach, radius - tolerance, s.Hits);
+    if (!read && requireEmpty)
     {
-      vtkMedialSurfaceQuery::ContactFilter filter;
-      G::AddScaled(c, radius / ul, u, filter.SamplePoint);
-      // The stopping contact lies on the cone's rim: lean towards keeping it.
-      filter.CosMinAngle = std::min(1.0, std::cos(thetaDegrees * (3.14159265358979323846 / 180.0)) + tolerance / radius);
-      this->Query->TrianglesWithin(c, reach, s.Hits, &filter);
-      s.Cap.assign(s.Hits.size(), 0);
-      s.Nearest = deepest.Distance;
-      return this->FeatureOfContact(c, deepest.Point, deepest.Distance, deepest.Triangle);
+      blocked = true;
+      return -1;
+    }
+    if (!read && thetaDegrees > 0.0 && this->Query->ClosestPoint(c, radius, deepest))
+    {
+      // The ball overlaps the surface inside its cap (the sampler ignores contacts
+      // there): the cap is one compound governor, and only the contacts beyond it,
+      // on the far side of the sampler's plane cut, are read.
+      const double* anchor = surfacePoint ? surfacePoint : deepest.Point;
+      double u[3];
+      G::Sub(anchor, c, u);
+      const double ul = std::sqrt(G::Dot(u, u));
+      if (ul > 0.0)
+      {
+        vtkMedialSurfaceQuery::ContactFilter filter;
+        G::AddScaled(c, radius / ul, u, filter.SamplePoint);
+        // The stopping contact lies on the cone's rim: lean towards keeping it.
+        filter.CosMinAngle = std::min(1.0, std::cos(thetaDegrees * (3.14159265358979323846 / 180.0)) + tolerance / radius);
+        this->Query->TrianglesWithin(c, reach, s.Hits, &filter);
+        s.Cap.assign(s.Hits.size(), 0);
+        s.Nearest = deepest.Distance;
+        return this->FeatureOfContact(c, deepest.Point, deepest.Distance, deepest.Triangle);
+      }
     }
   }
-  this->Query->TrianglesWithin(c, reach, s.Hits);
+  if (!read)
+  {
+    this->Query->TrianglesWithin(c, reach, s.Hits);
+  }
   s.Nearest = HUGE_VAL;
   for (const auto& hit : s.Hits)
   {
@@ -803,11 +836,22 @@ bool vtkMedialGovernors::Explains(int f, const double q[3], vtkIdType t, double 
 }
 
 bool vtkMedialGovernors::TouchedFeatures(
-  const double c[3], double radius, double tolerance, std::vector<int>& out) const
+  const double c[3], double radius, double tolerance, std::vector<int>& out, bool checkEmpty) const
 {
   out.clear();
   thread_local std::vector<vtkMedialSurfaceQuery::ClosestHit> hits;
-  this->Query->TrianglesWithin(c, radius + tolerance, hits);
+  if (checkEmpty)
+  {
+    if (!this->Query->TrianglesWithinIfEmpty(c, radius + tolerance, radius - tolerance, hits))
+    {
+      out.clear();
+      return false;
+    }
+  }
+  else
+  {
+    this->Query->TrianglesWithin(c, radius + tolerance, hits);
+  }
   const double eps2 = 1e-24 * this->Diagonal * this->Diagonal;
   auto consider = [&](int f) {
     if (std::fabs(this->DistanceToFeature(f, c) - radius) <= tolerance)

@@ -122,15 +122,23 @@ public:
   /// The same with an absolute contact tolerance and theta in degrees.
   void Classify(const double centre[3], double radius, const double* surfacePoint,
     double absoluteTolerance, double thetaDegrees, BallGovernors& out) const;
+  /// The same without a surface point, when the query's ContainsBall(centre, radius -
+  /// absoluteTolerance) holds; false (and `out` unspecified) when it does not, found
+  /// in the walk that reads the contacts.
+  bool ClassifyIfEmpty(const double centre[3], double radius, double absoluteTolerance, double thetaDegrees,
+    BallGovernors& out) const;
 
   /**
    * Every feature whose primitive is tangent to the sphere (centre, radius) within
    * `tolerance` where the ball touches it: a face's plane when the contact is on the
    * face, an edge's line and a vertex where the contact is on them (so a contact on
    * a reflex edge gives the edge and no face). Sorted ids. Returns false when some
-   * surface point is closer than radius - tolerance (the ball is not empty).
+   * surface point is closer than radius - tolerance (the ball is not empty). With
+   * checkEmpty, also false when the query's ContainsBall(centre, radius - tolerance)
+   * is, found in the same walk as the contacts.
    */
-  bool TouchedFeatures(const double centre[3], double radius, double tolerance, std::vector<int>& out) const;
+  bool TouchedFeatures(const double centre[3], double radius, double tolerance, std::vector<int>& out,
+    bool checkEmpty = false) const;
 
   /// MedialPointType of a ball with that many governors (see the class comment).
   int PointType(int governorCount, double radius) const;
@@ -164,8 +172,10 @@ private:
   // The contacts of a ball in s.Hits (s.Cap marks those in the cap around the
   // sample point). When the ball overlaps the surface (theta > 0) only the
   // contacts beyond the cap are read, and the cap's feature is returned (else -1).
+  bool Classify(const double centre[3], double radius, const double* surfacePoint, double absoluteTolerance,
+    double thetaDegrees, bool requireEmpty, BallGovernors& out) const;
   int GatherContacts(const double c[3], double radius, const double* surfacePoint, double tolerance,
-    double thetaDegrees, ClassifyScratch& s) const;
+    double thetaDegrees, bool requireEmpty, bool& blocked, ClassifyScratch& s) const;
   // With theta > 0: contacts on the triangles of the cap that lie beyond it.
   void AddContactsBeyondCap(const double c[3], double radius, double tolerance, ClassifyScratch& s) const;
   // The best contact of each set of s.Sets (s.Best, indexed by root).

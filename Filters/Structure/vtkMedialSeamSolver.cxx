@@ -692,12 +692,13 @@ bool vtkMedialSeamSolver::Verify(const BallVector& ball, const int* features, in
 {
   const double tolerance = this->VerifyTolerance * this->Governors.GetDiagonal();
   const double r = ball[3];
-  if (!(r > tolerance) || !this->Governors.GetQuery().ContainsBall(ball.data(), r - tolerance))
+  // The ball empty (the contains-ball query) and its governors, in one walk.
+  vtkMedialGovernors::BallGovernors touched;
+  if (!(r > tolerance) ||
+    !this->Governors.ClassifyIfEmpty(ball.data(), r, tolerance, this->Governors.GetMinimumSeparationAngle(), touched))
   {
     return false;
   }
-  vtkMedialGovernors::BallGovernors touched;
-  this->Governors.Classify(ball.data(), r, nullptr, tolerance, this->Governors.GetMinimumSeparationAngle(), touched);
   for (int i = 0; i < n; ++i)
   {
     if (!std::binary_search(touched.ContactFeatures.begin(), touched.ContactFeatures.end(), features[i]))

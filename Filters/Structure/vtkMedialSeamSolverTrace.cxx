@@ -81,10 +81,10 @@ int vtkMedialSeamSolver::SeamState(
       return LEFT;
     }
   }
-  // The contains-ball query stops at the first point inside: cheap for the balls
-  // beyond a seam's end, which may hold much of the surface.
-  if (!this->Governors.GetQuery().ContainsBall(X.data(), X[3] - tolerance) ||
-    !this->Governors.TouchedFeatures(X.data(), X[3], tolerance, touched))
+  // Empty (the contains-ball query) and the contacts in one walk, which stops at the
+  // first point inside: cheap for the balls beyond a seam's end, which may hold much
+  // of the surface.
+  if (!this->Governors.TouchedFeatures(X.data(), X[3], tolerance, touched, true))
   {
     touched.clear();
     return BLOCKED;

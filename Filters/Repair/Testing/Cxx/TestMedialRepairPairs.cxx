@@ -25,6 +25,7 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <map>
 #include <random>
 #include <set>
 
@@ -180,6 +181,117 @@ vtkSmartPointer<vtkPolyData> LoopedStrip(int steps)
   });
 }
 
+// Two sheets over the plane glued crosswise along a slit (the real picture of the
+// Riemann surface of sqrt((z - a)(z + a))), closed into one shell: one sheet over the
+// square [-2, 2]^2, the other over [-1, 1]^2, both facing +z within about 45 degrees, joined along y = 0, |x| < a, so that crossing the slit from one sheet leads
+// onto the other. Heights h = c |z - a| |z + a| cos(H - pi/4) on one sheet and -h on
+// the other, H the mean of the angles seen from the slit's ends (+-a, 0): they match
+// across the slit and differ elsewhere, but must be equal along a curve from the slit
+// (a branched surface over the plane crosses itself), so the two sheets intersect.
+// Together they are a patch whose normals lie in one cone and whose boundary, the two
+// squares, is two disjoint simple loops in projection; the degree over the inner
+// square is 2, not 1. Only the culling rule's one-loop condition refuses to cull it.
+// The outer square is closed by a wall down to a bottom, the inner by a tent up to an
+// apex, far enough for the tree to keep the two sheets in a subtree of their own.
+vtkSmartPointer<vtkPolyData> BranchedSheets(int perUnit = 20, double a = 0.4, double c = 0.1)
+{
+  using namespace medialtest::defects;
+  const int outer = 2 * perUnit, inner = perUnit, slit = static_cast<int>(std::lround(a * perUnit));
+  a = static_cast<double>(slit) / perUnit;
+  auto height = [a, c](double x, double y) {
+    const double h = 0.5 * (std::atan2(y, x - a) + std::atan2(y, x + a));
+    return c * std::hypot(x - a, y) * std::hypot(x + a, y) * std::cos(h - 0.25 * vtkMath::Pi());
+  };
+  std::vector<Point> x;
+  std::map<std::array<int, 4>, vtkIdType> ids; // (sheet or lip, i, j, side) -> point
+  // Point (i, j) of `sheet` (0 the large one, 1 the small one) as seen from the cell
+  // on `side` of y = 0 (1 above, 0 below). Inside the slit sheet 0's side above is
+  // sheet 1's side below (lip 2), and the other way round (lip 3); its ends are one
+  // point each, shared by all four.
+  auto point = [&](int sheet, int i, int j, int side) {
+    const double px = static_cast<double>(i) / perUnit, py = static_cast<double>(j) / perUnit;
+    std::array<int, 4> key = { sheet, i, j, 0 };
+    double z = (sheet == 0 ? 1.0 : -1.0) * height(px, py);
+    if (j == 0 && std::abs(i) < slit)
+    {
+      key = { (sheet == 0) == (side == 1) ? 2 : 3, i, 0, 0 };
+      z = key[0] == 2 ? height(px, 0.0) : height(px, -0.0);
+    }
+    else if (j == 0 && std::abs(i) == slit)
+    {
+      key = { 4, i, 0, 0 };
+      z = 0.0;
+    }
+    const auto found = ids.find(key);
+    if (found != ids.end())
+    {
+      return found->second;
+    }
+    x.push_back({ px, py, z });
+    return ids[key] = static_cast<vtkIdType>(x.size() - 1);
+  };
+  std::vector<std::array<vtkIdType, 3>> tris;
+  for (int sheet = 0; sheet < 2; ++sheet)
+  {
+    const int n = sheet == 0 ? outer : inner;
+    for (int i = -n; i < n; ++i)
+    {
+      for (int j = -n; j < n; ++j)
+      {
+        const int side = j >= 0 ? 1 : 0;
+        const vtkIdType p00 = point(sheet, i, j, side), p10 = point(sheet, i + 1, j, side),
+                        p11 = point(sheet, i + 1, j + 1, side), p01 = point(sheet, i, j + 1, side);
+        tris.push_back({ p00, p10, p11 });
+        tris.push_back({ p00, p11, p01 });
+      }
+    }
+  }
+  // The two sheets' boundary edges (those without their reverse), closed off.
+  std::set<std::pair<vtkIdType, vtkIdType>> directed;
+  for (const auto& t : tris)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      directed.insert({ t[k], t[(k + 1) % 3] });
+    }
+  }
+  const double depth = 20.0;
+  const vtkIdType bottom = static_cast<vtkIdType>(x.size());
+  x.push_back({ 0.0, 0.0, -depth });
+  const vtkIdType apex = static_cast<vtkIdType>(x.size());
+  x.push_back({ 0.0, 0.0, depth });
+  std::map<vtkIdType, vtkIdType> below; // a point of the outer square -> the wall's foot under it
+  auto foot = [&](vtkIdType p) {
+    const auto found = below.find(p);
+    if (found != below.end())
+    {
+      return found->second;
+    }
+    x.push_back({ x[p][0], x[p][1], -depth / 2 });
+    return below[p] = static_cast<vtkIdType>(x.size() - 1);
+  };
+  for (const auto& e : directed)
+  {
+    if (directed.count({ e.second, e.first }))
+    {
+      continue;
+    }
+    const vtkIdType u = e.first, w = e.second;
+    if (std::max(std::fabs(x[u][0] + x[w][0]), std::fabs(x[u][1] + x[w][1])) > 3.0) // on the outer square
+    {
+      const vtkIdType fu = foot(u), fw = foot(w);
+      tris.push_back({ w, u, fu });
+      tris.push_back({ w, fu, fw });
+      tris.push_back({ bottom, fw, fu });
+    }
+    else
+    {
+      tris.push_back({ w, u, apex });
+    }
+  }
+  return medialtest::defects::Mesh(x, tris);
+}
+
 // Two boxes, one sliding over the other's top face by half its width: coplanar faces
 // that overlap, and edges that cross in that plane.
 vtkSmartPointer<vtkPolyData> CoplanarBoxes()
@@ -210,6 +322,7 @@ int TestMedialRepairPairs(int, char*[])
     { "thick spiral ramp", SpiralRamp(0.3, 240, 1.2, 6.0) },
     { "looped strip", LoopedStrip(400) },
     { "valid ramp (one turn)", SpiralRampValid() },
+    { "branched sheets", BranchedSheets() },
   };
   if (vtkSmartPointer<vtkPolyData> horse = medialtest::ReadSharedPLY("horse.ply"))
   {
@@ -223,7 +336,7 @@ int TestMedialRepairPairs(int, char*[])
     MEDIAL_CHECK(mesh.Build(c.Surface, error) && query.Build(&mesh, error), "%s: %s", c.Name.c_str(), error.c_str());
     // The swept shapes are there for the search's culling: it must be on for them.
     const bool swept = c.Name.find("spiral") != std::string::npos || c.Name.find("ramp") != std::string::npos ||
-      c.Name.find("strip") != std::string::npos;
+      c.Name.find("strip") != std::string::npos || c.Name.find("branched") != std::string::npos;
     MEDIAL_CHECK(!swept || mesh.EdgeNeighbours.size() == 3 * static_cast<size_t>(mesh.GetNumberOfTriangles()),
       "%s: not a closed manifold mesh (%lld boundary, %lld non-manifold edges), so the search's culling is off",
       c.Name.c_str(), static_cast<long long>(mesh.BoundaryEdges), static_cast<long long>(mesh.NonManifoldEdges));

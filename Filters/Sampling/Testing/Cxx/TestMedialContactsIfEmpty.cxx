@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// VisitWithinIfEmpty reads a ball's contacts and whether a smaller concentric ball is
+// empty in one walk, in place of ContainsBall then VisitWithin (the medial mesh's
+// classifier and seam tracer ask both of every ball). Its answers must be those of
+// the two queries to the bit: the same emptiness and, when empty, the same visits
+// (squared distance, closest point, triangle) in the same order. Checked on a box
+// (ties at shared edges and vertices), a geodesic sphere and the jack, from points
+// inside, around and far beyond each shape (where the tree walks in double), with
+// the empty radius below, at (to the bit) and above the brute-force distance, and
+// contact distances at and beyond it.
+#include "MedialTestUtilities.h"
+#include "MedialTreeTestUtilities.h"
+
+#include "vtkMedialGeometry.h"
+#include "vtkMedialShapeSource.h"
+#include "vtkMedialTriangleBVH.h"
+#include "vtkMedialTriangleMesh.h"
+
+#include <array>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace medialtest;
+
+namespace
+{
+namespace G = vtkMedialGeometry;
+using Visit = std::array<double, 5>; // d2, q, triangle
+
+double BruteForce2(const vtkMedialTriangleMesh& mesh, const double x[3])
+{
+  double best = HUGE_VAL;
+  for (vtkIdType t = 0; t < mesh.GetNumberOfTriangles(); ++t)
+  {
+    const vtkIdType* v = mesh.GetTriangle(t);
+    double q[3];
+    best = std::min(best, G::ClosestPointOnTriangle(x, mesh.GetPoint(v[0]), mesh.GetPoint(v[1]), mesh.GetPoint(v[2]), q));
+  }
+  return best;
+}
+
+int CheckShape(int shape, const char* name, int resolution)
+{
+  vtkMedialTriangleMesh mesh;
+  std::string error;
+  double lo[3], hi[3];
+  MEDIAL_CHECK(BuildShapeMesh(shape, resolution, mesh, lo, hi, error), "%s: %s", name, error.c_str());
+  vtkMedialTriangleBVH tree;
+  MEDIAL_CHECK(tree.Build(mesh), "%s: no tree", name);
+  std::mt19937_64 random(17);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int queries = 0, empty = 0, blocked = 0;
+  for (int i = 0; i < 300; ++i)
+  {
+    // Around the shape, or (one point in ten) far beyond its box.
+    const double spread = i % 10 == 9 ? 12.0 : 1.2;
+    double x[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      x[k] = lo[k] + (0.5 - 0.5 * spread + spread * unit(random)) * (hi[k] - lo[k]);
+    }
+    const double exact2 = BruteForce2(mesh, x);
+    const double exact = std::sqrt(exact2);
+    // Radii whose squares fall on either side of the nearest squared distance, and on it.
+    std::vector<double> radii = { 0.0, 0.5 * exact, std::nextafter(exact, 0.0), exact,
+      std::nextafter(exact, HUGE_VAL), exact * (1.0 + 1e-9), 2.0 * exact };
+    for (double radius : radii)
+    {
+      for (double extra : { 0.0, 1e-9 * mesh.Diagonal, 0.1 * mesh.Diagonal })
+      {
+        const double distance = radius + extra;
+        std::vector<Visit> expected, got;
+        auto into = [](std::vector<Visit>& list) {
+          return [&list](double d2, const double* q, vtkIdType t) {
+            list.push_back({ d2, q[0], q[1], q[2], static_cast<double>(t) });
+          };
+        };
+        const bool reference = !(radius > 0.0) || tree.ContainsBall(x, radius, -1, nullptr, 1.0, false);
+        if (reference)
+        {
+          tree.VisitWithin(x, distance, nullptr, 1.0, into(expected));
+        }
+        const bool answer = tree.VisitWithinIfEmpty(x, distance, radius, into(got));
+        MEDIAL_CHECK(answer == reference, "%s, point %d, radius %.17g (nearest %.17g): one walk says %s, two %s", name,
+          i, radius, exact, answer ? "empty" : "blocked", reference ? "empty" : "blocked");
+        MEDIAL_CHECK(!answer || got == expected, "%s, point %d, radius %.17g, distance %.17g: %zu visits, expected %zu",
+          name, i, radius, distance, got.size(), expected.size());
+        ++queries;
+        (answer ? empty : blocked) += 1;
+      }
+    }
+  }
+  MEDIAL_CHECK(empty > queries / 4 && blocked > queries / 4, "%s: %d empty, %d blocked of %d", name, empty,
+    blocked, queries);
+  std::printf("%s: %d queries agree (%d empty, %d blocked)\n", name, queries, empty, blocked);
+  return EXIT_SUCCESS;
+}
+}
+
+int TestMedialContactsIfEmpty(int, char*[])
+{
+  int failed = CheckShape(vtkMedialShapeSource::BOX, "box", 12);
+  failed |= CheckShape(vtkMedialShapeSource::SPHERE, "sphere", 5);
+  failed |= CheckShape(vtkMedialShapeSource::JACK, "jack", 16);
+  return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+}
