@@ -328,6 +328,11 @@ EXTERNAL = {
     "paraview-panel.png": ("docs/paraview.md", "a screenshot of ParaView 5.11's GUI under Xvfb with the plugin "
                            "loaded (`sh scripts/paraview.sh`): the Medial Thickness panel and a torus coloured "
                            "by its wall thickness; taken by hand"),
+    "fandisk-thin-crop.png": ("docs/how-it-works/thickness.md", "the top of `fandisk.obj`'s fin, cells whose "
+                              "`Thickness` is below 0.3 in red, from `medial-axis fandisk.obj -n 1 --thickness "
+                              "OUT.vtp` of main 5ccd155 (left) and of the change for fading creases (right), "
+                              "rendered side by side at 1000 × 420 with VTK; made by hand, as the left half needs "
+                              "the older build"),
 }
 
 PREPARED = {tall_jack: "`jack-z-up.ply` is the demo shape stood on its long arm along +z and stretched to "

@@ -20,16 +20,22 @@
 // with its preparation, one run of the filter for its three arrays; the SDF with the
 // building of its surface mesh; both on the calling thread with --threads 1).
 // --write DIR also writes each generated shape there as a .vtp (to run other builds or
-// tools on the same surfaces). Prints Markdown tables. Not a test: it checks nothing.
+// tools on the same surfaces), and for every input NAME the triangles the SDF saw with
+// their raw SDF as the cell array ShapeDiameter, as NAME-sdf.vtp (to compare it cell by
+// cell). Prints Markdown tables. Not a test: it checks nothing.
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialFileReader.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkMedialThickness.h"
 #include "vtkMedialTriangleMesh.h"
 
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkTransform.h"
@@ -134,6 +140,17 @@ std::vector<Input> Inputs(const std::string& shared, bool meshes, bool shapes)
   return inputs;
 }
 
+// An input's name as a file name: every character but letters and digits a '-'.
+std::string FileName(const std::string& name)
+{
+  std::string file;
+  for (char c : name)
+  {
+    file += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
+  }
+  return file;
+}
+
 // Percentiles 1, 50 and 99 of the finite values, each divided by `scale`.
 std::string Percentiles(std::vector<double> values, double scale)
 {
@@ -163,8 +180,9 @@ std::vector<double> Values(vtkPolyData* surface, const char* name)
 
 // CGAL's raw SDF of every triangle of the prepared surface (outward, merged points),
 // and the processor seconds it took (the surface mesh's build included). Empty when
-// CGAL refuses the surface (a non-manifold one).
-std::vector<double> ShapeDiameter(vtkPolyData* surface, double& seconds)
+// CGAL refuses the surface (a non-manifold one). With `cells`, those triangles with
+// their SDF as the cell array ShapeDiameter.
+std::vector<double> ShapeDiameter(vtkPolyData* surface, double& seconds, vtkPolyData* cells = nullptr)
 {
   std::vector<double> values;
   vtkMedialTriangleMesh prepared;
@@ -176,10 +194,13 @@ std::vector<double> ShapeDiameter(vtkPolyData* surface, double& seconds)
   const double start = CpuSeconds();
   SurfaceMesh mesh;
   std::vector<SurfaceMesh::Vertex_index> vertices;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> triangles;
   for (vtkIdType i = 0; i < prepared.GetNumberOfPoints(); ++i)
   {
     const double* p = prepared.GetPoint(i);
     vertices.push_back(mesh.add_vertex(Kernel::Point_3(p[0], p[1], p[2])));
+    points->InsertNextPoint(p);
   }
   for (vtkIdType t = 0; t < prepared.GetNumberOfTriangles(); ++t)
   {
@@ -188,6 +209,7 @@ std::vector<double> ShapeDiameter(vtkPolyData* surface, double& seconds)
     {
       continue; // non-manifold: CGAL's halfedge mesh cannot hold it; skipped
     }
+    triangles->InsertNextCell(3, v); // in the order of mesh.faces()
   }
   auto sdf = mesh.add_property_map<SurfaceMesh::Face_index, double>("f:sdf").first;
   CGAL::sdf_values(mesh, sdf, 2.0 / 3.0 * CGAL_PI, 25, false);
@@ -195,6 +217,18 @@ std::vector<double> ShapeDiameter(vtkPolyData* surface, double& seconds)
   for (auto f : mesh.faces())
   {
     values.push_back(sdf[f]);
+  }
+  if (cells)
+  {
+    vtkNew<vtkDoubleArray> array;
+    array->SetName("ShapeDiameter");
+    for (double v : values)
+    {
+      array->InsertNextValue(v);
+    }
+    cells->SetPoints(points);
+    cells->SetPolys(triangles);
+    cells->GetCellData()->AddArray(array);
   }
   return values;
 }
@@ -247,13 +281,8 @@ int main(int argc, char* argv[])
     }
     if (!write.empty() && input.Truth > 0.0)
     {
-      std::string file;
-      for (char c : input.Name)
-      {
-        file += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
-      }
       vtkNew<vtkXMLPolyDataWriter> writer;
-      writer->SetFileName((write + "/" + file + ".vtp").c_str());
+      writer->SetFileName((write + "/" + FileName(input.Name) + ".vtp").c_str());
       writer->SetInputData(input.Surface);
       writer->Write();
     }
@@ -267,7 +296,16 @@ int main(int argc, char* argv[])
     const double ours = CpuSeconds() - start;
     vtkPolyData* out = thickness->GetOutput();
     double sdfSeconds = 0.0;
-    const std::vector<double> diameters = sdf ? ShapeDiameter(input.Surface, sdfSeconds) : std::vector<double>();
+    vtkNew<vtkPolyData> sdfCells;
+    const std::vector<double> diameters =
+      sdf ? ShapeDiameter(input.Surface, sdfSeconds, write.empty() ? nullptr : sdfCells.Get()) : std::vector<double>();
+    if (!write.empty() && !diameters.empty())
+    {
+      vtkNew<vtkXMLPolyDataWriter> writer;
+      writer->SetFileName((write + "/" + FileName(input.Name) + "-sdf.vtp").c_str());
+      writer->SetInputData(sdfCells);
+      writer->Write();
+    }
     std::printf("| %s | %lld | %s ", input.Name.c_str(), static_cast<long long>(input.Surface->GetNumberOfCells()),
       input.Truth > 0.0 ? "true" : "diagonal");
     std::printf("%s", Percentiles(Values(out, vtkMedialArrayNames::Thickness), scale).c_str());

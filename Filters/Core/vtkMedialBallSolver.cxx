@@ -308,7 +308,7 @@ void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
     }
     // Contacts less than the slide angle apart: the ball rounds a convex feature.
     const bool sliding = speed >= limits.CosHalfSlideAngle && directions.size() >= 2 &&
-      (!limits.MaySlide || limits.MaySlide(triangles.data(), static_cast<int>(triangles.size())));
+      (!limits.MaySlide || limits.MaySlide(triangles.data(), static_cast<int>(triangles.size()), c, r));
     ++(sliding ? slides : steps);
     double v[3];
     double gamma = HUGE_VAL; // how fast the slowest contact recedes

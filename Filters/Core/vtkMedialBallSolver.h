@@ -94,10 +94,10 @@ struct vtkMedialGrowthLimits
   // angle; above 1: never.
   double CosHalfSlideAngle = 2.0;
   double SlideReach = 1.0;
-  // Optional: whether a ball whose contacts lie on these triangles (-1: the sample's
-  // own faces) may slide (vtkMedialThickness: only where they lie on walls that meet
-  // along convex edges). Unset: wherever the angle allows.
-  std::function<bool(const vtkIdType* triangles, int count)> MaySlide;
+  // Optional: whether a ball (centre, radius) whose contacts lie on these triangles
+  // (-1: the sample's own faces) may slide (vtkMedialThickness: only where they lie on
+  // walls that meet along convex edges near it). Unset: wherever the angle allows.
+  std::function<bool(const vtkIdType* triangles, int count, const double* centre, double radius)> MaySlide;
   // Steps (each one ray and up to Probes closest-point queries), and sliding steps
   // (up to SlideProbes each), counted apart.
   int MaximumSteps = 1;

@@ -195,10 +195,48 @@ std::array<double, 3> Key(const double x[3])
 // the solid's two faces meet at less than 180 degrees). Only a ball that touches walls
 // meeting so rounds an edge and may slide off it: on one smooth wall, a ball whose
 // contacts are close together is a rim's, and its size is the wall's.
+// A crease may fade out (a rounded wall that meets a flat one along a crease that ends
+// where their facets turn less than the crease angle apart): the two sides are then one
+// wall, joined around the crease's end, though the crease runs between them. So for two
+// triangles of a wall with a convex crease inside it the question is asked near the
+// ball instead: the triangles joined to each across smooth edges within reach of the
+// ball (LocalReach times its radius from its centre) are its local wall, and two local
+// walls meet along a convex crease there if one of its edges joins them.
+// Asked so, the local walls would be floods of (r / h)^2 triangles (r the radius, h the
+// facet size) at every sliding step, and a scanned surface's noise creases make most
+// walls creased: so the question is answered by searches that stop early. Two contacts
+// share a local wall if a search from one, nearest to the other first, reaches it; only
+// when it does not (it ran out of triangles: it visited the whole local wall) are the
+// convex crease edges out of that local wall followed. A search that visits more than
+// LocalBudget triangles gives up, and the whole wall's answer (one wall: they do not
+// meet) stands.
 struct vtkMedialThickness::Walls
 {
+  enum EdgeKind : unsigned char
+  {
+    Smooth,
+    ConvexCrease,
+    ConcaveCrease,
+    Other // a boundary or non-manifold edge, or a degenerate face
+  };
+  // How far from a ball's centre (times its radius) its local walls reach: a convex
+  // crease between contacts less than WallAngle apart lies within 1 / sin(30 degrees)
+  // = 2 radii of the centre.
+  static constexpr double LocalReach = 2.5;
+  // Triangles one local search may visit before it gives up.
+  static constexpr int LocalBudget = 8192;
+
   std::vector<vtkIdType> OfTriangle;
   std::vector<std::pair<vtkIdType, vtkIdType>> Convex; // (a < b), sorted, unique
+  // Walls (by their OfTriangle) with a convex crease edge between two of their triangles.
+  std::vector<char> InnerConvex;
+  // Each triangle's neighbour across its edge j (vertices j, j + 1) and that edge's kind.
+  std::vector<vtkIdType> Neighbour;
+  std::vector<EdgeKind> Kind;
+  // Each triangle's bounding box (low x, y, z, high x, y, z) and centroid, for the
+  // local searches.
+  std::vector<std::array<double, 6>> Box;
+  std::vector<std::array<double, 3>> Middle;
   // The local facet size at each point: the longest edge that ends there (the
   // tolerance's unit; a cell's is the largest of its corners').
   std::vector<double> Size;
@@ -207,20 +245,35 @@ struct vtkMedialThickness::Walls
   {
     const double cosCrease = std::cos(creaseDegrees * Pi / 180.0);
     const vtkIdType nt = mesh.GetNumberOfTriangles();
-    // Each edge as (lower point, higher point, triangle); an edge of exactly two
-    // triangles joins them, unless it is a crease.
-    std::vector<std::array<vtkIdType, 3>> edges;
+    // Each edge as (lower point, higher point, triangle, edge index in it); an edge of
+    // exactly two triangles joins them, unless it is a crease.
+    std::vector<std::array<vtkIdType, 4>> edges;
     edges.reserve(3 * static_cast<size_t>(nt));
     for (vtkIdType t = 0; t < nt; ++t)
     {
       const vtkIdType* v = mesh.GetTriangle(t);
       for (int j = 0; j < 3; ++j)
       {
-        edges.push_back({ std::min(v[j], v[(j + 1) % 3]), std::max(v[j], v[(j + 1) % 3]), t });
+        edges.push_back({ std::min(v[j], v[(j + 1) % 3]), std::max(v[j], v[(j + 1) % 3]), t, j });
       }
     }
     std::sort(edges.begin(), edges.end());
+    this->Box.resize(nt);
+    this->Middle.resize(nt);
+    for (vtkIdType t = 0; t < nt; ++t)
+    {
+      const vtkIdType* v = mesh.GetTriangle(t);
+      const double *a = mesh.GetPoint(v[0]), *b = mesh.GetPoint(v[1]), *c = mesh.GetPoint(v[2]);
+      for (int k = 0; k < 3; ++k)
+      {
+        this->Box[t][k] = std::min({ a[k], b[k], c[k] });
+        this->Box[t][k + 3] = std::max({ a[k], b[k], c[k] });
+        this->Middle[t][k] = (a[k] + b[k] + c[k]) / 3.0;
+      }
+    }
     this->Size.assign(mesh.GetNumberOfPoints(), 0.0);
+    this->Neighbour.assign(3 * static_cast<size_t>(nt), -1);
+    this->Kind.assign(3 * static_cast<size_t>(nt), Other);
     for (const auto& e : edges)
     {
       const double length = std::sqrt(G::Distance2(mesh.GetPoint(e[0]), mesh.GetPoint(e[1])));
@@ -239,6 +292,7 @@ struct vtkMedialThickness::Walls
       const vtkIdType a = edges[i][2], b = edges[j - 1][2];
       if (j == i + 2 && mesh.Areas[a] > 0.0 && mesh.Areas[b] > 0.0)
       {
+        EdgeKind kind = Smooth;
         if (G::Dot(mesh.GetNormal(a), mesh.GetNormal(b)) >= cosCrease)
         {
           sets.Join(a, b);
@@ -254,11 +308,16 @@ struct vtkMedialThickness::Walls
           }
           double d[3];
           G::Sub(mesh.GetPoint(tb[k]), mesh.GetPoint(edges[i][0]), d);
-          if (G::Dot(mesh.GetNormal(a), d) < 0.0)
+          kind = G::Dot(mesh.GetNormal(a), d) < 0.0 ? ConvexCrease : ConcaveCrease;
+          if (kind == ConvexCrease)
           {
             convex.emplace_back(a, b);
           }
         }
+        this->Neighbour[3 * a + edges[i][3]] = b;
+        this->Neighbour[3 * b + edges[i + 1][3]] = a;
+        this->Kind[3 * a + edges[i][3]] = kind;
+        this->Kind[3 * b + edges[i + 1][3]] = kind;
       }
       i = j;
     }
@@ -268,6 +327,7 @@ struct vtkMedialThickness::Walls
       this->OfTriangle[t] = sets.Find(t);
     }
     this->Convex.clear();
+    this->InnerConvex.assign(nt, 0);
     for (const auto& c : convex)
     {
       const vtkIdType a = this->OfTriangle[c.first], b = this->OfTriangle[c.second];
@@ -275,14 +335,154 @@ struct vtkMedialThickness::Walls
       {
         this->Convex.emplace_back(std::min(a, b), std::max(a, b));
       }
+      else
+      {
+        this->InnerConvex[a] = 1;
+      }
     }
     std::sort(this->Convex.begin(), this->Convex.end());
     this->Convex.erase(std::unique(this->Convex.begin(), this->Convex.end()), this->Convex.end());
   }
 
+  // Per-thread scratch of the local searches: a stamp per triangle marks what one
+  // search reached without clearing (Reached lists it).
+  struct Scratch
+  {
+    std::vector<unsigned> Mark;
+    unsigned Stamp = 0;
+    std::vector<std::pair<double, vtkIdType>> Heap;
+    std::vector<vtkIdType> Reached;
+  };
+  static Scratch& LocalScratch()
+  {
+    thread_local Scratch scratch;
+    return scratch;
+  }
+
+  // How a local search ended: it reached its target, it ran out of triangles (all
+  // those of the source's local wall carry the search's stamp), or it gave up.
+  enum class Search
+  {
+    Joined,
+    Apart,
+    GaveUp
+  };
+  // Whether triangles a and b lie on one local wall: a search from a across smooth
+  // edges through the triangles within reach of the ball, nearest to b first.
+  Search Join(vtkIdType a, vtkIdType b, const double centre[3], double reach2, Scratch& scratch) const
+  {
+    const size_t nt = this->OfTriangle.size();
+    if (scratch.Mark.size() < nt)
+    {
+      scratch.Mark.assign(nt, 0);
+      scratch.Stamp = 0;
+    }
+    if (++scratch.Stamp == 0) // wrapped: clear the old marks
+    {
+      std::fill(scratch.Mark.begin(), scratch.Mark.end(), 0u);
+      scratch.Stamp = 1;
+    }
+    scratch.Mark[a] = scratch.Stamp;
+    scratch.Reached.assign(1, a);
+    if (a == b)
+    {
+      return Search::Joined;
+    }
+    const double* target = this->Middle[b].data();
+    auto later = [](const std::pair<double, vtkIdType>& x, const std::pair<double, vtkIdType>& y) {
+      return x.first > y.first || (x.first == y.first && x.second > y.second);
+    };
+    std::vector<std::pair<double, vtkIdType>>& heap = scratch.Heap;
+    heap.clear();
+    heap.emplace_back(0.0, a);
+    for (int visited = 0; !heap.empty(); ++visited)
+    {
+      if (visited == LocalBudget)
+      {
+        return Search::GaveUp;
+      }
+      std::pop_heap(heap.begin(), heap.end(), later);
+      const vtkIdType u = heap.back().second;
+      heap.pop_back();
+      for (int j = 0; j < 3; ++j)
+      {
+        const vtkIdType n = this->Neighbour[3 * u + j];
+        if (n < 0 || this->Kind[3 * u + j] != Smooth || scratch.Mark[n] == scratch.Stamp)
+        {
+          continue;
+        }
+        if (n == b)
+        {
+          return Search::Joined;
+        }
+        if (this->BoxDistance2(n, centre) > reach2)
+        {
+          continue;
+        }
+        scratch.Mark[n] = scratch.Stamp;
+        scratch.Reached.push_back(n);
+        heap.emplace_back(G::Distance2(this->Middle[n].data(), target), n);
+        std::push_heap(heap.begin(), heap.end(), later);
+      }
+    }
+    return Search::Apart;
+  }
+
+  // After a search from a that ran out of triangles (a's local wall carries the
+  // scratch's stamp and is listed in Reached): whether a convex crease edge out of it
+  // joins it to b's local wall, near the ball.
+  bool JoinedAcross(vtkIdType b, const double centre[3], double reach2, Scratch& scratch) const
+  {
+    const unsigned ofA = scratch.Stamp;
+    const vtkIdType w = this->OfTriangle[b];
+    std::vector<vtkIdType> across;
+    for (vtkIdType u : scratch.Reached)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        const vtkIdType n = this->Neighbour[3 * u + j];
+        if (this->Kind[3 * u + j] == ConvexCrease && scratch.Mark[n] != ofA && this->OfTriangle[n] == w &&
+          (n == b || this->BoxDistance2(n, centre) <= reach2))
+        {
+          across.push_back(n);
+        }
+      }
+    }
+    for (vtkIdType t : across)
+    {
+      if (this->Join(t, b, centre, reach2, scratch) == Search::Joined)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // Whether triangles a and b of one wall lie on two local walls that meet along a
+  // convex crease near the ball.
+  bool MeetLocally(vtkIdType a, vtkIdType b, const double centre[3], double reach2, Scratch& scratch) const
+  {
+    return this->InnerConvex[this->OfTriangle[a]] && this->Join(a, b, centre, reach2, scratch) == Search::Apart &&
+      this->JoinedAcross(b, centre, reach2, scratch);
+  }
+
+  // The squared distance from x to triangle t's bounding box.
+  double BoxDistance2(vtkIdType t, const double x[3]) const
+  {
+    const std::array<double, 6>& box = this->Box[t];
+    double d2 = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double d = x[k] < box[k] ? box[k] - x[k] : x[k] > box[k + 3] ? x[k] - box[k + 3] : 0.0;
+      d2 += d * d;
+    }
+    return d2;
+  }
+
   // Whether a tangent ball at a point of `faces` may grow: the surface near its point
   // shrank it (a facet's tilt or a ripple), or what stopped it lies less than the wall
-  // angle away on a wall that meets the point's along a convex crease (an edge).
+  // angle away on a wall that meets the point's along a convex crease (an edge), near
+  // the ball where one wall holds both.
   bool MayGrow(const std::vector<vtkIdType>& faces, const vtkMedialSampleRecord& ball) const
   {
     if (!ball.Valid || !(ball.Radius > 0.0))
@@ -298,11 +498,44 @@ struct vtkMedialThickness::Walls
       return false;
     }
     const vtkIdType w = this->OfTriangle[ball.ContactTriangle];
+    bool local = false;
     for (vtkIdType f : faces)
     {
       if (this->MeetConvex(w, this->OfTriangle[f]))
       {
         return true;
+      }
+      local = local || w == this->OfTriangle[f];
+    }
+    if (!local || !this->InnerConvex[w])
+    {
+      return false;
+    }
+    // The faces on the contact's wall, each unless a search from it reaches the
+    // contact's local wall (or a face already known on it, for the fan's faces meet).
+    const double reach2 = LocalReach * LocalReach * ball.Radius * ball.Radius;
+    Scratch& scratch = LocalScratch();
+    vtkIdType onContactWall = -1;
+    for (vtkIdType f : faces)
+    {
+      if (this->OfTriangle[f] != w ||
+        (onContactWall >= 0 && this->Join(f, onContactWall, ball.Centre, reach2, scratch) == Search::Joined))
+      {
+        continue;
+      }
+      switch (this->Join(f, ball.ContactTriangle, ball.Centre, reach2, scratch))
+      {
+        case Search::Joined:
+          onContactWall = f;
+          break;
+        case Search::Apart:
+          if (this->JoinedAcross(ball.ContactTriangle, ball.Centre, reach2, scratch))
+          {
+            return true;
+          }
+          break;
+        case Search::GaveUp:
+          break;
       }
     }
     return false;
@@ -314,29 +547,58 @@ struct vtkMedialThickness::Walls
       std::binary_search(this->Convex.begin(), this->Convex.end(), std::make_pair(std::min(a, b), std::max(a, b)));
   }
 
-  // True when the contacts on `triangles` (-1: one of `faces`) lie on at least two walls,
-  // each of which meets another one of them along a convex crease.
-  bool MaySlide(const std::vector<vtkIdType>& faces, const vtkIdType* triangles, int count) const
+  // True when the contacts on `triangles` (-1: one of `faces`) of a ball (centre,
+  // radius) lie on at least two walls, each of which meets another one of them along a
+  // convex crease (local walls, near the ball, where a wall has a convex crease inside it).
+  bool MaySlide(const std::vector<vtkIdType>& faces, const vtkIdType* triangles, int count,
+    const double centre[3], double radius) const
   {
-    std::vector<vtkIdType> touched;
+    // Each contact's wall, and one contact per local wall (a wall without a convex
+    // crease near the ball is one).
+    struct Local
+    {
+      vtkIdType Wall;
+      vtkIdType Triangle;
+    };
+    std::vector<Local> walls;
+    const double reach2 = LocalReach * LocalReach * radius * radius;
+    Scratch& scratch = LocalScratch();
     for (int i = 0; i < count; ++i)
     {
       const vtkIdType t = triangles[i] >= 0 ? triangles[i] : (faces.empty() ? -1 : faces.front());
-      if (t >= 0 && std::find(touched.begin(), touched.end(), this->OfTriangle[t]) == touched.end())
+      if (t < 0)
       {
-        touched.push_back(this->OfTriangle[t]);
+        continue;
+      }
+      // A new local wall unless a contact already listed lies on t's wall, and it is
+      // whole or a search from t reaches that contact (a search that gives up counts as
+      // reaching it: the whole wall's answer).
+      const vtkIdType w = this->OfTriangle[t];
+      bool joined = false;
+      for (const Local& l : walls)
+      {
+        joined = joined ||
+          (l.Wall == w &&
+            (!this->InnerConvex[w] || this->Join(t, l.Triangle, centre, reach2, scratch) != Search::Apart));
+      }
+      if (!joined)
+      {
+        walls.push_back({ w, t });
       }
     }
-    if (touched.size() < 2)
+    if (walls.size() < 2)
     {
       return false;
     }
-    for (vtkIdType a : touched)
+    for (const Local& a : walls)
     {
       bool meets = false;
-      for (vtkIdType b : touched)
+      for (const Local& b : walls)
       {
-        meets = meets || this->MeetConvex(a, b);
+        meets = meets ||
+          (&a != &b &&
+            (a.Wall != b.Wall ? this->MeetConvex(a.Wall, b.Wall)
+                              : this->MeetLocally(a.Triangle, b.Triangle, centre, reach2, scratch)));
       }
       if (!meets)
       {
@@ -489,7 +751,9 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
     // vertex from a small ball in its wedge.
     const double size = walls.Size[v];
     vtkMedialGrowthLimits limits = GrowthLimits(this->SurfaceTolerance, size);
-    limits.MaySlide = [&](const vtkIdType* t, int count) { return walls.MaySlide(fan, t, count); };
+    limits.MaySlide = [&](const vtkIdType* t, int count, const double* centre, double radius) {
+      return walls.MaySlide(fan, t, count, centre, radius);
+    };
     vtkMedialSampleRecord grown = along;
     // The vertex's own faces stopped the ball along the mean normal within the tolerance:
     // a face more than theta / 2 from the normal rises into every ball tangent at p along
@@ -585,7 +849,9 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
     {
       const double size = std::max({ walls.Size[v[0]], walls.Size[v[1]], walls.Size[v[2]] });
       vtkMedialGrowthLimits limits = GrowthLimits(this->SurfaceTolerance, size);
-      limits.MaySlide = [&](const vtkIdType* touched, int count) { return walls.MaySlide(faces, touched, count); };
+      limits.MaySlide = [&](const vtkIdType* touched, int count, const double* centre, double radius) {
+        return walls.MaySlide(faces, touched, count, centre, radius);
+      };
       vtkMedialGrowBall(query, p, limits, &t, 1, start);
     }
     if (start.Valid && start.Radius > m.Radius)

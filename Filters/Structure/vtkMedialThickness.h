@@ -41,7 +41,13 @@
  *     vertices on a sphere, so a tessellated sphere's balls are centred), and the
  *     spread, the largest angle between two adjacent triangles' normals.
  *  3. Walls: the triangles joined across every edge that is not a crease (union-find),
- *     and the pairs of walls that meet along a convex crease.
+ *     and the pairs of walls that meet along a convex crease. A crease that fades out
+ *     (its faces less than CreaseAngle apart at its end) leaves one wall on both its
+ *     sides; for a wall with a crease inside it, whether two contacts lie on walls
+ *     meeting along a convex crease is asked near the ball: the triangles joined to
+ *     each across smooth edges within 2.5 radii of its centre, and a convex crease edge
+ *     between them; answered by searches that stop at the other contact (at most 8192
+ *     triangles each, beyond which the whole wall's answer stands).
  *  4. VertexBalls: the tangent ball, the maximal ball tangent at each vertex along its
  *     inward normal, by the sampler's one-pass solver and its rules
  *     (MinimumSeparationAngle theta, and MaximumProtrusion: a ball that crosses the
