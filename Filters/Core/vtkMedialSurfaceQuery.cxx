@@ -11,6 +11,28 @@
 namespace
 {
 namespace G = vtkMedialGeometry;
+using ClosestHit = vtkMedialSurfaceQuery::ClosestHit;
+
+// The tree's within-distance visits as hits (the walks give squared distances).
+struct HitCollector
+{
+  std::vector<ClosestHit>& Hits;
+  void operator()(double d2, const double* q, vtkIdType t) const
+  {
+    ClosestHit hit;
+    std::copy(q, q + 3, hit.Point);
+    hit.Distance = std::sqrt(d2);
+    hit.Triangle = t;
+    this->Hits.push_back(hit);
+  }
+};
+
+// Hits in triangle order, whatever order the walk visited them in.
+void SortByTriangle(std::vector<ClosestHit>& hits)
+{
+  std::sort(
+    hits.begin(), hits.end(), [](const ClosestHit& a, const ClosestHit& b) { return a.Triangle < b.Triangle; });
+}
 }
 
 bool vtkMedialSurfaceQuery::Build(
@@ -277,15 +299,8 @@ bool vtkMedialSurfaceQuery::TrianglesWithinIfEmpty(
   // ContainsBall's limit: at or below zero the ball is empty.
   const double limit = emptyRadius - this->Slack;
   const bool empty = this->Tree.VisitWithinIfEmpty(x, distance, limit > 0.0 ? limit : 0.0,
-    [&](double d2, const double* q, vtkIdType t) {
-      ClosestHit hit;
-      std::copy(q, q + 3, hit.Point);
-      hit.Distance = std::sqrt(d2);
-      hit.Triangle = t;
-      hits.push_back(hit);
-    });
-  std::sort(hits.begin(), hits.end(),
-    [](const ClosestHit& a, const ClosestHit& b) { return a.Triangle < b.Triangle; });
+    HitCollector{ hits });
+  SortByTriangle(hits);
   return empty;
 }
 
@@ -294,13 +309,6 @@ void vtkMedialSurfaceQuery::TrianglesWithin(
 {
   hits.clear();
   this->Tree.VisitWithin(x, distance, filter ? filter->SamplePoint : nullptr, filter ? filter->CosMinAngle : 1.0,
-    [&](double d2, const double* q, vtkIdType t) {
-    ClosestHit hit;
-    std::copy(q, q + 3, hit.Point);
-    hit.Distance = std::sqrt(d2);
-    hit.Triangle = t;
-    hits.push_back(hit);
-  });
-  std::sort(hits.begin(), hits.end(),
-    [](const ClosestHit& a, const ClosestHit& b) { return a.Triangle < b.Triangle; });
+    HitCollector{ hits });
+  SortByTriangle(hits);
 }

@@ -515,6 +515,8 @@ private:
   bool RemoveInPatch(Soup& shell, const std::vector<vtkIdType>& near, int rings, std::string& error,
     std::vector<char>& in, Soup& before);
   double MovedInPatch(const vtkMedialRepairPatch& patch);
+  template <typename Distance, typename Inside>
+  double LargestMove(const Soup& before, const std::vector<vtkIdType>& moved, Distance distance, Inside inside);
   void MeasurePatch(const vtkMedialTriangleMesh& input, const vtkMedialRepairPatch& patch);
   void SetMeasured(const vtkMedialTriangleMesh& input, double largest, const std::vector<unsigned char>& buriedTriangle);
   bool RemoveSheets(Soup& work, bool& wrap);
@@ -625,6 +627,29 @@ bool vtkMedialRepairFilter::vtkInternals::Overlap(const vtkMedialTriangleMesh& m
   return false;
 }
 
+// The largest distance from the points `moved` of `before` to a surface (`distance(x,
+// bound)`, `bound` when nothing is nearer), over the points not buried in its solid
+// (`inside(x)` beyond BuriedDepth): Moved() and MovedInPatch() with their own queries.
+template <typename Distance, typename Inside>
+double vtkMedialRepairFilter::vtkInternals::LargestMove(
+  const Soup& before, const std::vector<vtkIdType>& moved, Distance distance, Inside inside)
+{
+  const double bound = 2.0 * this->Diagonal, buried = BuriedDepth * this->Diagonal;
+  const vtkIdType n = static_cast<vtkIdType>(moved.size());
+  double largest = 0.0;
+#pragma omp parallel for schedule(static) num_threads(this->Threads) reduction(max : largest)
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double* x = before.Points[moved[i]].data();
+    const double d = distance(x, bound);
+    if (!(d > buried && inside(x)))
+    {
+      largest = std::max(largest, d);
+    }
+  }
+  return largest;
+}
+
 // The largest distance from a point of `before` to the surface `after`, over the points
 // that are not buried in its solid (deeper than BuriedDepth).
 double vtkMedialRepairFilter::vtkInternals::Moved(const Soup& before, const Soup& after)
@@ -648,21 +673,12 @@ double vtkMedialRepairFilter::vtkInternals::Moved(const Soup& before, const Soup
       moved.push_back(i);
     }
   }
-  const double bound = 2.0 * this->Diagonal, buried = BuriedDepth * this->Diagonal;
-  const vtkIdType n = static_cast<vtkIdType>(moved.size());
-  double largest = 0.0;
-#pragma omp parallel for schedule(static) num_threads(this->Threads) reduction(max : largest)
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    vtkMedialSurfaceQuery::ClosestHit hit;
-    const double* x = before.Points[moved[i]].data();
-    const double d = query.ClosestPoint(x, bound, hit) ? hit.Distance : bound;
-    if (!(d > buried && query.IsInside(x)))
-    {
-      largest = std::max(largest, d);
-    }
-  }
-  return largest;
+  return this->LargestMove(before, moved,
+    [&](const double* x, double bound) {
+      vtkMedialSurfaceQuery::ClosestHit hit;
+      return query.ClosestPoint(x, bound, hit) ? hit.Distance : bound;
+    },
+    [&](const double* x) { return query.IsInside(x); });
 }
 
 // Moved() for a shell whose patch vtkMedialRepairPatch certified: the points of the patch
@@ -678,20 +694,8 @@ double vtkMedialRepairFilter::vtkInternals::MovedInPatch(const vtkMedialRepairPa
       moved.push_back(i);
     }
   }
-  const double bound = 2.0 * this->Diagonal, buried = BuriedDepth * this->Diagonal;
-  const vtkIdType n = static_cast<vtkIdType>(moved.size());
-  double largest = 0.0;
-#pragma omp parallel for schedule(static) num_threads(this->Threads) reduction(max : largest)
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    const double* x = before.Points[moved[i]].data();
-    const double d = patch.Distance(x, bound);
-    if (!(d > buried && patch.IsInside(x)))
-    {
-      largest = std::max(largest, d);
-    }
-  }
-  return largest;
+  return this->LargestMove(before, moved, [&](const double* x, double bound) { return patch.Distance(x, bound); },
+    [&](const double* x) { return patch.IsInside(x); });
 }
 
 // A valid solid: every shell closed, manifold (as the preparation sees it),
