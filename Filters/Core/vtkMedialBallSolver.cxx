@@ -224,15 +224,35 @@ void vtkMedialSolveBallAlong(const vtkMedialSurfaceQuery& query, const vtkMedial
   }
 }
 
-void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
-  const vtkMedialGrowthLimits& limits, const vtkIdType* faces, int faceCount, vtkMedialSampleRecord& out)
+namespace
 {
+// Whether triangle t (-1: none) comes within `distance` of x: a contact found through its
+// plane only (the plane bound of a curved wall's far triangle) is not one.
+bool Touches(const vtkMedialSurfaceQuery& query, vtkIdType t, const double x[3], double distance)
+{
+  if (t < 0)
+  {
+    return false;
+  }
+  double scratch[9], closest[3];
+  const double* a = query.GetTriangleVertices(t, scratch);
+  return G::ClosestPointOnTriangle(x, a, a + 3, a + 6, closest) <= distance * distance;
+}
+
+// One ascent (see vtkMedialGrowBall). `keep`: the sliding steps keep their contacts (the
+// ball made exactly tangent, a blocked step ended on the largest empty ball, no stop
+// after a small step that found a contact); without it, the plain ascent. Returns
+// whether it took a sliding step.
+bool Ascend(const vtkMedialSurfaceQuery& query, const double p[3],
+  const vtkMedialGrowthLimits& limits, const vtkIdType* faces, int faceCount, vtkMedialSampleRecord& out, bool keep)
+{
+  bool slid = false;
   double c[3];
   G::Copy(out.Centre, c);
   double r = out.Radius;
   if (!(r > 0.0))
   {
-    return;
+    return false;
   }
   const double slack = query.GetSlack();
   auto gapAt = [&](const double x[3], double radius) { return std::sqrt(G::Distance2(x, p)) - radius; };
@@ -257,10 +277,18 @@ void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
   G::Copy(out.Contact, contact);
   bool moved = false;
   int retries = 0; // steps repeated with a contact they found
+  // The start ball is tangent to its contacts only to within its solver's precision: it
+  // lies along a smooth normal, a fraction of a degree off its faces' normals, so it
+  // overlaps some of their planes by about 1e-6 r and stops short of others. Each step
+  // makes it tangent to the nearest again (below); the contacts it started with stay
+  // contacts while they lie within that first spread, or the next step, having lost
+  // one, no longer rounds the crease.
+  double spread = 0.0;
+  bool first = true;
   for (int steps = 0, slides = 0; steps < limits.MaximumSteps && slides < limits.MaximumSlides;)
   {
     // The directions from the contacts that still touch the ball to its centre.
-    const double touching = r * (1.0 + 1e-7) + 8.0 * slack;
+    const double touching = r * (1.0 + 1e-7) + 8.0 * slack + spread;
     directions.clear();
     triangles.clear();
     size_t kept = 0;
@@ -299,6 +327,26 @@ void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
       }
     }
     touches.resize(kept);
+    // Tangent to the nearest contact: a ball that overlaps a contact's plane, however
+    // little, finds it inside every sliding probe, which then backs off by the square
+    // root of the overlap (1% a probe) and ends on the last resort. Only rounding-size
+    // overlaps are removed (a contact's plane may also cross the ball beyond its triangle,
+    // on a curved wall: that is no overlap to remove).
+    double farthest = 0.0;
+    for (size_t i = 0; keep && i < touches.size(); ++i)
+    {
+      const double length = std::sqrt(G::Distance2(c, touches[i].Point));
+      farthest = std::max(farthest, length);
+      if (length < r && length > r * (1.0 - 1e-3))
+      {
+        r = length;
+      }
+    }
+    if (first && keep)
+    {
+      spread = std::max(0.0, farthest - r);
+      first = false;
+    }
     double g[3];
     G::NearestHullPoint(directions, g);
     const double speed = std::sqrt(G::Dot(g, g));
@@ -310,6 +358,7 @@ void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
     const bool sliding = speed >= limits.CosHalfSlideAngle && directions.size() >= 2 &&
       (!limits.MaySlide || limits.MaySlide(triangles.data(), static_cast<int>(triangles.size()), c, r));
     ++(sliding ? slides : steps);
+    slid = slid || sliding;
     double v[3];
     double gamma = HUGE_VAL; // how fast the slowest contact recedes
     for (int k = 0; k < 3; ++k)
@@ -380,17 +429,22 @@ void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
     Touch touch{ { 0, 0, 0 }, -1 }, previous{ { 0, 0, 0 }, -1 };
     const int probes = sliding ? limits.SlideProbes : limits.Probes;
     vtkMedialSurfaceQuery::ClosestHit hit;
+    double blockedAt = HUGE_VAL; // the smallest step whose ball was found not empty
     for (int i = 0; i < probes && s > 0.0; ++i)
     {
       G::AddScaled(c, s, v, x);
       const bool blocked = query.ClosestPoint(x, radiusAt(s) - slack, hit);
       const double inscribed = blocked ? hit.Distance : radiusAt(s);
+      if (blocked)
+      {
+        blockedAt = s;
+      }
       if (inscribed > radius && (!sliding || !blocked || i + 1 == probes) && within(x, inscribed))
       {
         radius = inscribed;
         G::Copy(x, best);
         // The point found touches it, or the one that set this probe's step does.
-        touched = blocked || i > 0;
+        touched = blocked || (i > 0 && (!keep || Touches(query, previous.Triangle, x, inscribed * (1.0 + 1e-7) + 8.0 * slack)));
         touch = blocked ? Touch{ { hit.Point[0], hit.Point[1], hit.Point[2] }, hit.Triangle } : previous;
         G::Copy(touch.Point, contact);
       }
@@ -412,6 +466,42 @@ void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
         break; // no progress at double precision
       }
       s = next;
+    }
+    if (keep && sliding && !missed && blockedAt < HUGE_VAL)
+    {
+      // A blocked sliding step ends on its last probe, or on the last resort, a ball
+      // shrunk onto one surface point, which loses the contacts it rounded (the next
+      // step then cannot slide); on a curved wall each probe lowers the step only a
+      // little, so the probes run out. The largest empty ball on the path below the
+      // smallest blocked step, by bisection, is still tangent to every contact and
+      // touches what blocks it just beyond. Either may go farther; the larger is kept.
+      vtkMedialSurfaceQuery::ClosestHit beyond;
+      bool found = false;
+      int evaluations = 0;
+      const double lo = G::BisectLargestEmpty(0.0, blockedAt, 1e-9 * r,
+        [&](double step) {
+          G::AddScaled(c, step, v, x);
+          if (query.ClosestPoint(x, radiusAt(step) - slack, hit))
+          {
+            beyond = hit;
+            found = true;
+            return false;
+          }
+          return true;
+        },
+        evaluations);
+      G::AddScaled(c, lo, v, x);
+      if (lo > 0.0 && radiusAt(lo) > radius && within(x, radiusAt(lo)))
+      {
+        radius = radiusAt(lo);
+        G::Copy(x, best);
+        touched = found;
+        if (found)
+        {
+          touch = Touch{ { beyond.Point[0], beyond.Point[1], beyond.Point[2] }, beyond.Triangle };
+          G::Copy(touch.Point, contact);
+        }
+      }
     }
     if (!(radius > r * (1.0 + 1e-9)))
     {
@@ -435,7 +525,10 @@ void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
     {
       allowed = std::max(allowed, gapAt(c, r));
     }
-    if (small)
+    // A small sliding step that found a new contact is not the last: a curved wall
+    // ahead slows the slide, and the new contact turns its direction at the next step
+    // (MaximumSlides bounds the cost).
+    if (small && !(keep && sliding && touched))
     {
       break;
     }
@@ -446,5 +539,34 @@ void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
     out.Radius = r;
     G::Copy(contact, out.Contact);
     out.Angle = G::AngleDegrees(c, p, contact);
+  }
+  return slid;
+}
+}
+
+void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
+  const vtkMedialGrowthLimits& limits, const vtkIdType* faces, int faceCount, vtkMedialSampleRecord& out,
+  vtkMedialSampleRecord* plain)
+{
+  // The ascent is a local search: where the plain one slides, the one that keeps its
+  // contacts goes on where the plain one stops early beside a crease (a curved wall,
+  // a start ball not exactly tangent), but it may also reach a smaller local maximum
+  // elsewhere. Both balls are inscribed and come within the same reach of p, so the
+  // larger is kept: no value falls below the plain ascent's, and a ball that does not
+  // slide (most of a smooth surface) costs one ascent, as before.
+  const vtkMedialSampleRecord start = out;
+  const bool slid = Ascend(query, p, limits, faces, faceCount, out, false);
+  if (plain)
+  {
+    *plain = out;
+  }
+  if (slid)
+  {
+    vtkMedialSampleRecord kept = start;
+    Ascend(query, p, limits, faces, faceCount, kept, true);
+    if (kept.Radius > out.Radius)
+    {
+      out = kept;
+    }
   }
 }

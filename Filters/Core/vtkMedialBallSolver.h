@@ -120,11 +120,19 @@ struct vtkMedialGrowthLimits
  * counts as the ball about its centre that touches it, so the ball stays inscribed.
  * Stops when the contacts surround the centre (no direction increases the distance),
  * when a step no longer grows it, or after the limits' steps.
+ * Where that ascent slides, a second one that keeps the sliding ball's contacts runs too
+ * (the start made exactly tangent to its contacts, a blocked sliding step ended on the
+ * largest empty ball on its path, no stop after a small sliding step that found a new
+ * contact, a contact found through a triangle's plane only not kept), and the larger
+ * ball of the two is the result.
  * The contacts at the start: the planes of `faces` (the triangles around p, when the
  * ball touches p) and out.Contact (on out.ContactTriangle's plane, or a point when
  * out.Shrunk). out.Contact becomes its last contact.
  */
+/// `plain`, when given: the plain ascent's ball (a caller that compares balls at other
+/// points may still want it where the larger one lies too far from them).
 void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
-  const vtkMedialGrowthLimits& limits, const vtkIdType* faces, int faceCount, vtkMedialSampleRecord& out);
+  const vtkMedialGrowthLimits& limits, const vtkIdType* faces, int faceCount, vtkMedialSampleRecord& out,
+  vtkMedialSampleRecord* plain = nullptr);
 
 #endif

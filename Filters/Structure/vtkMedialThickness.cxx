@@ -683,7 +683,7 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
   const std::vector<double>& normals, const std::vector<char>& sharp, std::vector<Measure>& measures)
 {
   const vtkIdType np = mesh.GetNumberOfPoints();
-  measures.assign(np, Measure{ NaN, { NaN, NaN, NaN }, NaN, NaN });
+  measures.assign(np, Measure{ NaN, { NaN, NaN, NaN }, NaN, NaN, NaN, { NaN, NaN, NaN } });
   std::vector<std::pair<vtkIdType, vtkIdType>> items; // (vertex, one of its triangles)
   for (vtkIdType v = 0; v < np; ++v)
   {
@@ -774,7 +774,15 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
     }
     if (grown.Valid)
     {
-      vtkMedialGrowBall(query, p, limits, fan.data(), static_cast<int>(fan.size()), grown);
+      vtkMedialSampleRecord plain;
+      vtkMedialGrowBall(query, p, limits, fan.data(), static_cast<int>(fan.size()), grown, &plain);
+      m.PlainRadius = m.Radius;
+      std::copy(m.Centre, m.Centre + 3, m.PlainCentre);
+      if (!(tangent.Valid && tangent.Radius > plain.Radius))
+      {
+        m.PlainRadius = plain.Radius;
+        std::copy(plain.Centre, plain.Centre + 3, m.PlainCentre);
+      }
       if (!(tangent.Valid && tangent.Radius > grown.Radius))
       {
         m.Radius = grown.Radius;
@@ -801,7 +809,7 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
     smoothParameters.Normals = &normals;
     smooth = &smoothParameters;
   }
-  measures.assign(cells, Measure{ NaN, { NaN, NaN, NaN }, NaN, NaN });
+  measures.assign(cells, Measure{ NaN, { NaN, NaN, NaN }, NaN, NaN, NaN, { NaN, NaN, NaN } });
   // Each cell is represented by its largest triangle (the first among equals).
   std::vector<vtkIdType> largest(cells, -1);
   for (vtkIdType t = 0; t < mesh.GetNumberOfTriangles(); ++t)
@@ -863,19 +871,23 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
     // tolerance) is admissible here too: where the cell's own ascent stops early (sliding
     // off a crease along a curved wall), the cell does not read thinner than its corners.
     const double size = std::max({ walls.Size[v[0]], walls.Size[v[1]], walls.Size[v[2]] });
-    for (int k = 0; k < 3; ++k)
+    // The corner's ball by the plain ascent too: where the corner's own ball slid farther
+    // from the cell, that one may still be admissible here.
+    for (int k = 0; k < 6; ++k)
     {
-      const Measure& corner = corners[v[k]];
-      if (!(corner.Radius > m.Radius))
+      const Measure& corner = corners[v[k % 3]];
+      const double radius = k < 3 ? corner.Radius : corner.PlainRadius;
+      const double* centre = k < 3 ? corner.Centre : corner.PlainCentre;
+      if (!(radius > m.Radius))
       {
         continue;
       }
-      const double toVertex = std::sqrt(G::Distance2(corner.Centre, mesh.GetPoint(v[k]))) - corner.Radius;
-      const double toCentroid = std::sqrt(G::Distance2(corner.Centre, p)) - corner.Radius;
+      const double toVertex = std::sqrt(G::Distance2(centre, mesh.GetPoint(v[k % 3]))) - radius;
+      const double toCentroid = std::sqrt(G::Distance2(centre, p)) - radius;
       if (toCentroid <= std::max(toVertex, this->SurfaceTolerance * size))
       {
-        m.Radius = corner.Radius;
-        std::copy(corner.Centre, corner.Centre + 3, m.Centre);
+        m.Radius = radius;
+        std::copy(centre, centre + 3, m.Centre);
       }
     }
     return next;
@@ -958,7 +970,7 @@ void vtkMedialThickness::WriteArrays(vtkPolyData* output, const vtkMedialTriangl
     vtkDoubleArray* centre = make(vtkMedialArrayNames::MedialCentre, 3);
     vtkDoubleArray* ray = make(vtkMedialArrayNames::RayThickness, 1);
     vtkDoubleArray* tangent = make(vtkMedialArrayNames::TangentThickness, 1);
-    const Measure missing{ NaN, { NaN, NaN, NaN }, NaN, NaN };
+    const Measure missing{ NaN, { NaN, NaN, NaN }, NaN, NaN, NaN, { NaN, NaN, NaN } };
     vtkIdType withoutValue = 0;
     for (vtkIdType i = 0; i < n; ++i)
     {

@@ -215,6 +215,10 @@ protected:
     double Centre[3];
     double Ray;
     double TangentRadius;
+    // A vertex's ball by the plain ascent alone (vtkMedialGrowBall), where it slid: a
+    // cell may take it from its corner when the larger ball lies too far from the cell.
+    double PlainRadius;
+    double PlainCentre[3];
   };
   // The surface split along its creases, and which parts meet along a convex one.
   struct Walls;
