@@ -2,11 +2,13 @@
 #include "vtkMedialEnvelopeRefinement.h"
 
 #include "vtkMedialEnvelope.h"
+#include "vtkMedialSort.h"
 #include "vtkMedialSpatialOrder.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <numeric>
 #include <unordered_map>
@@ -111,28 +113,81 @@ public:
   void Probe(const vtkMedialEnvelopeRefinement& self, const Mesh& mesh, const vtkMedialSurfaceQuery& query,
     std::vector<Edge>& edges, int threads)
   {
-    std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    edges.erase(std::remove_if(edges.begin(), edges.end(), [this](const Edge& e) { return this->Known.count(e) > 0; }),
-      edges.end());
+    // The new edges, each once, in the order first met (the order only decides which
+    // thread probes which edge): an open-addressing table whose slots for them hold
+    // Unknown until the parallel loop has probed them.
+    this->Reserve(this->Size + edges.size());
+    std::vector<size_t> slots;
+    size_t kept = 0;
+    for (const Edge& e : edges)
+    {
+      size_t slot = this->Slot(e);
+      if (this->Keys[slot][0] < 0)
+      {
+        this->Keys[slot] = e;
+        this->Values[slot] = Unknown;
+        ++this->Size;
+        slots.push_back(slot);
+        edges[kept++] = e;
+      }
+    }
+    edges.resize(kept);
     const vtkIdType n = static_cast<vtkIdType>(edges.size());
-    std::vector<double> worst(edges.size());
     const std::vector<vtkIdType> order = SpatialOrder(mesh, query, n, [&](vtkIdType i) { return edges[i][0]; });
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
     for (vtkIdType k = 0; k < n; ++k)
     {
       const vtkIdType i = order[k];
-      worst[i] = self.ProbeEdge(mesh, query, edges[i][0], edges[i][1]);
-    }
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      this->Known.emplace(edges[i], worst[i]);
+      this->Values[slots[i]] = self.ProbeEdge(mesh, query, edges[i][0], edges[i][1]);
     }
   }
-  double Get(const Edge& e) const { return this->Known.at(e); }
+  // The value of an edge probed before (read-only: safe from parallel loops).
+  double Get(const Edge& e) const { return this->Values[this->Slot(e)]; }
 
 private:
-  std::unordered_map<Edge, double, EdgeHash> Known;
+  static constexpr double Unknown = -1.0;
+  // The slot of e, or the empty slot where it would go (linear probing).
+  size_t Slot(const Edge& e) const
+  {
+    const std::uint64_t h =
+      (static_cast<std::uint64_t>(e[0]) * 0x9E3779B97F4A7C15ull) ^ (static_cast<std::uint64_t>(e[1]) * 0xC2B2AE3D27D4EB4Full);
+    size_t slot = static_cast<size_t>(h >> 20) & (this->Keys.size() - 1);
+    while (this->Keys[slot][0] >= 0 && this->Keys[slot] != e)
+    {
+      slot = (slot + 1) & (this->Keys.size() - 1);
+    }
+    return slot;
+  }
+  // Room for n entries at a load of at most one half.
+  void Reserve(size_t n)
+  {
+    size_t capacity = std::max<size_t>(this->Keys.size(), 1024);
+    while (capacity < 2 * n)
+    {
+      capacity *= 2;
+    }
+    if (capacity == this->Keys.size())
+    {
+      return;
+    }
+    std::vector<Edge> keys(capacity, Edge{ -1, -1 });
+    std::vector<double> values(capacity, Unknown);
+    keys.swap(this->Keys);
+    values.swap(this->Values);
+    for (size_t k = 0; k < keys.size(); ++k)
+    {
+      if (keys[k][0] >= 0)
+      {
+        const size_t slot = this->Slot(keys[k]);
+        this->Keys[slot] = keys[k];
+        this->Values[slot] = values[k];
+      }
+    }
+  }
+
+  std::vector<Edge> Keys; // {-1, -1}: empty
+  std::vector<double> Values;
+  size_t Size = 0;
 };
 
 // The triangles on each edge, kept through the splits without re-sorting every side each
@@ -141,7 +196,7 @@ private:
 class vtkMedialEnvelopeRefinement::SideIndex
 {
 public:
-  explicit SideIndex(const std::vector<std::array<vtkIdType, 3>>& triangles)
+  SideIndex(const std::vector<std::array<vtkIdType, 3>>& triangles, int threads)
   {
     this->Base.reserve(3 * triangles.size());
     for (vtkIdType t = 0; t < static_cast<vtkIdType>(triangles.size()); ++t)
@@ -151,7 +206,7 @@ public:
         this->Base.push_back({ Sorted(triangles[t][k], triangles[t][(k + 1) % 3]), t });
       }
     }
-    std::sort(this->Base.begin(), this->Base.end());
+    vtkMedialSort(this->Base.begin(), this->Base.end(), threads); // (side, triangle): distinct
   }
   // The triangles that have e as a side now, in increasing order.
   void Find(const Edge& e, const std::vector<std::array<vtkIdType, 3>>& triangles, std::vector<vtkIdType>& out) const
@@ -191,16 +246,14 @@ private:
 };
 
 vtkIdType vtkMedialEnvelopeRefinement::SplitEdges(const Mesh& mesh, const vtkMedialSurfaceQuery& query,
-  SideIndex& index, std::vector<Edge>& marked, std::vector<Edge>& free, std::vector<vtkIdType>& touched)
+  SideIndex& index, std::vector<Edge>& marked, std::vector<Edge>& free, std::vector<vtkIdType>& touched, int threads)
 {
   std::vector<std::array<vtkIdType, 3>>& triangles = *mesh.Triangles;
-  std::vector<char> split(triangles.size(), 0); // in this round
   touched.clear();
   const size_t freeCount = free.size(); // sorted up to here; split halves are appended
   std::sort(marked.begin(), marked.end());
   marked.erase(std::unique(marked.begin(), marked.end()), marked.end());
   const double far = 2.0 * query.GetMesh()->Diagonal;
-  vtkIdType added = 0;
   // The triangles on each marked edge as the round starts (a triangle split through
   // another edge first may no longer have it, but must still hold it back).
   std::vector<std::vector<vtkIdType>> onEdge(marked.size());
@@ -208,30 +261,51 @@ vtkIdType vtkMedialEnvelopeRefinement::SplitEdges(const Mesh& mesh, const vtkMed
   {
     index.Find(marked[k], triangles, onEdge[k]);
   }
-  std::vector<std::pair<size_t, Edge>> halves; // free edges split: replaced after the round
-  for (size_t k = 0; k < marked.size(); ++k)
+  // The edges split, in order: an edge is held back when a triangle on it was split
+  // in this round (only the triangles there at the start matter: a split's new
+  // triangle is on no marked edge's list).
+  std::vector<size_t> chosen;
   {
-    const Edge& e = marked[k];
-    const std::vector<vtkIdType>& on = onEdge[k];
-    if (std::any_of(on.begin(), on.end(), [&split](vtkIdType t) { return split[t] != 0; }))
+    std::vector<char> split(triangles.size(), 0);
+    for (size_t k = 0; k < marked.size(); ++k)
     {
-      continue; // a triangle on it was split in this round
+      const std::vector<vtkIdType>& on = onEdge[k];
+      if (std::any_of(on.begin(), on.end(), [&split](vtkIdType t) { return split[t] != 0; }))
+      {
+        continue;
+      }
+      chosen.push_back(k);
+      for (vtkIdType s : on)
+      {
+        split[s] = 1;
+      }
     }
-    // The new ball: the midpoint, with the largest inscribed radius there.
-    const vtkIdType m = static_cast<vtkIdType>(mesh.Radii->size());
-    double c[3];
+  }
+  // The new balls: each chosen edge's midpoint, with the largest inscribed radius
+  // there (independent queries, in parallel).
+  const vtkIdType nc = static_cast<vtkIdType>(chosen.size());
+  std::vector<double> centres(3 * chosen.size()), radii(chosen.size());
+#pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
+  for (vtkIdType i = 0; i < nc; ++i)
+  {
+    const Edge& e = marked[chosen[i]];
+    double* c = &centres[3 * i];
     for (int k = 0; k < 3; ++k)
     {
       c[k] = 0.5 * ((*mesh.Centres)[3 * e[0] + k] + (*mesh.Centres)[3 * e[1] + k]);
     }
     vtkMedialSurfaceQuery::ClosestHit hit;
-    const double radius = query.ClosestPoint(c, far, hit)
-      ? hit.Distance
-      : 0.5 * ((*mesh.Radii)[e[0]] + (*mesh.Radii)[e[1]]);
-    mesh.Centres->insert(mesh.Centres->end(), c, c + 3);
-    mesh.Radii->push_back(radius);
+    radii[i] = query.ClosestPoint(c, far, hit) ? hit.Distance : 0.5 * ((*mesh.Radii)[e[0]] + (*mesh.Radii)[e[1]]);
+  }
+  std::vector<std::pair<size_t, Edge>> halves; // free edges split: replaced after the round
+  for (vtkIdType i = 0; i < nc; ++i)
+  {
+    const Edge& e = marked[chosen[i]];
+    const std::vector<vtkIdType>& on = onEdge[chosen[i]];
+    const vtkIdType m = static_cast<vtkIdType>(mesh.Radii->size());
+    mesh.Centres->insert(mesh.Centres->end(), &centres[3 * i], &centres[3 * i] + 3);
+    mesh.Radii->push_back(radii[i]);
     mesh.Vertices->push_back(m);
-    ++added;
     if (on.empty())
     {
       // An edge of no triangle: (a, b) becomes (a, m) and (m, b); the sorted part of
@@ -255,8 +329,6 @@ vtkIdType vtkMedialEnvelopeRefinement::SplitEdges(const Mesh& mesh, const vtkMed
       const vtkIdType apex = t[0] + t[1] + t[2] - e[0] - m;
       triangles[s] = t;
       triangles.push_back(other);
-      split[s] = 1;
-      split.push_back(1);
       touched.push_back(s);
       touched.push_back(u);
       index.Add(e[0], m, s);
@@ -270,7 +342,7 @@ vtkIdType vtkMedialEnvelopeRefinement::SplitEdges(const Mesh& mesh, const vtkMed
   {
     free[half.first] = half.second;
   }
-  return added;
+  return nc;
 }
 
 vtkIdType vtkMedialEnvelopeRefinement::Refine(const Mesh& mesh, const vtkMedialSurfaceQuery& query,
@@ -300,7 +372,7 @@ vtkIdType vtkMedialEnvelopeRefinement::Refine(const Mesh& mesh, const vtkMedialS
   std::iota(dirty.begin(), dirty.end(), vtkIdType(0));
   std::vector<double> triangleProtrusion(triangles.size(), 0.0);
   EdgeProbes sides;
-  SideIndex index(triangles);
+  SideIndex index(triangles, threads);
   for (; this->Rounds < MaximumRounds && added < limit; ++this->Rounds)
   {
     if (aborted && aborted())
@@ -371,7 +443,7 @@ vtkIdType vtkMedialEnvelopeRefinement::Refine(const Mesh& mesh, const vtkMedialS
     {
       break;
     }
-    added += this->SplitEdges(mesh, query, index, marked, free, dirty);
+    added += this->SplitEdges(mesh, query, index, marked, free, dirty, threads);
     std::sort(free.begin(), free.end());
   }
   // Every edge again: the sides of the triangles and the edges of no triangle.
@@ -387,7 +459,7 @@ vtkIdType vtkMedialEnvelopeRefinement::Refine(const Mesh& mesh, const vtkMedialS
   {
     counted.push_back({ e, 0 });
   }
-  std::sort(counted.begin(), counted.end());
+  vtkMedialSort(counted.begin(), counted.end(), threads); // equivalent entries are equal
   edges.clear();
   mesh.EdgeTriangles->clear();
   for (const auto& c : counted)

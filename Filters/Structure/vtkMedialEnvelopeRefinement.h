@@ -82,7 +82,7 @@ private:
   // triangle, `touched` gets the triangles rewritten or made.
   vtkIdType SplitEdges(const Mesh& mesh, const vtkMedialSurfaceQuery& query, SideIndex& index,
     std::vector<std::array<vtkIdType, 2>>& marked, std::vector<std::array<vtkIdType, 2>>& free,
-    std::vector<vtkIdType>& touched);
+    std::vector<vtkIdType>& touched, int threads);
 };
 
 #endif

@@ -180,13 +180,17 @@ void vtkMedialMeshComplex::KeepContained()
 {
   const vtkMedialPowerComplex& p = *this->Power;
   const vtkIdType nt = p.GetNumberOfTetrahedra(), nf = p.GetNumberOfTriangles(), ne = p.GetNumberOfEdges();
-  std::vector<char> edgeCandidate(p.EdgeInUnion.begin(), p.EdgeInUnion.end());
-  for (vtkIdType f = 0; f < nf; ++f)
+  // An edge is a candidate in the union or on a candidate triangle.
+  std::vector<char> edgeCandidate(ne);
+#pragma omp parallel for schedule(static, 4096) num_threads(this->Threads)
+  for (vtkIdType e = 0; e < ne; ++e)
   {
-    for (int k = 0; k < 3 && this->TriangleCandidate[f]; ++k)
+    bool candidate = p.EdgeInUnion[e] != 0;
+    for (vtkIdType k = p.EdgeTriangleStart[e]; k < p.EdgeTriangleStart[e + 1] && !candidate; ++k)
     {
-      edgeCandidate[p.TriangleEdges[f][k]] = 1;
+      candidate = this->TriangleCandidate[p.EdgeTriangleList[k]] != 0;
     }
+    edgeCandidate[e] = candidate;
   }
   // Edges, then triangles (which read their edges' states): each state is written by
   // one thread only.
@@ -215,16 +219,19 @@ void vtkMedialMeshComplex::KeepContained()
   this->TriangleIn.assign(nf, 0);
   this->TetIn.assign(nt, 0);
   vtkIdType rejected = 0;
+#pragma omp parallel for schedule(static, 4096) num_threads(this->Threads) reduction(+ : rejected)
   for (vtkIdType e = 0; e < ne; ++e)
   {
     this->EdgeIn[e] = edgeCandidate[e] && (p.EdgeInUnion[e] || this->EdgeState[e] == INSIDE);
     rejected += edgeCandidate[e] && !this->EdgeIn[e];
   }
+#pragma omp parallel for schedule(static, 4096) num_threads(this->Threads) reduction(+ : rejected)
   for (vtkIdType f = 0; f < nf; ++f)
   {
     this->TriangleIn[f] = this->TriangleCandidate[f] && (p.TriangleInUnion[f] || this->TriangleState[f] == INSIDE);
     rejected += this->TriangleCandidate[f] && !this->TriangleIn[f];
   }
+#pragma omp parallel for schedule(static, 4096) num_threads(this->Threads) reduction(+ : rejected)
   for (vtkIdType t = 0; t < nt; ++t)
   {
     bool in = this->TetCandidate[t];
@@ -480,15 +487,8 @@ void vtkMedialMeshComplex::DropDetachedComponents(const std::vector<vtkIdType>& 
 void vtkMedialMeshComplex::Collapse()
 {
   const vtkMedialPowerComplex& p = *this->Power;
-  const vtkIdType nt = p.GetNumberOfTetrahedra(), nf = p.GetNumberOfTriangles();
-  std::vector<int> cofaces(nf, 0);
-  for (vtkIdType t = 0; t < nt; ++t)
-  {
-    for (int j = 0; j < 4 && this->TetIn[t]; ++j)
-    {
-      ++cofaces[p.TetTriangles[t][j]];
-    }
-  }
+  const vtkIdType nf = p.GetNumberOfTriangles();
+  std::vector<int> cofaces = this->TetsOnTriangles(this->TetIn);
   std::vector<vtkIdType> queue;
   for (vtkIdType f = 0; f < nf; ++f)
   {
@@ -655,7 +655,8 @@ void vtkMedialMeshComplex::PruneProtrusions(double tolerance)
       }
     }
   }
-  std::vector<std::vector<vtkIdType>> ballEdges(nb);
+  // The edges of K on each ball (CSR, in increasing order).
+  std::vector<vtkIdType> ballEdgeStart(nb + 1, 0), ballEdges;
   for (vtkIdType e = 0; e < ne; ++e)
   {
     if (this->EdgeIn[e])
@@ -663,7 +664,20 @@ void vtkMedialMeshComplex::PruneProtrusions(double tolerance)
       for (vtkIdType b : p.EdgeVertices[e])
       {
         ++degree[b];
-        ballEdges[b].push_back(e);
+        ++ballEdgeStart[b + 1];
+      }
+    }
+  }
+  std::partial_sum(ballEdgeStart.begin(), ballEdgeStart.end(), ballEdgeStart.begin());
+  ballEdges.resize(ballEdgeStart.back());
+  {
+    std::vector<vtkIdType> fill(ballEdgeStart.begin(), ballEdgeStart.end() - 1);
+    for (vtkIdType e = 0; e < ne; ++e)
+    {
+      if (this->EdgeIn[e])
+      {
+        ballEdges[fill[p.EdgeVertices[e][0]]++] = e;
+        ballEdges[fill[p.EdgeVertices[e][1]]++] = e;
       }
     }
   }
@@ -762,8 +776,9 @@ void vtkMedialMeshComplex::PruneProtrusions(double tolerance)
     const vtkIdType inner = degree[v[0]] == 1 ? v[1] : v[0];
     removeEdge(e);
     ++this->Stats.PrunedEdges;
-    for (vtkIdType next : ballEdges[inner])
+    for (vtkIdType k = ballEdgeStart[inner]; k < ballEdgeStart[inner + 1]; ++k)
     {
+      const vtkIdType next = ballEdges[k];
       if (this->EdgeIn[next] && alive[next] == 0)
       {
         bareEdges.push_back(next); // may now have a free end
@@ -820,17 +835,10 @@ std::vector<vtkIdType> vtkMedialMeshComplex::LoopBalls() const
 {
   const vtkMedialPowerComplex& p = *this->Power;
   const vtkIdType nb = static_cast<vtkIdType>(p.BallIsVertex.size());
-  const vtkIdType ne = p.GetNumberOfEdges(), nf = p.GetNumberOfTriangles(), nt = p.GetNumberOfTetrahedra();
+  const vtkIdType ne = p.GetNumberOfEdges(), nf = p.GetNumberOfTriangles();
   std::vector<char> tetIn = this->TetIn, triangleIn = this->TriangleIn, edgeIn = this->EdgeIn;
   // Tetrahedra through free triangles.
-  std::vector<int> triangleTets(nf, 0);
-  for (vtkIdType t = 0; t < nt; ++t)
-  {
-    for (int j = 0; j < 4 && tetIn[t]; ++j)
-    {
-      ++triangleTets[p.TetTriangles[t][j]];
-    }
-  }
+  std::vector<int> triangleTets = this->TetsOnTriangles(tetIn);
   std::vector<vtkIdType> queue;
   for (vtkIdType f = 0; f < nf; ++f)
   {
@@ -859,14 +867,7 @@ std::vector<vtkIdType> vtkMedialMeshComplex::LoopBalls() const
     }
   }
   // Triangles (with no tetrahedron left) through free edges.
-  std::vector<int> edgeTriangles(ne, 0);
-  for (vtkIdType f = 0; f < nf; ++f)
-  {
-    for (int k = 0; k < 3 && triangleIn[f]; ++k)
-    {
-      ++edgeTriangles[p.TriangleEdges[f][k]];
-    }
-  }
+  std::vector<int> edgeTriangles = this->TrianglesOnEdges(triangleIn);
   auto freeEdge = [&](vtkIdType f) {
     for (vtkIdType e : p.TriangleEdges[f])
     {
@@ -906,38 +907,75 @@ std::vector<vtkIdType> vtkMedialMeshComplex::LoopBalls() const
       }
     }
   }
-  // Edges (with no triangle left) through free ends.
+  // Edges (with no triangle left) through free ends. Taking one away only lowers
+  // degrees, so an edge that may go stays so until it goes: the edges left do not
+  // depend on the order, and a queue (the bare edges at each ball whose degree falls
+  // to 1) finds them in one pass instead of sweeping every edge until nothing changes.
   std::vector<int> degree(nb, 0);
+  std::vector<vtkIdType> bare; // in K and on no triangle
   for (vtkIdType e = 0; e < ne; ++e)
   {
     if (edgeIn[e])
     {
       ++degree[p.EdgeVertices[e][0]];
       ++degree[p.EdgeVertices[e][1]];
+      if (edgeTriangles[e] == 0)
+      {
+        bare.push_back(e);
+      }
     }
   }
-  std::vector<char> core(nb, 0);
-  bool changed = true;
-  while (changed)
+  std::vector<vtkIdType> bareStart(nb + 1, 0), bareAt(2 * bare.size());
+  for (vtkIdType e : bare)
   {
-    changed = false;
-    for (vtkIdType e = 0; e < ne; ++e)
+    ++bareStart[p.EdgeVertices[e][0] + 1];
+    ++bareStart[p.EdgeVertices[e][1] + 1];
+  }
+  std::partial_sum(bareStart.begin(), bareStart.end(), bareStart.begin());
+  {
+    std::vector<vtkIdType> fill(bareStart.begin(), bareStart.end() - 1);
+    for (vtkIdType e : bare)
     {
-      const auto& v = p.EdgeVertices[e];
-      if (edgeIn[e] && edgeTriangles[e] == 0 && (degree[v[0]] == 1 || degree[v[1]] == 1))
+      bareAt[fill[p.EdgeVertices[e][0]]++] = e;
+      bareAt[fill[p.EdgeVertices[e][1]]++] = e;
+    }
+  }
+  queue.clear();
+  for (vtkIdType e : bare)
+  {
+    if (degree[p.EdgeVertices[e][0]] == 1 || degree[p.EdgeVertices[e][1]] == 1)
+    {
+      queue.push_back(e);
+    }
+  }
+  for (size_t head = 0; head < queue.size(); ++head)
+  {
+    const vtkIdType e = queue[head];
+    if (!edgeIn[e])
+    {
+      continue;
+    }
+    edgeIn[e] = 0;
+    for (vtkIdType b : p.EdgeVertices[e])
+    {
+      if (--degree[b] == 1)
       {
-        edgeIn[e] = 0;
-        --degree[v[0]];
-        --degree[v[1]];
-        changed = true;
+        for (vtkIdType k = bareStart[b]; k < bareStart[b + 1]; ++k)
+        {
+          if (edgeIn[bareAt[k]])
+          {
+            queue.push_back(bareAt[k]);
+          }
+        }
       }
     }
   }
   // The loops: what is left of the edges of no triangle (closed surfaces left are
   // voids, FillVoids' concern).
-  for (vtkIdType e = 0; e < ne; ++e)
+  std::vector<char> core(nb, 0);
+  for (vtkIdType e : bare)
   {
-    if (edgeIn[e] && edgeTriangles[e] == 0)
+    if (edgeIn[e])
     {
       core[p.EdgeVertices[e][0]] = core[p.EdgeVertices[e][1]] = 1;
     }
@@ -1129,32 +1167,17 @@ void vtkMedialMeshComplex::FillLoops()
 void vtkMedialMeshComplex::TrimAdded()
 {
   const vtkMedialPowerComplex& p = *this->Power;
-  const vtkIdType ne = p.GetNumberOfEdges();
   if (this->TriangleAdded.empty())
   {
     return;
   }
-  std::vector<int> edgeTriangles(ne, 0);
-  for (vtkIdType f = 0; f < p.GetNumberOfTriangles(); ++f)
-  {
-    for (int k = 0; k < 3 && this->TriangleIn[f]; ++k)
-    {
-      ++edgeTriangles[p.TriangleEdges[f][k]];
-    }
-  }
+  std::vector<int> edgeTriangles = this->TrianglesOnEdges(this->TriangleIn);
   std::vector<char> added(p.GetNumberOfTriangles(), 0);
   for (vtkIdType f : this->TriangleAdded)
   {
     added[f] = 1;
   }
-  std::vector<int> cofaces(p.GetNumberOfTriangles(), 0); // tetrahedra left (not collapsible)
-  for (vtkIdType t = 0; t < p.GetNumberOfTetrahedra(); ++t)
-  {
-    for (int j = 0; j < 4 && this->TetIn[t]; ++j)
-    {
-      ++cofaces[p.TetTriangles[t][j]];
-    }
-  }
+  const std::vector<int> cofaces = this->TetsOnTriangles(this->TetIn); // tetrahedra left (not collapsible)
   std::vector<vtkIdType> queue(this->TriangleAdded);
   std::sort(queue.begin(), queue.end());
   queue.erase(std::unique(queue.begin(), queue.end()), queue.end());
@@ -1194,6 +1217,38 @@ void vtkMedialMeshComplex::TrimAdded()
   this->TriangleAdded.clear();
 }
 
+
+std::vector<int> vtkMedialMeshComplex::TetsOnTriangles(const std::vector<char>& tetIn) const
+{
+  const vtkMedialPowerComplex& p = *this->Power;
+  const vtkIdType nf = p.GetNumberOfTriangles();
+  std::vector<int> count(nf);
+#pragma omp parallel for schedule(static, 4096) num_threads(this->Threads)
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    const auto& tets = p.TriangleTets[f];
+    count[f] = (tetIn[tets[0]] != 0) + (tets[1] >= 0 && tetIn[tets[1]] != 0);
+  }
+  return count;
+}
+
+std::vector<int> vtkMedialMeshComplex::TrianglesOnEdges(const std::vector<char>& triangleIn) const
+{
+  const vtkMedialPowerComplex& p = *this->Power;
+  const vtkIdType ne = p.GetNumberOfEdges();
+  std::vector<int> count(ne);
+#pragma omp parallel for schedule(static, 4096) num_threads(this->Threads)
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    int n = 0;
+    for (vtkIdType k = p.EdgeTriangleStart[e]; k < p.EdgeTriangleStart[e + 1]; ++k)
+    {
+      n += triangleIn[p.EdgeTriangleList[k]] != 0;
+    }
+    count[e] = n;
+  }
+  return count;
+}
 
 void vtkMedialMeshComplex::CountComponents()
 {

@@ -141,6 +141,10 @@ private:
   void TrimAdded();
   std::vector<vtkIdType> TriangleAdded;
   void Collapse();
+  // How many of each triangle's tetrahedra, and of each edge's triangles, the flags
+  // mark (counted per triangle and per edge, so in parallel).
+  std::vector<int> TetsOnTriangles(const std::vector<char>& tetIn) const;
+  std::vector<int> TrianglesOnEdges(const std::vector<char>& triangleIn) const;
   void PruneProtrusions(double tolerance);
   // Largest protrusion through the surface of the balls interpolated at the given
   // barycentric weights over the balls `ids`; where the vertex balls bound it within

@@ -22,31 +22,75 @@ using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<vtkIdType, Kernel
 // from the vertices).
 using CellBase = CGAL::Triangulation_cell_base_with_info_3<vtkIdType, Kernel,
   CGAL::Regular_triangulation_cell_base_3<Kernel, CGAL::Triangulation_cell_base_3<Kernel>, CGAL::Discard_hidden_points>>;
-using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase>;
-using Triangulation = CGAL::Regular_triangulation_3<Kernel, Tds>;
 using WeightedPoint = Kernel::Weighted_point_3;
-using Cell = Triangulation::Cell_handle;
+using Triangulation = CGAL::Regular_triangulation_3<Kernel, CGAL::Triangulation_data_structure_3<VertexBase, CellBase>>;
+
+// The finite cells of the triangulation in its own order: their balls (in vertex order)
+// and their neighbours' positions in that order (-1: infinite), read in parallel once
+// the cells are numbered; and which balls are vertices.
+void ReadCells(Triangulation& triangulation, std::vector<std::array<vtkIdType, 4>>& vertices,
+  std::vector<std::array<vtkIdType, 4>>& neighbours, std::vector<char>& ballIsVertex, int threads)
+{
+  using Cell = Triangulation::Cell_handle;
+  for (auto v = triangulation.finite_vertices_begin(); v != triangulation.finite_vertices_end(); ++v)
+  {
+    ballIsVertex[v->info()] = 1;
+  }
+  std::vector<Cell> cells;
+  cells.reserve(triangulation.tds().number_of_cells());
+  for (auto c = triangulation.all_cells_begin(); c != triangulation.all_cells_end(); ++c)
+  {
+    if (triangulation.is_infinite(c))
+    {
+      c->info() = -1;
+    }
+    else
+    {
+      c->info() = static_cast<vtkIdType>(cells.size());
+      cells.push_back(c);
+    }
+  }
+  const vtkIdType n = static_cast<vtkIdType>(cells.size());
+  vertices.resize(n);
+  neighbours.resize(n);
+#pragma omp parallel for schedule(static, 4096) num_threads(threads)
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      vertices[i][j] = cells[i]->vertex(j)->info();
+      neighbours[i][j] = cells[i]->neighbor(j)->info();
+    }
+  }
+}
 
 // The permutation that sorts `keys` (distinct sorted ball ids, each below `balls`):
 // order[k] is the index of the k-th smallest. A counting sort on the first ball, then a
 // sort of each (short) group in place: a few passes over contiguous memory instead of
-// a comparison sort that reads the keys at random.
+// a comparison sort that reads the keys at random. The groups are filled in any order
+// (atomic counters): each is then sorted on (key, index), which are distinct.
 template <size_t N>
 std::vector<vtkIdType> SortedOrder(const std::vector<std::array<vtkIdType, N>>& keys, vtkIdType balls, int threads)
 {
   const vtkIdType n = static_cast<vtkIdType>(keys.size());
   std::vector<vtkIdType> start(balls + 1, 0);
-  for (const auto& key : keys)
+#pragma omp parallel for schedule(static, 4096) num_threads(threads)
+  for (vtkIdType i = 0; i < n; ++i)
   {
-    ++start[key[0] + 1];
+#pragma omp atomic
+    ++start[keys[i][0] + 1];
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
   std::vector<std::pair<std::array<vtkIdType, N>, vtkIdType>> grouped(n);
   {
     std::vector<vtkIdType> fill(start.begin(), start.end() - 1);
+#pragma omp parallel for schedule(static, 4096) num_threads(threads)
     for (vtkIdType i = 0; i < n; ++i)
     {
-      grouped[fill[keys[i][0]]++] = { keys[i], i };
+      vtkIdType at;
+#pragma omp atomic capture
+      at = fill[keys[i][0]]++;
+      grouped[at] = { keys[i], i };
     }
   }
   std::vector<vtkIdType> order(n);
@@ -215,61 +259,58 @@ bool vtkMedialPowerComplex::Build(
     const double* c = &centres[3 * i];
     points.emplace_back(WeightedPoint(Kernel::Point_3(c[0], c[1], c[2]), radii[i] * radii[i]), i);
   }
-  Triangulation triangulation(points.begin(), points.end());
-  points = {};
-  if (triangulation.dimension() < 3)
+  // The tetrahedra in CGAL's order: their balls and their neighbours' positions (the
+  // triangulation is freed before the indexing allocates).
+  std::vector<std::array<vtkIdType, 4>> cellVertices, cellNeighbours;
+  this->BallIsVertex.assign(nb, 0);
+  int dimension = 0;
+  {
+    Triangulation triangulation(points.begin(), points.end());
+    points = {};
+    dimension = triangulation.dimension();
+    if (dimension == 3)
+    {
+      ReadCells(triangulation, cellVertices, cellNeighbours, this->BallIsVertex, threads);
+    }
+  }
+  if (dimension < 3)
   {
     error = "the ball centres are coplanar";
     return false;
   }
-  this->BallIsVertex.assign(nb, 0);
-  for (auto v = triangulation.finite_vertices_begin(); v != triangulation.finite_vertices_end(); ++v)
-  {
-    this->BallIsVertex[v->info()] = 1;
-  }
   // Every simplex from here on is in a canonical order (sorted by its sorted ball ids),
   // so that nothing depends on CGAL's internal order.
-  this->IndexTetrahedra(&triangulation, threads);
+  this->IndexTetrahedra(cellVertices, cellNeighbours, threads);
   this->IndexTriangles(threads);
   this->IndexEdges(threads);
   this->ClassifyUnion(threads);
   return true;
 }
 
-void vtkMedialPowerComplex::IndexTetrahedra(void* cgalTriangulation, int threads)
+void vtkMedialPowerComplex::IndexTetrahedra(const std::vector<std::array<vtkIdType, 4>>& cellVertices,
+  const std::vector<std::array<vtkIdType, 4>>& cellNeighbours, int threads)
 {
-  Triangulation& triangulation = *static_cast<Triangulation*>(cgalTriangulation);
-  vtkIdType raw = 0;
-  for (auto c = triangulation.all_cells_begin(); c != triangulation.all_cells_end(); ++c)
+  const vtkIdType raw = static_cast<vtkIdType>(cellVertices.size());
+  std::vector<std::array<vtkIdType, 4>> keys(cellVertices);
+#pragma omp parallel for schedule(static, 4096) num_threads(threads)
+  for (vtkIdType i = 0; i < raw; ++i)
   {
-    c->info() = triangulation.is_infinite(c) ? -1 : raw++;
-  }
-  std::vector<Cell> cells(raw);
-  std::vector<std::array<vtkIdType, 4>> keys(raw);
-  for (auto c = triangulation.finite_cells_begin(); c != triangulation.finite_cells_end(); ++c)
-  {
-    cells[c->info()] = c;
-    auto& key = keys[c->info()];
-    for (int j = 0; j < 4; ++j)
-    {
-      key[j] = c->vertex(j)->info();
-    }
-    std::sort(key.begin(), key.end());
+    std::sort(keys[i].begin(), keys[i].end());
   }
   const vtkIdType nb = static_cast<vtkIdType>(this->BallIsVertex.size());
   const std::vector<vtkIdType> order = SortedOrder(keys, nb, threads);
   const std::vector<vtkIdType> rank = Inverse(order);
   this->TetVertices.resize(raw);
   this->TetNeighbours.resize(raw);
+#pragma omp parallel for schedule(static, 4096) num_threads(threads)
   for (vtkIdType k = 0; k < raw; ++k)
   {
-    const Cell c = cells[order[k]];
     const std::array<vtkIdType, 4>& key = keys[order[k]];
     this->TetVertices[k] = key;
     for (int j = 0; j < 4; ++j)
     {
-      const vtkIdType slot = std::find(key.begin(), key.end(), c->vertex(j)->info()) - key.begin();
-      const vtkIdType n = c->neighbor(j)->info();
+      const vtkIdType slot = std::find(key.begin(), key.end(), cellVertices[order[k]][j]) - key.begin();
+      const vtkIdType n = cellNeighbours[order[k]][j];
       this->TetNeighbours[k][slot] = n < 0 ? -1 : rank[n];
     }
   }
@@ -277,29 +318,35 @@ void vtkMedialPowerComplex::IndexTetrahedra(void* cgalTriangulation, int threads
 
 void vtkMedialPowerComplex::IndexTriangles(int threads)
 {
-  // Each triangle once, from the tetrahedron with the smaller index (or the finite one).
+  // Each triangle once, from the tetrahedron with the smaller index (or the finite one):
+  // the number each tetrahedron owns, then each writes its own at its offset.
   const vtkIdType nt = this->GetNumberOfTetrahedra();
-  std::vector<std::array<vtkIdType, 3>> keys;
-  std::vector<std::array<vtkIdType, 2>> sides; // (tetrahedron, slot of the opposite vertex)
-  // (4 nt + h) / 2 triangles, h of them on the hull: reserved exactly, nothing is copied.
-  vtkIdType hull = 0;
-  for (const auto& neighbours : this->TetNeighbours)
+  auto owns = [this](vtkIdType t, int s) {
+    const vtkIdType n = this->TetNeighbours[t][s];
+    return n < 0 || n > t;
+  };
+  std::vector<vtkIdType> first(nt + 1, 0);
+#pragma omp parallel for schedule(static, 4096) num_threads(threads)
+  for (vtkIdType t = 0; t < nt; ++t)
   {
-    hull += std::count(neighbours.begin(), neighbours.end(), vtkIdType(-1));
+    first[t + 1] = owns(t, 0) + owns(t, 1) + owns(t, 2) + owns(t, 3);
   }
-  keys.reserve((4 * nt + hull) / 2);
-  sides.reserve((4 * nt + hull) / 2);
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  const vtkIdType nf = first[nt];
+  std::vector<std::array<vtkIdType, 3>> keys(nf);
+  std::vector<std::array<vtkIdType, 2>> sides(nf); // (tetrahedron, slot of the opposite vertex)
+#pragma omp parallel for schedule(static, 4096) num_threads(threads)
   for (vtkIdType t = 0; t < nt; ++t)
   {
     const auto& v = this->TetVertices[t];
+    vtkIdType at = first[t];
     for (int s = 0; s < 4; ++s)
     {
-      const vtkIdType n = this->TetNeighbours[t][s];
-      if (n >= 0 && n < t)
+      if (!owns(t, s))
       {
         continue;
       }
-      std::array<vtkIdType, 3> key;
+      std::array<vtkIdType, 3>& key = keys[at];
       for (int m = 0, k = 0; m < 4; ++m)
       {
         if (m != s)
@@ -307,16 +354,16 @@ void vtkMedialPowerComplex::IndexTriangles(int threads)
           key[k++] = v[m]; // sorted, as v is
         }
       }
-      keys.push_back(key);
-      sides.push_back({ t, s });
+      sides[at++] = { t, s };
     }
   }
   const std::vector<vtkIdType> order =
     SortedOrder(keys, static_cast<vtkIdType>(this->BallIsVertex.size()), threads);
-  const vtkIdType nf = static_cast<vtkIdType>(keys.size());
   this->TriangleVertices.resize(nf);
   this->TriangleTets.resize(nf);
   this->TetTriangles.resize(nt);
+  // Every (tetrahedron, slot) is one triangle's: the writes below never meet.
+#pragma omp parallel for schedule(static, 4096) num_threads(threads)
   for (vtkIdType f = 0; f < nf; ++f)
   {
     const auto& side = sides[order[f]];
@@ -339,13 +386,18 @@ void vtkMedialPowerComplex::IndexEdges(int threads)
 {
   // The sides of the triangles, grouped by their first ball (a counting sort), then
   // sorted by the second within each group: the edges in canonical order, and for
-  // each the triangles on it.
+  // each the triangles on it. Groups are filled in any order (atomic counters) and
+  // then sorted on (second ball, triangle), distinct within a group.
   const vtkIdType nf = this->GetNumberOfTriangles();
   const vtkIdType nb = static_cast<vtkIdType>(this->BallIsVertex.size());
   std::vector<vtkIdType> start(nb + 1, 0);
-  for (const auto& v : this->TriangleVertices)
+#pragma omp parallel for schedule(static, 4096) num_threads(threads)
+  for (vtkIdType f = 0; f < nf; ++f)
   {
+    const auto& v = this->TriangleVertices[f];
+#pragma omp atomic
     start[v[0] + 1] += 2;
+#pragma omp atomic
     start[v[1] + 1] += 1;
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
@@ -361,42 +413,57 @@ void vtkMedialPowerComplex::IndexEdges(int threads)
   std::vector<Use> uses(3 * nf);
   {
     std::vector<vtkIdType> fill(start.begin(), start.end() - 1);
+#pragma omp parallel for schedule(static, 4096) num_threads(threads)
     for (vtkIdType f = 0; f < nf; ++f)
     {
       const auto& v = this->TriangleVertices[f];
-      uses[fill[v[0]]++] = { v[1], f, 0 };
-      uses[fill[v[0]]++] = { v[2], f, 1 };
-      uses[fill[v[1]]++] = { v[2], f, 2 };
+      vtkIdType at0, at1;
+#pragma omp atomic capture
+      { at0 = fill[v[0]]; fill[v[0]] += 2; }
+#pragma omp atomic capture
+      at1 = fill[v[1]]++;
+      uses[at0] = { v[1], f, 0 };
+      uses[at0 + 1] = { v[2], f, 1 };
+      uses[at1] = { v[2], f, 2 };
     }
   }
-  this->TriangleEdges.resize(nf);
-  this->EdgeVertices.clear();
-  this->EdgeTriangleStart.clear();
-  this->EdgeTriangleList.resize(3 * nf);
+  // Each group sorted, and its edges (distinct second balls) counted.
+  std::vector<vtkIdType> firstEdge(nb + 1, 0);
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
   for (vtkIdType a = 0; a < nb; ++a)
   {
     std::sort(uses.begin() + start[a], uses.begin() + start[a + 1]);
+    vtkIdType edges = 0;
+    for (vtkIdType k = start[a]; k < start[a + 1]; ++k)
+    {
+      edges += k == start[a] || uses[k].Second != uses[k - 1].Second;
+    }
+    firstEdge[a + 1] = edges;
   }
-  // V - E + F - T = 1 for a triangulated ball: the edges' number, reserved.
-  const vtkIdType vertices = std::count(this->BallIsVertex.begin(), this->BallIsVertex.end(), char(1));
-  this->EdgeVertices.reserve(std::max<vtkIdType>(0, vertices + nf - this->GetNumberOfTetrahedra() - 1));
-  this->EdgeTriangleStart.reserve(this->EdgeVertices.capacity() + 1);
+  std::partial_sum(firstEdge.begin(), firstEdge.end(), firstEdge.begin());
+  const vtkIdType ne = firstEdge[nb];
+  this->TriangleEdges.resize(nf);
+  this->EdgeVertices.resize(ne);
+  this->EdgeTriangleStart.resize(ne + 1);
+  this->EdgeTriangleList.resize(3 * nf);
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
   for (vtkIdType a = 0; a < nb; ++a)
   {
+    vtkIdType edge = firstEdge[a] - 1;
     for (vtkIdType k = start[a]; k < start[a + 1]; ++k)
     {
       const Use& u = uses[k];
       if (k == start[a] || u.Second != uses[k - 1].Second)
       {
-        this->EdgeVertices.push_back({ a, u.Second });
-        this->EdgeTriangleStart.push_back(k);
+        ++edge;
+        this->EdgeVertices[edge] = { a, u.Second };
+        this->EdgeTriangleStart[edge] = k;
       }
-      this->TriangleEdges[u.Triangle][u.Side] = static_cast<vtkIdType>(this->EdgeVertices.size() - 1);
+      this->TriangleEdges[u.Triangle][u.Side] = edge;
       this->EdgeTriangleList[k] = u.Triangle;
     }
   }
-  this->EdgeTriangleStart.push_back(3 * nf);
+  this->EdgeTriangleStart[ne] = 3 * nf;
 }
 
 void vtkMedialPowerComplex::ClassifyUnion(int threads)

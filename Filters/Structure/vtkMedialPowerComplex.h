@@ -91,7 +91,10 @@ public:
   std::vector<char> VertexInUnion;
 
 private:
-  void IndexTetrahedra(void* cgalTriangulation, int threads);
+  // The tetrahedra in canonical order, from CGAL's cells (their balls in CGAL's vertex
+  // order, and their neighbours' positions in CGAL's order; -1: infinite).
+  void IndexTetrahedra(const std::vector<std::array<vtkIdType, 4>>& cellVertices,
+    const std::vector<std::array<vtkIdType, 4>>& cellNeighbours, int threads);
   void IndexTriangles(int threads);
   void IndexEdges(int threads);
   void ClassifyUnion(int threads);

@@ -2,6 +2,7 @@
 #include "vtkMedialSeamSolver.h"
 
 #include "vtkMedialGeometry.h"
+#include "vtkMedialSort.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialThreads.h"
 #include "vtkMedialTriangleMesh.h"
@@ -1048,7 +1049,7 @@ std::vector<vtkMedialSeamSolver::Pair> vtkMedialSeamSolver::NearestPairs(
       pairs.push_back({ std::min(i, j), std::max(i, j) });
     }
   }
-  std::sort(pairs.begin(), pairs.end());
+  vtkMedialSort(pairs.begin(), pairs.end(), threads); // equivalent pairs are equal
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   return pairs;
 }
