@@ -13,19 +13,26 @@
 #define vtkMedialSort_h
 
 #include <algorithm>
+// The parallel mode is libstdc++'s; with another standard library, or without OpenMP,
+// the sort runs on one thread (same output).
+#if defined(__GLIBCXX__) && defined(_OPENMP)
 #include <parallel/algorithm>
+#define VTK_MEDIAL_PARALLEL_SORT 1
+#endif
 
 template <class Iterator>
 void vtkMedialSort(Iterator first, Iterator last, int threads)
 {
+#ifdef VTK_MEDIAL_PARALLEL_SORT
   if (threads > 1 && last - first > 4096)
   {
     __gnu_parallel::sort(first, last, __gnu_parallel::multiway_mergesort_tag(threads));
+    return;
   }
-  else
-  {
-    std::sort(first, last);
-  }
+#else
+  (void)threads;
+#endif
+  std::sort(first, last);
 }
 
 #endif
