@@ -2473,26 +2473,13 @@ public:
   // The ray's t at triangle (a, b, c), beyond tMin; false when it misses.
   bool Hit(const double* a, const double* b, const double* c, double tMin, double& t) const
   {
-    double A[3], B[3], C[3];
-    this->Shear(a, A);
-    this->Shear(b, B);
-    this->Shear(c, C);
-    const double u = C[0] * B[1] - C[1] * B[0];
-    const double v = A[0] * C[1] - A[1] * C[0];
-    const double w = B[0] * A[1] - B[1] * A[0];
-    if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0))
+    double end;
+    bool inPlane;
+    if (!this->Meets(a, b, c, t, end, inPlane))
     {
       return false;
     }
-    const double det = u + v + w;
-    if (det == 0.0)
-    {
-      double lo, hi;
-      InPlaneSpan(A, B, C, lo, hi);
-      return FirstInSpan(lo, hi, tMin, t);
-    }
-    t = (u * A[2] + v * B[2] + w * C[2]) / det;
-    return true;
+    return !inPlane || FirstInSpan(t, end, tMin, t);
   }
 
   // Hit without its tMin: false when the ray misses; else the triangle is met at t, or,

@@ -7,6 +7,8 @@
 // First of the CGAL headers: the order of CGAL's box intersection (see there).
 #include "vtkMedialCGALBoxOrder.h"
 
+#include "vtkMedialCGALSoup.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -32,51 +34,11 @@ namespace
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
-using Polygons = std::vector<std::vector<std::size_t>>;
+using Polygons = vtkMedialCGALSoup::Polygons;
+using vtkMedialCGALSoup::FromMesh;
+using vtkMedialCGALSoup::ToPolygons;
 namespace PMP = CGAL::Polygon_mesh_processing;
 using Soup = vtkMedialSurfaceRepair::Soup;
-
-void ToPolygons(const Soup& soup, std::vector<Point>& points, Polygons& polygons)
-{
-  points.clear();
-  polygons.clear();
-  points.reserve(soup.Points.size());
-  for (const auto& x : soup.Points)
-  {
-    points.emplace_back(x[0], x[1], x[2]);
-  }
-  polygons.reserve(soup.Triangles.size());
-  for (const auto& t : soup.Triangles)
-  {
-    polygons.push_back({ static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]), static_cast<std::size_t>(t[2]) });
-  }
-}
-
-// The mesh's triangles (faces with more corners are fanned), its used points numbered
-// in vertex order.
-void FromMesh(const Mesh& mesh, Soup& soup)
-{
-  soup = Soup();
-  std::vector<vtkIdType> id(mesh.num_vertices(), -1);
-  for (Mesh::Vertex_index v : mesh.vertices())
-  {
-    const Point& p = mesh.point(v);
-    id[v] = static_cast<vtkIdType>(soup.Points.size());
-    soup.Points.push_back({ p.x(), p.y(), p.z() });
-  }
-  for (Mesh::Face_index f : mesh.faces())
-  {
-    std::vector<vtkIdType> corners;
-    for (Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-    {
-      corners.push_back(id[v]);
-    }
-    for (size_t i = 1; i + 1 < corners.size(); ++i)
-    {
-      soup.Triangles.push_back({ corners[0], corners[i], corners[i + 1] });
-    }
-  }
-}
 
 // The soup's faces added one by one: false when one cannot be (a non-manifold edge or
 // corner, an orientation that disagrees) or when a vertex ends with more than one fan
@@ -139,22 +101,11 @@ bool ToMesh(const Soup& soup, Mesh& mesh, std::string& error)
     return true;
   }
   mesh.clear();
-  std::vector<Point> points;
-  Polygons polygons;
-  ToPolygons(soup, points, polygons);
-  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+  if (!vtkMedialCGALSoup::ToMesh(soup, mesh))
   {
-    // A point where two fans of triangles meet (a pinch, which the preparation does not
-    // count as a defect) is split as orient_polygon_soup splits it: the copies keep
-    // their coordinates, and the preparation merges them again.
-    PMP::orient_polygon_soup(points, polygons);
-    if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
-    {
-      error = "the surface is not an oriented manifold";
-      return false;
-    }
+    error = "the surface is not an oriented manifold";
+    return false;
   }
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   return true;
 }
 

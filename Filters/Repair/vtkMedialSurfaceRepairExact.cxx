@@ -8,10 +8,10 @@
 // First of the CGAL headers: the order of CGAL's box intersection (see there).
 #include "vtkMedialCGALBoxOrder.h"
 
+#include "vtkMedialCGALSoup.h"
+
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
-#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <exception>
@@ -26,62 +26,14 @@ using Soup = vtkMedialSurfaceRepair::Soup;
 
 bool ToMesh(const Soup& soup, Mesh& mesh, std::string& error)
 {
-  std::vector<Point> points;
-  points.reserve(soup.Points.size());
-  for (const auto& x : soup.Points)
+  if (!vtkMedialCGALSoup::ToMesh(soup, mesh))
   {
-    points.emplace_back(x[0], x[1], x[2]);
+    error = "a shell is not an oriented manifold";
+    return false;
   }
-  std::vector<std::vector<std::size_t>> polygons;
-  polygons.reserve(soup.Triangles.size());
-  for (const auto& t : soup.Triangles)
-  {
-    polygons.push_back({ static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]), static_cast<std::size_t>(t[2]) });
-  }
-  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
-  {
-    // A pinch (two fans of triangles at a point) is split, as in
-    // vtkMedialSurfaceRepair.cxx.
-    PMP::orient_polygon_soup(points, polygons);
-    if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
-    {
-      error = "a shell is not an oriented manifold";
-      return false;
-    }
-  }
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   return true;
 }
-
-// The exact points rounded to the nearest doubles.
-void FromMesh(const Mesh& mesh, Soup& soup)
-{
-  soup = Soup();
-  std::vector<vtkIdType> id(mesh.num_vertices(), -1);
-  for (Mesh::Vertex_index v : mesh.vertices())
-  {
-    const Point& p = mesh.point(v);
-    id[v] = static_cast<vtkIdType>(soup.Points.size());
-    soup.Points.push_back({ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) });
-  }
-  for (Mesh::Face_index f : mesh.faces())
-  {
-    std::array<vtkIdType, 3> t;
-    int k = 0;
-    for (Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-    {
-      if (k < 3)
-      {
-        t[k] = id[v];
-      }
-      ++k;
-    }
-    if (k == 3)
-    {
-      soup.Triangles.push_back(t);
-    }
-  }
-}
+using vtkMedialCGALSoup::FromMesh;
 }
 
 namespace vtkMedialSurfaceRepair
