@@ -24,6 +24,19 @@ using Node = vtkMedialTriangleBVH::Node;
 using WideNode = vtkMedialTriangleBVH::WideNode;
 
 constexpr int LeafSize = 4;
+
+// A triangle whose normal is ill-conditioned (|e1 x e2| tiny against |e1| |e2|): a plane
+// computed from it may be off by more than the solid check's tolerance, so the pair
+// search keeps any close pair with it (SliverBits).
+bool IsSliver(const double* a, const double* b, const double* c)
+{
+  double e1[3], e2[3], n[3];
+  G::Sub(b, a, e1);
+  G::Sub(c, a, e2);
+  G::Cross(e1, e2, n);
+  return !(G::Dot(n, n) >= 1e-14 * G::Dot(e1, e1) * G::Dot(e2, e2));
+}
+
 constexpr int Bins = 16;
 // Closed-form candidates settle a ball on a face, an edge or a vertex at once;
 // a ball still shrinking after this many steps is settling on the cap's cone, and the
@@ -862,6 +875,7 @@ bool vtkMedialTriangleBVH::Build(const vtkMedialTriangleMesh& mesh, const std::f
   {
     this->Nodes.clear();
     vtkMedialBuffer<double>().swap(this->Vertices);
+    this->SliverBits.clear();
     return false;
   }
   this->CopyInLeafOrder(mesh);
@@ -990,6 +1004,7 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh)
   {
     this->Vertices.resize(9 * static_cast<size_t>(nt));
   }
+  this->SliverBits.assign((static_cast<size_t>(nt) + 63) / 64, 0);
   // Gathers from all over the mesh: each slot's triangle is fetched ahead (its corners and
   // normal a little less far ahead, once its vertex ids are in).
   constexpr vtkIdType Ahead = 16;
@@ -1028,6 +1043,12 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh)
       std::copy_n(corners, 9, &this->Vertices[9 * i]);
     }
     leaf.EdgeThird = FloatAbove(static_cast<float>(G::LongestEdge2(corners, corners + 3, corners + 6) / 3.0));
+    if (IsSliver(corners, corners + 3, corners + 6))
+    {
+      // Two threads' slots may share a word.
+#pragma omp atomic
+      this->SliverBits[i / 64] |= std::uint64_t(1) << (i % 64);
+    }
   }
   if (floats)
   {

@@ -7,7 +7,8 @@
 // and horse.ply when the shared meshes are there. And the repair's exact test of those
 // candidates must keep exactly CGAL's pairs (vtkMedialRepairFilter's IntersectingPairs),
 // and so must the valid-solid check decided exactly (vtkMedialSolidCheck::Decide), on
-// any input, with the verdict and its cause.
+// any input, with the verdict and its cause. A sliver beside another triangle is kept for
+// the exact test (its plane cannot be trusted).
 // This file compiles CGAL itself, for the reference.
 #include "MedialDefectTestUtilities.h"
 #include "MedialTestUtilities.h"
@@ -17,8 +18,12 @@
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
 
+#include "vtkCellArray.h"
 #include "vtkMath.h"
+#include "vtkNew.h"
 #include "vtkPLYReader.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -398,5 +403,37 @@ int TestMedialRepairPairs(int, char*[])
   query.FindIntersectingPairs(1, one);
   query.FindIntersectingPairs(2, two);
   MEDIAL_CHECK(one == two, "the pairs differ between 1 and 2 threads");
+
+  // A sliver (its third corner 1e-9 off the line of the other two, sideways, so that its
+  // plane tilts away from the triangle) that crosses a triangle's plane beside it, in its
+  // box: all of that triangle lies on one side of the sliver's computed plane, which
+  // would clear the pair if that plane could be trusted. It cannot, so the pair must be
+  // kept for the exact test, which clears it. Without the tree's sliver marks
+  // (SliverBits) the search drops it (checked with a mutant).
+  {
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble(); // as floats the sliver would collapse to a segment
+    points->InsertNextPoint(0, 0, 0);
+    points->InsertNextPoint(4, 0, 0);
+    points->InsertNextPoint(0, 4, 0);
+    points->InsertNextPoint(2, 2, -0.1);
+    points->InsertNextPoint(3, 3, 0.1);
+    points->InsertNextPoint(2.5 - 1e-9, 2.5 + 1e-9, 0);
+    vtkNew<vtkCellArray> cells;
+    const vtkIdType big[3] = { 0, 1, 2 }, sliver[3] = { 3, 4, 5 };
+    cells->InsertNextCell(3, big);
+    cells->InsertNextCell(3, sliver);
+    vtkNew<vtkPolyData> soup;
+    soup->SetPoints(points);
+    soup->SetPolys(cells);
+    vtkMedialTriangleMesh pairMesh;
+    vtkMedialSurfaceQuery pairQuery;
+    MEDIAL_CHECK(pairMesh.Build(soup, error) && pairQuery.Build(&pairMesh, error), "sliver: %s", error.c_str());
+    MEDIAL_CHECK(pairMesh.DegenerateTriangles == 0, "sliver: taken as degenerate, so its pair says nothing");
+    std::vector<Pair> kept;
+    pairQuery.FindIntersectingPairs(1, kept);
+    MEDIAL_CHECK(kept.size() == 1, "sliver: %zu candidate pairs, the sliver's pair must be kept", kept.size());
+    MEDIAL_CHECK(ReferencePairs(pairMesh).empty(), "sliver: CGAL finds the two triangles intersecting");
+  }
   return EXIT_SUCCESS;
 }
