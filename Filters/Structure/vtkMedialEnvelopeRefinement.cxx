@@ -115,30 +115,34 @@ public:
   {
     // The new edges, each once, in the order first met (the order only decides which
     // thread probes which edge): an open-addressing table whose slots for them hold
-    // Unknown until the parallel loop has probed them.
-    this->Reserve(this->Size + edges.size());
-    std::vector<size_t> slots;
+    // Unknown until the parallel loop has probed them. It grows as new edges come, not
+    // by the input's count: most input edges repeat (each is on two triangles), and
+    // room for all of them doubled the table, the refinement's peak memory.
     size_t kept = 0;
     for (const Edge& e : edges)
     {
-      size_t slot = this->Slot(e);
+      if (2 * (this->Size + 1) > this->Keys.size())
+      {
+        this->Reserve(this->Size + 1);
+      }
+      const size_t slot = this->Slot(e);
       if (this->Keys[slot][0] < 0)
       {
         this->Keys[slot] = e;
         this->Values[slot] = Unknown;
         ++this->Size;
-        slots.push_back(slot);
         edges[kept++] = e;
       }
     }
     edges.resize(kept);
     const vtkIdType n = static_cast<vtkIdType>(edges.size());
     const std::vector<vtkIdType> order = SpatialOrder(mesh, query, n, [&](vtkIdType i) { return edges[i][0]; });
+    // The keys do not change in this loop, so each thread finds its edge's slot alone.
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
     for (vtkIdType k = 0; k < n; ++k)
     {
       const vtkIdType i = order[k];
-      this->Values[slots[i]] = self.ProbeEdge(mesh, query, edges[i][0], edges[i][1]);
+      this->Values[this->Slot(edges[i])] = self.ProbeEdge(mesh, query, edges[i][0], edges[i][1]);
     }
   }
   // The value of an edge probed before (read-only: safe from parallel loops).
