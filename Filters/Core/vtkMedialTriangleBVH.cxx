@@ -2,6 +2,7 @@
 #include "vtkMedialTriangleBVH.h"
 
 #include "vtkMedialGeometry.h"
+#include "vtkMedialPrefetch.h"
 #include "vtkMedialTriangleMesh.h"
 
 #include <algorithm>
@@ -704,16 +705,6 @@ static_assert(ItemDoubles * sizeof(double) == sizeof(BuildItem) && alignof(Build
     ItemDoubles >= 9,
   "build items must tile the vertices' storage");
 
-// A hint to fetch the cache line at p; nothing where the compiler has no such builtin.
-inline void Prefetch(const void* p)
-{
-#if defined(__GNUC__)
-  __builtin_prefetch(p);
-#else
-  (void)p;
-#endif
-}
-
 // Widen(bounds, item's box, its centroid as a point), written out so that the binning
 // loop, the build's hottest, inlines it (a call per item and level before), and two
 // coordinates at a time where SSE2 is available: minpd(x, y) is (x < y ? x : y), which
@@ -1016,16 +1007,16 @@ void vtkMedialTriangleBVH::CopyInLeafOrder(const vtkMedialTriangleMesh& mesh)
   {
     if (i + 2 * Ahead < nt)
     {
-      Prefetch(mesh.GetTriangle(this->LeafTriangles[i + 2 * Ahead].Triangle));
+      vtkMedialPrefetch(mesh.GetTriangle(this->LeafTriangles[i + 2 * Ahead].Triangle));
     }
     if (i + Ahead < nt)
     {
       const vtkIdType ahead = this->LeafTriangles[i + Ahead].Triangle;
       const vtkIdType* w = mesh.GetTriangle(ahead);
-      Prefetch(mesh.GetNormal(ahead));
-      Prefetch(mesh.GetPoint(w[0]));
-      Prefetch(mesh.GetPoint(w[1]));
-      Prefetch(mesh.GetPoint(w[2]));
+      vtkMedialPrefetch(mesh.GetNormal(ahead));
+      vtkMedialPrefetch(mesh.GetPoint(w[0]));
+      vtkMedialPrefetch(mesh.GetPoint(w[1]));
+      vtkMedialPrefetch(mesh.GetPoint(w[2]));
     }
     LeafTriangle& leaf = this->LeafTriangles[i];
     const vtkIdType* v = mesh.GetTriangle(leaf.Triangle);

@@ -4,6 +4,7 @@
 #include "vtkMedialTriangleBVH.h"
 
 #include "vtkMedialGeometry.h"
+#include "vtkMedialPrefetch.h"
 #include "vtkMedialTriangleMesh.h"
 
 #include <algorithm>
@@ -24,16 +25,6 @@ struct Triangle
   bool Sliver;
   double Corners[9]; // where X points when the tree keeps its corners as floats
 };
-
-// A hint to fetch the cache line at p; nothing where the compiler has no such builtin.
-inline void Prefetch(const void* p)
-{
-#if defined(__GNUC__)
-  __builtin_prefetch(p);
-#else
-  (void)p;
-#endif
-}
 
 double Side(const double* plane, const double* x)
 {
@@ -357,14 +348,14 @@ public:
     {
       if (s + 2 * Ahead < end)
       {
-        Prefetch(across + 3 * static_cast<size_t>(leaves[s + 2 * Ahead].Triangle));
+        vtkMedialPrefetch(across + 3 * static_cast<size_t>(leaves[s + 2 * Ahead].Triangle));
       }
       if (s + Ahead < end)
       {
         const std::int32_t* ahead = across + 3 * static_cast<size_t>(leaves[s + Ahead].Triangle);
-        Prefetch(rank + ahead[0]);
-        Prefetch(rank + ahead[1]);
-        Prefetch(rank + ahead[2]);
+        vtkMedialPrefetch(rank + ahead[0]);
+        vtkMedialPrefetch(rank + ahead[1]);
+        vtkMedialPrefetch(rank + ahead[2]);
       }
       const vtkIdType t = leaves[s].Triangle;
       for (int j = 0; j < 3; ++j)
