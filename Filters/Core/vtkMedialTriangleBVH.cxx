@@ -654,6 +654,55 @@ inline int LaneOf(std::int32_t ref)
   return static_cast<int>(static_cast<std::uint32_t>(ref) % 4u);
 }
 
+// The lanes set in `mask` in order of their keys, the smallest first (ties: the lower
+// lane), into order[0 .. count); returns count. A depth-first walk pushes them in
+// reverse so that it takes the nearest first. Each kept lane's place is its rank among
+// the kept lanes (those with a smaller key, or an equal key and a lower lane, come
+// first): the order of a stable sort, found without the data-dependent branches of an
+// insertion sort, which mispredict.
+inline int NearestFirst(int mask, const float key[4], int order[4])
+{
+  int count = 0;
+  bool ordered = true; // false with a NaN key, which compares false with everything
+  for (int i = 0; i < 4; ++i)
+  {
+    count += (mask >> i) & 1;
+    ordered = ordered && !((mask & (1 << i)) && key[i] != key[i]);
+  }
+  if (!ordered)
+  {
+    // The insertion sort the ranks stand for, whose order NaN keys leave defined.
+    count = 0;
+    for (int i = 0; i < 4; ++i)
+    {
+      if (mask & (1 << i))
+      {
+        int j = count++;
+        for (; j > 0 && key[order[j - 1]] > key[i]; --j)
+        {
+          order[j] = order[j - 1];
+        }
+        order[j] = i;
+      }
+    }
+    return count;
+  }
+  for (int i = 0; i < 4; ++i)
+  {
+    int rank = 0;
+    for (int j = 0; j < 4; ++j)
+    {
+      const int before = static_cast<int>(key[j] < key[i]) | (static_cast<int>(key[j] == key[i]) & static_cast<int>(j < i));
+      rank += (mask >> j) & before;
+    }
+    if (mask & (1 << i))
+    {
+      order[rank] = i;
+    }
+  }
+  return count;
+}
+
 // A lane waiting in the tangent search, with the number of radius updates when it was pushed.
 struct PendingLane
 {
@@ -1909,20 +1958,9 @@ private:
         continue;
       }
       const int keep = this->OpenLanes(child, d2);
-      // Nearest lane on top (ties: the lower lane): push the others first.
-      int order[4], count = 0;
-      for (int i = 0; i < 4; ++i)
-      {
-        if (keep & (1 << i))
-        {
-          int j = count++;
-          for (; j > 0 && d2[order[j - 1]] > d2[i]; --j)
-          {
-            order[j] = order[j - 1];
-          }
-          order[j] = i;
-        }
-      }
+      // Nearest lane on top: push the others first.
+      int order[4];
+      const int count = NearestFirst(keep, d2, order);
       if (top + 4 > stack.size())
       {
         stack.resize(2 * stack.size());
@@ -2152,51 +2190,12 @@ private:
 };
 
 // Pushes the lanes of `node` set in `mask` with their keys, the smallest key on top
-// (ties: the lower lane), so that a depth-first walk takes the nearest first. Each
-// kept lane's place is its rank among the kept lanes (those with a smaller key, or
-// an equal key and a lower lane, come first): the order of a stable sort, found
-// without the data-dependent branches of an insertion sort, which mispredict.
+// (ties: the lower lane), so that a depth-first walk takes the nearest first.
 template <class Lanes>
 void PushNearestOnTop(const vtkMedialTriangleBVH::WideNode& node, int mask, const float key[4], Lanes& lanes)
 {
-  int order[4], count = 0;
-  bool ordered = true; // false with a NaN key, which compares false with everything
-  for (int i = 0; i < 4; ++i)
-  {
-    count += (mask >> i) & 1;
-    ordered = ordered && !((mask & (1 << i)) && key[i] != key[i]);
-  }
-  if (!ordered)
-  {
-    // The insertion sort the ranks stand for, whose order NaN keys leave defined.
-    count = 0;
-    for (int i = 0; i < 4; ++i)
-    {
-      if (mask & (1 << i))
-      {
-        int j = count++;
-        for (; j > 0 && key[order[j - 1]] > key[i]; --j)
-        {
-          order[j] = order[j - 1];
-        }
-        order[j] = i;
-      }
-    }
-  }
-  for (int i = 0; i < 4 && ordered; ++i)
-  {
-    int rank = 0;
-    for (int j = 0; j < 4; ++j)
-    {
-      const int before = static_cast<int>(key[j] < key[i]) | (static_cast<int>(key[j] == key[i]) & static_cast<int>(j < i));
-      rank += (mask >> j) & before;
-    }
-    if (mask & (1 << i))
-    {
-      order[rank] = i;
-    }
-  }
-  for (int j = count - 1; j >= 0; --j)
+  int order[4];
+  for (int j = NearestFirst(mask, key, order) - 1; j >= 0; --j)
   {
     lanes.push_back({ node.Child[order[j]], key[order[j]] });
   }
