@@ -10,6 +10,9 @@
 #include "vtkMedialArrayNames.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkMedialThickness.h"
+#include "vtkSmartPointer.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
 
 #include <functional>
 
@@ -45,6 +48,21 @@ inline void PrintRow(const char* what, double expected, const Summary& s)
 {
   std::printf("| %s | %.6g | %.6g | %.6g | %.6g | %lld |\n", what, expected, s.Min, s.Median, s.Max,
     static_cast<long long>(s.Count));
+}
+
+/// `surface` turned about all three axes (30, 20 and 10 degrees), so that no face or
+/// crease lies along an axis and the thickness is found from rounded coordinates.
+inline vtkSmartPointer<vtkPolyData> Turned(vtkPolyData* surface)
+{
+  vtkNew<vtkTransform> turn;
+  turn->RotateX(30.0);
+  turn->RotateY(20.0);
+  turn->RotateZ(10.0);
+  vtkNew<vtkTransformPolyDataFilter> filter;
+  filter->SetInputData(surface);
+  filter->SetTransform(turn);
+  filter->Update();
+  return filter->GetOutput();
 }
 
 /// True when every value is within `relative` of `expected` (NaN fails).

@@ -31,8 +31,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkTransform.h"
-#include "vtkTransformPolyDataFilter.h"
 
 #include <array>
 #include <cmath>
@@ -124,15 +122,7 @@ int TestMedialThicknessCreasedRings(int, char*[])
           vtkSmartPointer<vtkPolyData> surface = MakeRing(shape.Outer, shape.Inner, shape.Height, sides, rows);
           if (turned)
           {
-            vtkNew<vtkTransform> turn;
-            turn->RotateX(30.0);
-            turn->RotateY(20.0);
-            turn->RotateZ(10.0);
-            vtkNew<vtkTransformPolyDataFilter> filter;
-            filter->SetInputData(surface);
-            filter->SetTransform(turn);
-            filter->Update();
-            surface = filter->GetOutput();
+            surface = medialtest::Turned(surface);
           }
           const double expected =
             std::min(shape.Height, (shape.Outer - shape.Inner) * std::cos(pi / sides));

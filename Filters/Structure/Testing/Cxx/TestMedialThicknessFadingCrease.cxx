@@ -17,8 +17,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkTransform.h"
-#include "vtkTransformPolyDataFilter.h"
 
 #include <algorithm>
 #include <array>
@@ -176,15 +174,7 @@ int TestMedialThicknessFadingCrease(int, char*[])
         vtkSmartPointer<vtkPolyData> surface = ledge.Surface;
         if (turned)
         {
-          vtkNew<vtkTransform> turn;
-          turn->RotateX(30.0);
-          turn->RotateY(20.0);
-          turn->RotateZ(10.0);
-          vtkNew<vtkTransformPolyDataFilter> filter;
-          filter->SetInputData(surface);
-          filter->SetTransform(turn);
-          filter->Update();
-          surface = filter->GetOutput();
+          surface = medialtest::Turned(surface);
         }
         vtkNew<vtkMedialThickness> thickness;
         thickness->SetInputData(surface);
