@@ -237,36 +237,6 @@ std::vector<char> Grow(const Soup& soup, const std::vector<vtkIdType>& seeds, in
   return in;
 }
 
-// The triangles of `soup` marked `in`, in order, over their own points; `soupPoint`
-// gives each of their points' id in `soup`.
-Soup Extract(const Soup& soup, const std::vector<char>& in, std::vector<vtkIdType>& soupPoint)
-{
-  Soup patch;
-  soupPoint.clear();
-  std::vector<vtkIdType> id(soup.Points.size(), -1);
-  for (size_t t = 0; t < soup.Triangles.size(); ++t)
-  {
-    if (!in[t])
-    {
-      continue;
-    }
-    std::array<vtkIdType, 3> tri;
-    for (int k = 0; k < 3; ++k)
-    {
-      const vtkIdType v = soup.Triangles[t][k];
-      if (id[v] < 0)
-      {
-        id[v] = static_cast<vtkIdType>(patch.Points.size());
-        patch.Points.push_back(soup.Points[v]);
-        soupPoint.push_back(v);
-      }
-      tri[k] = id[v];
-    }
-    patch.Triangles.push_back(tri);
-  }
-  return patch;
-}
-
 // The directed edges of `soup` whose edge no other triangle of it uses: its border.
 std::vector<std::pair<vtkIdType, vtkIdType>> Border(const Soup& soup)
 {
@@ -754,7 +724,7 @@ bool vtkMedialRepairFilter::vtkInternals::RemoveInPatch(Soup& shell, const std::
 {
   in = Grow(shell, near, rings + PatchMargin);
   std::vector<vtkIdType> shellPoint;
-  before = Extract(shell, in, shellPoint);
+  before = vtkMedialRepairPatch::Extract(shell, in, shellPoint);
   // `near` in the patch's numbering (it keeps the shell's triangle order).
   std::vector<vtkIdType> patchTriangle(shell.Triangles.size(), -1);
   vtkIdType next = 0;

@@ -153,6 +153,35 @@ bool BuildTree(const Soup& soup, vtkMedialTriangleMesh& mesh, vtkMedialSurfaceQu
 }
 }
 
+vtkMedialRepairPatch::Soup vtkMedialRepairPatch::Extract(
+  const Soup& soup, const std::vector<char>& in, std::vector<vtkIdType>& soupPoint)
+{
+  Soup patch;
+  soupPoint.clear();
+  std::vector<vtkIdType> id(soup.Points.size(), -1);
+  for (size_t t = 0; t < soup.Triangles.size(); ++t)
+  {
+    if (!in[t])
+    {
+      continue;
+    }
+    std::array<vtkIdType, 3> tri;
+    for (int k = 0; k < 3; ++k)
+    {
+      const vtkIdType v = soup.Triangles[t][k];
+      if (id[v] < 0)
+      {
+        id[v] = static_cast<vtkIdType>(patch.Points.size());
+        patch.Points.push_back(soup.Points[v]);
+        soupPoint.push_back(v);
+      }
+      tri[k] = id[v];
+    }
+    patch.Triangles.push_back(tri);
+  }
+  return patch;
+}
+
 bool vtkMedialRepairPatch::Certify(const Soup& shell, const vtkMedialSurfaceQuery& query,
   const std::vector<char>& in, const Soup& before, const Soup& stitched, std::string& why)
 {
@@ -167,26 +196,15 @@ bool vtkMedialRepairPatch::Certify(const Soup& shell, const vtkMedialSurfaceQuer
     why = "the patch does not match its shell";
     return false;
   }
-  // P' over its own points, with the stitched ids of its points.
-  Soup after;
-  std::vector<vtkIdType> afterId(stitched.Points.size(), -1), stitchedId;
+  // P' over its own points: the stitched triangles after S - P.
+  std::vector<char> inAfter(stitched.Triangles.size(), 0);
+  std::fill(inAfter.begin() + static_cast<std::ptrdiff_t>(rest), inAfter.end(), 1);
+  std::vector<vtkIdType> stitchedId;
+  const Soup after = Extract(stitched, inAfter, stitchedId);
   std::vector<char> onPatch(stitched.Points.size(), 0);
-  for (size_t t = rest; t < stitched.Triangles.size(); ++t)
+  for (const vtkIdType v : stitchedId)
   {
-    std::array<vtkIdType, 3> tri;
-    for (int k = 0; k < 3; ++k)
-    {
-      const vtkIdType v = stitched.Triangles[t][k];
-      if (afterId[v] < 0)
-      {
-        afterId[v] = static_cast<vtkIdType>(after.Points.size());
-        after.Points.push_back(stitched.Points[v]);
-        stitchedId.push_back(v);
-        onPatch[v] = 1;
-      }
-      tri[k] = afterId[v];
-    }
-    after.Triangles.push_back(tri);
+    onPatch[v] = 1;
   }
   // Topology: one closed, oriented fan around every point of P', and P' in one piece.
   if (!Umbrellas(stitched, onPatch))

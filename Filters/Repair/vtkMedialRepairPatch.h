@@ -66,13 +66,18 @@ public:
    * `shell`: S, closed, manifold, oriented (as its preparation oriented it) and free of
    * degenerate triangles, whose intersecting pairs all lie in the patch; `query`: the tree
    * of a mesh of S alone, built from `shell` (its triangle t is shell triangle t); `in`:
-   * S's triangles in P; `before`: P (Extract's soup); `stitched`: S' as Stitch made it
+   * S's triangles in P; `before`: P (as Extract cuts it out); `stitched`: S' as Stitch made it
    * (S - P in order, then P''s triangles). True when S' is a valid solid (see above);
    * otherwise false with the reason in `why`. The object keeps `query` (which must
    * outlive it) for the queries below.
    */
   bool Certify(const Soup& shell, const vtkMedialSurfaceQuery& query, const std::vector<char>& in,
     const Soup& before, const Soup& stitched, std::string& why);
+
+  /// The triangles of `soup` marked `in`, in order, over their own points (numbered as
+  /// first met); `soupPoint` gives each of their points' id in `soup`. The repair cuts
+  /// the patch P out of its shell with it, and Certify takes P' out of S'.
+  static Soup Extract(const Soup& soup, const std::vector<char>& in, std::vector<vtkIdType>& soupPoint);
 
   /// Distance from x to S' (`bound` when none is closer); after Certify.
   double Distance(const double x[3], double bound) const;
