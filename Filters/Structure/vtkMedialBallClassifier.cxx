@@ -130,6 +130,7 @@ int vtkMedialBallClassifier::RequestData(
   auto aborted = [this]() { return this->GetAbortExecute() != 0; };
   Surface surface;
   std::string error;
+  const int threads = vtkMedialThreadCount(this->NumberOfThreads);
   vtkMedialStages stages(this);
   stages.Begin("Preparing the surface and its governors", 0.0, 0.1);
   surface.Query = this->PreparedSurface;
@@ -139,7 +140,7 @@ int vtkMedialBallClassifier::RequestData(
     surface.Query = &surface.OwnQuery;
   }
   if (!surface.Query ||
-    !surface.Governors.Build(surface.Mesh(), *surface.Query, { this->Tolerance, this->MinimumSeparationAngle }, error))
+    !surface.Governors.Build(surface.Mesh(), *surface.Query, { this->Tolerance, this->MinimumSeparationAngle, threads }, error))
   {
     if (aborted())
     {
@@ -156,14 +157,13 @@ int vtkMedialBallClassifier::RequestData(
 
   // 1. Governors of every ball.
   stages.Begin("Classifying the balls", 0.1, this->ComputeExactPoints ? 0.5 : 1.0);
-  const int threads = vtkMedialThreadCount(this->NumberOfThreads);
   std::vector<vtkMedialSeamSolver::Ball> records(static_cast<size_t>(n));
   // Balls in a spatially coherent order (nearby balls read the same tree nodes).
   const std::vector<vtkIdType> order = vtkMedialSpatialOrder::Order(n, [&](vtkIdType i) {
     double c[3];
     balls->GetPoint(i, c);
     return vtkMedialSpatialOrder::Key(c, surface.Mesh().Bounds);
-  });
+  }, threads);
   const vtkIdType block = 4096;
   for (vtkIdType begin = 0; begin < n && !aborted(); begin += block)
   {

@@ -93,11 +93,11 @@ namespace
 // centre of one of their balls, ballOf(i).
 template <class BallOf>
 std::vector<vtkIdType> SpatialOrder(const vtkMedialEnvelopeRefinement::Mesh& mesh,
-  const vtkMedialSurfaceQuery& query, vtkIdType n, BallOf ballOf)
+  const vtkMedialSurfaceQuery& query, vtkIdType n, BallOf ballOf, int threads)
 {
   const double* bounds = query.GetMesh()->Bounds;
   return vtkMedialSpatialOrder::Order(
-    n, [&](vtkIdType i) { return vtkMedialSpatialOrder::Key(&(*mesh.Centres)[3 * ballOf(i)], bounds); });
+    n, [&](vtkIdType i) { return vtkMedialSpatialOrder::Key(&(*mesh.Centres)[3 * ballOf(i)], bounds); }, threads);
 }
 }
 
@@ -136,7 +136,7 @@ public:
     }
     edges.resize(kept);
     const vtkIdType n = static_cast<vtkIdType>(edges.size());
-    const std::vector<vtkIdType> order = SpatialOrder(mesh, query, n, [&](vtkIdType i) { return edges[i][0]; });
+    const std::vector<vtkIdType> order = SpatialOrder(mesh, query, n, [&](vtkIdType i) { return edges[i][0]; }, threads);
     // The keys do not change in this loop, so each thread finds its edge's slot alone.
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
     for (vtkIdType k = 0; k < n; ++k)
@@ -396,7 +396,7 @@ vtkIdType vtkMedialEnvelopeRefinement::Refine(const Mesh& mesh, const vtkMedialS
     }
     sides.Probe(*this, mesh, query, probed, threads);
     triangleProtrusion.resize(nt, 0.0);
-    const std::vector<vtkIdType> order = SpatialOrder(mesh, query, nd, [&](vtkIdType i) { return triangles[dirty[i]][0]; });
+    const std::vector<vtkIdType> order = SpatialOrder(mesh, query, nd, [&](vtkIdType i) { return triangles[dirty[i]][0]; }, threads);
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
     for (vtkIdType k = 0; k < nd; ++k)
     {

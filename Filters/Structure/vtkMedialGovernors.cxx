@@ -2,6 +2,7 @@
 #include "vtkMedialGovernors.h"
 
 #include "vtkMedialGeometry.h"
+#include "vtkMedialSort.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialTriangleMesh.h"
 
@@ -267,11 +268,11 @@ bool vtkMedialGovernors::Build(const vtkMedialTriangleMesh& mesh, const vtkMedia
       edges.emplace_back(std::min(a, b), std::max(a, b), t);
     }
   }
-  std::sort(edges.begin(), edges.end());
+  vtkMedialSort(edges.begin(), edges.end(), settings.Threads); // equivalent entries are equal
   this->BuildPlanes(edges);
   std::vector<std::pair<vtkIdType, int>> atVertex; // (vertex, sharp edge)
   this->BuildLines(edges, atVertex);
-  this->BuildPoints(atVertex);
+  this->BuildPoints(atVertex, settings.Threads);
   return true;
 }
 
@@ -387,12 +388,18 @@ void vtkMedialGovernors::BuildLines(const EdgeList& edges, std::vector<std::pair
       std::copy(direction[e].begin(), direction[e].end(), f.Direction);
     }
   }
+  // Each edge's line (LineOf): `edges` and SharpEdges are sorted alike, so one merge walk.
+  size_t s = 0;
   for (const auto& edge : edges)
   {
-    const int l = this->LineOf(std::get<0>(edge), std::get<1>(edge));
-    if (l >= 0)
+    const std::pair<vtkIdType, vtkIdType> key(std::get<0>(edge), std::get<1>(edge));
+    while (s < this->SharpEdges.size() && this->SharpEdges[s] < key)
     {
-      this->LinePlanes[l - this->NumberOfPlanes].push_back(this->TrianglePlane[std::get<2>(edge)]);
+      ++s;
+    }
+    if (s < this->SharpEdges.size() && this->SharpEdges[s] == key)
+    {
+      this->LinePlanes[this->SharpEdgeLine[s]].push_back(this->TrianglePlane[std::get<2>(edge)]);
     }
   }
   for (auto& planes : this->LinePlanes)
@@ -402,7 +409,7 @@ void vtkMedialGovernors::BuildLines(const EdgeList& edges, std::vector<std::pair
   }
 }
 
-void vtkMedialGovernors::BuildPoints(const std::vector<std::pair<vtkIdType, int>>& atVertex)
+void vtkMedialGovernors::BuildPoints(const std::vector<std::pair<vtkIdType, int>>& atVertex, int threads)
 {
   // Every vertex, with the planes and lines incident to it (CSR).
   const vtkMedialTriangleMesh& mesh = *this->Mesh;
@@ -422,7 +429,7 @@ void vtkMedialGovernors::BuildPoints(const std::vector<std::pair<vtkIdType, int>
   {
     incident.emplace_back(ve.first, this->NumberOfPlanes + this->SharpEdgeLine[ve.second]);
   }
-  std::sort(incident.begin(), incident.end());
+  vtkMedialSort(incident.begin(), incident.end(), threads); // equivalent entries are equal
   incident.erase(std::unique(incident.begin(), incident.end()), incident.end());
   this->VertexOffsets.assign(static_cast<size_t>(nv + 1), 0);
   this->VertexIncident.clear();

@@ -99,6 +99,7 @@ public:
   {
     double Tolerance = 1e-6;             // contact band, relative to the diagonal
     double MinimumSeparationAngle = 0.0; // theta, degrees
+    int Threads = 1;                     // for the preparation's sorts (same result for any)
   };
 
   /// The governors of one ball, sorted by feature id.
@@ -168,7 +169,7 @@ private:
   // (atVertex: each sharp edge at each of its vertices); vertices and their incidences.
   void BuildPlanes(const EdgeList& edges);
   void BuildLines(const EdgeList& edges, std::vector<std::pair<vtkIdType, int>>& atVertex);
-  void BuildPoints(const std::vector<std::pair<vtkIdType, int>>& atVertex);
+  void BuildPoints(const std::vector<std::pair<vtkIdType, int>>& atVertex, int threads);
   // The contacts of a ball in s.Hits (s.Cap marks those in the cap around the
   // sample point). When the ball overlaps the surface (theta > 0) only the
   // contacts beyond the cap are read, and the cap's feature is returned (else -1).

@@ -58,7 +58,8 @@ bool vtkMedialMeshComplex::Build(const vtkMedialPowerComplex& power, const vtkMe
   this->EdgeState.assign(power.GetNumberOfEdges(), UNKNOWN);
   const vtkIdType nb = static_cast<vtkIdType>(balls.Radii->size());
   const std::vector<vtkIdType> ballOrder = vtkMedialSpatialOrder::Order(
-    nb, [&](vtkIdType b) { return vtkMedialSpatialOrder::Key(this->Centre(b), query.GetMesh()->Bounds); });
+    nb, [&](vtkIdType b) { return vtkMedialSpatialOrder::Key(this->Centre(b), query.GetMesh()->Bounds); },
+    this->Threads);
   this->BallRanks.resize(nb);
   for (vtkIdType k = 0; k < nb; ++k)
   {

@@ -523,7 +523,7 @@ bool vtkMedialMeshFilter::InscribeBalls(vtkPointSet* balls, vtkDataArray* radius
   std::vector<double> reduction(n, 0.0);
   std::vector<vtkIdType> component(n, -1);
   const std::vector<vtkIdType> order = vtkMedialSpatialOrder::Order(
-    n, [&](vtkIdType i) { return vtkMedialSpatialOrder::Key(&centres[3 * i], mesh.Bounds); });
+    n, [&](vtkIdType i) { return vtkMedialSpatialOrder::Key(&centres[3 * i], mesh.Bounds); }, threads);
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
   for (vtkIdType k = 0; k < n; ++k)
   {

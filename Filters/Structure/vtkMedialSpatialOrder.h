@@ -7,11 +7,14 @@
  * Queries at nearby points visit the same nodes of the surface tree; run one after
  * the other (in the chunks of a parallel loop), they find those nodes in the cache.
  * Only the order in which independent queries run changes, never a result. Header
- * only; not installed.
+ * only; not installed. The keys are computed and sorted on `threads` threads (keyOf must
+ * be safe to call from several); each (key, index) pair is distinct, so the order is the
+ * same for any thread count.
  */
 #ifndef vtkMedialSpatialOrder_h
 #define vtkMedialSpatialOrder_h
 
+#include "vtkMedialSort.h"
 #include "vtkType.h"
 
 #include <algorithm>
@@ -44,15 +47,18 @@ inline std::uint64_t Key(const double x[3], const double bounds[6])
 
 /// The indices 0 .. n-1 sorted by key(i) (ties by index).
 template <class KeyOf>
-std::vector<vtkIdType> Order(vtkIdType n, KeyOf keyOf)
+std::vector<vtkIdType> Order(vtkIdType n, KeyOf keyOf, int threads = 1)
 {
+  threads = std::max(1, threads);
   std::vector<std::pair<std::uint64_t, vtkIdType>> keyed(static_cast<size_t>(n));
+#pragma omp parallel for schedule(static, 4096) num_threads(threads) if (n > 4096)
   for (vtkIdType i = 0; i < n; ++i)
   {
     keyed[i] = { keyOf(i), i };
   }
-  std::sort(keyed.begin(), keyed.end());
+  vtkMedialSort(keyed.begin(), keyed.end(), threads); // (key, index): distinct
   std::vector<vtkIdType> order(static_cast<size_t>(n));
+#pragma omp parallel for schedule(static, 4096) num_threads(threads) if (n > 4096)
   for (vtkIdType i = 0; i < n; ++i)
   {
     order[i] = keyed[i].second;
