@@ -257,6 +257,43 @@ bool vtkMedialSurfaceQuery::TriangleCrossesSurface(
 bool vtkMedialSurfaceQuery::CrossesSurface(const double* const points[], int n, CrossingTest test) const
 {
   bool crosses = false;
+  if (test)
+  {
+    // An exact test says yes only for a triangle that meets the points' simplex, hence
+    // its box: only the triangles whose own box meets the simplex's (padded by the
+    // slack) are tested, through the tree's box walk. The answer is that of every
+    // triangle near the points (VisitNear, as the double-precision tests below are):
+    // the same triangles can cross, at a fraction of the candidates (long medial edges
+    // and wide triangles have a large ball about them and a thin box) and without a
+    // closest point per candidate.
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = hi[k] = points[0][k];
+      for (int j = 1; j < n; ++j)
+      {
+        lo[k] = std::min(lo[k], points[j][k]);
+        hi[k] = std::max(hi[k], points[j][k]);
+      }
+      lo[k] -= this->Slack;
+      hi[k] += this->Slack;
+    }
+    this->Tree.VisitBox(lo, hi, [&](vtkIdType t) {
+      double scratch[9];
+      const double* v = this->Tree.GetTriangleVertices(t, scratch);
+      for (int k = 0; k < 3; ++k)
+      {
+        if (std::min(v[k], std::min(v[3 + k], v[6 + k])) > hi[k] || std::max(v[k], std::max(v[3 + k], v[6 + k])) < lo[k])
+        {
+          return true; // apart: cannot cross
+        }
+      }
+      const double* u[3] = { v, v + 3, v + 6 };
+      crosses = test(points, n, u);
+      return !crosses;
+    });
+    return crosses;
+  }
   this->VisitNear(points, n, [&](const double* const u[3]) {
     crosses = test ? test(points, n, u)
                    : n == 2 ? G::SegmentCrossesTriangle(points[0], points[1], u[0], u[1], u[2])

@@ -47,3 +47,21 @@ bool vtkMedialExactPredicates::Crosses(const double* const points[], int n, cons
   return false;
 }
 
+
+bool vtkMedialExactPredicates::EdgesCrossTriangle(const double* const points[], int n, const double* const corners[3])
+{
+  if (n != 3)
+  {
+    return Crosses(points, n, corners);
+  }
+  const Point u[3] = { P(corners[0]), P(corners[1]), P(corners[2]) };
+  const Point t[3] = { P(points[0]), P(points[1]), P(points[2]) };
+  for (int i = 0; i < 3; ++i)
+  {
+    if (SegmentCrossesTriangle(u[i], u[(i + 1) % 3], t[0], t[1], t[2]))
+    {
+      return true;
+    }
+  }
+  return false;
+}

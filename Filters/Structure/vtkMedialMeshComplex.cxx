@@ -120,8 +120,9 @@ bool vtkMedialMeshComplex::TriangleInside(vtkIdType t)
     const auto& edges = this->Power->TriangleEdges[t];
     const auto& v = this->Power->TriangleVertices[t];
     const double* corners[3] = { this->Centre(v[0]), this->Centre(v[1]), this->Centre(v[2]) };
+    // Its sides cross nothing when they are inside: only the surface's edges through it are left.
     const bool inside = this->EdgeInside(edges[0]) && this->EdgeInside(edges[1]) && this->EdgeInside(edges[2]) &&
-      !this->Query->CrossesSurface(corners, 3, vtkMedialExactPredicates::Crosses);
+      !this->Query->CrossesSurface(corners, 3, vtkMedialExactPredicates::EdgesCrossTriangle);
     this->TriangleState[t] = inside ? INSIDE : CROSSES;
   }
   return this->TriangleState[t] == INSIDE;
