@@ -17,16 +17,19 @@
 #ifndef vtkMedialExactPredicates_h
 #define vtkMedialExactPredicates_h
 
+#include "vtkMedialAxisStructureModule.h" // for export macro (the tests call them)
+
 namespace vtkMedialExactPredicates
 {
 /// A segment (n = 2 points) or triangle (n = 3) against a triangle, exactly; the
 /// signature of vtkMedialSurfaceQuery::CrossingTest.
-bool Crosses(const double* const points[], int n, const double* const corners[3]);
+VTKMEDIALAXISSTRUCTURE_EXPORT bool Crosses(const double* const points[], int n, const double* const corners[3]);
 
 /// Crosses for a triangle (n = 3) whose own edges are known to cross no surface
 /// triangle: only the surface triangle's edges through its interior are left to test,
 /// so the answer is Crosses' at half the predicates.
-bool EdgesCrossTriangle(const double* const points[], int n, const double* const corners[3]);
+VTKMEDIALAXISSTRUCTURE_EXPORT bool EdgesCrossTriangle(
+  const double* const points[], int n, const double* const corners[3]);
 }
 
 #endif
