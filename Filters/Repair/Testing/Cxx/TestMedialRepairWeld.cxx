@@ -179,7 +179,7 @@ int TestMedialRepairWeld(int argc, char* argv[])
       static_cast<long long>(brute), static_cast<long long>(expected));
     std::vector<unsigned char> first;
     int differ = 0, miscounted = 0, open = 0;
-    vtkIdType lowest = expected, highest = expected;
+    vtkIdType lowest = soupPoints, highest = -soupPoints;
     for (int run = 0; run < runs; ++run)
     {
       const Smp& s = smp[run % (sizeof(smp) / sizeof(smp[0]))];
