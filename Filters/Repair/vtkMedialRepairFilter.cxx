@@ -1439,14 +1439,14 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
   bool welded = false;
   if (m0.BoundaryEdges > 0 && self->WeldTolerance > 0.0)
   {
-    Soup weld = work;
+    // In place: with nothing merged the welded soup is the same soup (its points are
+    // already in order of first use, and the mesh has no collapsed triangles).
     vtkMedialRepairWeld::Counts counts;
-    vtkMedialRepairWeld::Weld(weld, self->WeldTolerance * this->Diagonal, counts);
+    vtkMedialRepairWeld::Weld(work, self->WeldTolerance * this->Diagonal, counts);
     self->WeldedPoints = counts.MergedPoints;
     welded = self->WeldedPoints > 0;
     if (welded)
     {
-      work = std::move(weld);
       std::ostringstream os;
       os << "weld: " << Plural(self->WeldedPoints, "point", "points") << " merged within " << self->WeldTolerance
          << " of the diagonal";
