@@ -7,6 +7,7 @@
 #include "vtkMedialPlane.h"
 #include "vtkMedialProgress.h"
 #include "vtkMedialRepairPatch.h"
+#include "vtkMedialRepairWeld.h"
 #include "vtkMedialSolidCheck.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialSurfaceRepair.h"
@@ -25,7 +26,6 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
-#include "vtkStaticCleanPolyData.h"
 #include "vtkStringArray.h"
 #include "vtkTriangleFilter.h"
 
@@ -1429,26 +1429,21 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
     return true;
   }
 
-  // 1. Weld (an open surface only: a closed one has nothing to weld).
+  // 1. Weld (an open surface only: a closed one has nothing to weld), from the prepared
+  // mesh, whose equal points are already one point: points within the tolerance are
+  // merged transitively, by union-find over the pairs a locator finds, so the clusters
+  // depend on the coordinates alone, not on threads or order (vtkMedialRepairWeld.h).
   this->Stage("weld");
-  Soup work;
+  Soup work = SoupOf(m0);
   const vtkIdType inputTriangles = static_cast<vtkIdType>(triangulated.Triangles.size());
   bool welded = false;
   if (m0.BoundaryEdges > 0 && self->WeldTolerance > 0.0)
   {
-    vtkSmartPointer<vtkPolyData> surface = ToPolyData(triangulated);
-    vtkNew<vtkStaticCleanPolyData> weld;
-    weld->SetInputData(surface);
-    weld->ToleranceIsAbsoluteOff();
-    weld->SetTolerance(self->WeldTolerance);
-    weld->ConvertPolysToLinesOff();
-    weld->ConvertLinesToPointsOff();
-    weld->ConvertStripsToPolysOff();
-    weld->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
-    weld->Update();
-    work = Triangulated(weld->GetOutput());
-    self->WeldedPoints = m0.UsedPoints - UsedPoints(work);
-    self->DroppedTriangles += inputTriangles - static_cast<vtkIdType>(work.Triangles.size());
+    // In place: with nothing merged the welded soup is the same soup (its points are
+    // already in order of first use, and the mesh has no collapsed triangles).
+    vtkMedialRepairWeld::Counts counts;
+    vtkMedialRepairWeld::Weld(work, self->WeldTolerance * this->Diagonal, counts);
+    self->WeldedPoints = counts.MergedPoints;
     welded = self->WeldedPoints > 0;
     if (welded)
     {
@@ -1458,11 +1453,7 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
       this->Line(os.str());
     }
   }
-  if (!welded)
-  {
-    work = SoupOf(m0);
-    self->DroppedTriangles += inputTriangles - m0.GetNumberOfTriangles();
-  }
+  self->DroppedTriangles += inputTriangles - static_cast<vtkIdType>(work.Triangles.size());
   // The preparation's winding is the input's only where it did not have to weld or
   // clean; there the soup's orientation is found again (step 2, and at the end).
   self->RewoundTriangles = welded ? 0 : rewound;

@@ -14,8 +14,11 @@
  *     whose triangles already face out of it is passed through untouched (the output
  *     shares the input's arrays). Nested shells are not a defect: a cavity stays a
  *     cavity.
- *  1. Weld: when the surface is open, points closer than WeldTolerance (relative to
- *     the diagonal) are merged (vtkStaticCleanPolyData).
+ *  1. Weld: when the surface is open, points at most WeldTolerance apart (relative to
+ *     the diagonal) are merged, transitively (every chain of such pairs becomes one
+ *     point: union-find over the pairs a vtkStaticPointLocator finds, so the result
+ *     depends on the coordinates only, not on threads or order; vtkMedialRepairWeld),
+ *     and the triangles that collapse are dropped.
  *  2. Clean: invalid, degenerate and duplicate triangles are dropped
  *     (repair_polygon_soup, remove_degenerate_faces), the soup is oriented (points on
  *     non-manifold edges and corners are split, orient_polygon_soup) and its borders
@@ -116,8 +119,8 @@ public:
   static int GetModeFromName(const char* name);
 
   ///@{
-  /// Points closer than this, relative to the diagonal, are welded when the surface is
-  /// open (default 1e-6).
+  /// Points at most this far apart, relative to the diagonal, are welded when the
+  /// surface is open (default 1e-6), transitively: keep it well below the shortest edge.
   vtkSetClampMacro(WeldTolerance, double, 0.0, 0.01);
   vtkGetMacro(WeldTolerance, double);
   ///@}
@@ -160,7 +163,7 @@ public:
   vtkGetMacro(InputWasValid, bool);       ///< a valid solid: passed through untouched
   vtkGetMacro(Changed, bool);             ///< the output is not the input
   vtkGetMacro(IntersectingPairs, vtkIdType); ///< triangle pairs of the input that intersect (exact)
-  vtkGetMacro(WeldedPoints, vtkIdType);
+  vtkGetMacro(WeldedPoints, vtkIdType);     ///< merged into another point: points - clusters, never negative
   vtkGetMacro(DroppedTriangles, vtkIdType); ///< invalid, degenerate and duplicate
   vtkGetMacro(SplitPoints, vtkIdType);     ///< split off non-manifold edges and corners
   vtkGetMacro(StitchedEdges, vtkIdType);

@@ -339,6 +339,40 @@ inline Defect JitteredSoup()
   return { "jittered soup", Mesh(soup, tris), depth, 1e-6, 0.3, 1, false };
 }
 
+/// A box (1 x 0.8 x 0.6, 12 facets a side) with rectangular windows cut in three faces
+/// (0.5 x 0.3 in the x faces, 0.6 x 0.3 in the +y face: 0.37 to 0.52 of the diagonal,
+/// larger than MaximumHoleSize). Nothing else is closed, so the repair fills them too
+/// (flat, in their faces) rather than wrapping a thin solid around the sheet: the box.
+/// Solid: the box (Euler characteristic 1, largest ball 0.3).
+inline Defect BoxWithWindows()
+{
+  auto box = Shape(vtkMedialShapeSource::BOX, 12, [](vtkMedialShapeSource* s) { s->SetBoxLengths(1.0, 0.8, 0.6); });
+  const std::vector<Point> x = Points(box);
+  std::vector<std::array<vtkIdType, 3>> kept;
+  for (const auto& t : Triangles(box))
+  {
+    double c[3] = { 0, 0, 0 };
+    for (vtkIdType v : t)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        c[k] += x[v][k] / 3.0;
+      }
+    }
+    const bool xWindow = std::fabs(std::fabs(c[0]) - 0.5) < 1e-9 && std::fabs(c[1]) < 0.25 && std::fabs(c[2]) < 0.15;
+    const bool yWindow = std::fabs(c[1] - 0.4) < 1e-9 && std::fabs(c[0]) < 0.3 && std::fabs(c[2]) < 0.15;
+    if (!xWindow && !yWindow)
+    {
+      kept.push_back(t);
+    }
+  }
+  auto depth = [](const double y[3]) {
+    const double lo[3] = { -0.5, -0.4, -0.3 }, hi[3] = { 0.5, 0.4, 0.3 };
+    return BoxDepth(y, lo, hi);
+  };
+  return { "box with windows", Mesh(x, kept), depth, 1e-6, 0.3, 1, false };
+}
+
 /// A torus (ring radius 1, tube 0.3) with a fifth of its triangles turned over (chosen at
 /// random). Solid: the solid torus (Euler characteristic 0, largest ball 0.3).
 inline Defect FlippedTorus()
@@ -452,7 +486,7 @@ inline std::vector<Defect> GeneratedDefects()
 {
   return { defects::CrossingShell(), defects::OverlappingSpheres(), defects::SphereWithHoles(),
     defects::JitteredSoup(), defects::FlippedTorus(), defects::SphereWithSheet(), defects::SolidInCavity(),
-    defects::CubesSharingAnEdge() };
+    defects::CubesSharingAnEdge(), defects::BoxWithWindows() };
 }
 }
 
