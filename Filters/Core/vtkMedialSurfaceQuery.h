@@ -156,7 +156,8 @@ public:
   /// with a surface edge, as medial sheets are with the convex edges they end at).
   using CrossingTest = bool (*)(const double* const points[], int n, const double* const corners[3]);
   /// SegmentCrossesSurface (n = 2) or TriangleCrossesSurface (n = 3) with `test`
-  /// deciding each surface triangle near the points.
+  /// deciding each surface triangle near the points. `test` must be exact (say yes only
+  /// where the simplices meet): only the triangles whose box meets the points' are tested.
   bool CrossesSurface(const double* const points[], int n, CrossingTest test) const;
 
   /// Calls visit(corners) for the surface triangles that may meet the segment (n = 2

@@ -169,7 +169,8 @@ public:
 
   /// Calls visit(triangle) for every triangle whose node box meets the box [lo, hi]
   /// (a superset of the triangles whose own box meets it: boxes are padded outward),
-  /// until visit returns false. For diagnostics (contacts, ray parity), not per sample.
+  /// until visit returns false. For diagnostics (contacts, ray parity) and the crossing
+  /// tests of vtkMedialSurfaceQuery::CrossesSurface, not per sample.
   void VisitBox(const double lo[3], const double hi[3], const std::function<bool(vtkIdType)>& visit) const;
 
   /**
