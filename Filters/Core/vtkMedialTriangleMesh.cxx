@@ -353,6 +353,10 @@ bool vtkMedialTriangleMesh::Build(
       this->EdgeNeighbours = std::move(adjacency.Neighbour); // every triangle has three
     }
   }
+  if (this->BoundaryEdges == 0 && this->NonManifoldEdges == 0 && this->NonOrientableComponents == 0)
+  {
+    this->CountPinchedVertices(); // after the adjacency is freed: it adds to no peak
+  }
   if (stop())
   {
     return false;
@@ -649,6 +653,58 @@ bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::func
     adjacency.Degree[t] = static_cast<unsigned char>(count);
   }
   return true;
+}
+
+// On a closed, edge-manifold, oriented mesh, the triangles (v, a, b) around a vertex v
+// give its link's edges a -> b, each a starting once, and the link is one cycle per
+// fan of triangles around v. The corners grouped by vertex (linear time), each link is
+// followed from its first edge: a vertex whose walk comes back before all its edges is
+// pinched. Two passes over the corners and a walk per vertex within its own group.
+void vtkMedialTriangleMesh::CountPinchedVertices()
+{
+  const vtkIdType corners = static_cast<vtkIdType>(this->Triangles.size());
+  struct LinkEdge
+  {
+    std::int32_t From, To;
+  };
+  vtkMedialBuffer<LinkEdge> links(static_cast<size_t>(corners));
+  const vtkIdType* tris = this->Triangles.data();
+  const vtkMedialBuffer<vtkIdType> first = GroupByKey(
+    corners, this->GetNumberOfPoints(), [tris](vtkIdType c) { return tris[c]; },
+    [&](vtkIdType c, vtkIdType at) {
+      const vtkIdType* v = tris + 3 * (c / 3);
+      const int k = static_cast<int>(c % 3);
+      links[at] = { static_cast<std::int32_t>(v[(k + 1) % 3]), static_cast<std::int32_t>(v[(k + 2) % 3]) };
+    });
+  const vtkIdType np = this->GetNumberOfPoints();
+  vtkIdType pinched = 0;
+#pragma omp parallel for schedule(dynamic, 4096) reduction(+ : pinched)
+  for (vtkIdType v = 0; v < np; ++v)
+  {
+    const vtkIdType begin = first[v], end = first[v + 1];
+    if (end - begin < 2)
+    {
+      continue;
+    }
+    vtkIdType steps = 1;
+    std::int32_t at = links[begin].To;
+    while (at != links[begin].From && steps < end - begin)
+    {
+      vtkIdType i = begin;
+      while (i < end && links[i].From != at)
+      {
+        ++i;
+      }
+      if (i == end)
+      {
+        break;
+      }
+      at = links[i].To;
+      ++steps;
+    }
+    pinched += steps < end - begin ? 1 : 0;
+  }
+  this->PinchedVertices = pinched;
 }
 
 // Breadth-first consistent winding per shell (edge-connected component).
@@ -1288,6 +1344,13 @@ std::vector<std::string> vtkMedialTriangleMesh::Warnings() const
     std::ostringstream os;
     os << this->NonOrientableComponents
        << " component(s) cannot be oriented consistently (non-orientable surface).";
+    warnings.push_back(os.str());
+  }
+  if (this->PinchedVertices > 0)
+  {
+    std::ostringstream os;
+    os << "Input has " << this->PinchedVertices
+       << " pinched (non-manifold) vertices, where the surface touches itself at a point; kept as they are.";
     warnings.push_back(os.str());
   }
   // A cavity is no defect: only cavities whose input winding was that of a solid (most

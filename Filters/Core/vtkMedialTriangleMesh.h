@@ -142,6 +142,10 @@ public:
   vtkIdType UsedPoints = 0; // points referenced by the kept triangles
   vtkIdType NonManifoldEdges = 0;
   vtkIdType NonOrientableComponents = 0;
+  /// On a closed, edge-manifold, oriented mesh (else 0): vertices whose triangles form
+  /// two or more fans that share only the vertex (pinched, non-manifold vertices: the
+  /// surface touches itself there, as two shells touching at a point do).
+  vtkIdType PinchedVertices = 0;
   vtkIdType DegenerateTriangles = 0;
   vtkIdType DuplicateTriangles = 0; // same three vertices as an earlier triangle: dropped
   vtkIdType Components = 0;         // shells
@@ -159,6 +163,7 @@ private:
   bool BuildAdjacency(Adjacency& adjacency, const std::function<bool()>& aborted);
   void OrientShells(const Adjacency& adjacency);
   void MarkClosedShells(const Adjacency& adjacency);
+  void CountPinchedVertices();
   void OrientByVolume();
   void ComputeNormalsAndAreas();
   bool FindShellContacts(const vtkMedialTriangleBVH& tree, const std::function<bool()>& aborted);
