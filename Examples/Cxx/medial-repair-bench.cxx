@@ -229,11 +229,7 @@ int Check(const std::vector<std::string>& meshes, int threads, int runs)
     {
       found += (found.empty() ? "" : "; ") + line;
     }
-    if (check.PinchedVertices > 0)
-    {
-      found += (found.empty() ? "valid solid; " : "; ") + std::to_string(check.PinchedVertices) +
-        " pinched vertices (kept)";
-    }
+
     const double m = Median(meshTimes), t = Median(treeTimes), c = Median(checkTimes);
     const double mc = Median(meshCpu), tc = Median(treeCpu), cc = Median(checkCpu);
     std::printf("| %s | %lld | %.3f | %.3f | %.4f | %.1f%% | %.3f, %.3f, %.4f | %.1f%% | %lld / %lld (%lld) | %s |\n",

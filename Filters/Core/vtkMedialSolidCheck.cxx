@@ -18,7 +18,10 @@ void vtkMedialSolidCheck::Run(
   this->DegenerateTriangles = mesh.DegenerateTriangles;
   this->DuplicateTriangles = mesh.DuplicateTriangles;
   this->ShellContacts = static_cast<vtkIdType>(mesh.Contacts.size());
-  this->PinchedVertices = mesh.PinchedVertices;
+  if (allPairs)
+  {
+    this->PinchedVertices = mesh.CountPinchedVertices();
+  }
   // A closed surface enclosing less than a billionth of its box's cube: two sheets
   // on top of each other, or a flat closed surface.
   const double d = mesh.Diagonal;

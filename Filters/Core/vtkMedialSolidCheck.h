@@ -77,8 +77,9 @@ public:
   vtkIdType DuplicateTriangles = 0;
   vtkIdType ShellContacts = 0; // pairs of shells that touch or intersect
   bool NoVolume = false;       // closed, but the enclosed volume is nil
-  /// Pinched (non-manifold) vertices, where the surface touches itself at a point
-  /// (vtkMedialTriangleMesh::PinchedVertices). Not a defect: like shells that only
+  /// With `allPairs` only (the diagnosis, not the AUTO screen, whose budget it does not
+  /// fit): pinched (non-manifold) vertices, where the surface touches itself at a point
+  /// (vtkMedialTriangleMesh::CountPinchedVertices). Not a defect: like shells that only
   /// touch, the solid is what it is there, and the repair keeps them.
   vtkIdType PinchedVertices = 0;
   bool PairsSearched = false;  // the pair search ran (Pairs is complete)

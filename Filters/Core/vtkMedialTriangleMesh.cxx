@@ -353,10 +353,6 @@ bool vtkMedialTriangleMesh::Build(
       this->EdgeNeighbours = std::move(adjacency.Neighbour); // every triangle has three
     }
   }
-  if (this->BoundaryEdges == 0 && this->NonManifoldEdges == 0 && this->NonOrientableComponents == 0)
-  {
-    this->CountPinchedVertices(); // after the adjacency is freed: it adds to no peak
-  }
   if (stop())
   {
     return false;
@@ -660,8 +656,12 @@ bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::func
 // fan of triangles around v. The corners grouped by vertex (linear time), each link is
 // followed from its first edge: a vertex whose walk comes back before all its edges is
 // pinched. Two passes over the corners and a walk per vertex within its own group.
-void vtkMedialTriangleMesh::CountPinchedVertices()
+vtkIdType vtkMedialTriangleMesh::CountPinchedVertices() const
 {
+  if (this->BoundaryEdges > 0 || this->NonManifoldEdges > 0 || this->NonOrientableComponents > 0)
+  {
+    return 0;
+  }
   const vtkIdType corners = static_cast<vtkIdType>(this->Triangles.size());
   struct LinkEdge
   {
@@ -704,7 +704,7 @@ void vtkMedialTriangleMesh::CountPinchedVertices()
     }
     pinched += steps < end - begin ? 1 : 0;
   }
-  this->PinchedVertices = pinched;
+  return pinched;
 }
 
 // Breadth-first consistent winding per shell (edge-connected component).
@@ -1346,13 +1346,7 @@ std::vector<std::string> vtkMedialTriangleMesh::Warnings() const
        << " component(s) cannot be oriented consistently (non-orientable surface).";
     warnings.push_back(os.str());
   }
-  if (this->PinchedVertices > 0)
-  {
-    std::ostringstream os;
-    os << "Input has " << this->PinchedVertices
-       << " pinched (non-manifold) vertices, where the surface touches itself at a point; kept as they are.";
-    warnings.push_back(os.str());
-  }
+
   // A cavity is no defect: only cavities whose input winding was that of a solid (most
   // of their triangles turned to face into the cavity) are worth a word.
   auto woundAsSolid = [](const Shell& shell) {

@@ -433,7 +433,7 @@ vtkSmartPointer<vtkPolyData> PinchedSheets(bool crossing, int perUnit = 16, int 
   const vtkIdType bottom = static_cast<vtkIdType>(x.size());
   x.push_back({ 0.0, 0.0, -depth });
   const vtkIdType apex = static_cast<vtkIdType>(x.size());
-  x.push_back({ 0.0, crossing ? 0.0 : -2.0, depth });
+  x.push_back({ crossing ? 0.3 : 0.0, crossing ? 0.2 : -2.0, -0.75 * depth });
   std::map<vtkIdType, vtkIdType> below;
   auto foot = [&](vtkIdType q) {
     const auto found = below.find(q);
@@ -565,7 +565,7 @@ int TestMedialRepairPairs(int, char*[])
     culled[c.Name] = culling;
     const std::set<Pair> found(candidates.begin(), candidates.end());
     // CGAL's halfedge mesh cannot hold a pinched vertex: those cases by brute force.
-    const std::set<Pair> reference = mesh.PinchedVertices > 0 ? BruteForcePairs(mesh) : ReferencePairs(mesh);
+    const std::set<Pair> reference = mesh.CountPinchedVertices() > 0 ? BruteForcePairs(mesh) : ReferencePairs(mesh);
     vtkIdType missed = 0;
     for (const Pair& p : reference)
     {
@@ -623,8 +623,8 @@ int TestMedialRepairPairs(int, char*[])
       "%s: the culling skipped no patch with a pinched boundary (%lld of %lld skipped)", name,
       static_cast<long long>(found->second.Culled), static_cast<long long>(found->second.CullingTests));
   }
-  // Pinched vertices (vtkMedialTriangleMesh::PinchedVertices), which the check reports
-  // and the repair keeps: a horn torus, two cubes sharing a corner, the pinched sheets'
+  // Pinched vertices (vtkMedialTriangleMesh::CountPinchedVertices), which the check's
+  // diagnosis (allPairs) reports and the repair keeps: a horn torus, two cubes sharing a corner, the pinched sheets'
   // corner P; none where the surface is manifold, nor where an edge is not (not counted).
   {
     struct PinchCase
@@ -652,9 +652,8 @@ int TestMedialRepairPairs(int, char*[])
       vtkMedialSolidCheck check;
       check.Run(pinchMesh, pinchQuery, 2, true);
       std::printf("%-24s pinched vertices %lld\n", c.Name.c_str(), static_cast<long long>(check.PinchedVertices));
-      MEDIAL_CHECK(pinchMesh.PinchedVertices == c.Pinched && check.PinchedVertices == c.Pinched,
-        "%s: %lld pinched vertices, expected %lld", c.Name.c_str(), static_cast<long long>(pinchMesh.PinchedVertices),
-        static_cast<long long>(c.Pinched));
+      MEDIAL_CHECK(check.PinchedVertices == c.Pinched, "%s: %lld pinched vertices, expected %lld", c.Name.c_str(),
+        static_cast<long long>(check.PinchedVertices), static_cast<long long>(c.Pinched));
     }
     // The horn torus is otherwise a valid solid: the repair keeps it as it is.
     vtkNew<vtkMedialRepairFilter> repair;
