@@ -5,7 +5,9 @@
 //   For each mesh, R times (default 3): the mesh preparation (vtkMedialTriangleMesh::
 //   Build), the surface queries' tree (vtkMedialSurfaceQuery::Build) and the solid check
 //   (vtkMedialSolidCheck::Run), wall and CPU seconds (medians); the check as a share of
-//   the preparation (mesh + tree); what the check found.
+//   the preparation (mesh + tree); the patches of the tree whose self-tests the pair
+//   search's culling skipped, of those it tested (and how many of those skipped had a
+//   pinched boundary); what the check found.
 // --repair MESH...: the repair of each mesh: its report, its time per stage, the
 //   largest distance from the input to the output, the share of the input buried, the
 //   triangles in and out, the peak RSS so far.
@@ -179,8 +181,8 @@ int Defects(int threads, vtkIdType samples)
 
 int Check(const std::vector<std::string>& meshes, int threads, int runs)
 {
-  std::printf("| mesh | triangles | mesh s | tree s | check s | check / preparation | CPU s: mesh, tree, check | check / preparation (CPU) | found |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| mesh | triangles | mesh s | tree s | check s | check / preparation | CPU s: mesh, tree, check | check / preparation (CPU) | patches culled / tested (pinched) | found |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
   for (const std::string& name : meshes)
   {
     vtkSmartPointer<vtkPolyData> surface = Load(name);
@@ -227,10 +229,12 @@ int Check(const std::vector<std::string>& meshes, int threads, int runs)
     {
       found += (found.empty() ? "" : "; ") + line;
     }
+
     const double m = Median(meshTimes), t = Median(treeTimes), c = Median(checkTimes);
     const double mc = Median(meshCpu), tc = Median(treeCpu), cc = Median(checkCpu);
-    std::printf("| %s | %lld | %.3f | %.3f | %.4f | %.1f%% | %.3f, %.3f, %.4f | %.1f%% | %s |\n", name.c_str(),
-      static_cast<long long>(triangles), m, t, c, 100.0 * c / (m + t), mc, tc, cc, 100.0 * cc / (mc + tc),
+    std::printf("| %s | %lld | %.3f | %.3f | %.4f | %.1f%% | %.3f, %.3f, %.4f | %.1f%% | %lld / %lld (%lld) | %s |\n",
+      name.c_str(), static_cast<long long>(triangles), m, t, c, 100.0 * c / (m + t), mc, tc, cc,
+      100.0 * cc / (mc + tc), check.PatchesCulled, check.PatchesTested, check.PinchedPatchesCulled,
       found.empty() ? "valid solid" : found.c_str());
   }
   return 0;

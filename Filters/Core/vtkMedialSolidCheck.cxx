@@ -18,6 +18,10 @@ void vtkMedialSolidCheck::Run(
   this->DegenerateTriangles = mesh.DegenerateTriangles;
   this->DuplicateTriangles = mesh.DuplicateTriangles;
   this->ShellContacts = static_cast<vtkIdType>(mesh.Contacts.size());
+  if (allPairs)
+  {
+    this->PinchedVertices = mesh.CountPinchedVertices();
+  }
   // A closed surface enclosing less than a billionth of its box's cube: two sheets
   // on top of each other, or a flat closed surface.
   const double d = mesh.Diagonal;
@@ -26,8 +30,12 @@ void vtkMedialSolidCheck::Run(
   // repaired anyway (open or non-manifold input goes through the whole repair).
   if (allPairs || this->CountDefects() == 0)
   {
-    query.FindIntersectingPairs(threads, this->Pairs);
+    vtkMedialTriangleBVH::PairSearchStatistics statistics;
+    query.FindIntersectingPairs(threads, this->Pairs, &statistics);
     this->PairsSearched = true;
+    this->PatchesTested = statistics.CullingTests;
+    this->PatchesCulled = statistics.Culled;
+    this->PinchedPatchesCulled = statistics.PinchedCulled;
   }
 }
 

@@ -77,9 +77,19 @@ public:
   vtkIdType DuplicateTriangles = 0;
   vtkIdType ShellContacts = 0; // pairs of shells that touch or intersect
   bool NoVolume = false;       // closed, but the enclosed volume is nil
+  /// With `allPairs` only (the diagnosis, not the AUTO screen, whose budget it does not
+  /// fit): pinched (non-manifold) vertices, where the surface touches itself at a point
+  /// (vtkMedialTriangleMesh::CountPinchedVertices). Not a defect: like shells that only
+  /// touch, the solid is what it is there, and the repair keeps them.
+  vtkIdType PinchedVertices = 0;
   bool PairsSearched = false;  // the pair search ran (Pairs is complete)
   /// Triangle pairs (mesh ids, a < b, sorted) that may intersect.
   PairList Pairs;
+  /// The pair search's normal-cone culling: patches of the tree tested, those whose
+  /// self-tests it skipped, and of those the ones whose boundary is pinched at a corner.
+  long long PatchesTested = 0;
+  long long PatchesCulled = 0;
+  long long PinchedPatchesCulled = 0;
   bool Decided = false;
   /// After Decide: the pairs that intersect, by the exact test.
   PairList Intersecting;

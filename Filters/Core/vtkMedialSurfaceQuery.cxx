@@ -227,8 +227,8 @@ bool vtkMedialSurfaceQuery::IsInside(const double x[3]) const
   return this->CountCrossings(x, directions[2], HUGE_VAL) % 2 == 1;
 }
 
-void vtkMedialSurfaceQuery::FindIntersectingPairs(
-  int threads, std::vector<std::pair<vtkIdType, vtkIdType>>& pairs) const
+void vtkMedialSurfaceQuery::FindIntersectingPairs(int threads, std::vector<std::pair<vtkIdType, vtkIdType>>& pairs,
+  vtkMedialTriangleBVH::PairSearchStatistics* statistics) const
 {
   const double* b = this->Mesh->Bounds;
   double extent = 0.0;
@@ -238,7 +238,7 @@ void vtkMedialSurfaceQuery::FindIntersectingPairs(
   }
   // Plane distances are computed on absolute coordinates: their rounding grows with
   // the coordinates' size, not only with the mesh's.
-  this->Tree.FindIntersectingPairs(*this->Mesh, 1e-9 * this->Mesh->Diagonal + 1e-13 * extent, threads, pairs);
+  this->Tree.FindIntersectingPairs(*this->Mesh, 1e-9 * this->Mesh->Diagonal + 1e-13 * extent, threads, pairs, statistics);
 }
 
 bool vtkMedialSurfaceQuery::SegmentCrossesSurface(const double p[3], const double q[3]) const

@@ -168,7 +168,8 @@ public:
   /// Pairs of triangles that may intersect other than where they share an edge or a
   /// corner (vtkMedialTriangleBVH::FindIntersectingPairs, tolerance 1e-9 of the
   /// diagonal plus the coordinates' rounding).
-  void FindIntersectingPairs(int threads, std::vector<std::pair<vtkIdType, vtkIdType>>& pairs) const;
+  void FindIntersectingPairs(int threads, std::vector<std::pair<vtkIdType, vtkIdType>>& pairs,
+    vtkMedialTriangleBVH::PairSearchStatistics* statistics = nullptr) const;
 
   /// Unit outward normal of mesh triangle t, from the tree (the same values as the
   /// mesh's, which a caller that only queries may then release: ReleaseNormals).

@@ -185,8 +185,15 @@ public:
    * one point). OpenMP over `threads`; the list does not depend on them. In
    * vtkMedialTriangleBVHPairs.cxx.
    */
+  /// What FindIntersectingPairs' normal-cone culling did (for benchmarks and tests).
+  struct PairSearchStatistics
+  {
+    std::int64_t CullingTests = 0;  // patches tested
+    std::int64_t Culled = 0;        // patches whose self-tests were skipped
+    std::int64_t PinchedCulled = 0; // of those, patches whose boundary is pinched at a corner
+  };
   void FindIntersectingPairs(const vtkMedialTriangleMesh& mesh, double tolerance, int threads,
-    std::vector<std::pair<vtkIdType, vtkIdType>>& pairs) const;
+    std::vector<std::pair<vtkIdType, vtkIdType>>& pairs, PairSearchStatistics* statistics = nullptr) const;
 
   /**
    * First triangle other than ignoreTriangle met by the ray origin + t direction,

@@ -262,11 +262,25 @@ public:
   {
     double X[4];
     vtkIdType From, To;
+    bool Pinched = false; // From is a corner where the boundary is pinched
   };
   struct Scratch
   {
     std::vector<Edge> Edges; // the boundary, projected
     std::vector<std::int32_t> Order;
+    // Pinched boundaries only: the edges into pinched corners, each edge's successor
+    // with the patch kept on the left and on the right of the walk, and marks.
+    std::vector<std::pair<vtkIdType, std::int32_t>> Into;
+    std::vector<std::int32_t> Left, Right;
+    std::vector<char> Seen;
+    struct Ray
+    {
+      double Angle, X, Y;
+      std::int32_t Edge;
+      bool Out;
+    };
+    std::vector<Ray> Rays;
+    PairSearchStatistics Statistics;
   };
 
   PatchCulling(const vtkMedialTriangleBVH& tree, const vtkMedialTriangleMesh& mesh, double tolerance)
@@ -289,6 +303,7 @@ public:
     {
       return false;
     }
+    ++scratch.Statistics.CullingTests;
     const LeafTriangle* leaves = this->Tree.LeafTriangles.data();
     // The direction: the mean normal of up to 64 of its triangles (any direction is
     // sound; every triangle is tested against the one taken).
@@ -398,36 +413,48 @@ public:
     {
       return false;
     }
-    // One loop: each boundary corner starts one boundary edge (else the patch is
-    // pinched there), and following them from the first comes back after all of them.
+    // The boundary's walks. Sorted by their start, edges that start at the same corner
+    // are a run: the boundary is pinched there (it passes the corner more than once).
     std::vector<std::int32_t>& order = scratch.Order;
     order.resize(count);
     for (size_t i = 0; i < count; ++i)
     {
       order[i] = static_cast<std::int32_t>(i);
     }
-    const std::vector<Edge>& e = edges;
+    std::vector<Edge>& e = edges;
     std::sort(order.begin(), order.end(), [&](std::int32_t i, std::int32_t j) { return e[i].From < e[j].From; });
+    bool pinched = false;
     for (size_t i = 1; i < count; ++i)
     {
       if (e[order[i]].From == e[order[i - 1]].From)
       {
+        pinched = true;
+        e[order[i]].Pinched = e[order[i - 1]].Pinched = true;
+      }
+    }
+    // The first edge (in `order`) that starts where `edge` ends, or -1.
+    auto firstNext = [&](const Edge& edge) -> std::int32_t {
+      const auto it = std::lower_bound(order.begin(), order.end(), edge.To,
+        [&](std::int32_t i, vtkIdType from) { return e[i].From < from; });
+      return it != order.end() && e[*it].From == edge.To ? static_cast<std::int32_t>(it - order.begin()) : -1;
+    };
+    if (!pinched)
+    {
+      // One loop: following the edges from the first comes back after all of them.
+      size_t length = 0;
+      std::int32_t at = 0;
+      do
+      {
+        const std::int32_t k = firstNext(e[at]);
+        at = k < 0 ? -1 : order[k];
+        ++length;
+      } while (at > 0 && length <= count);
+      if (at != 0 || length != count)
+      {
         return false;
       }
     }
-    auto next = [&](const Edge& edge) {
-      const auto it = std::lower_bound(order.begin(), order.end(), edge.To,
-        [&](std::int32_t i, vtkIdType from) { return e[i].From < from; });
-      return it != order.end() && e[*it].From == edge.To ? *it : -1;
-    };
-    size_t length = 0;
-    std::int32_t at = 0;
-    do
-    {
-      at = next(e[at]);
-      ++length;
-    } while (at > 0 && length <= count);
-    if (at != 0 || length != count)
+    else if (!this->OneWalk(e, order, firstNext, scratch))
     {
       return false;
     }
@@ -465,6 +492,10 @@ public:
         {
           break;
         }
+        if (pinched && SharePinchedCorner(f, g))
+        {
+          continue; // their directions from it were found apart by OneWalk
+        }
         if (f.To == g.From || g.To == f.From)
         {
           if (f.To == g.From ? foldsBack(f, g) : foldsBack(g, f))
@@ -478,10 +509,157 @@ public:
         }
       }
     }
+    ++scratch.Statistics.Culled;
+    scratch.Statistics.PinchedCulled += pinched ? 1 : 0;
     return true;
   }
 
 private:
+  // Two boundary edges that share a corner where the boundary is pinched (called once
+  // OneWalk has found every corner with as many edges in as out).
+  static bool SharePinchedCorner(const Edge& f, const Edge& g)
+  {
+    return ((f.From == g.From || f.From == g.To) && f.Pinched) || f.To == g.To || (f.To == g.From && g.Pinched);
+  }
+
+  // A boundary pinched at some corners (where it passes more than once). At each, the
+  // directions (projected) of the edges out of it and back along the edges into it
+  // must be apart and alternate around it, out, in, out, in: the patch's sectors there
+  // lie apart, each between an edge out and the next edge in counter-clockwise (the
+  // patch is on the left of its boundary). With the edges apart elsewhere (the sweep
+  // below), the boundary is then a plane graph, and the number of triangles over a
+  // point is constant on each of its faces, one more on the left of an edge than on
+  // its right, never negative. Walk the boundary keeping the patch on the left: at a
+  // pinched corner leave by the edge out just clockwise of the edge in (the patch's
+  // fan order), and each walk goes round one face on the left of its edges. One walk:
+  // one such face, so every face on the right has one count less than it, and the
+  // outer face (count 0) is one of them: the count is 0 or 1 everywhere. Else walk
+  // keeping the patch on the right (leave by the edge out just counter-clockwise):
+  // one walk is then one face on the right, the outer one, so every face on the left
+  // counts 1. A patch pinched into a ring (one boundary face on the left, with a
+  // hole) passes the first; two lobes that touch at a corner, the second; one lobe
+  // over another, neither (nor the alternation).
+  template <class FirstNext>
+  bool OneWalk(const std::vector<Edge>& e, const std::vector<std::int32_t>& order, FirstNext firstNext,
+    Scratch& scratch) const
+  {
+    const std::int32_t count = static_cast<std::int32_t>(e.size());
+    auto& into = scratch.Into;
+    auto& left = scratch.Left;
+    auto& right = scratch.Right;
+    into.clear();
+    left.assign(count, -1);
+    right.assign(count, -1);
+    for (std::int32_t i = 0; i < count; ++i)
+    {
+      const std::int32_t k = firstNext(e[i]);
+      if (k < 0)
+      {
+        return false;
+      }
+      if (e[order[k]].Pinched)
+      {
+        into.emplace_back(e[i].To, i);
+      }
+      else
+      {
+        left[i] = right[i] = order[k];
+      }
+    }
+    std::sort(into.begin(), into.end());
+    const double tol = this->Tolerance;
+    auto& rays = scratch.Rays;
+    for (size_t i = 0; i < into.size();)
+    {
+      const vtkIdType corner = into[i].first;
+      size_t j = i;
+      while (j < into.size() && into[j].first == corner)
+      {
+        ++j;
+      }
+      const std::int32_t k0 = firstNext(e[into[i].second]);
+      std::int32_t k1 = k0;
+      while (k1 < count && e[order[k1]].From == corner)
+      {
+        ++k1;
+      }
+      if (static_cast<size_t>(k1 - k0) != j - i)
+      {
+        return false;
+      }
+      rays.clear();
+      for (std::int32_t k = k0; k < k1; ++k)
+      {
+        const Edge& b = e[order[k]];
+        rays.push_back({ 0.0, b.X[2] - b.X[0], b.X[3] - b.X[1], order[k], true });
+      }
+      for (size_t k = i; k < j; ++k)
+      {
+        const Edge& a = e[into[k].second];
+        rays.push_back({ 0.0, a.X[0] - a.X[2], a.X[1] - a.X[3], into[k].second, false });
+      }
+      // Apart: no two within the tolerance of leaving the corner the same way.
+      for (size_t p = 0; p < rays.size(); ++p)
+      {
+        for (size_t q = p + 1; q < rays.size(); ++q)
+        {
+          const double cross = rays[p].X * rays[q].Y - rays[p].Y * rays[q].X;
+          const double dot = rays[p].X * rays[q].X + rays[p].Y * rays[q].Y;
+          const double size = std::hypot(rays[p].X, rays[p].Y) + std::hypot(rays[q].X, rays[q].Y);
+          if (std::fabs(cross) <= tol * size && dot >= 0.0)
+          {
+            return false;
+          }
+        }
+      }
+      for (auto& ray : rays)
+      {
+        ray.Angle = std::atan2(ray.Y, ray.X);
+      }
+      std::sort(rays.begin(), rays.end(), [](const Scratch::Ray& a, const Scratch::Ray& b) { return a.Angle < b.Angle; });
+      const size_t n = rays.size();
+      for (size_t r = 0; r < n; ++r)
+      {
+        if (rays[r].Out == rays[(r + 1) % n].Out)
+        {
+          return false;
+        }
+        if (!rays[r].Out)
+        {
+          left[rays[r].Edge] = rays[(r + n - 1) % n].Edge;
+          right[rays[r].Edge] = rays[(r + 1) % n].Edge;
+        }
+      }
+      i = j;
+    }
+    // The walks of a successor map; 0 when it is not one-to-one.
+    auto& seen = scratch.Seen;
+    auto walks = [&](const std::vector<std::int32_t>& next) {
+      seen.assign(count, 0);
+      int found = 0;
+      for (std::int32_t s = 0; s < count; ++s)
+      {
+        if (seen[s])
+        {
+          continue;
+        }
+        ++found;
+        std::int32_t at = s;
+        do
+        {
+          if (seen[at])
+          {
+            return 0;
+          }
+          seen[at] = 1;
+          at = next[at];
+        } while (at != s);
+      }
+      return found;
+    };
+    return walks(left) == 1 || walks(right) == 1;
+  }
+
   // Patches larger than this are left to their children (a wide normal cone is likely,
   // and a failed test costs a pass over the patch).
   static constexpr std::int32_t MaxPatch = 1 << 15;
@@ -495,8 +673,12 @@ private:
 };
 
 void vtkMedialTriangleBVH::FindIntersectingPairs(const vtkMedialTriangleMesh& mesh, double tolerance, int threads,
-  std::vector<std::pair<vtkIdType, vtkIdType>>& pairs) const
+  std::vector<std::pair<vtkIdType, vtkIdType>>& pairs, PairSearchStatistics* statistics) const
 {
+  if (statistics)
+  {
+    *statistics = PairSearchStatistics();
+  }
   pairs.clear();
   const std::int64_t slots = static_cast<std::int64_t>(this->LeafTriangles.size());
   if (this->Nodes.empty() || slots == 0)
@@ -652,6 +834,7 @@ void vtkMedialTriangleBVH::FindIntersectingPairs(const vtkMedialTriangleMesh& me
     top.swap(next);
   }
   std::vector<Pairs> perThread(threads);
+  std::vector<PairSearchStatistics> perThreadStatistics(threads);
 #pragma omp parallel num_threads(threads)
   {
     Pairs& out = perThread[omp_get_thread_num()];
@@ -669,10 +852,21 @@ void vtkMedialTriangleBVH::FindIntersectingPairs(const vtkMedialTriangleMesh& me
         expand(item, stack, out, patch);
       }
     }
+    perThreadStatistics[omp_get_thread_num()] = patch.Statistics;
   }
   for (const Pairs& p : perThread)
   {
     found.insert(found.end(), p.begin(), p.end());
+  }
+  if (statistics)
+  {
+    *statistics = topPatch.Statistics;
+    for (const PairSearchStatistics& s : perThreadStatistics)
+    {
+      statistics->CullingTests += s.CullingTests;
+      statistics->Culled += s.Culled;
+      statistics->PinchedCulled += s.PinchedCulled;
+    }
   }
   std::sort(found.begin(), found.end());
   found.erase(std::unique(found.begin(), found.end()), found.end());

@@ -651,6 +651,62 @@ bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::func
   return true;
 }
 
+// On a closed, edge-manifold, oriented mesh, the triangles (v, a, b) around a vertex v
+// give its link's edges a -> b, each a starting once, and the link is one cycle per
+// fan of triangles around v. The corners grouped by vertex (linear time), each link is
+// followed from its first edge: a vertex whose walk comes back before all its edges is
+// pinched. Two passes over the corners and a walk per vertex within its own group.
+vtkIdType vtkMedialTriangleMesh::CountPinchedVertices() const
+{
+  if (this->BoundaryEdges > 0 || this->NonManifoldEdges > 0 || this->NonOrientableComponents > 0)
+  {
+    return 0;
+  }
+  const vtkIdType corners = static_cast<vtkIdType>(this->Triangles.size());
+  struct LinkEdge
+  {
+    std::int32_t From, To;
+  };
+  vtkMedialBuffer<LinkEdge> links(static_cast<size_t>(corners));
+  const vtkIdType* tris = this->Triangles.data();
+  const vtkMedialBuffer<vtkIdType> first = GroupByKey(
+    corners, this->GetNumberOfPoints(), [tris](vtkIdType c) { return tris[c]; },
+    [&](vtkIdType c, vtkIdType at) {
+      const vtkIdType* v = tris + 3 * (c / 3);
+      const int k = static_cast<int>(c % 3);
+      links[at] = { static_cast<std::int32_t>(v[(k + 1) % 3]), static_cast<std::int32_t>(v[(k + 2) % 3]) };
+    });
+  const vtkIdType np = this->GetNumberOfPoints();
+  vtkIdType pinched = 0;
+#pragma omp parallel for schedule(dynamic, 4096) reduction(+ : pinched)
+  for (vtkIdType v = 0; v < np; ++v)
+  {
+    const vtkIdType begin = first[v], end = first[v + 1];
+    if (end - begin < 2)
+    {
+      continue;
+    }
+    vtkIdType steps = 1;
+    std::int32_t at = links[begin].To;
+    while (at != links[begin].From && steps < end - begin)
+    {
+      vtkIdType i = begin;
+      while (i < end && links[i].From != at)
+      {
+        ++i;
+      }
+      if (i == end)
+      {
+        break;
+      }
+      at = links[i].To;
+      ++steps;
+    }
+    pinched += steps < end - begin ? 1 : 0;
+  }
+  return pinched;
+}
+
 // Breadth-first consistent winding per shell (edge-connected component).
 void vtkMedialTriangleMesh::OrientShells(const Adjacency& adjacency)
 {
@@ -1290,6 +1346,7 @@ std::vector<std::string> vtkMedialTriangleMesh::Warnings() const
        << " component(s) cannot be oriented consistently (non-orientable surface).";
     warnings.push_back(os.str());
   }
+
   // A cavity is no defect: only cavities whose input winding was that of a solid (most
   // of their triangles turned to face into the cavity) are worth a word.
   auto woundAsSolid = [](const Shell& shell) {

@@ -59,6 +59,13 @@ public:
   const double* GetNormal(vtkIdType t) const { return &this->Normals[3 * t]; }
   /// Frees EdgeNeighbours (12 bytes a triangle) once the solid check has run.
   void FreeEdgeNeighbours() { this->EdgeNeighbours = vtkMedialBuffer<std::int32_t>(); }
+
+  /// On a closed, edge-manifold, oriented mesh (else 0): the vertices whose triangles
+  /// form two or more fans that share only the vertex (pinched, non-manifold vertices:
+  /// the surface touches itself there, as two shells touching at a point do). Two
+  /// passes over the corners: about as much as the solid check's pair search on a clean
+  /// mesh, so not part of Build (vtkMedialSolidCheck::Run counts them when asked).
+  vtkIdType CountPinchedVertices() const;
   /// Frees the normals (24 bytes a triangle) for a caller that reads them from a built
   /// vtkMedialSurfaceQuery instead (its tree keeps the same values); GetNormal and the
   /// Normals array must not be used afterwards.

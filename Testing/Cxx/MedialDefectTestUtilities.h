@@ -447,15 +447,13 @@ inline Defect SolidInCavity()
   return { "solid in a cavity", Append(hollow, ball), depth, GeodesicSagitta(4), 0.25, 3, true };
 }
 
-/// Two unit cubes that share one edge (x = y = 1, 0 <= z <= 1), welded there: a
-/// non-manifold edge with four triangles. Solid: the two cubes (their interiors are
-/// apart: two bodies, Euler characteristic 2, largest ball 0.5).
-inline Defect CubesSharingAnEdge()
+/// Two unit cubes, [0, 1]^3 and the one whose lowest corner is `b`, in one point list:
+/// the points they share become the same points.
+inline vtkSmartPointer<vtkPolyData> TwoCubes(double bx, double by, double bz)
 {
   auto cube = Shape(vtkMedialShapeSource::BOX, 2, [](vtkMedialShapeSource* s) { s->SetBoxLengths(1, 1, 1); });
   auto a = Translated(cube, 0.5, 0.5, 0.5);
-  auto b = Translated(cube, 1.5, 1.5, 0.5);
-  // One point list: the shared edge's points become the same points.
+  auto b = Translated(cube, bx + 0.5, by + 0.5, bz + 0.5);
   std::vector<Point> x = Points(a);
   std::vector<std::array<vtkIdType, 3>> tris = Triangles(a);
   const std::vector<Point> xb = Points(b);
@@ -473,11 +471,31 @@ inline Defect CubesSharingAnEdge()
   {
     tris.push_back({ map[t[0]], map[t[1]], map[t[2]] });
   }
+  return Mesh(x, tris);
+}
+
+/// Two unit cubes that share one edge (x = y = 1, 0 <= z <= 1), welded there: a
+/// non-manifold edge with four triangles. Solid: the two cubes (their interiors are
+/// apart: two bodies, Euler characteristic 2, largest ball 0.5).
+inline Defect CubesSharingAnEdge()
+{
   auto depth = [](const double y[3]) {
     const double loA[3] = { 0, 0, 0 }, hiA[3] = { 1, 1, 1 }, loB[3] = { 1, 1, 0 }, hiB[3] = { 2, 2, 1 };
     return std::max(BoxDepth(y, loA, hiA), BoxDepth(y, loB, hiB));
   };
-  return { "cubes sharing an edge", Mesh(x, tris), depth, 1e-9, 0.5, 2, false };
+  return { "cubes sharing an edge", TwoCubes(1, 1, 0), depth, 1e-9, 0.5, 2, false };
+}
+
+/// Two unit cubes that share one corner (1, 1, 1), welded there: a pinched vertex (its
+/// triangles are two fans that share only it) between two shells that touch there.
+/// Solid: the two cubes (two bodies, Euler characteristic 2, largest ball 0.5).
+inline Defect CubesSharingAVertex()
+{
+  auto depth = [](const double y[3]) {
+    const double loA[3] = { 0, 0, 0 }, hiA[3] = { 1, 1, 1 }, loB[3] = { 1, 1, 1 }, hiB[3] = { 2, 2, 2 };
+    return std::max(BoxDepth(y, loA, hiA), BoxDepth(y, loB, hiB));
+  };
+  return { "cubes sharing a vertex", TwoCubes(1, 1, 1), depth, 1e-9, 0.5, 2, false };
 }
 }
 
@@ -486,7 +504,7 @@ inline std::vector<Defect> GeneratedDefects()
 {
   return { defects::CrossingShell(), defects::OverlappingSpheres(), defects::SphereWithHoles(),
     defects::JitteredSoup(), defects::FlippedTorus(), defects::SphereWithSheet(), defects::SolidInCavity(),
-    defects::CubesSharingAnEdge(), defects::BoxWithWindows() };
+    defects::CubesSharingAnEdge(), defects::BoxWithWindows(), defects::CubesSharingAVertex() };
 }
 }
 
