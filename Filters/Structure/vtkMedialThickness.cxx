@@ -128,7 +128,8 @@ vtkMedialSampleRecord WedgeBall(const vtkMedialSurfaceQuery& query, const vtkMed
   ball.Valid = true;
   ball.Shrunk = false;
   ball.Radius = hit.Distance;
-  withinStep = hit.Distance < step - query.GetSlack();
+  vtkMedialSurfaceQuery::ClosestHit near;
+  withinStep = hit.Distance < step * (1.0 - 1e-9) || query.ClosestPoint(ball.Centre, step, near);
   std::copy(hit.Point, hit.Point + 3, ball.Contact);
   ball.ContactTriangle = hit.Triangle;
   std::copy(p, p + 3, ball.Surface);
