@@ -239,20 +239,52 @@ bool Touches(const vtkMedialSurfaceQuery& query, vtkIdType t, const double x[3],
   return G::ClosestPointOnTriangle(x, a, a + 3, a + 6, closest) <= distance * distance;
 }
 
-// One ascent (see vtkMedialGrowBall). `keep`: the sliding steps keep their contacts (the
-// ball made exactly tangent, a blocked step ended on the largest empty ball, no stop
-// after a small step that found a contact); without it, the plain ascent. Returns
-// whether it took a sliding step.
-bool Ascend(const vtkMedialSurfaceQuery& query, const double p[3],
-  const vtkMedialGrowthLimits& limits, const vtkIdType* faces, int faceCount, vtkMedialSampleRecord& out, bool keep)
+// The rules of one ascent (see vtkMedialGrowBall).
+//  - Plain: the ascent as it was before the slide kept its contacts.
+//  - Keep: the sliding steps keep their contacts (the ball made exactly tangent, a
+//    blocked step ended on the largest empty ball, no stop after a small step that found
+//    a contact).
+//  - Robust: Keep, and three rules that do not rely on exact coplanarity or tangency.
+//    A plane nearly parallel to the step (gamma + n.v below ParallelRate: a contact's
+//    plane, or a face coplanar with one to the input's precision, whose approach is
+//    decided by rounding) gives the step no bound: a float input turned in space gives a
+//    flat wall's faces normals 1e-7 apart, and such a plane's bound, a rounding over a
+//    rounding, stopped the slide off a crease at 1e-7 of its length. The start contact
+//    is a point where the ball crosses its triangle's plane (it touches the triangle's
+//    edge or corner: beside a concave crease), not that plane, which leans off the
+//    direction the ball may move. And the sliding steps are counted apart from the
+//    ordinary ones, as the limits say: a slide may follow the last ordinary step (a ball
+//    shrunk by a faceted wall's tilt, grown by one step onto the wall across the crease,
+//    then rounds it).
+enum class AscentRules
 {
-  bool slid = false;
+  Plain,
+  Keep,
+  Robust
+};
+constexpr double ParallelRate = 1e-6;
+
+// What an ascent did: whether it took a sliding step, and whether a Robust rule
+// changed anything (otherwise it went as the Keep ascent does).
+struct AscentReport
+{
+  bool Slid = false;
+  bool Tolerated = false;
+};
+
+// One ascent by `rules`.
+AscentReport Ascend(const vtkMedialSurfaceQuery& query, const double p[3], const vtkMedialGrowthLimits& limits,
+  const vtkIdType* faces, int faceCount, vtkMedialSampleRecord& out, AscentRules rules)
+{
+  AscentReport report;
+  const bool keep = rules != AscentRules::Plain;
+  const bool robust = rules == AscentRules::Robust;
   double c[3];
   G::Copy(out.Centre, c);
   double r = out.Radius;
   if (!(r > 0.0))
   {
-    return false;
+    return report;
   }
   const double slack = query.GetSlack();
   auto gapAt = [&](const double x[3], double radius) { return std::sqrt(G::Distance2(x, p)) - radius; };
@@ -270,7 +302,18 @@ bool Ascend(const vtkMedialSurfaceQuery& query, const double p[3],
   {
     touches.push_back({ { p[0], p[1], p[2] }, faces[i] });
   }
-  touches.push_back({ { out.Contact[0], out.Contact[1], out.Contact[2] }, out.Shrunk ? -1 : out.ContactTriangle });
+  bool pointContact = out.Shrunk || out.ContactTriangle < 0;
+  if (!pointContact && robust)
+  {
+    // Its plane passes nearer the centre than the contact (beyond rounding, which the
+    // exact tangency below removes): the ball touches the triangle's edge or corner.
+    const double* outward = query.GetNormal(out.ContactTriangle);
+    double cv[3], scratch[9];
+    G::Sub(c, query.GetTriangleVertices(out.ContactTriangle, scratch), cv);
+    pointContact = -G::Dot(outward, cv) < std::sqrt(G::Distance2(c, out.Contact)) * (1.0 - 1e-3);
+    report.Tolerated = pointContact;
+  }
+  touches.push_back({ { out.Contact[0], out.Contact[1], out.Contact[2] }, pointContact ? -1 : out.ContactTriangle });
   std::vector<std::array<double, 3>> directions;
   std::vector<vtkIdType> triangles;
   double contact[3];
@@ -285,7 +328,7 @@ bool Ascend(const vtkMedialSurfaceQuery& query, const double p[3],
   // one, no longer rounds the crease.
   double spread = 0.0;
   bool first = true;
-  for (int steps = 0, slides = 0; steps < limits.MaximumSteps && slides < limits.MaximumSlides;)
+  for (int steps = 0, slides = 0; (steps < limits.MaximumSteps || robust) && slides < limits.MaximumSlides;)
   {
     // The directions from the contacts that still touch the ball to its centre.
     const double touching = r * (1.0 + 1e-7) + 8.0 * slack + spread;
@@ -333,6 +376,7 @@ bool Ascend(const vtkMedialSurfaceQuery& query, const double p[3],
     // overlaps are removed (a contact's plane may also cross the ball beyond its triangle,
     // on a curved wall: that is no overlap to remove).
     double farthest = 0.0;
+    const double untouched = r;
     for (size_t i = 0; keep && i < touches.size(); ++i)
     {
       const double length = std::sqrt(G::Distance2(c, touches[i].Point));
@@ -357,8 +401,17 @@ bool Ascend(const vtkMedialSurfaceQuery& query, const double p[3],
     // Contacts less than the slide angle apart: the ball rounds a convex feature.
     const bool sliding = speed >= limits.CosHalfSlideAngle && directions.size() >= 2 &&
       (!limits.MaySlide || limits.MaySlide(triangles.data(), static_cast<int>(triangles.size()), c, r));
+    if (steps >= limits.MaximumSteps)
+    {
+      if (!sliding)
+      {
+        r = untouched; // (Robust) the ordinary steps are spent: the ball as the Keep ascent ends
+        break;
+      }
+      report.Tolerated = true;
+    }
     ++(sliding ? slides : steps);
-    slid = slid || sliding;
+    report.Slid = report.Slid || sliding;
     double v[3];
     double gamma = HUGE_VAL; // how fast the slowest contact recedes
     for (int k = 0; k < 3; ++k)
@@ -394,6 +447,17 @@ bool Ascend(const vtkMedialSurfaceQuery& query, const double p[3],
       const double d0 = -G::Dot(outward, cv), rate = gamma + G::Dot(outward, v);
       return rate > 0.0 && d0 >= r * (1.0 - 1e-9) ? std::max(0.0, d0 - r) / rate : HUGE_VAL;
     };
+    // The step bound from a surface point x on triangle t: the lower of pointFrom(x) and
+    // t's plane's, unless (Robust) that plane is nearly parallel to the step.
+    auto boundFrom = [&](const double x[3], vtkIdType t) {
+      const double point = pointFrom(x), plane = planeFrom(t);
+      if (robust && plane < point && gamma + G::Dot(query.GetNormal(t), v) < ParallelRate)
+      {
+        report.Tolerated = true;
+        return point;
+      }
+      return std::min(point, plane);
+    };
     // The first bound: the surface where the ray along v leaves; then the largest step
     // whose ball still comes within `allowed` of p (sliding: within SlideReach times its
     // radius).
@@ -404,7 +468,7 @@ bool Ascend(const vtkMedialSurfaceQuery& query, const double p[3],
     }
     double x[3];
     G::AddScaled(c, ray.Distance, v, x);
-    double s = std::min(pointFrom(x), planeFrom(ray.Triangle));
+    double s = boundFrom(x, ray.Triangle);
     auto within = [&](const double centre[3], double radius) {
       return gapAt(centre, radius) <= (sliding ? limits.SlideReach * radius : allowed);
     };
@@ -452,7 +516,7 @@ bool Ascend(const vtkMedialSurfaceQuery& query, const double p[3],
       {
         break;
       }
-      const double next = std::min(pointFrom(hit.Point), planeFrom(hit.Triangle));
+      const double next = boundFrom(hit.Point, hit.Triangle);
       previous = { { hit.Point[0], hit.Point[1], hit.Point[2] }, hit.Triangle };
       if (!(next > 1e-12 * r))
       {
@@ -540,13 +604,13 @@ bool Ascend(const vtkMedialSurfaceQuery& query, const double p[3],
     G::Copy(contact, out.Contact);
     out.Angle = G::AngleDegrees(c, p, contact);
   }
-  return slid;
+  return report;
 }
 }
 
 void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
   const vtkMedialGrowthLimits& limits, const vtkIdType* faces, int faceCount, vtkMedialSampleRecord& out,
-  vtkMedialSampleRecord* plain)
+  vtkMedialSampleRecord* plain, vtkMedialSampleRecord* kept)
 {
   // The ascent is a local search: where the plain one slides, the one that keeps its
   // contacts goes on where the plain one stops early beside a crease (a curved wall,
@@ -554,19 +618,43 @@ void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
   // elsewhere. Both balls are inscribed and come within the same reach of p, so the
   // larger is kept: no value falls below the plain ascent's, and a ball that does not
   // slide (most of a smooth surface) costs one ascent, as before.
+  // The robust one goes on where rounding (a float input's nearly coplanar faces), a
+  // start beside a concave crease or the spent ordinary steps stop the other two; where
+  // its rules changed anything, the Keep ascent runs too, so that no value falls below
+  // what it gives.
   const vtkMedialSampleRecord start = out;
-  const bool slid = Ascend(query, p, limits, faces, faceCount, out, false);
+  const bool slid = Ascend(query, p, limits, faces, faceCount, out, AscentRules::Plain).Slid;
   if (plain)
   {
     *plain = out;
   }
   if (slid)
   {
-    vtkMedialSampleRecord kept = start;
-    Ascend(query, p, limits, faces, faceCount, kept, true);
-    if (kept.Radius > out.Radius)
+    vtkMedialSampleRecord robust = start;
+    if (Ascend(query, p, limits, faces, faceCount, robust, AscentRules::Robust).Tolerated)
     {
-      out = kept;
+      vtkMedialSampleRecord keep = start;
+      Ascend(query, p, limits, faces, faceCount, keep, AscentRules::Keep);
+      if (keep.Radius > out.Radius)
+      {
+        out = keep;
+      }
+      if (kept)
+      {
+        *kept = out;
+      }
     }
+    else if (kept)
+    {
+      *kept = robust.Radius > out.Radius ? robust : out; // the Keep ascent's own
+    }
+    if (robust.Radius > out.Radius)
+    {
+      out = robust;
+    }
+  }
+  else if (kept)
+  {
+    *kept = out;
   }
 }

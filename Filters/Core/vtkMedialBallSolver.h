@@ -123,16 +123,21 @@ struct vtkMedialGrowthLimits
  * Where that ascent slides, a second one that keeps the sliding ball's contacts runs too
  * (the start made exactly tangent to its contacts, a blocked sliding step ended on the
  * largest empty ball on its path, no stop after a small sliding step that found a new
- * contact, a contact found through a triangle's plane only not kept), and the larger
- * ball of the two is the result.
+ * contact, a contact found through a triangle's plane only not kept), and that does not
+ * rely on exact coplanarity (a plane nearly parallel to the step, such as a face coplanar
+ * with a contact to the input's precision, does not bound it; a start contact on its
+ * triangle's edge or corner is a point, not the plane); where those last rules changed
+ * anything, the ascent without them runs as well. The largest ball is the result.
  * The contacts at the start: the planes of `faces` (the triangles around p, when the
  * ball touches p) and out.Contact (on out.ContactTriangle's plane, or a point when
  * out.Shrunk). out.Contact becomes its last contact.
  */
-/// `plain`, when given: the plain ascent's ball (a caller that compares balls at other
-/// points may still want it where the larger one lies too far from them).
+/// `plain`, when given: the plain ascent's ball; `kept`: the larger of the plain ascent's
+/// and the one that keeps its contacts without the rules that do not rely on exact
+/// coplanarity (a caller that compares balls at other points may still want those where
+/// the largest lies too far from them).
 void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
   const vtkMedialGrowthLimits& limits, const vtkIdType* faces, int faceCount, vtkMedialSampleRecord& out,
-  vtkMedialSampleRecord* plain = nullptr);
+  vtkMedialSampleRecord* plain = nullptr, vtkMedialSampleRecord* kept = nullptr);
 
 #endif

@@ -34,6 +34,7 @@
 #include <cmath>
 #include <numeric>
 #include <string>
+#include <tuple>
 
 vtkStandardNewMacro(vtkMedialThickness);
 
@@ -83,10 +84,13 @@ vtkMedialGrowthLimits GrowthLimits(double tolerance, double size)
 // At a sharp vertex p (faces `fan`, local facet size `size`), a small inscribed ball
 // just inside the wedge of its faces, along the direction that makes equal angles with
 // their nearest inward normals (the nearest point of the normals' hull); invalid where
-// no such direction enters the solid (a fold).
+// no such direction enters the solid (a fold). `withinStep`: whether its contact lies
+// less than the step from its centre (as a wedge ball had to before concave creases got
+// one).
 vtkMedialSampleRecord WedgeBall(const vtkMedialSurfaceQuery& query, const vtkMedialTriangleMesh& mesh,
-  const double p[3], const std::vector<vtkIdType>& fan, double size)
+  const double p[3], const std::vector<vtkIdType>& fan, double size, bool& withinStep)
 {
+  withinStep = false;
   vtkMedialSampleRecord ball;
   ball.Valid = false;
   std::vector<std::array<double, 3>> inward;
@@ -113,14 +117,19 @@ vtkMedialSampleRecord WedgeBall(const vtkMedialSurfaceQuery& query, const vtkMed
   G::AddScaled(p, step, d, ball.Centre);
   vtkMedialSurfaceQuery::RayHit ray;
   vtkMedialSurfaceQuery::ClosestHit hit;
+  // The closest point within 2 steps: beside a convex edge a face's plane is nearer than
+  // p, but in a concave one p itself is the closest, exactly a step away, and a search
+  // within the step found it or not as rounding went.
   if (!query.IntersectFromInside(ball.Centre, d, 0.0, -1, ray) || !(ray.Distance > 2.0 * step) ||
-    !query.ClosestPoint(ball.Centre, step, hit))
+    !query.ClosestPoint(ball.Centre, 2.0 * step, hit))
   {
     return ball;
   }
   ball.Valid = true;
   ball.Shrunk = false;
   ball.Radius = hit.Distance;
+  vtkMedialSurfaceQuery::ClosestHit near;
+  withinStep = hit.Distance < step * (1.0 - 1e-9) || query.ClosestPoint(ball.Centre, step, near);
   std::copy(hit.Point, hit.Point + 3, ball.Contact);
   ball.ContactTriangle = hit.Triangle;
   std::copy(p, p + 3, ball.Surface);
@@ -683,7 +692,7 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
   const std::vector<double>& normals, const std::vector<char>& sharp, std::vector<Measure>& measures)
 {
   const vtkIdType np = mesh.GetNumberOfPoints();
-  measures.assign(np, Measure{ NaN, { NaN, NaN, NaN }, NaN, NaN, NaN, { NaN, NaN, NaN } });
+  measures.assign(np, Measure{ NaN, { NaN, NaN, NaN }, NaN, NaN, NaN, { NaN, NaN, NaN }, NaN, { NaN, NaN, NaN } });
   std::vector<std::pair<vtkIdType, vtkIdType>> items; // (vertex, one of its triangles)
   for (vtkIdType v = 0; v < np; ++v)
   {
@@ -755,6 +764,7 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
       return walls.MaySlide(fan, t, count, centre, radius);
     };
     vtkMedialSampleRecord grown = along;
+    bool wedgeWithinStep = true;
     // The vertex's own faces stopped the ball along the mean normal within the tolerance:
     // a face more than theta / 2 from the normal rises into every ball tangent at p along
     // it, however small (a saddle or a concave crease, or a fan whose Max weights put the
@@ -764,7 +774,7 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
       std::find(fan.begin(), fan.end(), along.ContactTriangle) != fan.end();
     if (!along.Valid || stoppedByOwnFaces)
     {
-      grown = WedgeBall(query, mesh, p, fan, size);
+      grown = WedgeBall(query, mesh, p, fan, size, wedgeWithinStep);
       limits.MaximumSteps = 2; // it touches one face first: a second probe finds the other
       limits.Probes = 4;
     }
@@ -774,14 +784,16 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
     }
     if (grown.Valid)
     {
-      vtkMedialSampleRecord plain;
-      vtkMedialGrowBall(query, p, limits, fan.data(), static_cast<int>(fan.size()), grown, &plain);
-      m.PlainRadius = m.Radius;
-      std::copy(m.Centre, m.Centre + 3, m.PlainCentre);
-      if (!(tangent.Valid && tangent.Radius > plain.Radius))
+      vtkMedialSampleRecord plain, kept;
+      vtkMedialGrowBall(query, p, limits, fan.data(), static_cast<int>(fan.size()), grown, &plain, &kept);
+      for (const auto& [ball, radius, centre] : { std::make_tuple(&plain, &m.PlainRadius, m.PlainCentre),
+             std::make_tuple(&kept, &m.KeptRadius, m.KeptCentre) })
       {
-        m.PlainRadius = plain.Radius;
-        std::copy(plain.Centre, plain.Centre + 3, m.PlainCentre);
+        // (Kept: the tangent ball where the wedge ball is a concave crease's.)
+        const bool tangentLarger =
+          tangent.Valid && (tangent.Radius > ball->Radius || (ball == &kept && !wedgeWithinStep));
+        *radius = tangentLarger ? m.Radius : ball->Radius;
+        std::copy(tangentLarger ? m.Centre : ball->Centre, (tangentLarger ? m.Centre : ball->Centre) + 3, centre);
       }
       if (!(tangent.Valid && tangent.Radius > grown.Radius))
       {
@@ -809,7 +821,7 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
     smoothParameters.Normals = &normals;
     smooth = &smoothParameters;
   }
-  measures.assign(cells, Measure{ NaN, { NaN, NaN, NaN }, NaN, NaN, NaN, { NaN, NaN, NaN } });
+  measures.assign(cells, Measure{ NaN, { NaN, NaN, NaN }, NaN, NaN, NaN, { NaN, NaN, NaN }, NaN, { NaN, NaN, NaN } });
   // Each cell is represented by its largest triangle (the first among equals).
   std::vector<vtkIdType> largest(cells, -1);
   for (vtkIdType t = 0; t < mesh.GetNumberOfTriangles(); ++t)
@@ -871,13 +883,13 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
     // tolerance) is admissible here too: where the cell's own ascent stops early (sliding
     // off a crease along a curved wall), the cell does not read thinner than its corners.
     const double size = std::max({ walls.Size[v[0]], walls.Size[v[1]], walls.Size[v[2]] });
-    // The corner's ball by the plain ascent too: where the corner's own ball slid farther
-    // from the cell, that one may still be admissible here.
-    for (int k = 0; k < 6; ++k)
+    // The corner's balls by the plain ascent and without the robust rules too: where the
+    // corner's own ball slid farther from the cell, those may still be admissible here.
+    for (int k = 0; k < 9; ++k)
     {
       const Measure& corner = corners[v[k % 3]];
-      const double radius = k < 3 ? corner.Radius : corner.PlainRadius;
-      const double* centre = k < 3 ? corner.Centre : corner.PlainCentre;
+      const double radius = k < 3 ? corner.Radius : k < 6 ? corner.PlainRadius : corner.KeptRadius;
+      const double* centre = k < 3 ? corner.Centre : k < 6 ? corner.PlainCentre : corner.KeptCentre;
       if (!(radius > m.Radius))
       {
         continue;

@@ -219,6 +219,10 @@ protected:
     // cell may take it from its corner when the larger ball lies too far from the cell.
     double PlainRadius;
     double PlainCentre[3];
+    // Its ball without the ascent's robust rules (vtkMedialGrowBall's `kept`): a cell may
+    // take that one too, where the robust ball went farther from it.
+    double KeptRadius;
+    double KeptCentre[3];
   };
   // The surface split along its creases, and which parts meet along a convex one.
   struct Walls;

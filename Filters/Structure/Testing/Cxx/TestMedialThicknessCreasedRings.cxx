@@ -8,19 +8,23 @@
 // tangent to its own face). The section is a rectangle subdivided into `rows` along each
 // side, so that there are vertices and cells near each crease, not only on it.
 // Known answer: the thinner of h and the walls' distance (ro - ri) cos(pi / N): a ball at
-// a crease slides off it to the wall's thickness. The family: N = 12, 24 and 96 sides,
+// a crease slides off it to the wall's thickness. The family: N = 6, 12, 24 and 96 sides,
 // 2 and 4 rows, a tall ring (the walls are the thinnest) and a flat one (the height is),
-// each also turned. A cell more than 3% below the answer fails, and so does a thin region
-// at 0.97 times it (what --thickness-below reports); so does a vertex of the unturned
-// 96-sided rings (a faceted cylinder under a flat top, as on fandisk). Before the slide
-// kept its contacts (vtkMedialGrowBall), the turned tall ring of 24 sides and 4 rows had 2
-// thin regions (cells at half the wall), and the 96-sided rings' vertices 0.1 from the
-// top's crease read half the wall (tall) or 0.83 of the height (flat).
-// Not asserted, still wrong (printed only; not traced yet): the flat rings turned with 4
-// rows, whose cells beside the crease read 0.5 to 0.97 of the height; vertices of every
-// turned ring but one (24 sides, 2 rows: its minimum reads 0.0002 to 0.009, a crease
-// vertex), and of the 12- and 24-sided rings with 4 rows (0.5 to 0.66 of the answer); the
-// hexagonal ring (N = 6) also reads thin cells when turned.
+// each also turned (its float coordinates then leave a flat wall's faces coplanar only to
+// about 1e-7). A vertex or a cell more than 3% below the answer fails, and so does a thin
+// region at 0.97 times it (what --thickness-below reports).
+// What failed before (issue 39): before the slide kept its contacts (vtkMedialGrowBall),
+// the turned tall ring of 24 sides and 4 rows had 2 thin regions (cells at half the wall),
+// and the 96-sided rings' vertices 0.1 from the top's crease read half the wall (tall) or
+// 0.83 of the height (flat). Before its robust rules, a crease vertex of every turned ring
+// but one read 0.0002 to 0.009 (a face coplanar with a contact to 1e-7 bounded the slide
+// at once), the turned flat rings with 4 rows had cells at 0.47 to 0.97 of the height, the
+// rings of 6, 12 and 24 sides with 4 rows had vertices beside the inner wall's concave
+// creases at 0.5 to 0.66 of the answer (the start contact taken as its face's plane), and
+// the hexagonal ring's concave vertices had no wedge ball at all.
+// Not asserted, still wrong (printed only): vertices of the flat rings of 6 and 24 sides
+// with 4 rows, a quarter of the height from the top or bottom, read 0.5 (24 sides) and
+// 0.72 (6 sides) of the height.
 // Prints the rows (expected, min, median, max over the vertices, then the cells).
 #include "MedialThicknessTestUtilities.h"
 
@@ -113,7 +117,7 @@ int TestMedialThicknessCreasedRings(int, char*[])
   };
   for (const Shape& shape : { Shape{ "tall", 1.0, 0.6, 1.0 }, Shape{ "flat", 1.0, 0.5, 0.3 } })
   {
-    for (int sides : { 12, 24, 96 })
+    for (int sides : { 6, 12, 24, 96 })
     {
       for (int rows : { 2, 4 })
       {
@@ -148,10 +152,9 @@ int TestMedialThicknessCreasedRings(int, char*[])
           medialtest::PrintRow((name + ": cells").c_str(), expected, cells);
           // Not thinner than the answer (less its tolerance); a few percent thicker is the
           // facets' (a ball through a polygon's corners).
-          const bool known = std::string(shape.Name) == "flat" && turned && rows == 4;
-          const bool vertexChecked = sides == 96 && !turned;
+          const bool vertexChecked = !(std::string(shape.Name) == "flat" && rows == 4 && (sides == 6 || sides == 24));
           for (const auto& [what, summary, checked] :
-            { std::make_tuple("vertex", vertices, vertexChecked), std::make_tuple("cell", cells, !known) })
+            { std::make_tuple("vertex", vertices, vertexChecked), std::make_tuple("cell", cells, true) })
           {
             if (checked &&
               !(summary.Count > 0 && summary.Min >= (1.0 - tolerance) * expected &&
@@ -162,7 +165,7 @@ int TestMedialThicknessCreasedRings(int, char*[])
               ++failures;
             }
           }
-          if (!known && thickness->GetThinRegionCount() != 0)
+          if (thickness->GetThinRegionCount() != 0)
           {
             std::printf("FAIL %s: %lld thin regions below %g (%g%% of the area)\n", name.c_str(),
               static_cast<long long>(thickness->GetThinRegionCount()), (1.0 - tolerance) * expected,
