@@ -91,7 +91,8 @@ bool OrientToBoundVolume(Soup& soup, vtkIdType& turned, std::string& error);
 bool Wrap(const Soup& soup, double alpha, double offset, Soup& wrapped, std::string& error);
 
 /// PMP::corefine_and_compute_union of two closed shells, exactly; false when CGAL
-/// cannot (e.g. the union would not be manifold: shells touching along an edge).
+/// cannot (e.g. the union would not be manifold: shells touching along an edge) and
+/// when the union is still two pieces (shells touching at points only).
 bool Union(const Soup& a, const Soup& b, Soup& joined, std::string& error);
 
 /// PMP::experimental::autorefine_and_remove_self_intersections of a closed shell,

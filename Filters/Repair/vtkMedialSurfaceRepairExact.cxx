@@ -11,6 +11,7 @@
 #include "vtkMedialCGALSoup.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -50,6 +51,15 @@ bool Union(const Soup& a, const Soup& b, Soup& joined, std::string& error)
     if (!PMP::corefine_and_compute_union(ma, mb, out))
     {
       error = "CGAL's corefinement cannot make the union (it would not be manifold)";
+      return false;
+    }
+    // Shells that touch at points only come out as the same two shells (CGAL keeps a
+    // point shared by two fans): nothing was joined, and a next round would "join"
+    // them again.
+    auto piece = out.add_property_map<Mesh::Face_index, std::size_t>("f:piece", 0).first;
+    if (PMP::connected_components(out, piece) > 1)
+    {
+      error = "the shells only touch";
       return false;
     }
     FromMesh(out, joined);

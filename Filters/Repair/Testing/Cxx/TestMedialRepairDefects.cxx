@@ -64,7 +64,7 @@ const char* ExpectedStep(const std::string& name)
   {
     return "sheets:";
   }
-  if (name == "cubes sharing an edge")
+  if (name == "cubes sharing an edge" || name == "cubes sharing a vertex")
   {
     return "touch:";
   }
