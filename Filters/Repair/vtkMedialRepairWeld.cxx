@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialRepairWeld.h"
 
+#include "vtkMedialDisjointSets.h"
+
 #include "vtkDoubleArray.h"
 #include "vtkIdList.h"
 #include "vtkMath.h"
@@ -9,51 +11,10 @@
 #include "vtkPolyData.h"
 #include "vtkStaticPointLocator.h"
 
-#include <numeric>
 #include <vector>
 
 namespace vtkMedialRepairWeld
 {
-namespace
-{
-// Union-find whose root is always the lowest point of its cluster: a cluster is named by
-// its geometry, not by the order in which its pairs were found.
-class Clusters
-{
-public:
-  explicit Clusters(vtkIdType n)
-    : Parent(static_cast<size_t>(n))
-  {
-    std::iota(this->Parent.begin(), this->Parent.end(), vtkIdType(0));
-  }
-  vtkIdType Find(vtkIdType i)
-  {
-    while (this->Parent[i] != i)
-    {
-      this->Parent[i] = this->Parent[this->Parent[i]]; // path halving
-      i = this->Parent[i];
-    }
-    return i;
-  }
-  void Unite(vtkIdType a, vtkIdType b)
-  {
-    a = this->Find(a);
-    b = this->Find(b);
-    if (a < b)
-    {
-      this->Parent[b] = a;
-    }
-    else if (b < a)
-    {
-      this->Parent[a] = b;
-    }
-  }
-
-private:
-  std::vector<vtkIdType> Parent;
-};
-}
-
 void Weld(vtkMedialSurfaceRepair::Soup& soup, double tolerance, Counts& counts)
 {
   counts = Counts();
@@ -91,7 +52,9 @@ void Weld(vtkMedialSurfaceRepair::Soup& soup, double tolerance, Counts& counts)
     near[k] = 2.0 * tolerance + 1e-9 * h[k];
   }
   const vtkIdType buckets = static_cast<vtkIdType>(divisions[0]) * divisions[1] * divisions[2];
-  Clusters clusters(n);
+  // A set's root is its lowest point: a cluster's name does not depend on the order in
+  // which its pairs are found.
+  vtkMedialDisjointSets clusters(n);
   vtkNew<vtkIdList> inBucket, found;
   for (vtkIdType b = 0; b < buckets; ++b)
   {
@@ -120,7 +83,7 @@ void Weld(vtkMedialSurfaceRepair::Soup& soup, double tolerance, Counts& counts)
           const vtkIdType j = inBucket->GetId(c);
           if (vtkMath::Distance2BetweenPoints(x, soup.Points[j].data()) <= tolerance2)
           {
-            clusters.Unite(i, j);
+            clusters.Join(i, j);
           }
         }
       }
@@ -129,7 +92,7 @@ void Weld(vtkMedialSurfaceRepair::Soup& soup, double tolerance, Counts& counts)
         locator->FindPointsWithinRadius(tolerance, x, found);
         for (vtkIdType c = 0; c < found->GetNumberOfIds(); ++c)
         {
-          clusters.Unite(i, found->GetId(c));
+          clusters.Join(i, found->GetId(c));
         }
       }
     }
