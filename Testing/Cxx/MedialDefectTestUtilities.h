@@ -11,6 +11,7 @@
 
 #include "vtkAppendPolyData.h"
 #include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkMedialShapeSource.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
@@ -27,6 +28,33 @@
 
 namespace medialtest
 {
+/// A surface's points and polygons as bytes: what the repair's repeat and weld tests compare
+/// between runs.
+inline std::vector<unsigned char> SurfaceBytes(vtkPolyData* pd)
+{
+  std::vector<unsigned char> bytes;
+  auto add = [&bytes](const void* data, size_t size) {
+    const unsigned char* p = static_cast<const unsigned char*>(data);
+    bytes.insert(bytes.end(), p, p + size);
+  };
+  for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    pd->GetPoint(i, x);
+    add(x, sizeof(x));
+  }
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  auto cells = vtk::TakeSmartPointer(pd->GetPolys()->NewIterator());
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    cells->GetCurrentCell(n, ids);
+    add(&n, sizeof(n));
+    add(ids, static_cast<size_t>(n) * sizeof(vtkIdType));
+  }
+  return bytes;
+}
+
 struct Defect
 {
   std::string Name;

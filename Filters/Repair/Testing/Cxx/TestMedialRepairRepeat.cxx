@@ -30,32 +30,6 @@
 
 namespace
 {
-// The output's points and triangles as bytes.
-std::vector<unsigned char> Bytes(vtkPolyData* pd)
-{
-  std::vector<unsigned char> bytes;
-  auto add = [&bytes](const void* data, size_t size) {
-    const unsigned char* p = static_cast<const unsigned char*>(data);
-    bytes.insert(bytes.end(), p, p + size);
-  };
-  for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)
-  {
-    double x[3];
-    pd->GetPoint(i, x);
-    add(x, sizeof(x));
-  }
-  vtkIdType n = 0;
-  const vtkIdType* ids = nullptr;
-  auto cells = vtk::TakeSmartPointer(pd->GetPolys()->NewIterator());
-  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
-  {
-    cells->GetCurrentCell(n, ids);
-    add(&n, sizeof(n));
-    add(ids, static_cast<size_t>(n) * sizeof(vtkIdType));
-  }
-  return bytes;
-}
-
 vtkSmartPointer<vtkPolyData> UvSpheres()
 {
   vtkNew<vtkSphereSource> sphere;
@@ -130,7 +104,7 @@ int TestMedialRepairRepeat(int argc, char* argv[])
       repair->SetNumberOfThreads(1 + run % 2);
       repair->SetMode(c.Mode);
       repair->Update();
-      const std::vector<unsigned char> bytes = Bytes(repair->GetOutput());
+      const std::vector<unsigned char> bytes = medialtest::SurfaceBytes(repair->GetOutput());
       if (run == 0)
       {
         first = bytes;

@@ -38,32 +38,6 @@ namespace
 {
 using medialtest::defects::Point;
 
-// The output's points and triangles as bytes.
-std::vector<unsigned char> Bytes(vtkPolyData* pd)
-{
-  std::vector<unsigned char> bytes;
-  auto add = [&bytes](const void* data, size_t size) {
-    const unsigned char* p = static_cast<const unsigned char*>(data);
-    bytes.insert(bytes.end(), p, p + size);
-  };
-  for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)
-  {
-    double x[3];
-    pd->GetPoint(i, x);
-    add(x, sizeof(x));
-  }
-  vtkIdType n = 0;
-  const vtkIdType* ids = nullptr;
-  auto cells = vtk::TakeSmartPointer(pd->GetPolys()->NewIterator());
-  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
-  {
-    cells->GetCurrentCell(n, ids);
-    add(&n, sizeof(n));
-    add(ids, static_cast<size_t>(n) * sizeof(vtkIdType));
-  }
-  return bytes;
-}
-
 // Points less clusters when every pair at most `tolerance` apart is merged, transitively:
 // all pairs, by brute force (the reference the weld must match).
 vtkIdType MergedByBruteForce(vtkPolyData* pd, double tolerance)
@@ -200,7 +174,7 @@ int TestMedialRepairWeld(int argc, char* argv[])
               out->GetNumberOfPolys() != box->GetNumberOfPolys()))
         ? 1
         : 0;
-      const std::vector<unsigned char> bytes = Bytes(out);
+      const std::vector<unsigned char> bytes = medialtest::SurfaceBytes(out);
       if (run == 0)
       {
         first = bytes;
