@@ -1520,6 +1520,7 @@ public:
     this->Fast.emplace(bvh.Nodes[0], this->PRel, n, this->ConeSin);
     this->FastFollowsBall();
     this->Clear2 = this->ClearOf(this->Radius - this->Slack);
+    this->ClearAll2 = this->ClearOf(this->Radius);
   }
 
   // First a nearby ball's blockers in the order they shrank it: a neighbour's ball
@@ -1655,6 +1656,7 @@ private:
   {
     this->Radius = r;
     this->Clear2 = this->ClearOf(r - this->Slack);
+    this->ClearAll2 = this->ClearOf(r);
     G::AddScaled(this->P, this->Radius, this->N, this->Centre);
     G::AddScaled(this->PRel, this->Radius, this->N, this->CentreRel);
     this->FastFollowsBall();
@@ -1665,16 +1667,26 @@ private:
   }
 
   // The triangle at `slot` cannot block this ball or any smaller one: the ball misses
-  // its plane or its box, or it lies outside the cone where blockers can lie. This
-  // drops the cap's triangles around p (kept aside for InscribeInCap).
-  bool CannotBlock(std::int32_t slot) const
+  // its box or its plane, it lies wholly outside the ball by its distance bound `below`
+  // (Distance2Below), or it lies outside the cone where blockers can lie. This drops the
+  // cap's triangles around p (kept aside for InscribeInCap). The box goes first (in
+  // float; on the 1.55 M horse it dropped 4 times what the plane did), the side of the
+  // cone last: of the triangles that got that far, 1 in 1000 was not in the cone.
+  // A triangle outside the ball is outside every smaller one, the final one included, so
+  // InscribeInCap needs only those that reach into it (the same ones, in the same order).
+  bool CannotBlock(std::int32_t slot, double& below) const
   {
     const LeafTriangle& leaf = this->Tree.LeafTriangles[slot];
+    if (this->Fast->BoxMissesBall(leaf.Lo, leaf.Hi))
+    {
+      return true;
+    }
     if (std::fabs(G::Dot(leaf.Plane, this->Centre) - leaf.Plane[3]) >= this->Radius)
     {
       return true;
     }
-    if (this->Fast->BoxMissesBall(leaf.Lo, leaf.Hi))
+    below = this->Distance2Below(slot);
+    if (below >= this->ClearAll2)
     {
       return true;
     }
@@ -1709,9 +1721,10 @@ private:
   // smaller ball lowers the cap's plane, so it must be looked at again.
   bool ShrinkOn(std::int32_t slot)
   {
-    // The second test: it misses the ball, as Blocks would find at more cost. Most
-    // triangles stop here, so this part is small enough to inline into the walk.
-    return !this->CannotBlock(slot) && !(this->Distance2Below(slot) >= this->Clear2) && this->ShrinkWhileBlocked(slot);
+    // The quick tests, then the distance bound against the ball less the slack: most
+    // triangles stop before ShrinkWhileBlocked, so this part is inlined into the walk.
+    double below;
+    return !this->CannotBlock(slot, below) && !(below >= this->Clear2) && this->ShrinkWhileBlocked(slot);
   }
 
   // All three vertices (so the whole triangle) lie below the plane of the cap at the
@@ -2120,7 +2133,8 @@ private:
   const bool CollectCap; // the cap's surface is set aside for InscribeInCap
   const bool Spheres;    // the tree's inner spheres may drop lanes
   double Radius;
-  double Clear2; // ClearOf(Radius - Slack)
+  double Clear2;    // ClearOf(Radius - Slack)
+  double ClearAll2; // ClearOf(Radius): a triangle whose Distance2Below reaches it is outside the ball
   double Centre[3], PRel[3], CentreRel[3];
   TangentBall& Result;
   Scratch& Work;
