@@ -2,6 +2,7 @@
 #include "vtkMedialSeamSolver.h"
 
 #include "vtkMedialGeometry.h"
+#include "vtkMedialPointCloud.h"
 #include "vtkMedialSort.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialThreads.h"
@@ -9,8 +10,6 @@
 
 #include "vtkIdList.h"
 #include "vtkNew.h"
-#include "vtkPoints.h"
-#include "vtkPolyData.h"
 #include "vtkStaticPointLocator.h"
 
 #include <omp.h>
@@ -1012,18 +1011,7 @@ std::vector<vtkMedialSeamSolver::Pair> vtkMedialSeamSolver::NearestPairs(
   {
     return pairs;
   }
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    points->SetPoint(i, centres + 3 * i);
-  }
-  vtkNew<vtkPolyData> cloud;
-  cloud->SetPoints(points);
-  vtkNew<vtkStaticPointLocator> locator;
-  locator->SetDataSet(cloud);
-  locator->BuildLocator();
+  const auto locator = vtkMedialPointCloud::Locator(centres, n);
   const int wanted = static_cast<int>(std::min<vtkIdType>(k + 1, n));
   std::vector<std::vector<vtkIdType>> neighbours(static_cast<size_t>(n));
 #pragma omp parallel num_threads(std::max(1, threads))
