@@ -89,7 +89,7 @@ std::string TopologyMismatchCause(const vtkMedialTriangleMesh& mesh, const vtkMe
   std::ostringstream cause;
   if (check.IsValidSolid() && check.PinchedVertices > 0)
   {
-    cause << "the surface bounds a valid solid that touches itself at " << check.PinchedClause()
+    cause << "the surface bounds a valid solid but has " << check.PinchedClause()
           << ": the solid's inside is open there, and its topology is not the one the surface's Euler "
              "characteristic gives (a horn torus's inside is a solid torus, its surface a pinched sphere); "
              "this is the shape, not the mesh's fault.";
@@ -430,7 +430,7 @@ int vtkMedialMeshFilter::RequestData(
     if (example >= 0)
     {
       std::copy_n(mesh.GetPoint(example), 3, pinches.PinchedVertex);
-      vtkWarningMacro(<< "The surface touches itself at " << pinches.PinchedClause()
+      vtkWarningMacro(<< "The surface has " << pinches.PinchedClause()
                       << ": at a pinch the solid's inside is open, so its topology is not the one the surface's "
                          "Euler characteristic gives, and the medial mesh's (Euler characteristic "
                       << this->EulerCharacteristic << ", " << this->NumberOfComponents
