@@ -309,7 +309,7 @@ const std::vector<Flag>& Flags()
     { "max-protrusion", nullptr, F::NUMBER, 0, 1, [](Options& o, auto&, double v) { o.MaxProtrusion = v; }, "1e-4" },
     { "balls", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Balls = t; } },
     { "repair", nullptr, F::TEXT, 0, 0, [](Options& o, auto& t, double) { o.Repair = ParseRepair(t); }, "auto" },
-    { "weld-tolerance", nullptr, F::NUMBER, 0, 0.01, [](Options& o, auto&, double v) { o.WeldTolerance = v; }, "1e-6" },
+    { "weld-tolerance", nullptr, F::NUMBER, 0, 0.001, [](Options& o, auto&, double v) { o.WeldTolerance = v; }, "1e-6" },
     { "max-hole-size", nullptr, F::NUMBER, 0, 2, [](Options& o, auto&, double v) { o.MaximumHoleSize = v; }, "0.25" },
     { "wrap-alpha", nullptr, F::NUMBER, 1e-4, 1, [](Options& o, auto&, double v) { o.WrapAlpha = v; }, "0.02" },
     { "wrap-offset", nullptr, F::NUMBER, 1e-6, 0.1, [](Options& o, auto&, double v) { o.WrapOffset = v; }, "0.001" },

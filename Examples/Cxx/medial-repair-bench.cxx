@@ -193,7 +193,7 @@ int Check(const std::vector<std::string>& meshes, int threads, int runs)
     }
     std::vector<double> meshTimes, treeTimes, checkTimes, meshCpu, treeCpu, checkCpu;
     vtkMedialSolidCheck check;
-    vtkIdType triangles = 0;
+    vtkIdType triangles = 0, bound = 0;
     for (int r = 0; r < runs; ++r)
     {
       vtkMedialTriangleMesh mesh;
@@ -219,6 +219,7 @@ int Check(const std::vector<std::string>& meshes, int threads, int runs)
       checkTimes.push_back(Seconds(start));
       checkCpu.push_back(CpuSeconds() - cpu);
       triangles = mesh.GetNumberOfTriangles();
+      bound = mesh.PinchedVertexBound();
     }
     if (checkTimes.empty())
     {
@@ -229,13 +230,19 @@ int Check(const std::vector<std::string>& meshes, int threads, int runs)
     {
       found += (found.empty() ? "" : "; ") + line;
     }
+    if (check.PinchedVertices > 0)
+    {
+      found += (found.empty() ? "" : "; ") + check.PinchedClause();
+    }
+    // The Euler bound: 0 means the pinch count cost nothing.
+    found = (found.empty() ? std::string("valid solid") : found) + " (Euler bound " +
+      std::to_string(bound) + ")";
 
     const double m = Median(meshTimes), t = Median(treeTimes), c = Median(checkTimes);
     const double mc = Median(meshCpu), tc = Median(treeCpu), cc = Median(checkCpu);
     std::printf("| %s | %lld | %.3f | %.3f | %.4f | %.1f%% | %.3f, %.3f, %.4f | %.1f%% | %lld / %lld (%lld) | %s |\n",
       name.c_str(), static_cast<long long>(triangles), m, t, c, 100.0 * c / (m + t), mc, tc, cc,
-      100.0 * cc / (mc + tc), check.PatchesCulled, check.PatchesTested, check.PinchedPatchesCulled,
-      found.empty() ? "valid solid" : found.c_str());
+      100.0 * cc / (mc + tc), check.PatchesCulled, check.PatchesTested, check.PinchedPatchesCulled, found.c_str());
   }
   return 0;
 }

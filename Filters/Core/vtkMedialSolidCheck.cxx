@@ -18,10 +18,6 @@ void vtkMedialSolidCheck::Run(
   this->DegenerateTriangles = mesh.DegenerateTriangles;
   this->DuplicateTriangles = mesh.DuplicateTriangles;
   this->ShellContacts = static_cast<vtkIdType>(mesh.Contacts.size());
-  if (allPairs)
-  {
-    this->PinchedVertices = mesh.CountPinchedVertices();
-  }
   // A closed surface enclosing less than a billionth of its box's cube: two sheets
   // on top of each other, or a flat closed surface.
   const double d = mesh.Diagonal;
@@ -36,6 +32,14 @@ void vtkMedialSolidCheck::Run(
     this->PatchesTested = statistics.CullingTests;
     this->PatchesCulled = statistics.Culled;
     this->PinchedPatchesCulled = statistics.PinchedCulled;
+    // Only where the pair search runs: on a mesh with other defects the repair runs
+    // anyway (and the count is 0 on a mesh that is open or not edge-manifold).
+    vtkIdType example = -1;
+    this->PinchedVertices = mesh.CountPinchedVertices(&example);
+    if (example >= 0)
+    {
+      std::copy_n(mesh.GetPoint(example), 3, this->PinchedVertex);
+    }
   }
 }
 
@@ -106,6 +110,20 @@ std::vector<std::string> vtkMedialSolidCheck::Problems() const
     lines.emplace_back("closed, but it encloses no volume");
   }
   return lines;
+}
+
+std::string vtkMedialSolidCheck::PinchedClause() const
+{
+  if (this->PinchedVertices == 0)
+  {
+    return std::string();
+  }
+  std::ostringstream os;
+  os << this->PinchedVertices
+     << (this->PinchedVertices == 1 ? " pinched vertex" : " pinched vertices")
+     << " (the surface touches itself at a point, its triangles there form two or more fans), e.g. at ("
+     << this->PinchedVertex[0] << ", " << this->PinchedVertex[1] << ", " << this->PinchedVertex[2] << ")";
+  return os.str();
 }
 
 std::string vtkMedialSolidCheck::Cause() const

@@ -76,6 +76,14 @@ bool vtkMedialSolidPreparation::Prepare(vtkPolyData* input, int mode, const Repa
   if (check.IsValid())
   {
     this->Messages = mesh.Warnings();
+    if (check.PinchedVertices > 0)
+    {
+      // Not repaired: a split point is the same point to the preparation, which merges
+      // equal points, and the balls are the same; said, since the medial mesh's topology
+      // is then the inside's (open there), not the one the surface gives.
+      this->Messages.push_back(check.PinchedClause() +
+        ": kept (vtkMedialRepairFilter splits it in its output); the solid's inside is open there");
+    }
     return true;
   }
   if (aborted && aborted())

@@ -656,9 +656,22 @@ bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::func
 // fan of triangles around v. The corners grouped by vertex (linear time), each link is
 // followed from its first edge: a vertex whose walk comes back before all its edges is
 // pinched. Two passes over the corners and a walk per vertex within its own group.
-vtkIdType vtkMedialTriangleMesh::CountPinchedVertices() const
+vtkIdType vtkMedialTriangleMesh::PinchedVertexBound() const
 {
   if (this->BoundaryEdges > 0 || this->NonManifoldEdges > 0 || this->NonOrientableComponents > 0)
+  {
+    return 0;
+  }
+  return std::max<vtkIdType>(0, 2 * this->Components - this->GetEulerCharacteristic());
+}
+
+vtkIdType vtkMedialTriangleMesh::CountPinchedVertices(vtkIdType* example) const
+{
+  if (example)
+  {
+    *example = -1;
+  }
+  if (this->PinchedVertexBound() == 0)
   {
     return 0;
   }
@@ -677,8 +690,8 @@ vtkIdType vtkMedialTriangleMesh::CountPinchedVertices() const
       links[at] = { static_cast<std::int32_t>(v[(k + 1) % 3]), static_cast<std::int32_t>(v[(k + 2) % 3]) };
     });
   const vtkIdType np = this->GetNumberOfPoints();
-  vtkIdType pinched = 0;
-#pragma omp parallel for schedule(dynamic, 4096) reduction(+ : pinched)
+  vtkIdType pinched = 0, lowest = np;
+#pragma omp parallel for schedule(dynamic, 4096) reduction(+ : pinched) reduction(min : lowest)
   for (vtkIdType v = 0; v < np; ++v)
   {
     const vtkIdType begin = first[v], end = first[v + 1];
@@ -702,7 +715,15 @@ vtkIdType vtkMedialTriangleMesh::CountPinchedVertices() const
       at = links[i].To;
       ++steps;
     }
-    pinched += steps < end - begin ? 1 : 0;
+    if (steps < end - begin)
+    {
+      ++pinched;
+      lowest = std::min(lowest, v);
+    }
+  }
+  if (example)
+  {
+    *example = pinched > 0 ? lowest : -1;
   }
   return pinched;
 }

@@ -62,10 +62,17 @@ public:
 
   /// On a closed, edge-manifold, oriented mesh (else 0): the vertices whose triangles
   /// form two or more fans that share only the vertex (pinched, non-manifold vertices:
-  /// the surface touches itself there, as two shells touching at a point do). Two
-  /// passes over the corners: about as much as the solid check's pair search on a clean
-  /// mesh, so not part of Build (vtkMedialSolidCheck::Run counts them when asked).
-  vtkIdType CountPinchedVertices() const;
+  /// the surface touches itself there, as two shells touching at a point do), and in
+  /// `example` (when given) the lowest such vertex, or -1. Free when the Euler
+  /// characteristic rules them out (PinchedVertexBound() == 0, e.g. on any mesh whose
+  /// shells are all of genus 0); else two passes over the corners.
+  vtkIdType CountPinchedVertices(vtkIdType* example = nullptr) const;
+  /// On a closed, edge-manifold, oriented mesh (else 0): 2 Shells - (V - E + F), which
+  /// is the number of extra fans at pinched vertices plus twice the shells' total genus
+  /// (splitting every pinched vertex into its fans gives closed orientable surfaces,
+  /// one per shell, each of Euler characteristic 2 - 2 genus). So 0 means no pinched
+  /// vertex, and an odd value at least one.
+  vtkIdType PinchedVertexBound() const;
   /// Frees the normals (24 bytes a triangle) for a caller that reads them from a built
   /// vtkMedialSurfaceQuery instead (its tree keeps the same values); GetNormal and the
   /// Normals array must not be used afterwards.

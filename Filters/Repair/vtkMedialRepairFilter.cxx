@@ -32,6 +32,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <ctime>
 #include <map>
 #include <memory>
@@ -492,8 +493,45 @@ private:
   bool RemoveSheets(Soup& work, bool& wrap);
   void Measure(const vtkMedialTriangleMesh& input, vtkPolyData* output, const vtkMedialSurfaceQuery* outputQuery);
   void Line(const std::string& text) { this->Self->Report.push_back(text); }
-  // Ends the current stage's timer and starts one for `next`.
-  void Stage(const char* next)
+  // Ends the current stage's timer and starts one for `next`; reports the progress the
+  // steps before `next` stand for and polls the caller's abort. False (error "aborted")
+  // when aborted: the step is not started.
+  bool Stage(const char* next)
+  {
+    this->EndStage(next);
+    if (!next)
+    {
+      return true;
+    }
+    // The share of the work done before each step (the union, self-intersection and
+    // wrap steps, "shells" and "wrap", take most of a repair's time).
+    struct Step
+    {
+      const char* Name;
+      const char* Text;
+      double Done;
+    };
+    static const Step steps[] = { { "check", "Checking the surface", 0.0 }, { "weld", "Welding", 0.1 },
+      { "clean", "Cleaning and orienting", 0.15 }, { "holes", "Filling holes", 0.25 },
+      { "shells", "Joining and resolving shells", 0.35 }, { "sheets", "Removing inner sheets", 0.7 },
+      { "orient", "Checking the result", 0.75 }, { "wrap", "Wrapping", 0.8 },
+      { "pinch", "Splitting pinched vertices", 0.9 }, { "measure", "Measuring the change", 0.92 } };
+    for (const Step& step : steps)
+    {
+      if (std::strcmp(step.Name, next) == 0)
+      {
+        this->Self->SetProgressText(step.Text);
+        this->Self->UpdateProgress(step.Done);
+      }
+    }
+    if (this->Self->GetAbortExecute())
+    {
+      this->Fail("aborted");
+      return false;
+    }
+    return true;
+  }
+  void EndStage(const char* next)
   {
     const auto now = std::chrono::steady_clock::now();
     const double cpu = CpuSeconds();
@@ -1323,7 +1361,10 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
   }
 
   // 0. The check, as every filter's preparation makes it.
-  this->Stage("check");
+  if (!this->Stage("check"))
+  {
+    return false;
+  }
   // The input's mesh, tree and check: the caller's when it made them on this input
   // (SetCheckedInput: a filter's preparation), else built here.
   const PreparedPtr original = std::make_shared<Prepared>();
@@ -1338,7 +1379,7 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
   }
   else
   {
-    if (!original->OwnMesh.Build(input, error))
+    if (!original->OwnMesh.Build(input, error, [self]() { return self->GetAbortExecute() != 0; }))
     {
       if (error.find("no non-degenerate") == std::string::npos)
       {
@@ -1382,7 +1423,10 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
       self->IntersectingPairs = static_cast<vtkIdType>(original->Exact.size());
       valid = original->Exact.empty();
     }
-    if (valid && rewound == 0 && turned == 0)
+    // A pinched vertex is no defect to the preparation (the same solid, the same
+    // balls), but this filter's output is to be manifold at its vertices too.
+    const bool pinched = check.PinchedVertices > 0;
+    if (valid && rewound == 0 && turned == 0 && !pinched)
     {
       self->InputWasValid = true;
       output->ShallowCopy(input);
@@ -1392,6 +1436,10 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
     if (self->Mode == NONE)
     {
       std::vector<std::string> problems = valid ? std::vector<std::string>() : check.Problems();
+      if (pinched)
+      {
+        problems.push_back(check.PinchedClause());
+      }
       if (rewound > 0)
       {
         problems.push_back(Plural(rewound, "triangle", "triangles") + " wound against the rest of their shell");
@@ -1411,7 +1459,10 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
   Soup triangulated = Triangulated(input);
   if (wrapNow)
   {
-    this->Stage("wrap");
+    if (!this->Stage("wrap"))
+    {
+      return false;
+    }
     if (!wrapSoup(triangulated))
     {
       return false;
@@ -1423,7 +1474,10 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
     vtkSmartPointer<vtkPolyData> out = ToPolyData(wrapped);
     output->ShallowCopy(out);
     self->Changed = true;
-    this->Stage("measure");
+    if (!this->Stage("measure"))
+    {
+      return false;
+    }
     this->Measure(m0, output, nullptr);
     this->Stage(nullptr);
     return true;
@@ -1433,7 +1487,10 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
   // mesh, whose equal points are already one point: points within the tolerance are
   // merged transitively, by union-find over the pairs a locator finds, so the clusters
   // depend on the coordinates alone, not on threads or order (vtkMedialRepairWeld.h).
-  this->Stage("weld");
+  if (!this->Stage("weld"))
+  {
+    return false;
+  }
   Soup work = SoupOf(m0);
   const vtkIdType inputTriangles = static_cast<vtkIdType>(triangulated.Triangles.size());
   bool welded = false;
@@ -1450,6 +1507,15 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
       std::ostringstream os;
       os << "weld: " << Plural(self->WeldedPoints, "point", "points") << " merged within " << self->WeldTolerance
          << " of the diagonal";
+      // A weld of coincident corners (a soup, jitter far below the tolerance) collapses
+      // no triangle; one that collapses many merges real neighbours: the tolerance
+      // reaches the mesh's short edges, and its transitive clusters grow over regions.
+      if (counts.DroppedTriangles > 0.01 * static_cast<double>(inputTriangles))
+      {
+        os << "; warning: it collapsed " << Plural(counts.DroppedTriangles, "triangle", "triangles") << " ("
+           << 100.0 * static_cast<double>(counts.DroppedTriangles) / static_cast<double>(inputTriangles)
+           << "% of the input's): the tolerance reaches the mesh's short edges, lower it (WeldTolerance, --weld-tolerance)";
+      }
       this->Line(os.str());
     }
   }
@@ -1463,7 +1529,10 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
   const bool clean = welded || m0.NonManifoldEdges > 0 || m0.NonOrientableComponents > 0 ||
     m0.DegenerateTriangles > 0 || m0.DuplicateTriangles > 0 || m0.BoundaryEdges > 0;
   vtkIdType borderEdges = m0.BoundaryEdges;
-  this->Stage("clean");
+  if (!this->Stage("clean"))
+  {
+    return false;
+  }
   if (clean)
   {
     vtkMedialSurfaceRepair::CleanCounts counts;
@@ -1499,7 +1568,10 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
   }
 
   // 3. Holes.
-  this->Stage("holes");
+  if (!this->Stage("holes"))
+  {
+    return false;
+  }
   if (borderEdges > 0)
   {
     std::vector<vtkMedialSurfaceRepair::Hole> holes;
@@ -1588,12 +1660,18 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
     this->WorkIsInput = true;
   }
   bool wrap = false;
-  this->Stage("shells");
+  if (!this->Stage("shells"))
+  {
+    return false;
+  }
   if (!this->Shells(work, wrap))
   {
     return false;
   }
-  this->Stage("sheets");
+  if (!this->Stage("sheets"))
+  {
+    return false;
+  }
   if (!this->RemoveSheets(work, wrap))
   {
     return false;
@@ -1618,7 +1696,10 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
   }
 
   // The final check, and the orientation to bound a volume.
-  this->Stage("orient");
+  if (!this->Stage("orient"))
+  {
+    return false;
+  }
   PreparedPtr result;
   if (!wrap && !this->Patch)
   {
@@ -1645,7 +1726,10 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
     }
   }
   // 7. The wrap.
-  this->Stage("wrap");
+  if (!this->Stage("wrap"))
+  {
+    return false;
+  }
   if (wrap)
   {
     if (!wrapSoup(work.Triangles.empty() ? triangulated : work))
@@ -1665,10 +1749,35 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
     this->Line(os.str());
     work = wrapped;
   }
+  // 8. Pinches: a point where the solid touches itself (its triangles form two or more
+  // fans) gets a copy per fan, at the same place, so that the output is manifold at
+  // its vertices too (a printer's slicer asks for that). The wrap's output has none,
+  // and the Euler characteristic rules them out for free on most surfaces.
+  if (!this->Stage("pinch"))
+  {
+    return false;
+  }
+  if (!wrap)
+  {
+    const vtkMedialTriangleMesh& last = result ? *result->Mesh : m0;
+    if (last.PinchedVertexBound() > 0)
+    {
+      const vtkIdType split = vtkMedialSurfaceRepair::SplitPinchedPoints(work);
+      if (split > 0)
+      {
+        self->SplitPoints += split;
+        this->Line("pinch: " + Plural(split, "point", "points") +
+          " added where the surface touches itself at a vertex (a copy per extra fan of triangles, at the same place)");
+      }
+    }
+  }
   vtkSmartPointer<vtkPolyData> out = ToPolyData(work);
   output->ShallowCopy(out);
   self->Changed = true;
-  this->Stage("measure");
+  if (!this->Stage("measure"))
+  {
+    return false;
+  }
   if (!wrap && this->Patch && this->WorkIsInput)
   {
     this->MeasurePatch(m0, *this->Patch);
@@ -1764,12 +1873,19 @@ int vtkMedialRepairFilter::RequestData(
     return 1; // piece 0 repairs the whole surface; the other pieces stay empty
   }
   vtkInternals internals(this);
-  if (!internals.Run(input, output))
+  const bool done = internals.Run(input, output);
+  if (!done && this->GetAbortExecute())
+  {
+    output->Initialize(); // aborted: an empty output, as VTK's filters leave it
+    return 1;
+  }
+  if (!done)
   {
     vtkErrorMacro(<< "Cannot repair the surface: " << internals.GetError() << ".");
     return 0;
   }
   this->Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  this->UpdateProgress(1.0);
 
   // The report as field data.
   vtkFieldData* fd = output->GetFieldData();

@@ -195,6 +195,40 @@ bool Clean(Soup& soup, CleanCounts& counts, std::string& error, double tinyArea)
   return true;
 }
 
+vtkIdType SplitPinchedPoints(Soup& soup)
+{
+  std::vector<Point> points;
+  Polygons polygons;
+  ToPolygons(soup, points, polygons);
+  if (PMP::is_polygon_soup_a_polygon_mesh(polygons))
+  {
+    return 0;
+  }
+  vtkIdType split = 0;
+  CountDuplicates visitor;
+  visitor.Duplicated = &split;
+  PMP::orient_polygon_soup(points, polygons, CGAL::parameters::visitor(visitor));
+  if (split == 0)
+  {
+    return 0;
+  }
+  // The copies are appended after the points; the triangles as they are now (the
+  // copies' ids in them), their winding unchanged.
+  for (std::size_t i = soup.Points.size(); i < points.size(); ++i)
+  {
+    soup.Points.push_back({ CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()),
+      CGAL::to_double(points[i].z()) });
+  }
+  for (std::size_t t = 0; t < polygons.size(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      soup.Triangles[t][k] = static_cast<vtkIdType>(polygons[t][k]);
+    }
+  }
+  return split;
+}
+
 bool FillHoles(Soup& soup, double maximumSize, std::vector<Hole>& holes, std::string& error)
 {
   holes.clear();

@@ -82,6 +82,12 @@ std::vector<char> IntersectingPairs(const std::vector<std::array<double, 18>>& c
 /// empty); true when none is left there.
 bool RemoveSelfIntersections(Soup& soup, const std::vector<vtkIdType>& near, int rings, std::string& error);
 
+/// A closed, edge-manifold, oriented soup made vertex-manifold: every point whose
+/// triangles form two or more fans (a pinch) gets one copy per fan after the first, at
+/// the same place (as PMP::orient_polygon_soup duplicates them; the soup's winding is
+/// kept, as it is already consistent). Returns the copies added.
+vtkIdType SplitPinchedPoints(Soup& soup);
+
 /// PMP::orient_to_bound_a_volume on a closed soup; `turned` counts the connected
 /// components it turned over.
 bool OrientToBoundVolume(Soup& soup, vtkIdType& turned, std::string& error);

@@ -87,6 +87,14 @@ std::string TopologyMismatchCause(const vtkMedialTriangleMesh& mesh, const vtkMe
   check.Run(mesh, query, threads, true);
   check.Decide(mesh, vtkMedialRepairFilter::ExactPairTest);
   std::ostringstream cause;
+  if (check.IsValidSolid() && check.PinchedVertices > 0)
+  {
+    cause << "the surface bounds a valid solid but has " << check.PinchedClause()
+          << ": the solid's inside is open there, and its topology is not the one the surface's Euler "
+             "characteristic gives (a horn torus's inside is a solid torus, its surface a pinched sphere); "
+             "this is the shape, not the mesh's fault.";
+    return cause.str();
+  }
   if (check.IsValidSolid())
   {
     cause << "the surface bounds a valid solid (closed, manifold, oriented, no intersecting triangles), so the "
@@ -410,6 +418,23 @@ int vtkMedialMeshFilter::RequestData(
                       << " and " << this->NumberOfComponents << " component(s), the solid "
                       << this->SolidEulerCharacteristic << " and " << this->SolidComponents << ": "
                       << TopologyMismatchCause(mesh, query, threads));
+    }
+  }
+  else if (closed && mesh.NonManifoldEdges == 0 && mesh.NonOrientableComponents == 0)
+  {
+    // An odd Euler characteristic of a closed, edge-manifold, oriented surface: it is
+    // pinched (PinchedVertexBound is odd), and its solid's topology is not half of it.
+    vtkMedialSolidCheck pinches;
+    vtkIdType example = -1;
+    pinches.PinchedVertices = mesh.CountPinchedVertices(&example);
+    if (example >= 0)
+    {
+      std::copy_n(mesh.GetPoint(example), 3, pinches.PinchedVertex);
+      vtkWarningMacro(<< "The surface has " << pinches.PinchedClause()
+                      << ": at a pinch the solid's inside is open, so its topology is not the one the surface's "
+                         "Euler characteristic gives, and the medial mesh's (Euler characteristic "
+                      << this->EulerCharacteristic << ", " << this->NumberOfComponents
+                      << " component(s)) is not checked against it.");
     }
   }
   if (this->RemainingTetrahedra > 0)

@@ -525,6 +525,57 @@ inline Defect CubesSharingAVertex()
   };
   return { "cubes sharing a vertex", TwoCubes(1, 1, 1), depth, 1e-9, 0.5, 2, false };
 }
+
+/// A horn torus: ring radius 0.5, tube radius 0.5, so that the tube touches the axis at
+/// the origin, where all its inner triangles meet in one point: a pinched vertex (two
+/// fans, the upper and the lower, that share only it) within one shell, which is
+/// otherwise closed, manifold and free of intersections. Solid: the horn torus (its
+/// inside an open solid torus: Euler characteristic 0; largest ball 0.5).
+inline Defect HornTorus(int around = 48, int tube = 24)
+{
+  const double ring = 0.5, radius = 0.5;
+  std::vector<Point> x;
+  x.push_back({ 0, 0, 0 }); // the pinch, at tube angle pi
+  const int half = tube / 2;
+  auto id = [&](int i, int j) {
+    j = ((j % tube) + tube) % tube;
+    return j == half ? vtkIdType(0) : vtkIdType(1 + (i % around) * (tube - 1) + (j < half ? j : j - 1));
+  };
+  for (int i = 0; i < around; ++i)
+  {
+    const double u = 2.0 * M_PI * i / around;
+    for (int j = 0; j < tube; ++j)
+    {
+      if (j == half)
+      {
+        continue;
+      }
+      const double v = 2.0 * M_PI * j / tube, rho = ring + radius * std::cos(v);
+      x.push_back({ rho * std::cos(u), rho * std::sin(u), radius * std::sin(v) });
+    }
+  }
+  std::vector<std::array<vtkIdType, 3>> tris;
+  for (int i = 0; i < around; ++i)
+  {
+    for (int j = 0; j < tube; ++j)
+    {
+      const vtkIdType a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      if (a != b)
+      {
+        tris.push_back({ a, b, c });
+      }
+      if (c != d)
+      {
+        tris.push_back({ a, c, d });
+      }
+    }
+  }
+  auto depth = [ring, radius](const double y[3]) {
+    const double rho = std::sqrt(y[0] * y[0] + y[1] * y[1]);
+    return radius - std::sqrt((rho - ring) * (rho - ring) + y[2] * y[2]);
+  };
+  return { "horn torus", Mesh(x, tris), depth, 0.01, radius, 0, false };
+}
 }
 
 /// The generated defects, in the order.
