@@ -440,46 +440,6 @@ vtkSmartPointer<vtkPolyData> PinchedSheets(bool crossing, int perUnit = 16, int 
   return medialtest::defects::Mesh(x, tris);
 }
 
-// A horn torus (tube radius = ring radius = 1): its inner equator is one point, the
-// origin, where two cusps of the surface meet, one from above and one from below: a
-// closed, edge-manifold surface of one shell with one pinched vertex.
-vtkSmartPointer<vtkPolyData> HornTorus(int around = 24, int ring = 24)
-{
-  using namespace medialtest::defects;
-  const int half = ring / 2; // ring even: the ring at angle pi is the origin
-  std::vector<Point> x = { { 0.0, 0.0, 0.0 } };
-  for (int j = 0; j < ring; ++j)
-  {
-    for (int i = 0; j != half && i < around; ++i)
-    {
-      const double u = 2.0 * vtkMath::Pi() * i / around, v = 2.0 * vtkMath::Pi() * j / ring;
-      x.push_back({ (1.0 + std::cos(v)) * std::cos(u), (1.0 + std::cos(v)) * std::sin(u), std::sin(v) });
-    }
-  }
-  auto id = [&](int i, int j) -> vtkIdType {
-    i %= around;
-    j %= ring;
-    return j == half ? 0 : 1 + (j < half ? j : j - 1) * around + i;
-  };
-  std::vector<std::array<vtkIdType, 3>> tris;
-  for (int j = 0; j < ring; ++j)
-  {
-    for (int i = 0; i < around; ++i)
-    {
-      const vtkIdType a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      if (a != b && b != c)
-      {
-        tris.push_back({ a, b, c });
-      }
-      if (c != d && d != a)
-      {
-        tris.push_back({ a, c, d });
-      }
-    }
-  }
-  return medialtest::defects::Mesh(x, tris);
-}
-
 // Two boxes, one sliding over the other's top face by half its width: coplanar faces
 // that overlap, and edges that cross in that plane.
 vtkSmartPointer<vtkPolyData> CoplanarBoxes()
@@ -607,7 +567,7 @@ int TestMedialRepairPairs(int, char*[])
       vtkIdType Pinched;
     };
     const PinchCase pinchCases[] = {
-      { "horn torus", HornTorus(), 1 },
+      { "horn torus", medialtest::defects::HornTorus().Surface, 1 },
       { "cubes sharing a vertex", medialtest::defects::CubesSharingAVertex().Surface, 1 },
       { "cubes sharing an edge", medialtest::defects::CubesSharingAnEdge().Surface, 0 },
       { "pinched sheets apart", PinchedSheets(false), 1 },
