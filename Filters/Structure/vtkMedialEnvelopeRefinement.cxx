@@ -56,15 +56,34 @@ double vtkMedialEnvelopeRefinement::Probe(
   {
     return std::max(0.0, bound);
   }
-  vtkMedialSurfaceQuery::ClosestHit hit;
-  return r > 0.0 && query.ClosestPoint(c, r, hit) ? r - hit.Distance : 0.0;
+  // Only whether the probe protrudes beyond the tolerance decides, that is whether a
+  // triangle lies nearer than r - tolerance: the triangles within that reach (padded
+  // for the rounding of the test below), read in one walk that never shrinks, where a
+  // nearest-point walk to r had to find the nearest (most probes that need a query
+  // protrude by less than the tolerance). When one protrudes beyond it, the largest
+  // such protrusion is the nearest triangle's, the same number as that walk's.
+  const double reach = (r - this->Tolerance) * (1.0 + 1e-9) + 1e-12 * query.GetMesh()->Diagonal;
+  double worst = -HUGE_VAL;
+  if (reach > 0.0)
+  {
+    thread_local std::vector<vtkMedialSurfaceQuery::ClosestHit> hits;
+    query.TrianglesWithin(c, reach, hits);
+    for (const auto& hit : hits)
+    {
+      worst = std::max(worst, r - hit.Distance);
+    }
+  }
+  // Otherwise the tolerance stands for the probe's protrusion (an upper bound).
+  return worst > this->Tolerance ? worst : std::max(0.0, std::min(r, this->Tolerance));
 }
 
 double vtkMedialEnvelopeRefinement::ProbeEdge(
   const Mesh& mesh, const vtkMedialSurfaceQuery& query, vtkIdType a, vtkIdType b) const
 {
+  // Only whether an edge protrudes beyond the tolerance decides: stop at the first
+  // probe that does (its value stands for the edge's; the rest need no query).
   double worst = 0.0;
-  for (vtkIdType i = 1; i < Steps; ++i)
+  for (vtkIdType i = 1; i < Steps && worst <= this->Tolerance; ++i)
   {
     const vtkIdType probe[4] = { a, b, Steps - i, i };
     worst = std::max(worst, this->Probe(mesh, query, probe, 2));
@@ -75,10 +94,10 @@ double vtkMedialEnvelopeRefinement::ProbeEdge(
 double vtkMedialEnvelopeRefinement::ProbeInterior(
   const Mesh& mesh, const vtkMedialSurfaceQuery& query, const std::array<vtkIdType, 3>& t) const
 {
-  double worst = 0.0;
+  double worst = 0.0; // stops past the tolerance, as ProbeEdge does
   for (vtkIdType i = 1; i < Steps; ++i)
   {
-    for (vtkIdType j = 1; i + j < Steps; ++j)
+    for (vtkIdType j = 1; i + j < Steps && worst <= this->Tolerance; ++j)
     {
       const vtkIdType probe[6] = { t[0], t[1], t[2], i, j, Steps - i - j };
       worst = std::max(worst, this->Probe(mesh, query, probe, 3));
@@ -401,10 +420,15 @@ vtkIdType vtkMedialEnvelopeRefinement::Refine(const Mesh& mesh, const vtkMedialS
     for (vtkIdType k = 0; k < nd; ++k)
     {
       const vtkIdType t = dirty[order[k]];
-      double worst = this->ProbeInterior(mesh, query, triangles[t]);
+      // The sides first (probed already): a triangle a side marks needs no interior probe.
+      double worst = 0.0;
       for (int j = 0; j < 3; ++j)
       {
         worst = std::max(worst, sides.Get(Sorted(triangles[t][j], triangles[t][(j + 1) % 3])));
+      }
+      if (worst <= tolerance)
+      {
+        worst = std::max(worst, this->ProbeInterior(mesh, query, triangles[t]));
       }
       triangleProtrusion[t] = worst;
     }
