@@ -56,25 +56,9 @@ double vtkMedialEnvelopeRefinement::Probe(
   {
     return std::max(0.0, bound);
   }
-  // Only whether the probe protrudes beyond the tolerance decides, that is whether a
-  // triangle lies nearer than r - tolerance: the triangles within that reach (padded
-  // for the rounding of the test below), read in one walk that never shrinks, where a
-  // nearest-point walk to r had to find the nearest (most probes that need a query
-  // protrude by less than the tolerance). When one protrudes beyond it, the largest
-  // such protrusion is the nearest triangle's, the same number as that walk's.
-  const double reach = (r - this->Tolerance) * (1.0 + 1e-9) + 1e-12 * query.GetMesh()->Diagonal;
-  double worst = -HUGE_VAL;
-  if (reach > 0.0)
-  {
-    thread_local std::vector<vtkMedialSurfaceQuery::ClosestHit> hits;
-    query.TrianglesWithin(c, reach, hits);
-    for (const auto& hit : hits)
-    {
-      worst = std::max(worst, r - hit.Distance);
-    }
-  }
-  // Otherwise the tolerance stands for the probe's protrusion (an upper bound).
-  return worst > this->Tolerance ? worst : std::max(0.0, std::min(r, this->Tolerance));
+  // Only a protrusion beyond the tolerance decides (most probes that get here protrude by less).
+  thread_local std::vector<vtkMedialSurfaceQuery::ClosestHit> hits;
+  return vtkMedialEnvelope::ProtrusionBeyond(query, c, r, this->Tolerance, hits);
 }
 
 double vtkMedialEnvelopeRefinement::ProbeEdge(
