@@ -2,13 +2,11 @@
 #include "vtkMedialRepairWeld.h"
 
 #include "vtkMedialDisjointSets.h"
+#include "vtkMedialPointCloud.h"
 
-#include "vtkDoubleArray.h"
 #include "vtkIdList.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
-#include "vtkPoints.h"
-#include "vtkPolyData.h"
 #include "vtkStaticPointLocator.h"
 
 #include <vector>
@@ -23,17 +21,8 @@ void Weld(vtkMedialSurfaceRepair::Soup& soup, double tolerance, Counts& counts)
   {
     return;
   }
-  vtkNew<vtkDoubleArray> coordinates;
-  coordinates->SetNumberOfComponents(3);
-  // The soup's coordinates, read in place (the array does not own them).
-  coordinates->SetArray(soup.Points[0].data(), 3 * n, 1);
-  vtkNew<vtkPoints> points;
-  points->SetData(coordinates);
-  vtkNew<vtkPolyData> cloud;
-  cloud->SetPoints(points);
-  vtkNew<vtkStaticPointLocator> locator;
-  locator->SetDataSet(cloud);
-  locator->BuildLocator();
+  // The soup's coordinates, read in place.
+  const auto locator = vtkMedialPointCloud::Locator(soup.Points[0].data(), n);
 
   // The pairs, bucket by bucket. A point farther than the tolerance from its bucket's
   // faces has all its neighbours in its bucket: it is compared with the bucket's later

@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedialCoverageSelection.h"
 
-#include "vtkDoubleArray.h"
+#include "vtkMedialPointCloud.h"
+
 #include "vtkIdList.h"
 #include "vtkNew.h"
-#include "vtkPoints.h"
-#include "vtkPolyData.h"
 #include "vtkStaticPointLocator.h"
 
 #include <algorithm>
@@ -26,16 +25,7 @@ void vtkMedialCoverageSelection::FindPairs(const std::vector<double>& centres, c
 {
   const vtkIdType candidates = static_cast<vtkIdType>(radii.size());
   const vtkIdType count = static_cast<vtkIdType>(samples.size() / 3);
-  vtkNew<vtkDoubleArray> coordinates;
-  coordinates->SetNumberOfComponents(3);
-  coordinates->SetArray(const_cast<double*>(samples.data()), 3 * count, 1); // not copied, not freed
-  vtkNew<vtkPoints> points;
-  points->SetData(coordinates);
-  vtkNew<vtkPolyData> cloud;
-  cloud->SetPoints(points);
-  vtkNew<vtkStaticPointLocator> locator;
-  locator->SetDataSet(cloud);
-  locator->BuildLocator();
+  const auto locator = vtkMedialPointCloud::Locator(samples.data(), count);
 
   std::vector<std::vector<std::pair<vtkIdType, float>>> rows(static_cast<size_t>(candidates));
 #pragma omp parallel num_threads(threads)

@@ -30,6 +30,7 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <functional>
 #include <map>
 #include <random>
 #include <set>
@@ -249,6 +250,57 @@ vtkSmartPointer<vtkPolyData> LoopedStrip(int steps)
   });
 }
 
+// Closes open sheets off into solids: every boundary edge (u, w) (an edge without its
+// reverse) for which walled(u, w) holds gets a wall down to z = -10 and a fan from a
+// bottom point (0, 0, -20); every other one a triangle up to `apex`. The walls and the
+// bottom are far from the sheets, so the tree keeps the sheets in subtrees of their own.
+void CloseSheets(std::vector<medialtest::defects::Point>& x, std::vector<std::array<vtkIdType, 3>>& tris,
+  const medialtest::defects::Point& apexPoint, const std::function<bool(vtkIdType, vtkIdType)>& walled)
+{
+  std::set<std::pair<vtkIdType, vtkIdType>> directed;
+  for (const auto& t : tris)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      directed.insert({ t[k], t[(k + 1) % 3] });
+    }
+  }
+  const double depth = 20.0;
+  const vtkIdType bottom = static_cast<vtkIdType>(x.size());
+  x.push_back({ 0.0, 0.0, -depth });
+  const vtkIdType apex = static_cast<vtkIdType>(x.size());
+  x.push_back(apexPoint);
+  std::map<vtkIdType, vtkIdType> below; // a border point -> the wall's foot under it
+  auto foot = [&](vtkIdType p) {
+    const auto found = below.find(p);
+    if (found != below.end())
+    {
+      return found->second;
+    }
+    x.push_back({ x[p][0], x[p][1], -depth / 2 });
+    return below[p] = static_cast<vtkIdType>(x.size() - 1);
+  };
+  for (const auto& e : directed)
+  {
+    if (directed.count({ e.second, e.first }))
+    {
+      continue;
+    }
+    const vtkIdType u = e.first, w = e.second;
+    if (walled(u, w))
+    {
+      const vtkIdType fu = foot(u), fw = foot(w);
+      tris.push_back({ w, u, fu });
+      tris.push_back({ w, fu, fw });
+      tris.push_back({ bottom, fw, fu });
+    }
+    else
+    {
+      tris.push_back({ w, u, apex });
+    }
+  }
+}
+
 // Two sheets over the plane glued crosswise along a slit (the real picture of the
 // Riemann surface of sqrt((z - a)(z + a))), closed into one shell: one sheet over the
 // square [-2, 2]^2, the other over [-1, 1]^2, both facing +z within about 45 degrees, joined along y = 0, |x| < a, so that crossing the slit from one sheet leads
@@ -314,49 +366,10 @@ vtkSmartPointer<vtkPolyData> BranchedSheets(int perUnit = 20, double a = 0.4, do
       }
     }
   }
-  // The two sheets' boundary edges (those without their reverse), closed off.
-  std::set<std::pair<vtkIdType, vtkIdType>> directed;
-  for (const auto& t : tris)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      directed.insert({ t[k], t[(k + 1) % 3] });
-    }
-  }
-  const double depth = 20.0;
-  const vtkIdType bottom = static_cast<vtkIdType>(x.size());
-  x.push_back({ 0.0, 0.0, -depth });
-  const vtkIdType apex = static_cast<vtkIdType>(x.size());
-  x.push_back({ 0.0, 0.0, depth });
-  std::map<vtkIdType, vtkIdType> below; // a point of the outer square -> the wall's foot under it
-  auto foot = [&](vtkIdType p) {
-    const auto found = below.find(p);
-    if (found != below.end())
-    {
-      return found->second;
-    }
-    x.push_back({ x[p][0], x[p][1], -depth / 2 });
-    return below[p] = static_cast<vtkIdType>(x.size() - 1);
-  };
-  for (const auto& e : directed)
-  {
-    if (directed.count({ e.second, e.first }))
-    {
-      continue;
-    }
-    const vtkIdType u = e.first, w = e.second;
-    if (std::max(std::fabs(x[u][0] + x[w][0]), std::fabs(x[u][1] + x[w][1])) > 3.0) // on the outer square
-    {
-      const vtkIdType fu = foot(u), fw = foot(w);
-      tris.push_back({ w, u, fu });
-      tris.push_back({ w, fu, fw });
-      tris.push_back({ bottom, fw, fu });
-    }
-    else
-    {
-      tris.push_back({ w, u, apex });
-    }
-  }
+  // The outer square gets the wall, the inner one the tent.
+  CloseSheets(x, tris, { 0.0, 0.0, 20.0 }, [&x](vtkIdType u, vtkIdType w) {
+    return std::max(std::fabs(x[u][0] + x[w][0]), std::fabs(x[u][1] + x[w][1])) > 3.0;
+  });
   return medialtest::defects::Mesh(x, tris);
 }
 
@@ -420,50 +433,10 @@ vtkSmartPointer<vtkPolyData> PinchedSheets(bool crossing, int perUnit = 16, int 
       tris.push_back({ b(i, j), b(i + 1, j + 1), b(i, j + 1) });
     }
   }
-  // The sheets' boundary edges (those without their reverse), closed off.
-  std::set<std::pair<vtkIdType, vtkIdType>> directed;
-  for (const auto& tri : tris)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      directed.insert({ tri[k], tri[(k + 1) % 3] });
-    }
-  }
-  const double depth = 20.0;
-  const vtkIdType bottom = static_cast<vtkIdType>(x.size());
-  x.push_back({ 0.0, 0.0, -depth });
-  const vtkIdType apex = static_cast<vtkIdType>(x.size());
-  x.push_back({ crossing ? 0.3 : 0.0, crossing ? 0.2 : -2.0, -0.75 * depth });
-  std::map<vtkIdType, vtkIdType> below;
-  auto foot = [&](vtkIdType q) {
-    const auto found = below.find(q);
-    if (found != below.end())
-    {
-      return found->second;
-    }
-    x.push_back({ x[q][0], x[q][1], -depth / 2 });
-    return below[q] = static_cast<vtkIdType>(x.size() - 1);
-  };
-  for (const auto& e : directed)
-  {
-    if (directed.count({ e.second, e.first }))
-    {
-      continue;
-    }
-    const vtkIdType u = e.first, w = e.second;
-    const bool onB = (u >= firstB || u == p) && (w >= firstB || w == p);
-    if (!onB)
-    {
-      const vtkIdType fu = foot(u), fw = foot(w);
-      tris.push_back({ w, u, fu });
-      tris.push_back({ w, fu, fw });
-      tris.push_back({ bottom, fw, fu });
-    }
-    else
-    {
-      tris.push_back({ w, u, apex });
-    }
-  }
+  // A's border gets the wall, B's the tent.
+  CloseSheets(x, tris, { crossing ? 0.3 : 0.0, crossing ? 0.2 : -2.0, -15.0 }, [=](vtkIdType u, vtkIdType w) {
+    return !((u >= firstB || u == p) && (w >= firstB || w == p));
+  });
   return medialtest::defects::Mesh(x, tris);
 }
 
