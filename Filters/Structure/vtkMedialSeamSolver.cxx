@@ -2,11 +2,15 @@
 #include "vtkMedialSeamSolver.h"
 
 #include "vtkMedialGeometry.h"
+#include "vtkMedialPointCloud.h"
 #include "vtkMedialSort.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialThreads.h"
 #include "vtkMedialTriangleMesh.h"
-#include "vtkMedialUniformGrid.h"
+
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkStaticPointLocator.h"
 
 #include <omp.h>
 
@@ -1007,116 +1011,30 @@ std::vector<vtkMedialSeamSolver::Pair> vtkMedialSeamSolver::NearestPairs(
   {
     return pairs;
   }
-  // A uniform grid over the centres, searched ring by ring (vtkMedialUniformGrid) with
-  // the centres' coordinates read straight from the array: a vtkStaticPointLocator read
-  // each candidate through vtkDataArray::GetTuple, 4% of a medial mesh's CPU.
-  double bounds[6] = { HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL };
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    for (int a = 0; a < 3; ++a)
-    {
-      bounds[2 * a] = std::min(bounds[2 * a], centres[3 * i + a]);
-      bounds[2 * a + 1] = std::max(bounds[2 * a + 1], centres[3 * i + a]);
-    }
-  }
-  double extent = 0.0;
-  for (int a = 0; a < 3; ++a)
-  {
-    extent = std::max(extent, bounds[2 * a + 1] - bounds[2 * a]);
-  }
-  if (!(extent > 0.0))
-  {
-    extent = 1.0; // every centre at one point: one cell
-  }
-  vtkMedialUniformGrid grid;
-  auto build = [&](double size) {
-    grid.InitializeCubic(bounds, vtkMedialUniformGrid::CubicCellSize(bounds, size));
-    grid.Build(n, [&](vtkIdType i, auto&& add) { add(grid.CellOf(centres + 3 * i)); });
-  };
-  // About n cells first; the centres lie on sheets, so the cells they occupy hold more
-  // than one each: shrink the side so that those hold about four (a sheet's occupied
-  // cells grow as the square of the shrinking).
-  build(extent / std::cbrt(static_cast<double>(n)));
-  vtkIdType occupied = 0;
-  for (vtkIdType c = 0; c < grid.GetNumberOfCells(); ++c)
-  {
-    occupied += grid.CellEnd(c) != grid.CellBegin(c) ? 1 : 0;
-  }
-  const double perCell = static_cast<double>(n) / static_cast<double>(std::max<vtkIdType>(1, occupied));
-  if (perCell > 8.0)
-  {
-    build(grid.GetCellSize(0) * std::sqrt(4.0 / perCell));
-  }
-  const double h = grid.GetCellSize(0);
-  const int rings = grid.GetMaximumDimension();
-  // The `wanted` nearest of each centre by (squared distance, id), itself included: the
-  // same set whatever the order the cells are visited in.
+  const auto locator = vtkMedialPointCloud::Locator(centres, n);
   const int wanted = static_cast<int>(std::min<vtkIdType>(k + 1, n));
-  std::vector<vtkIdType> neighbours(static_cast<size_t>(n) * wanted);
+  std::vector<std::vector<vtkIdType>> neighbours(static_cast<size_t>(n));
 #pragma omp parallel num_threads(std::max(1, threads))
   {
-    std::vector<std::pair<double, vtkIdType>> best;
-    best.reserve(static_cast<size_t>(wanted) + 1);
+    vtkNew<vtkIdList> ids;
 #pragma omp for schedule(static)
     for (vtkIdType i = 0; i < n; ++i)
     {
-      const double* x = centres + 3 * i;
-      int centre[3];
-      grid.CellCoordinates(x, centre);
-      // Distance from x to its own cell's faces: cells of ring R are at least
-      // (R - 1) h + inner away.
-      double inner = HUGE_VAL;
-      for (int a = 0; a < 3; ++a)
+      locator->FindClosestNPoints(wanted, centres + 3 * i, ids);
+      for (vtkIdType j = 0; j < ids->GetNumberOfIds(); ++j)
       {
-        const double lo = x[a] - grid.CellLow(a, centre[a]);
-        inner = std::min(inner, std::min(lo, h - lo));
-      }
-      inner = std::max(0.0, inner);
-      best.clear();
-      for (int ring = 0; ring <= rings; ++ring)
-      {
-        if (ring > 0 && static_cast<int>(best.size()) == wanted)
+        if (ids->GetId(j) != i)
         {
-          const double gap = (ring - 1) * h + inner;
-          if (best.back().first < gap * gap * (1.0 - 1e-9)) // room for the cells' rounding
-          {
-            break;
-          }
+          neighbours[i].push_back(ids->GetId(j));
         }
-        grid.ForEachCellInShell(centre, ring, [&](const int*, vtkIdType cell) {
-          for (const vtkIdType* j = grid.CellBegin(cell); j != grid.CellEnd(cell); ++j)
-          {
-            const double* y = centres + 3 * *j;
-            const double d[3] = { y[0] - x[0], y[1] - x[1], y[2] - x[2] };
-            const std::pair<double, vtkIdType> entry(d[0] * d[0] + d[1] * d[1] + d[2] * d[2], *j);
-            if (static_cast<int>(best.size()) == wanted && !(entry < best.back()))
-            {
-              continue;
-            }
-            best.insert(std::upper_bound(best.begin(), best.end(), entry), entry);
-            if (static_cast<int>(best.size()) > wanted)
-            {
-              best.pop_back();
-            }
-          }
-        });
-      }
-      for (int j = 0; j < wanted; ++j)
-      {
-        neighbours[static_cast<size_t>(i) * wanted + j] = best[j].second;
       }
     }
   }
-  pairs.reserve(neighbours.size());
   for (vtkIdType i = 0; i < n; ++i)
   {
-    for (int m = 0; m < wanted; ++m)
+    for (vtkIdType j : neighbours[i])
     {
-      const vtkIdType j = neighbours[static_cast<size_t>(i) * wanted + m];
-      if (j != i)
-      {
-        pairs.push_back({ std::min(i, j), std::max(i, j) });
-      }
+      pairs.push_back({ std::min(i, j), std::max(i, j) });
     }
   }
   vtkMedialSort(pairs.begin(), pairs.end(), threads); // equivalent pairs are equal
