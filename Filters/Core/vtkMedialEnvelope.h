@@ -69,6 +69,30 @@ inline double ProtrusionBound(const double c[3], double r, const double* const c
   return r - reach;
 }
 
+/// How far the ball (c, r) reaches through the surface, r minus c's distance to it, when
+/// that exceeds `tolerance` (> 0 or not is all a caller decides on); otherwise the
+/// tolerance stands for it (an upper bound; 0 for r <= 0). Read from `query` (a
+/// vtkMedialSurfaceQuery) as the triangles nearer than r - tolerance, padded for the
+/// rounding of that test: one walk that never shrinks, cheaper than a nearest-point walk
+/// to r, which must find the nearest even when the ball protrudes by less (most probes
+/// that need a query). Beyond the tolerance, the largest protrusion read is the nearest
+/// triangle's, the same number as the nearest-point walk gives. `hits` is scratch.
+template <class Query, class Hits>
+double ProtrusionBeyond(const Query& query, const double c[3], double r, double tolerance, Hits& hits)
+{
+  const double reach = (r - tolerance) * (1.0 + 1e-9) + 1e-12 * query.GetMesh()->Diagonal;
+  double worst = -HUGE_VAL;
+  if (reach > 0.0)
+  {
+    query.TrianglesWithin(c, reach, hits);
+    for (const auto& hit : hits)
+    {
+      worst = std::max(worst, r - hit.Distance);
+    }
+  }
+  return worst > tolerance ? worst : std::max(0.0, std::min(r, tolerance));
+}
+
 /// |x - c| - r: a sphere.
 inline double BallField(const double x[3], const double c[3], double r)
 {

@@ -56,15 +56,18 @@ double vtkMedialEnvelopeRefinement::Probe(
   {
     return std::max(0.0, bound);
   }
-  vtkMedialSurfaceQuery::ClosestHit hit;
-  return r > 0.0 && query.ClosestPoint(c, r, hit) ? r - hit.Distance : 0.0;
+  // Only a protrusion beyond the tolerance decides (most probes that get here protrude by less).
+  thread_local std::vector<vtkMedialSurfaceQuery::ClosestHit> hits;
+  return vtkMedialEnvelope::ProtrusionBeyond(query, c, r, this->Tolerance, hits);
 }
 
 double vtkMedialEnvelopeRefinement::ProbeEdge(
   const Mesh& mesh, const vtkMedialSurfaceQuery& query, vtkIdType a, vtkIdType b) const
 {
+  // Only whether an edge protrudes beyond the tolerance decides: stop at the first
+  // probe that does (its value stands for the edge's; the rest need no query).
   double worst = 0.0;
-  for (vtkIdType i = 1; i < Steps; ++i)
+  for (vtkIdType i = 1; i < Steps && worst <= this->Tolerance; ++i)
   {
     const vtkIdType probe[4] = { a, b, Steps - i, i };
     worst = std::max(worst, this->Probe(mesh, query, probe, 2));
@@ -75,10 +78,10 @@ double vtkMedialEnvelopeRefinement::ProbeEdge(
 double vtkMedialEnvelopeRefinement::ProbeInterior(
   const Mesh& mesh, const vtkMedialSurfaceQuery& query, const std::array<vtkIdType, 3>& t) const
 {
-  double worst = 0.0;
+  double worst = 0.0; // stops past the tolerance, as ProbeEdge does
   for (vtkIdType i = 1; i < Steps; ++i)
   {
-    for (vtkIdType j = 1; i + j < Steps; ++j)
+    for (vtkIdType j = 1; i + j < Steps && worst <= this->Tolerance; ++j)
     {
       const vtkIdType probe[6] = { t[0], t[1], t[2], i, j, Steps - i - j };
       worst = std::max(worst, this->Probe(mesh, query, probe, 3));
@@ -401,10 +404,15 @@ vtkIdType vtkMedialEnvelopeRefinement::Refine(const Mesh& mesh, const vtkMedialS
     for (vtkIdType k = 0; k < nd; ++k)
     {
       const vtkIdType t = dirty[order[k]];
-      double worst = this->ProbeInterior(mesh, query, triangles[t]);
+      // The sides first (probed already): a triangle a side marks needs no interior probe.
+      double worst = 0.0;
       for (int j = 0; j < 3; ++j)
       {
         worst = std::max(worst, sides.Get(Sorted(triangles[t][j], triangles[t][(j + 1) % 3])));
+      }
+      if (worst <= tolerance)
+      {
+        worst = std::max(worst, this->ProbeInterior(mesh, query, triangles[t]));
       }
       triangleProtrusion[t] = worst;
     }

@@ -18,8 +18,13 @@
  * the interpolated ball (c, r) is r minus the distance from c to the surface (through
  * vtkMedialSurfaceQuery, in parallel), unless the vertex balls bound it within the
  * tolerance (vtkMedialEnvelope::ProtrusionBound: nearly 9 probes in 10 on horse.ply at
- * 100,000 samples), which decides alike without a query. Each triangle or edge protruding by more than the
- * tolerance marks its longest edge (its own, for an edge); marked edges are split at
+ * 100,000 samples), which decides alike without a query. Only whether a triangle or
+ * edge protrudes by more than the tolerance decides, so a probe reads only the
+ * triangles nearer than r - tolerance (an emptiness walk, not a nearest-point one: on
+ * horse.ply at 100,000 samples 99.7% of the probes that need a query protrude by less),
+ * and probing stops at the first probe past the tolerance (a triangle probes its sides
+ * first). Each triangle or edge protruding by
+ * more than the tolerance marks its longest edge (its own, for an edge); marked edges are split at
  * their midpoint m, in increasing order of their vertex ids, skipping an edge one of whose
  * triangles was already split in the round. The new ball is centred at m with the
  * largest inscribed radius there (its distance to the surface), so it is inscribed like
@@ -64,9 +69,11 @@ public:
   vtkIdType Refine(const Mesh& mesh, const vtkMedialSurfaceQuery& query, double tolerance, int threads,
     const std::function<bool()>& aborted = {});
 
-  /// The largest protrusion probed in the last round (absolute; where the vertex balls
-  /// bound a probe's within the tolerance, that bound: so an upper bound below it), and
-  /// the rounds run.
+  /// The largest protrusion probed in the last round (absolute), and the rounds run.
+  /// When the rounds ended with nothing beyond the tolerance, an upper bound at most the
+  /// tolerance (a probe within it counts as its vertex balls' bound, or as the tolerance
+  /// where a query decided it); when they ran out first, at least the largest protrusion
+  /// beyond the tolerance that was met (probing stops at the first probe past it).
   double WorstProtrusion = 0.0;
   int Rounds = 0;
 

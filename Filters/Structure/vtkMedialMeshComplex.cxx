@@ -539,13 +539,14 @@ double vtkMedialMeshComplex::Protrusion(const vtkIdType* ids, const double* weig
   {
     return std::max(0.0, bound);
   }
-  vtkMedialSurfaceQuery::ClosestHit hit;
-  return r > 0.0 && this->Query->ClosestPoint(c, r, hit) ? r - hit.Distance : 0.0;
+  // Only a protrusion beyond the tolerance decides (ProtrusionMemo).
+  thread_local std::vector<vtkMedialSurfaceQuery::ClosestHit> hits;
+  return vtkMedialEnvelope::ProtrusionBeyond(*this->Query, c, r, tolerance, hits);
 }
 
 // Protrusions of the collapses' candidates, probed once each and only when asked
-// for: a triangle's is the worst of its centroid's and its sides' midpoints', an
-// edge's its midpoint's (shared by its triangles). Values are functions of the balls
+// for: a triangle protrudes when its centroid or a side's midpoint does (its sides
+// first), an edge when its midpoint does (shared by its triangles). Values are functions of the balls
 // only, so when they are probed does not change them.
 class vtkMedialMeshComplex::ProtrusionMemo
 {
@@ -600,13 +601,18 @@ private:
   }
   double ProbeTriangle(vtkIdType f)
   {
-    const double third[3] = { 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 };
-    double worst = this->Complex.Protrusion(this->Complex.Power->TriangleVertices[f].data(), third, 3, this->Tolerance);
+    // The sides first: one beyond the tolerance decides, and the centroid needs no probe.
+    double worst = 0.0;
     for (vtkIdType e : this->Complex.Power->TriangleEdges[f])
     {
       worst = std::max(worst, this->EdgeValue(e));
     }
-    return worst;
+    if (worst > this->Tolerance)
+    {
+      return worst;
+    }
+    const double third[3] = { 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 };
+    return std::max(worst, this->Complex.Protrusion(this->Complex.Power->TriangleVertices[f].data(), third, 3, this->Tolerance));
   }
   double EdgeValue(vtkIdType e)
   {

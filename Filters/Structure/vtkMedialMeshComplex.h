@@ -146,9 +146,11 @@ private:
   std::vector<int> TetsOnTriangles(const std::vector<char>& tetIn) const;
   std::vector<int> TrianglesOnEdges(const std::vector<char>& triangleIn) const;
   void PruneProtrusions(double tolerance);
-  // Largest protrusion through the surface of the balls interpolated at the given
-  // barycentric weights over the balls `ids`; where the vertex balls bound it within
-  // `tolerance` (vtkMedialEnvelope::ProtrusionBound), that bound, without a query.
+  // Protrusion through the surface of the ball interpolated at the given barycentric
+  // weights over the balls `ids`, for deciding whether it exceeds `tolerance`: where the
+  // vertex balls bound it within (vtkMedialEnvelope::ProtrusionBound), that bound without
+  // a query; otherwise the protrusion when beyond, or the tolerance standing for it
+  // (vtkMedialEnvelope::ProtrusionBeyond).
   double Protrusion(const vtkIdType* ids, const double* weights, int n, double tolerance) const;
   class ProtrusionMemo;
   void Extract();
