@@ -34,12 +34,17 @@ void vtkMedialSolidCheck::Run(
     this->PinchedPatchesCulled = statistics.PinchedCulled;
     // Only where the pair search runs: on a mesh with other defects the repair runs
     // anyway (and the count is 0 on a mesh that is open or not edge-manifold).
-    vtkIdType example = -1;
-    this->PinchedVertices = mesh.CountPinchedVertices(&example);
-    if (example >= 0)
-    {
-      std::copy_n(mesh.GetPoint(example), 3, this->PinchedVertex);
-    }
+    this->CountPinches(mesh);
+  }
+}
+
+void vtkMedialSolidCheck::CountPinches(const vtkMedialTriangleMesh& mesh)
+{
+  vtkIdType example = -1;
+  this->PinchedVertices = mesh.CountPinchedVertices(&example);
+  if (example >= 0)
+  {
+    std::copy_n(mesh.GetPoint(example), 3, this->PinchedVertex);
   }
 }
 

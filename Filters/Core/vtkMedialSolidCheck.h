@@ -54,6 +54,10 @@ public:
   void Run(const vtkMedialTriangleMesh& mesh, const vtkMedialSurfaceQuery& query, int threads,
     bool allPairs = false);
 
+  /// PinchedVertices and PinchedVertex from `mesh` alone (Run calls it with its pair
+  /// search; the medial mesh's warning calls it on its own).
+  void CountPinches(const vtkMedialTriangleMesh& mesh);
+
   /// Nothing found: a valid solid.
   bool IsValid() const { return this->CountDefects() == 0 && this->Pairs.empty(); }
   /// Only triangle pairs were found, which the exact predicates may still clear.

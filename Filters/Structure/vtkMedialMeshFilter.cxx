@@ -425,11 +425,9 @@ int vtkMedialMeshFilter::RequestData(
     // An odd Euler characteristic of a closed, edge-manifold, oriented surface: it is
     // pinched (PinchedVertexBound is odd), and its solid's topology is not half of it.
     vtkMedialSolidCheck pinches;
-    vtkIdType example = -1;
-    pinches.PinchedVertices = mesh.CountPinchedVertices(&example);
-    if (example >= 0)
+    pinches.CountPinches(mesh);
+    if (pinches.PinchedVertices > 0)
     {
-      std::copy_n(mesh.GetPoint(example), 3, pinches.PinchedVertex);
       vtkWarningMacro(<< "The surface has " << pinches.PinchedClause()
                       << ": at a pinch the solid's inside is open, so its topology is not the one the surface's "
                          "Euler characteristic gives, and the medial mesh's (Euler characteristic "
