@@ -93,6 +93,32 @@ double ProtrusionBeyond(const Query& query, const double c[3], double r, double 
   return worst > tolerance ? worst : std::max(0.0, std::min(r, tolerance));
 }
 
+/// The protrusion of the ball interpolated at barycentric `weights` over n inscribed
+/// vertex balls (centres[j], radii[j]), for deciding whether it exceeds `tolerance`:
+/// where the vertex balls bound it within the tolerance (ProtrusionBound), that bound
+/// (at least 0), without a query; otherwise ProtrusionBeyond's value. The one probe of
+/// the envelope refinement and of the complex's protrusion pruning.
+template <class Query, class Hits>
+double InterpolatedProtrusion(const Query& query, const double* const centres[], const double radii[],
+  const double weights[], int n, double tolerance, Hits& hits)
+{
+  double c[3] = { 0, 0, 0 }, r = 0.0;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      c[k] += weights[j] * centres[j][k];
+    }
+    r += weights[j] * radii[j];
+  }
+  const double bound = ProtrusionBound(c, r, centres, radii, n);
+  if (bound <= tolerance)
+  {
+    return std::max(0.0, bound);
+  }
+  return ProtrusionBeyond(query, c, r, tolerance, hits);
+}
+
 /// |x - c| - r: a sphere.
 inline double BallField(const double x[3], const double c[3], double r)
 {

@@ -36,29 +36,16 @@ double vtkMedialEnvelopeRefinement::Probe(
   const Mesh& mesh, const vtkMedialSurfaceQuery& query, const vtkIdType* ids, int n) const
 {
   // `ids` holds n balls, followed by n weights (in Steps) packed as ids[n + j].
-  double c[3] = { 0, 0, 0 }, r = 0.0;
   const double* centres[3];
-  double radii[3];
+  double radii[3], weights[3];
   for (int j = 0; j < n; ++j)
   {
-    const double w = static_cast<double>(ids[n + j]) / Steps;
     centres[j] = &(*mesh.Centres)[3 * ids[j]];
     radii[j] = (*mesh.Radii)[ids[j]];
-    for (int k = 0; k < 3; ++k)
-    {
-      c[k] += w * centres[j][k];
-    }
-    r += w * radii[j];
+    weights[j] = static_cast<double>(ids[n + j]) / Steps;
   }
-  // Within the tolerance by the vertex balls alone: no query (the bound stands for it).
-  const double bound = vtkMedialEnvelope::ProtrusionBound(c, r, centres, radii, n);
-  if (bound <= this->Tolerance)
-  {
-    return std::max(0.0, bound);
-  }
-  // Only a protrusion beyond the tolerance decides (most probes that get here protrude by less).
   thread_local std::vector<vtkMedialSurfaceQuery::ClosestHit> hits;
-  return vtkMedialEnvelope::ProtrusionBeyond(query, c, r, this->Tolerance, hits);
+  return vtkMedialEnvelope::InterpolatedProtrusion(query, centres, radii, weights, n, this->Tolerance, hits);
 }
 
 double vtkMedialEnvelopeRefinement::ProbeEdge(

@@ -523,25 +523,15 @@ void vtkMedialMeshComplex::Collapse()
 
 double vtkMedialMeshComplex::Protrusion(const vtkIdType* ids, const double* weights, int n, double tolerance) const
 {
-  double c[3] = { 0, 0, 0 }, r = 0.0;
   const double* centres[3];
   double radii[3];
   for (int j = 0; j < n; ++j)
   {
     centres[j] = this->Centre(ids[j]);
     radii[j] = (*this->BallData.Radii)[ids[j]];
-    G::AddScaled(c, weights[j], centres[j], c);
-    r += weights[j] * radii[j];
   }
-  // Within the tolerance by the (inscribed) vertex balls alone: no query.
-  const double bound = vtkMedialEnvelope::ProtrusionBound(c, r, centres, radii, n);
-  if (bound <= tolerance)
-  {
-    return std::max(0.0, bound);
-  }
-  // Only a protrusion beyond the tolerance decides (ProtrusionMemo).
   thread_local std::vector<vtkMedialSurfaceQuery::ClosestHit> hits;
-  return vtkMedialEnvelope::ProtrusionBeyond(*this->Query, c, r, tolerance, hits);
+  return vtkMedialEnvelope::InterpolatedProtrusion(*this->Query, centres, radii, weights, n, tolerance, hits);
 }
 
 // Protrusions of the collapses' candidates, probed once each and only when asked
