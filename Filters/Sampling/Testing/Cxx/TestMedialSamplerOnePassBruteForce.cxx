@@ -11,6 +11,11 @@
 // centre where the surface crosses them deeper than MaximumProtrusion): no ball
 // crosses the surface (all of it, by brute force) by more than MaximumProtrusion, and
 // a ball that no longer touches its surface point touches the surface.
+// First, the search alone on a four-triangle surface (one leaf of the tree) built so
+// that the cap's surface inside the ball is reached only as a triangle of a leaf that
+// lies in the cone: a bump in the cap beside a wall that rises into the cone. The
+// search must list that triangle for the cap on the way (no lane is set aside for
+// it), and the ball it inscribes must touch the surface where brute force says.
 #include "MedialTestUtilities.h"
 
 #include "vtkCellArray.h"
@@ -18,10 +23,14 @@
 #include "vtkMedialAxisSampler.h"
 #include "vtkMedialGeometry.h"
 #include "vtkMedialShapeSource.h"
+#include "vtkMedialSurfaceQuery.h"
+#include "vtkMedialTriangleMesh.h"
 #include "vtkPoints.h"
 #include "vtkTriangleFilter.h"
 
+#include <cmath>
 #include <cstdlib>
+#include <string>
 
 using namespace medialtest;
 namespace G = vtkMedialGeometry;
@@ -186,10 +195,76 @@ int CheckInscribed(vtkPolyData* surface, const char* label, vtkIdType samples)
   MEDIAL_CHECK(worstTouch <= 1e-10, "%s: a shrunk ball is %g off the surface", label, worstTouch);
   return EXIT_SUCCESS;
 }
+
+// The tangent ball at p = 0 along n = +z, radius 1 (bounded by the ceiling z = 2), with
+// theta 45 and a small allowed protrusion. The four triangles fit one leaf, whose box
+// holds p and rises above the cap's plane: the walk opens it and meets each triangle.
+// The bump (z = 0.1, 0.35 to 0.45 from the axis) lies inside the ball, below the cone
+// n.(q - p) >= sin(theta / 2) |q - p| where blockers can lie, so the angle rule drops it
+// as a triangle; only the list kept for the cap brings it back, and the ball about the
+// same centre must shrink to touch it. The wall (x = 1.1) lies in the cone, outside the ball.
+int CheckCapInConeLeaf()
+{
+  const double corners[4][9] = {
+    { -0.3, -0.3, 0, 0.3, -0.3, 0, 0, 0.4, 0 },          // p's own triangle (the floor)
+    { 0.35, -0.05, 0.1, 0.45, -0.05, 0.1, 0.4, 0.05, 0.1 }, // the bump, in the cap
+    { 1.1, -0.1, 0.1, 1.1, 0.1, 0.1, 1.1, 0, 0.6 },      // the wall, in the cone
+    { -0.5, -0.5, 2, 0.5, -0.5, 2, 0, 0.5, 2 },          // the ceiling, touching the ball
+  };
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> cells;
+  for (const auto& t : corners)
+  {
+    const vtkIdType ids[3] = { points->InsertNextPoint(t), points->InsertNextPoint(t + 3),
+      points->InsertNextPoint(t + 6) };
+    cells->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkPolyData> surface;
+  surface->SetPoints(points);
+  surface->SetPolys(cells);
+  vtkMedialTriangleMesh mesh;
+  vtkMedialSurfaceQuery query;
+  std::string error;
+  MEDIAL_CHECK(mesh.Build(surface, error) && query.Build(&mesh, error), "cap case: %s", error.c_str());
+  MEDIAL_CHECK(mesh.GetNumberOfTriangles() == 4, "cap case: %lld triangles",
+    static_cast<long long>(mesh.GetNumberOfTriangles()));
+
+  const double p[3] = { 0, 0, 0 }, n[3] = { 0, 0, 1 }, c[3] = { 0, 0, 1 };
+  const double cosTheta = std::cos(45.0 * 3.14159265358979323846 / 180.0);
+  const double diag = mesh.Diagonal, allowed = 1e-4 * diag;
+  vtkMedialSurfaceQuery::TangentBall ball;
+  ball.Radius = 1.0;
+  ball.Contact[2] = 2.0;
+  ball.ContactTriangle = 3;
+  vtkMedialSurfaceQuery::ContactFilter filter;
+  filter.OwnTriangle = 0;
+  filter.CosMinAngle = cosTheta;
+  query.MaximalTangentBall(p, n, filter, allowed, ball);
+
+  const Triangles all = Collect(surface);
+  const double empty = AdmissibleDistance(all, c, p, cosTheta, 1e-12 * diag);
+  const double touch = SurfaceDistance(all, c);
+  std::printf("cap reached through a leaf in the cone: radius %.17g (admissible surface at %.17g), shrunk %d "
+              "to %.17g on triangle %lld (the surface at %.17g)\n",
+    ball.Radius, empty, ball.Shrunk ? 1 : 0, ball.InscribedRadius, static_cast<long long>(ball.InscribedTriangle),
+    touch);
+  MEDIAL_CHECK(ball.Radius == 1.0 && empty >= 1.0 - 1e-12 * diag, "cap case: the ball is %.17g, the admissible "
+    "surface %.17g away", ball.Radius, empty);
+  MEDIAL_CHECK(touch < ball.Radius - allowed, "cap case: the bump no longer enters the ball (the case is void)");
+  MEDIAL_CHECK(ball.Shrunk && ball.InscribedTriangle == 1, "cap case: the bump %.3g deep in the cap was missed",
+    ball.Radius - touch);
+  MEDIAL_CHECK(std::fabs(ball.InscribedRadius - touch) <= 1e-12 * diag,
+    "cap case: the inscribed ball is %.17g, the surface %.17g from its centre", ball.InscribedRadius, touch);
+  return EXIT_SUCCESS;
+}
 }
 
 int TestMedialSamplerOnePassBruteForce(int, char*[])
 {
+  if (CheckCapInConeLeaf() != EXIT_SUCCESS)
+  {
+    return EXIT_FAILURE;
+  }
   vtkNew<vtkMedialShapeSource> jack;
   jack->SetResolution(24);
   jack->Update();
