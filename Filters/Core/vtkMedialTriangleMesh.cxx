@@ -24,6 +24,7 @@
 #include <cstring>
 #include <numeric>
 #include <sstream>
+#include <type_traits>
 
 #include <omp.h>
 
@@ -266,6 +267,7 @@ struct vtkMedialTriangleMesh::Adjacency
   vtkMedialBuffer<std::int32_t> Neighbour; // 3 per triangle, across manifold edges
   vtkMedialBuffer<char> SameDirection;  // 3 per triangle: the neighbour walks the edge the same way
   vtkMedialBuffer<unsigned char> Degree; // neighbours of each triangle
+  vtkMedialBuffer<std::int32_t> PointTriangle; // a triangle of each point (its last), or -1
 
   // Calls visit(begin, end) for the uses [begin, end) of each edge, in (Lo, Hi) order;
   // only for the edges whose lower vertex is in [loBegin, loEnd) when given.
@@ -351,6 +353,7 @@ bool vtkMedialTriangleMesh::Build(
     if (this->BoundaryEdges == 0 && this->NonManifoldEdges == 0)
     {
       this->EdgeNeighbours = std::move(adjacency.Neighbour); // every triangle has three
+      this->PointTriangle = std::move(adjacency.PointTriangle);
     }
   }
   if (stop())
@@ -547,12 +550,15 @@ bool vtkMedialTriangleMesh::DropDuplicateTriangles(const Adjacency& adjacency)
 bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::function<bool()>& aborted)
 {
   const vtkIdType nt = static_cast<vtkIdType>(this->SourceCellIds.size());
+  // The points in use, and a triangle of each (for CountPinchedVertices' fan walks).
+  adjacency.PointTriangle.assign(this->Points.size() / 3, -1);
+  for (vtkIdType t = 0; t < nt; ++t)
   {
-    std::vector<char> used(this->Points.size() / 3, 0);
-    for (vtkIdType id : this->Triangles)
+    for (int k = 0; k < 3; ++k)
     {
-      this->UsedPoints += used[id] ? 0 : 1;
-      used[id] = 1;
+      std::int32_t& of = adjacency.PointTriangle[this->Triangles[3 * t + k]];
+      this->UsedPoints += of < 0 ? 1 : 0;
+      of = static_cast<std::int32_t>(t);
     }
   }
   // Each triangle's three edge uses, grouped by their lower vertex in linear time,
@@ -651,11 +657,6 @@ bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::func
   return true;
 }
 
-// On a closed, edge-manifold, oriented mesh, the triangles (v, a, b) around a vertex v
-// give its link's edges a -> b, each a starting once, and the link is one cycle per
-// fan of triangles around v. The corners grouped by vertex (linear time), each link is
-// followed from its first edge: a vertex whose walk comes back before all its edges is
-// pinched. Two passes over the corners and a walk per vertex within its own group.
 vtkIdType vtkMedialTriangleMesh::PinchedVertexBound() const
 {
   if (this->BoundaryEdges > 0 || this->NonManifoldEdges > 0 || this->NonOrientableComponents > 0)
@@ -665,6 +666,18 @@ vtkIdType vtkMedialTriangleMesh::PinchedVertexBound() const
   return std::max<vtkIdType>(0, 2 * this->Components - this->GetEulerCharacteristic());
 }
 
+// On a closed, edge-manifold mesh each edge at a vertex v joins two of v's triangles, so
+// v's triangles form cycles, its fans, each followed by leaving every triangle through
+// its other edge at v; v is pinched when it has two fans or more. With the edge
+// neighbours (the solid check's case), one fan is followed from a triangle of each
+// vertex (PointTriangle, noted for free by BuildAdjacency's pass that counts the points
+// in use): a step a triangle of the fan, 17 instructions and no search. When the fans
+// followed hold every corner, no vertex is pinched (the usual answer, one step a
+// corner); else a vertex is pinched when its fan holds fewer of its corners than it
+// has, the fans followed again and the corners counted. Without them (freed after the
+// check), the corners are grouped by vertex, and the triangles (v, a, b) of each vertex
+// give its link's edges a -> b (each a starts one on an oriented mesh): its link is
+// followed from its first edge within its group.
 vtkIdType vtkMedialTriangleMesh::CountPinchedVertices(vtkIdType* example) const
 {
   if (example)
@@ -675,50 +688,114 @@ vtkIdType vtkMedialTriangleMesh::CountPinchedVertices(vtkIdType* example) const
   {
     return 0;
   }
-  const vtkIdType corners = static_cast<vtkIdType>(this->Triangles.size());
-  struct LinkEdge
-  {
-    std::int32_t From, To;
-  };
-  vtkMedialBuffer<LinkEdge> links(static_cast<size_t>(corners));
-  const vtkIdType* tris = this->Triangles.data();
-  const vtkMedialBuffer<vtkIdType> first = GroupByKey(
-    corners, this->GetNumberOfPoints(), [tris](vtkIdType c) { return tris[c]; },
-    [&](vtkIdType c, vtkIdType at) {
-      const vtkIdType* v = tris + 3 * (c / 3);
-      const int k = static_cast<int>(c % 3);
-      links[at] = { static_cast<std::int32_t>(v[(k + 1) % 3]), static_cast<std::int32_t>(v[(k + 2) % 3]) };
-    });
   const vtkIdType np = this->GetNumberOfPoints();
+  const vtkIdType nt = this->GetNumberOfTriangles();
+  const vtkIdType corners = 3 * nt;
+  const vtkIdType* tris = this->Triangles.data();
   vtkIdType pinched = 0, lowest = np;
-#pragma omp parallel for schedule(dynamic, 4096) reduction(+ : pinched) reduction(min : lowest)
-  for (vtkIdType v = 0; v < np; ++v)
+  if (this->EdgeNeighbours.size() == static_cast<size_t>(corners) &&
+    this->PointTriangle.size() == static_cast<size_t>(np))
   {
-    const vtkIdType begin = first[v], end = first[v + 1];
-    if (end - begin < 2)
-    {
-      continue;
-    }
-    vtkIdType steps = 1;
-    std::int32_t at = links[begin].To;
-    while (at != links[begin].From && steps < end - begin)
-    {
-      vtkIdType i = begin;
-      while (i < end && links[i].From != at)
+    // The triangles of the fan of v through its triangle PointTriangle[v] (0 for a
+    // point in no triangle). In at the edge (v, in), out at (v, out). A triangle's
+    // neighbours are in the order of their edges' (lower, higher) ids: a triangle
+    // a < b < c has them across ab, ac, bc, so the one across (v, out), opposite `in`,
+    // is at 2 minus the rank of `in` among the three (ids as unsigned: two
+    // compare-and-borrows).
+    using Id = std::make_unsigned<vtkIdType>::type;
+    const Id* ids = reinterpret_cast<const Id*>(tris);
+    const std::int32_t* lastOf = this->EdgeNeighbours.data() + 2; // neighbour across bc
+    const std::int32_t* firstOf = this->PointTriangle.data();
+    auto fan = [ids, lastOf, firstOf](vtkIdType v) {
+      const std::int32_t first = firstOf[v];
+      vtkIdType steps = 0;
+      if (first >= 0)
       {
-        ++i;
+        const Id at = static_cast<Id>(v);
+        const Id* f = ids + 3 * static_cast<Id>(first);
+        Id in = f[0] != at ? f[0] : f[1];
+        std::int32_t t = first;
+        do
+        {
+          f = ids + 3 * static_cast<Id>(t);
+          const Id out = f[0] + f[1] + f[2] - (at + in);
+          Id slot = 3 * static_cast<Id>(t);
+          slot -= at < in ? 1 : 0;
+          slot -= out < in ? 1 : 0;
+          t = lastOf[slot];
+          in = out;
+          ++steps;
+        } while (t != first);
       }
-      if (i == end)
-      {
-        break;
-      }
-      at = links[i].To;
-      ++steps;
-    }
-    if (steps < end - begin)
+      return steps;
+    };
+    vtkIdType followed = 0;
+#pragma omp parallel for schedule(static) reduction(+ : followed)
+    for (vtkIdType v = 0; v < np; ++v)
     {
-      ++pinched;
-      lowest = std::min(lowest, v);
+      followed += fan(v);
+    }
+    if (followed < corners)
+    {
+      vtkMedialBuffer<vtkIdType> around(static_cast<size_t>(np), 0); // every corner of each vertex
+      for (vtkIdType c = 0; c < corners; ++c)
+      {
+        ++around[tris[c]];
+      }
+#pragma omp parallel for schedule(static) reduction(+ : pinched) reduction(min : lowest)
+      for (vtkIdType v = 0; v < np; ++v)
+      {
+        if (fan(v) < around[v])
+        {
+          ++pinched;
+          lowest = std::min(lowest, v);
+        }
+      }
+    }
+  }
+  else
+  {
+    struct LinkEdge
+    {
+      std::int32_t From, To;
+    };
+    vtkMedialBuffer<LinkEdge> links(static_cast<size_t>(corners));
+    const vtkMedialBuffer<vtkIdType> group = GroupByKey(
+      corners, np, [tris](vtkIdType c) { return tris[c]; },
+      [&](vtkIdType c, vtkIdType at) {
+        const vtkIdType* v = tris + 3 * (c / 3);
+        const int k = static_cast<int>(c % 3);
+        links[at] = { static_cast<std::int32_t>(v[(k + 1) % 3]), static_cast<std::int32_t>(v[(k + 2) % 3]) };
+      });
+#pragma omp parallel for schedule(dynamic, 4096) reduction(+ : pinched) reduction(min : lowest)
+    for (vtkIdType v = 0; v < np; ++v)
+    {
+      const vtkIdType begin = group[v], end = group[v + 1];
+      if (end - begin < 2)
+      {
+        continue;
+      }
+      vtkIdType steps = 1;
+      std::int32_t at = links[begin].To;
+      while (at != links[begin].From && steps < end - begin)
+      {
+        vtkIdType i = begin;
+        while (i < end && links[i].From != at)
+        {
+          ++i;
+        }
+        if (i == end)
+        {
+          break;
+        }
+        at = links[i].To;
+        ++steps;
+      }
+      if (steps < end - begin)
+      {
+        ++pinched;
+        lowest = std::min(lowest, v);
+      }
     }
   }
   if (example)

@@ -57,15 +57,21 @@ public:
   const double* GetPoint(vtkIdType i) const { return &this->Points[3 * i]; }
   const vtkIdType* GetTriangle(vtkIdType t) const { return &this->Triangles[3 * t]; }
   const double* GetNormal(vtkIdType t) const { return &this->Normals[3 * t]; }
-  /// Frees EdgeNeighbours (12 bytes a triangle) once the solid check has run.
-  void FreeEdgeNeighbours() { this->EdgeNeighbours = vtkMedialBuffer<std::int32_t>(); }
+  /// Frees EdgeNeighbours and PointTriangle (12 and 2 bytes a triangle) once the solid
+  /// check has run.
+  void FreeEdgeNeighbours()
+  {
+    this->EdgeNeighbours = vtkMedialBuffer<std::int32_t>();
+    this->PointTriangle = vtkMedialBuffer<std::int32_t>();
+  }
 
   /// On a closed, edge-manifold, oriented mesh (else 0): the vertices whose triangles
   /// form two or more fans that share only the vertex (pinched, non-manifold vertices:
   /// the surface touches itself there, as two shells touching at a point do), and in
   /// `example` (when given) the lowest such vertex, or -1. Free when the Euler
   /// characteristic rules them out (PinchedVertexBound() == 0, e.g. on any mesh whose
-  /// shells are all of genus 0); else two passes over the corners.
+  /// shells are all of genus 0); else, with EdgeNeighbours, a walk of one fan per
+  /// vertex, a step a corner (without them, the corners grouped by vertex).
   vtkIdType CountPinchedVertices(vtkIdType* example = nullptr) const;
   /// On a closed, edge-manifold, oriented mesh (else 0): 2 Shells - (V - E + F), which
   /// is the number of extra fans at pinched vertices plus twice the shells' total genus
@@ -141,9 +147,14 @@ public:
   vtkMedialBuffer<std::uint32_t> AreaGuide;
   vtkMedialBuffer<int> ShellOfTriangle;
   // On a closed mesh without non-manifold edges (else empty): the three triangles that
-  // share an edge with each triangle, 3 per triangle in no particular edge order. The
-  // solid check's normal-cone culling reads a patch's boundary from them.
+  // share an edge with each triangle, 3 per triangle in the order of their edges'
+  // (lower, higher) vertex ids: a triangle whose vertices are a < b < c has its
+  // neighbours across ab, ac, bc. The solid check's normal-cone culling reads a patch's
+  // boundary from them, and CountPinchedVertices its fans.
   vtkMedialBuffer<std::int32_t> EdgeNeighbours;
+  // With EdgeNeighbours (else empty): a triangle of each point, -1 for a point that no
+  // triangle uses; where CountPinchedVertices starts the walk of the point's fan.
+  vtkMedialBuffer<std::int32_t> PointTriangle;
   std::vector<Shell> Shells; // in the order of their first triangle
   std::vector<ShellContact> Contacts;
 
