@@ -256,20 +256,72 @@ bool Touches(const vtkMedialSurfaceQuery& query, vtkIdType t, const double x[3],
 //    ordinary ones, as the limits say: a slide may follow the last ordinary step (a ball
 //    shrunk by a faceted wall's tilt, grown by one step onto the wall across the crease,
 //    then rounds it).
+//  - Thorough: Robust, and four rules for a ball that stops before it can slide. It runs
+//    only where another ascent reached one of their branches with a surface point that
+//    would join the contacts across a convex crease, less than the slide angle from them
+//    (limits.Across, then limits.MaySlide), and the first three apply only there: a
+//    step whose probes found only balls out of reach probes once more, at the bound the
+//    last one found (a ball shrunk by a facet's tilt that does not reach a flat
+//    wall below: the ray runs parallel to that wall, and the bound from its plane is the
+//    exact step); a bound that grows the ball by less than the contact tolerance is a
+//    contact missed (a ball on a corner's bisector that its solver reports touching one
+//    of the corner's walls: the other then bounds every step by 1e-8); a plane's bound
+//    is kept as a contact where that plane meets the surface at the ball (a flat wall
+//    whose probe found another, distant triangle of it); and a contact counts within
+//    ContactTolerance of the radius (a float input's facets lie 1e-6 r off a shrunk ball).
 enum class AscentRules
 {
   Plain,
   Keep,
-  Robust
+  Robust,
+  Thorough
 };
 constexpr double ParallelRate = 1e-6;
+constexpr double ContactTolerance = 1e-5; // relative; 1e-7 by the other rules
 
-// What an ascent did: whether it took a sliding step, and whether a Robust rule
-// changed anything (otherwise it went as the Keep ascent does).
+// Whether the plane of triangle t, which the ball (x, radius) touches, meets the surface
+// where it touches the ball (another triangle of a flat wall): then `point` is that place.
+bool PlaneMeetsSurface(const vtkMedialSurfaceQuery& query, vtkIdType t, const double x[3], double radius,
+  double point[3])
+{
+  if (t < 0)
+  {
+    return false;
+  }
+  const double* outward = query.GetNormal(t);
+  double cv[3], scratch[9], foot[3];
+  G::Sub(x, query.GetTriangleVertices(t, scratch), cv);
+  const double distance = -G::Dot(outward, cv);
+  const double near = ContactTolerance * radius + 8.0 * query.GetSlack();
+  if (!(std::abs(distance - radius) <= near))
+  {
+    return false;
+  }
+  G::AddScaled(x, distance, outward, foot);
+  vtkMedialSurfaceQuery::ClosestHit hit;
+  if (!query.ClosestPoint(foot, near, hit))
+  {
+    return false;
+  }
+  G::Copy(hit.Point, point);
+  return true;
+}
+
+// What an ascent did: whether it took a sliding step, whether a Robust rule changed
+// anything (otherwise it went as the Keep ascent does), and whether it reached a branch
+// where a Thorough rule would have changed it.
 struct AscentReport
 {
   bool Slid = false;
   bool Tolerated = false;
+  unsigned Thorough = 0; // the ThoroughRule bits of those branches
+};
+enum ThoroughRule : unsigned
+{
+  ProbeAgain = 1,
+  CloseBound = 2,
+  PlaneContact = 4,
+  NearContact = 8
 };
 
 // One ascent by `rules`.
@@ -278,7 +330,8 @@ AscentReport Ascend(const vtkMedialSurfaceQuery& query, const double p[3], const
 {
   AscentReport report;
   const bool keep = rules != AscentRules::Plain;
-  const bool robust = rules == AscentRules::Robust;
+  const bool robust = rules == AscentRules::Robust || rules == AscentRules::Thorough;
+  const bool thorough = rules == AscentRules::Thorough;
   double c[3];
   G::Copy(out.Centre, c);
   double r = out.Radius;
@@ -328,13 +381,58 @@ AscentReport Ascend(const vtkMedialSurfaceQuery& query, const double p[3], const
   // one, no longer rounds the crease.
   double spread = 0.0;
   bool first = true;
+  // Whether a Thorough rule applies where the surface on triangle t (-1: the sample's
+  // faces), seen from the centre along -u, would join the contacts: only where the ball
+  // could then slide (the contacts less than the slide angle apart, on walls that may
+  // slide). The Thorough ascent follows it; the others report it (once: then the
+  // Thorough ascent runs anyway).
+  std::vector<vtkIdType> with;
+  std::vector<std::array<double, 3>> around;
+  double inwardScratch[3];
+  auto inward = [&](vtkIdType t) {
+    const double* outward = query.GetNormal(t);
+    for (int k = 0; k < 3; ++k)
+    {
+      inwardScratch[k] = -outward[k];
+    }
+    return inwardScratch;
+  };
+  auto applies = [&](unsigned rule, vtkIdType t, const double u[3]) {
+    if ((!thorough && report.Thorough) || !limits.MaySlide || directions.empty())
+    {
+      return false;
+    }
+    if (limits.Across && !limits.Across(triangles.data(), static_cast<int>(triangles.size()), t))
+    {
+      return false;
+    }
+    around.assign(directions.begin(), directions.end());
+    around.push_back({ u[0], u[1], u[2] });
+    double g[3];
+    G::NearestHullPoint(around, g);
+    if (!(G::Dot(g, g) >= limits.CosHalfSlideAngle * limits.CosHalfSlideAngle))
+    {
+      return false;
+    }
+    with.assign(triangles.begin(), triangles.end());
+    with.push_back(t);
+    if (!limits.MaySlide(with.data(), static_cast<int>(with.size()), c, r))
+    {
+      return false;
+    }
+    report.Thorough |= thorough ? 0u : rule;
+    return thorough;
+  };
   for (int steps = 0, slides = 0; (steps < limits.MaximumSteps || robust) && slides < limits.MaximumSlides;)
   {
     // The directions from the contacts that still touch the ball to its centre.
     const double touching = r * (1.0 + 1e-7) + 8.0 * slack + spread;
+    const double nearly = r * (1.0 + ContactTolerance) + 8.0 * slack + spread;
     directions.clear();
     triangles.clear();
     size_t kept = 0;
+    vtkIdType near = -2; // (not Thorough) a contact within ContactTolerance only
+    double nearU[3] = { 0, 0, 0 };
     for (Touch& t : touches)
     {
       if (t.Triangle >= 0)
@@ -347,8 +445,16 @@ AscentReport Ascend(const vtkMedialSurfaceQuery& query, const double p[3], const
       double u[3];
       G::Sub(c, t.Point, u);
       const double length = std::sqrt(G::Dot(u, u));
-      if (!(length > 0.0) || length > touching)
+      if (!(length > 0.0) || length > (thorough ? nearly : touching))
       {
+        if (length > touching && length <= nearly)
+        {
+          near = t.Triangle;
+          for (int k = 0; k < 3; ++k)
+          {
+            nearU[k] = u[k] / length;
+          }
+        }
         continue;
       }
       touches[kept++] = t;
@@ -370,6 +476,10 @@ AscentReport Ascend(const vtkMedialSurfaceQuery& query, const double p[3], const
       }
     }
     touches.resize(kept);
+    if (near > -2)
+    {
+      applies(NearContact, near, nearU);
+    }
     // Tangent to the nearest contact: a ball that overlaps a contact's plane, however
     // little, finds it inside every sliding probe, which then backs off by the square
     // root of the overlap (1% a probe) and ends on the last resort. Only rounding-size
@@ -494,7 +604,8 @@ AscentReport Ascend(const vtkMedialSurfaceQuery& query, const double p[3], const
     const int probes = sliding ? limits.SlideProbes : limits.Probes;
     vtkMedialSurfaceQuery::ClosestHit hit;
     double blockedAt = HUGE_VAL; // the smallest step whose ball was found not empty
-    for (int i = 0; i < probes && s > 0.0; ++i)
+    int extra = 0; // (Thorough) the probe after those that found only balls out of reach
+    for (int i = 0; i < probes + extra && s > 0.0; ++i)
     {
       G::AddScaled(c, s, v, x);
       const bool blocked = query.ClosestPoint(x, radiusAt(s) - slack, hit);
@@ -511,6 +622,12 @@ AscentReport Ascend(const vtkMedialSurfaceQuery& query, const double p[3], const
         touched = blocked || (i > 0 && (!keep || Touches(query, previous.Triangle, x, inscribed * (1.0 + 1e-7) + 8.0 * slack)));
         touch = blocked ? Touch{ { hit.Point[0], hit.Point[1], hit.Point[2] }, hit.Triangle } : previous;
         G::Copy(touch.Point, contact);
+        if (!touched && i > 0)
+        {
+          // The ball touches the plane that set this step, not its triangle.
+          touched = applies(PlaneContact, previous.Triangle, inward(previous.Triangle)) &&
+            PlaneMeetsSurface(query, previous.Triangle, x, inscribed, contact);
+        }
       }
       if (!blocked)
       {
@@ -518,7 +635,8 @@ AscentReport Ascend(const vtkMedialSurfaceQuery& query, const double p[3], const
       }
       const double next = boundFrom(hit.Point, hit.Triangle);
       previous = { { hit.Point[0], hit.Point[1], hit.Point[2] }, hit.Triangle };
-      if (!(next > 1e-12 * r))
+      if (!(next > 1e-12 * r) ||
+        (gamma * next < ContactTolerance * r && applies(CloseBound, hit.Triangle, inward(hit.Triangle))))
       {
         // It touches the ball already (a contact it did not know of, e.g. a third
         // wall at a corner): the direction must account for it.
@@ -530,6 +648,10 @@ AscentReport Ascend(const vtkMedialSurfaceQuery& query, const double p[3], const
         break; // no progress at double precision
       }
       s = next;
+      if (i + 1 == probes && !sliding && !(radius > r) && applies(ProbeAgain, hit.Triangle, inward(hit.Triangle)))
+      {
+        extra = 1; // every probe found the surface inside a ball out of reach (or no larger)
+      }
     }
     if (keep && sliding && !missed && blockedAt < HUGE_VAL)
     {
@@ -610,7 +732,7 @@ AscentReport Ascend(const vtkMedialSurfaceQuery& query, const double p[3], const
 
 void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
   const vtkMedialGrowthLimits& limits, const vtkIdType* faces, int faceCount, vtkMedialSampleRecord& out,
-  vtkMedialSampleRecord* plain, vtkMedialSampleRecord* kept)
+  vtkMedialSampleRecord* plain, vtkMedialSampleRecord* kept, vtkMedialSampleRecord* prior)
 {
   // The ascent is a local search: where the plain one slides, the one that keeps its
   // contacts goes on where the plain one stops early beside a crease (a curved wall,
@@ -621,20 +743,25 @@ void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
   // The robust one goes on where rounding (a float input's nearly coplanar faces), a
   // start beside a concave crease or the spent ordinary steps stop the other two; where
   // its rules changed anything, the Keep ascent runs too, so that no value falls below
-  // what it gives.
+  // what it gives. The thorough one runs only where one of the others reached a branch
+  // that its rules change (a ball that stops before it can slide), and counts where it
+  // goes farther.
   const vtkMedialSampleRecord start = out;
-  const bool slid = Ascend(query, p, limits, faces, faceCount, out, AscentRules::Plain).Slid;
+  const AscentReport first = Ascend(query, p, limits, faces, faceCount, out, AscentRules::Plain);
+  unsigned thorough = first.Thorough;
   if (plain)
   {
     *plain = out;
   }
-  if (slid)
+  if (first.Slid)
   {
     vtkMedialSampleRecord robust = start;
-    if (Ascend(query, p, limits, faces, faceCount, robust, AscentRules::Robust).Tolerated)
+    const AscentReport second = Ascend(query, p, limits, faces, faceCount, robust, AscentRules::Robust);
+    thorough |= second.Thorough;
+    if (second.Tolerated)
     {
       vtkMedialSampleRecord keep = start;
-      Ascend(query, p, limits, faces, faceCount, keep, AscentRules::Keep);
+      thorough |= Ascend(query, p, limits, faces, faceCount, keep, AscentRules::Keep).Thorough;
       if (keep.Radius > out.Radius)
       {
         out = keep;
@@ -656,5 +783,18 @@ void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
   else if (kept)
   {
     *kept = out;
+  }
+  if (prior)
+  {
+    *prior = out;
+  }
+  if (thorough)
+  {
+    vtkMedialSampleRecord deeper = start;
+    Ascend(query, p, limits, faces, faceCount, deeper, AscentRules::Thorough);
+    if (deeper.Radius > out.Radius)
+    {
+      out = deeper;
+    }
   }
 }

@@ -98,6 +98,11 @@ struct vtkMedialGrowthLimits
   // (-1: the sample's own faces) may slide (vtkMedialThickness: only where they lie on
   // walls that meet along convex edges near it). Unset: wherever the angle allows.
   std::function<bool(const vtkIdType* triangles, int count, const double* centre, double radius)> MaySlide;
+  // Optional, with MaySlide: whether a surface point on triangle t, joining contacts on
+  // these triangles, lies across a convex crease from them (the cheap test asked before
+  // MaySlide where the thorough ascent's rules may apply; vtkMedialThickness: on another
+  // wall that meets one of theirs along a convex crease). Unset: MaySlide alone.
+  std::function<bool(const vtkIdType* triangles, int count, vtkIdType t)> Across;
   // Steps (each one ray and up to Probes closest-point queries), and sliding steps
   // (up to SlideProbes each), counted apart.
   int MaximumSteps = 1;
@@ -127,7 +132,13 @@ struct vtkMedialGrowthLimits
  * rely on exact coplanarity (a plane nearly parallel to the step, such as a face coplanar
  * with a contact to the input's precision, does not bound it; a start contact on its
  * triangle's edge or corner is a point, not the plane); where those last rules changed
- * anything, the ascent without them runs as well. The largest ball is the result.
+ * anything, the ascent without them runs as well. Where one of these ascents stops
+ * before it can slide (it reaches a branch after which the surface found would join its
+ * contacts on walls that may slide, limits.MaySlide), a thorough one runs too: it probes
+ * once more after probes that found only balls out of reach, takes a bound that grows
+ * the ball by less than 1e-5 of its radius as a contact missed, keeps a plane's bound as
+ * a contact where that plane meets the surface at the ball, and counts contacts within
+ * 1e-5 of the radius (1e-7 otherwise). The largest ball is the result.
  * The contacts at the start: the planes of `faces` (the triangles around p, when the
  * ball touches p) and out.Contact (on out.ContactTriangle's plane, or a point when
  * out.Shrunk). out.Contact becomes its last contact.
@@ -135,9 +146,11 @@ struct vtkMedialGrowthLimits
 /// `plain`, when given: the plain ascent's ball; `kept`: the larger of the plain ascent's
 /// and the one that keeps its contacts without the rules that do not rely on exact
 /// coplanarity (a caller that compares balls at other points may still want those where
-/// the largest lies too far from them).
+/// the largest lies too far from them); `prior`: the largest ball without the thorough
+/// ascent.
 void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
   const vtkMedialGrowthLimits& limits, const vtkIdType* faces, int faceCount, vtkMedialSampleRecord& out,
-  vtkMedialSampleRecord* plain = nullptr, vtkMedialSampleRecord* kept = nullptr);
+  vtkMedialSampleRecord* plain = nullptr, vtkMedialSampleRecord* kept = nullptr,
+  vtkMedialSampleRecord* prior = nullptr);
 
 #endif

@@ -556,6 +556,33 @@ struct vtkMedialThickness::Walls
       std::binary_search(this->Convex.begin(), this->Convex.end(), std::make_pair(std::min(a, b), std::max(a, b)));
   }
 
+  // True when triangle t lies on none of the walls of the contacts on `triangles` (-1:
+  // one of `faces`) and its wall meets one of theirs along a convex crease (whole walls:
+  // the cheap part of MaySlide, asked first where a new contact may join).
+  bool Across(const std::vector<vtkIdType>& faces, const vtkIdType* triangles, int count, vtkIdType t) const
+  {
+    if (t < 0)
+    {
+      return false;
+    }
+    const vtkIdType w = this->OfTriangle[t];
+    bool meets = false;
+    for (int i = 0; i < count; ++i)
+    {
+      const vtkIdType c = triangles[i] >= 0 ? triangles[i] : (faces.empty() ? -1 : faces.front());
+      if (c >= 0)
+      {
+        const vtkIdType wc = this->OfTriangle[c];
+        if (wc == w)
+        {
+          return false;
+        }
+        meets = meets || this->MeetConvex(w, wc);
+      }
+    }
+    return meets;
+  }
+
   // True when the contacts on `triangles` (-1: one of `faces`) of a ball (centre,
   // radius) lie on at least two walls, each of which meets another one of them along a
   // convex crease (local walls, near the ball, where a wall has a convex crease inside it).
@@ -692,7 +719,7 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
   const std::vector<double>& normals, const std::vector<char>& sharp, std::vector<Measure>& measures)
 {
   const vtkIdType np = mesh.GetNumberOfPoints();
-  measures.assign(np, Measure{ NaN, { NaN, NaN, NaN }, NaN, NaN, NaN, { NaN, NaN, NaN }, NaN, { NaN, NaN, NaN } });
+  measures.assign(np, Measure{ NaN, { NaN, NaN, NaN }, NaN, NaN, NaN, { NaN, NaN, NaN }, NaN, { NaN, NaN, NaN }, NaN, { NaN, NaN, NaN } });
   std::vector<std::pair<vtkIdType, vtkIdType>> items; // (vertex, one of its triangles)
   for (vtkIdType v = 0; v < np; ++v)
   {
@@ -763,6 +790,7 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
     limits.MaySlide = [&](const vtkIdType* t, int count, const double* centre, double radius) {
       return walls.MaySlide(fan, t, count, centre, radius);
     };
+    limits.Across = [&](const vtkIdType* t, int count, vtkIdType other) { return walls.Across(fan, t, count, other); };
     vtkMedialSampleRecord grown = along;
     bool wedgeWithinStep = true;
     // The vertex's own faces stopped the ball along the mean normal within the tolerance:
@@ -784,10 +812,11 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
     }
     if (grown.Valid)
     {
-      vtkMedialSampleRecord plain, kept;
-      vtkMedialGrowBall(query, p, limits, fan.data(), static_cast<int>(fan.size()), grown, &plain, &kept);
+      vtkMedialSampleRecord plain, kept, prior;
+      vtkMedialGrowBall(query, p, limits, fan.data(), static_cast<int>(fan.size()), grown, &plain, &kept, &prior);
       for (const auto& [ball, radius, centre] : { std::make_tuple(&plain, &m.PlainRadius, m.PlainCentre),
-             std::make_tuple(&kept, &m.KeptRadius, m.KeptCentre) })
+             std::make_tuple(&kept, &m.KeptRadius, m.KeptCentre),
+             std::make_tuple(&prior, &m.PriorRadius, m.PriorCentre) })
       {
         // (Kept: the tangent ball where the wedge ball is a concave crease's.)
         const bool tangentLarger =
@@ -821,7 +850,7 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
     smoothParameters.Normals = &normals;
     smooth = &smoothParameters;
   }
-  measures.assign(cells, Measure{ NaN, { NaN, NaN, NaN }, NaN, NaN, NaN, { NaN, NaN, NaN }, NaN, { NaN, NaN, NaN } });
+  measures.assign(cells, Measure{ NaN, { NaN, NaN, NaN }, NaN, NaN, NaN, { NaN, NaN, NaN }, NaN, { NaN, NaN, NaN }, NaN, { NaN, NaN, NaN } });
   // Each cell is represented by its largest triangle (the first among equals).
   std::vector<vtkIdType> largest(cells, -1);
   for (vtkIdType t = 0; t < mesh.GetNumberOfTriangles(); ++t)
@@ -872,6 +901,9 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
       limits.MaySlide = [&](const vtkIdType* touched, int count, const double* centre, double radius) {
         return walls.MaySlide(faces, touched, count, centre, radius);
       };
+      limits.Across = [&](const vtkIdType* touched, int count, vtkIdType other) {
+        return walls.Across(faces, touched, count, other);
+      };
       vtkMedialGrowBall(query, p, limits, &t, 1, start);
     }
     if (start.Valid && start.Radius > m.Radius)
@@ -883,13 +915,16 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
     // tolerance) is admissible here too: where the cell's own ascent stops early (sliding
     // off a crease along a curved wall), the cell does not read thinner than its corners.
     const double size = std::max({ walls.Size[v[0]], walls.Size[v[1]], walls.Size[v[2]] });
-    // The corner's balls by the plain ascent and without the robust rules too: where the
-    // corner's own ball slid farther from the cell, those may still be admissible here.
-    for (int k = 0; k < 9; ++k)
+    // The corner's balls by the plain ascent, without the robust rules and without the
+    // thorough ones too: where the corner's own ball slid farther from the cell, those
+    // may still be admissible here.
+    for (int k = 0; k < 12; ++k)
     {
       const Measure& corner = corners[v[k % 3]];
-      const double radius = k < 3 ? corner.Radius : k < 6 ? corner.PlainRadius : corner.KeptRadius;
-      const double* centre = k < 3 ? corner.Centre : k < 6 ? corner.PlainCentre : corner.KeptCentre;
+      const double radius =
+        k < 3 ? corner.Radius : k < 6 ? corner.PlainRadius : k < 9 ? corner.KeptRadius : corner.PriorRadius;
+      const double* centre =
+        k < 3 ? corner.Centre : k < 6 ? corner.PlainCentre : k < 9 ? corner.KeptCentre : corner.PriorCentre;
       if (!(radius > m.Radius))
       {
         continue;

@@ -223,6 +223,10 @@ protected:
     // take that one too, where the robust ball went farther from it.
     double KeptRadius;
     double KeptCentre[3];
+    // Its ball without the ascent's thorough rules (vtkMedialGrowBall's `prior`): where
+    // those moved the vertex's ball farther from a cell, that cell may take this one.
+    double PriorRadius;
+    double PriorCentre[3];
   };
   // The surface split along its creases, and which parts meet along a convex one.
   struct Walls;
