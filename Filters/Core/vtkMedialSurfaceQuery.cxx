@@ -329,14 +329,14 @@ void vtkMedialSurfaceQuery::VisitNear(
   });
 }
 
-bool vtkMedialSurfaceQuery::TrianglesWithinIfEmpty(
-  const double x[3], double distance, double emptyRadius, std::vector<ClosestHit>& hits) const
+bool vtkMedialSurfaceQuery::TrianglesWithinIfEmpty(const double x[3], double distance, double emptyRadius,
+  std::vector<ClosestHit>& hits, double* nearestBound) const
 {
   hits.clear();
   // ContainsBall's limit: at or below zero the ball is empty.
   const double limit = emptyRadius - this->Slack;
   const bool empty = this->Tree.VisitWithinIfEmpty(x, distance, limit > 0.0 ? limit : 0.0,
-    HitCollector{ hits });
+    HitCollector{ hits }, nearestBound);
   SortByTriangle(hits);
   return empty;
 }

@@ -108,10 +108,12 @@ public:
   /**
    * ContainsBall(x, emptyRadius) && TrianglesWithin(x, distance, hits), in one walk
    * (for emptyRadius <= distance): the same answer and, when true, the same hits.
-   * When false, `hits` holds only some of them. No filter.
+   * When false, `hits` holds only some of them, and `nearestBound` (if given) an upper
+   * bound on the distance of x's closest point (vtkMedialTriangleBVH::VisitWithinIfEmpty):
+   * ClosestPoint from there finds what it finds from any larger bound, sooner. No filter.
    */
-  bool TrianglesWithinIfEmpty(
-    const double x[3], double distance, double emptyRadius, std::vector<ClosestHit>& hits) const;
+  bool TrianglesWithinIfEmpty(const double x[3], double distance, double emptyRadius,
+    std::vector<ClosestHit>& hits, double* nearestBound = nullptr) const;
 
   /**
    * Largest admissible ball tangent at p with centre p + r n (n unit, inward),

@@ -2956,8 +2956,16 @@ void vtkMedialTriangleBVH::VisitWithin(const double x[3], double distance, const
 }
 
 bool vtkMedialTriangleBVH::VisitWithinIfEmpty(const double x[3], double distance, double emptyRadius,
-  const std::function<void(double, const double*, vtkIdType)>& visit) const
+  const std::function<void(double, const double*, vtkIdType)>& visit, double* nearestBound) const
 {
+  // The blocker's distance (or emptyRadius) is above the closest point's; the pad, far
+  // above the rounding of a plane offset or a closest point (ulps of the extent), keeps
+  // every triangle at most that far inside the tests of a ClosestPoint walk bounded there.
+  const double pad = 100.0 * this->RoundingPad;
+  if (nearestBound)
+  {
+    *nearestBound = emptyRadius + pad;
+  }
   double xRel[3];
   G::Sub(x, this->Origin, xRel);
   const double extent = this->Extent();
@@ -2999,6 +3007,10 @@ bool vtkMedialTriangleBVH::VisitWithinIfEmpty(const double x[3], double distance
       const double off = G::Dot(leaf.Plane, x) - leaf.Plane[3];
       if (!(off * off >= empty2) && !(BoxDistance2(leaf.Lo, leaf.Hi, xRel) >= empty2 * (1.0 + 1e-9) + emptyRounding))
       {
+        if (nearestBound)
+        {
+          *nearestBound = std::sqrt(d2) + pad;
+        }
         blocked = true;
         return false;
       }

@@ -246,10 +246,13 @@ public:
    * emptyRadius) with no own triangle and no cap holds (true); false as soon as it is
    * known not to hold, and then visit may have seen only some triangles. The same
    * answers as the two queries (the visits in the same order), for emptyRadius <=
-   * distance; saves the contains-ball walk for the balls that are empty.
+   * distance; saves the contains-ball walk for the balls that are empty. When false and
+   * `nearestBound` is given, it gets an upper bound on the distance of x's closest
+   * point, with room for rounding: ClosestPoint(x, *nearestBound) finds the same point
+   * as from any larger bound, and its walk prunes from the start.
    */
   bool VisitWithinIfEmpty(const double x[3], double distance, double emptyRadius,
-    const std::function<void(double, const double*, vtkIdType)>& visit) const;
+    const std::function<void(double, const double*, vtkIdType)>& visit, double* nearestBound = nullptr) const;
 
   /**
    * Whether the searches may drop a lane on its subtree's inner sphere (WideSphere), on

@@ -719,13 +719,15 @@ int vtkMedialGovernors::GatherContacts(const double c[3], double radius, const d
   blocked = false;
   if ((thetaDegrees > 0.0 || requireEmpty) && radius > tolerance)
   {
-    read = this->Query->TrianglesWithinIfEmpty(c, reach, radius - tolerance, s.Hits);
+    // Where the walk stopped bounds the nearest point: the closest-point walk starts there.
+    double nearestBound = radius;
+    read = this->Query->TrianglesWithinIfEmpty(c, reach, radius - tolerance, s.Hits, &nearestBound);
     if (!read && requireEmpty)
     {
       blocked = true;
       return -1;
     }
-    if (!read && thetaDegrees > 0.0 && this->Query->ClosestPoint(c, radius, deepest))
+    if (!read && thetaDegrees > 0.0 && this->Query->ClosestPoint(c, std::min(radius, nearestBound), deepest))
     {
       // The ball overlaps the surface inside its cap (the sampler ignores contacts
       // there): the cap is one compound governor, and only the contacts beyond it,
