@@ -719,7 +719,7 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
   const std::vector<double>& normals, const std::vector<char>& sharp, std::vector<Measure>& measures)
 {
   const vtkIdType np = mesh.GetNumberOfPoints();
-  measures.assign(np, Measure{ NaN, { NaN, NaN, NaN }, NaN, NaN, NaN, { NaN, NaN, NaN }, NaN, { NaN, NaN, NaN }, NaN, { NaN, NaN, NaN } });
+  measures.assign(np, Measure{});
   std::vector<std::pair<vtkIdType, vtkIdType>> items; // (vertex, one of its triangles)
   for (vtkIdType v = 0; v < np; ++v)
   {
@@ -850,7 +850,7 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
     smoothParameters.Normals = &normals;
     smooth = &smoothParameters;
   }
-  measures.assign(cells, Measure{ NaN, { NaN, NaN, NaN }, NaN, NaN, NaN, { NaN, NaN, NaN }, NaN, { NaN, NaN, NaN }, NaN, { NaN, NaN, NaN } });
+  measures.assign(cells, Measure{});
   // Each cell is represented by its largest triangle (the first among equals).
   std::vector<vtkIdType> largest(cells, -1);
   for (vtkIdType t = 0; t < mesh.GetNumberOfTriangles(); ++t)
@@ -1017,7 +1017,7 @@ void vtkMedialThickness::WriteArrays(vtkPolyData* output, const vtkMedialTriangl
     vtkDoubleArray* centre = make(vtkMedialArrayNames::MedialCentre, 3);
     vtkDoubleArray* ray = make(vtkMedialArrayNames::RayThickness, 1);
     vtkDoubleArray* tangent = make(vtkMedialArrayNames::TangentThickness, 1);
-    const Measure missing{ NaN, { NaN, NaN, NaN }, NaN, NaN, NaN, { NaN, NaN, NaN } };
+    const Measure missing{};
     vtkIdType withoutValue = 0;
     for (vtkIdType i = 0; i < n; ++i)
     {

@@ -103,6 +103,7 @@
 #include "vtkMedialAxisStructureModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include <limits> // for std::numeric_limits
 #include <vector> // for std::vector
 
 class vtkMedialRepairFilter;
@@ -208,25 +209,27 @@ protected:
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  /// A ball and the ray along its direction, per prepared vertex or per cell.
+  /// A ball and the ray along its direction, per prepared vertex or per cell; every
+  /// field NaN until measured (a cell without a triangle, a point no cell uses).
   struct Measure
   {
-    double Radius;
-    double Centre[3];
-    double Ray;
-    double TangentRadius;
+    static constexpr double Unmeasured = std::numeric_limits<double>::quiet_NaN();
+    double Radius = Unmeasured;
+    double Centre[3] = { Unmeasured, Unmeasured, Unmeasured };
+    double Ray = Unmeasured;
+    double TangentRadius = Unmeasured;
     // A vertex's ball by the plain ascent alone (vtkMedialGrowBall), where it slid: a
     // cell may take it from its corner when the larger ball lies too far from the cell.
-    double PlainRadius;
-    double PlainCentre[3];
+    double PlainRadius = Unmeasured;
+    double PlainCentre[3] = { Unmeasured, Unmeasured, Unmeasured };
     // Its ball without the ascent's robust rules (vtkMedialGrowBall's `kept`): a cell may
     // take that one too, where the robust ball went farther from it.
-    double KeptRadius;
-    double KeptCentre[3];
+    double KeptRadius = Unmeasured;
+    double KeptCentre[3] = { Unmeasured, Unmeasured, Unmeasured };
     // Its ball without the ascent's thorough rules (vtkMedialGrowBall's `prior`): where
     // those moved the vertex's ball farther from a cell, that cell may take this one.
-    double PriorRadius;
-    double PriorCentre[3];
+    double PriorRadius = Unmeasured;
+    double PriorCentre[3] = { Unmeasured, Unmeasured, Unmeasured };
   };
   // The surface split along its creases, and which parts meet along a convex one.
   struct Walls;
