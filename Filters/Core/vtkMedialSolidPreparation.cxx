@@ -73,9 +73,7 @@ bool vtkMedialSolidPreparation::Prepare(vtkPolyData* input, int mode, const Repa
   vtkMedialSolidCheck check;
   check.Run(mesh, query, threads);
   mesh.FreeEdgeNeighbours(); // read by the check only: 12 bytes a triangle off the peak
-  if (check.IsValid())
-  {
-    this->Messages = mesh.Warnings();
+  auto sayKeptPinches = [&]() {
     if (check.PinchedVertices > 0)
     {
       // Not repaired: a split point is the same point to the preparation, which merges
@@ -84,6 +82,11 @@ bool vtkMedialSolidPreparation::Prepare(vtkPolyData* input, int mode, const Repa
       this->Messages.push_back(check.PinchedClause() +
         ": kept (vtkMedialRepairFilter splits it in its output); the solid's inside is open there");
     }
+  };
+  if (check.IsValid())
+  {
+    this->Messages = mesh.Warnings();
+    sayKeptPinches();
     return true;
   }
   if (aborted && aborted())
@@ -102,12 +105,18 @@ bool vtkMedialSolidPreparation::Prepare(vtkPolyData* input, int mode, const Repa
   }
   if (!result.Changed)
   {
-    // A valid solid after all: the mesh already built is the one. The repair's lines,
-    // when it has any, say why (shells that only touch) instead of the mesh's warnings.
+    // A valid solid to the filters after all: the mesh already built is the one. The
+    // repair's lines, when it has any, say why (shells that only touch) instead of the
+    // mesh's warnings. The check counts pinches only where it searched pairs.
     if (result.Messages.empty())
     {
       this->Messages = mesh.Warnings();
     }
+    if (!check.PairsSearched)
+    {
+      check.CountPinches(mesh);
+    }
+    sayKeptPinches();
     this->Report = nullptr;
     return true;
   }

@@ -10,8 +10,9 @@
  *    warnings);
  *  - AUTO: vtkMedialSolidCheck on the mesh and its tree. A valid solid goes on as it
  *    is (the same mesh, the same bits downstream). Otherwise the repair is asked; when
- *    it decides the input is a valid solid after all (the exact test clears the
- *    pairs) the prepared mesh is kept, else mesh and query are built again on the
+ *    it decides the input is a valid solid to the filters after all (the exact test
+ *    clears the pairs, or all it would change is winding, a pinch or shells that only
+ *    touch) the prepared mesh is kept, else mesh and query are built again on the
  *    repaired surface;
  *  - WRAP: the repair is asked to wrap the input first.
  *

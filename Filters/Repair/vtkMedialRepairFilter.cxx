@@ -1400,6 +1400,10 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
   }
   const vtkMedialSolidCheck& check = *checked;
   const vtkMedialTriangleMesh& m0 = *original->Mesh;
+  // Asked by a filter's preparation, which orients every shell as it prepares and
+  // merges a split pinch's copies back into one point: a surface that differs from the
+  // prepared input only there is, to it, the input, which it has already prepared.
+  const bool forPreparation = checked == self->CheckedResult;
   if (!wrapNow && (check.IsValid() || check.OnlyPairs()))
   {
     original->Candidates = check.Pairs; // the pair search ran
@@ -1430,6 +1434,12 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
     {
       self->InputWasValid = true;
       output->ShallowCopy(input);
+      this->Stage(nullptr);
+      return true;
+    }
+    if (valid && forPreparation)
+    {
+      output->ShallowCopy(input); // Changed stays false: the preparation keeps its mesh
       this->Stage(nullptr);
       return true;
     }
@@ -1723,6 +1733,18 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
         work = SoupOf(*result->Mesh);
         result->Source = work;
       }
+    }
+  }
+  // Nothing changed but what the preparation does anyway (touching shells kept apart,
+  // a pinch it would merge back): the preparation keeps the mesh it has.
+  if (!wrap && forPreparation)
+  {
+    const Soup prepared = SoupOf(m0);
+    if (work.Points == prepared.Points && work.Triangles == prepared.Triangles)
+    {
+      output->ShallowCopy(input);
+      this->Stage(nullptr);
+      return true;
     }
   }
   // 7. The wrap.

@@ -207,7 +207,9 @@ public:
    * Internal, for a filter's preparation (vtkMedialRepairCallback.h): the next update's
    * input has been prepared as `mesh` and `query` and checked (`check`), so the repair
    * starts from them instead of building them again. The pointers must stay valid
-   * through that update; ClearCheckedInput() forgets them.
+   * through that update; ClearCheckedInput() forgets them. The output is then the
+   * input, with Changed false, when the repair would only change what the preparation
+   * does anyway (winding, a pinch's split, touching shells kept apart).
    */
   void SetCheckedInput(
     const vtkMedialTriangleMesh* mesh, const vtkMedialSurfaceQuery* query, const vtkMedialSolidCheck* check)

@@ -341,5 +341,24 @@ int TestMedialRepairPinch(int, char*[])
   std::printf("medial mesh: %s\n", meshLog.LineWith("pinched").c_str());
   MEDIAL_CHECK(!meshLog.LineWith("The surface has 1 pinched vertex").empty(),
     "the medial mesh's topology check does not name the pinched vertex");
+
+  // Two cubes sharing a corner: the check leaves their pairs at the corner to the exact
+  // test, so the preparation asks the repair. The exact test clears them, and what is left
+  // (the pinch) is no defect to a filter: the input is kept as it was prepared, not split
+  // and prepared again, and the pinch is named as kept.
+  vtkNew<vtkMedialAxisSampler> cubes;
+  cubes->SetInputData(medialtest::defects::CubesSharingAVertex().Surface);
+  cubes->SetNumberOfSamples(2000);
+  medialtest::EventLog cubesLog;
+  cubesLog.Watch(cubes);
+  cubes->Update();
+  std::printf("sampler on the cubes: repaired %d; %s\n", cubes->GetSurfaceRepaired() ? 1 : 0,
+    cubesLog.LineWith("pinched").c_str());
+  MEDIAL_CHECK(!cubes->GetSurfaceRepaired(), "the cubes sharing a corner were split and prepared again");
+  MEDIAL_CHECK(!cubesLog.LineWith("1 pinched vertex").empty() && !cubesLog.LineWith(": kept").empty(),
+    "the sampler does not name the cubes' pinch as kept");
+  MEDIAL_CHECK(cubesLog.LineWith("pinch:").empty(), "the sampler reports a split of the cubes' pinch");
+  MEDIAL_CHECK(cubes->GetOutput()->GetNumberOfPoints() == 2000, "the cubes gave %lld balls",
+    static_cast<long long>(cubes->GetOutput()->GetNumberOfPoints()));
   return EXIT_SUCCESS;
 }
