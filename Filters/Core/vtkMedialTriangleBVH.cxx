@@ -1947,14 +1947,11 @@ private:
       }
       const WideNode& holder = wides[WideOf(ref)];
       const int lane = LaneOf(ref);
-      if (shrunk)
+      // Only this lane's box and slab, as TestLanes' Miss would test them (the same
+      // float sums in the same order, so the same decision).
+      if (shrunk && this->Fast->LaneMissesBall(holder, lane))
       {
-        FloatNodeTests::Lanes lanes;
-        this->Fast->TestLanes(holder, lanes);
-        if (lanes.Miss & (1 << lane))
-        {
-          continue;
-        }
+        continue;
       }
       const std::int32_t child = holder.Child[lane];
       if (child < 0)
