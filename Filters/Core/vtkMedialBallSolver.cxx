@@ -388,6 +388,8 @@ AscentReport Ascend(const vtkMedialSurfaceQuery& query, const double p[3], const
   // Thorough ascent runs anyway).
   std::vector<vtkIdType> with;
   std::vector<std::array<double, 3>> around;
+  // A step's surface points found inside its probes' balls.
+  std::vector<std::array<double, 3>> inside;
   double inwardScratch[3];
   auto inward = [&](vtkIdType t) {
     const double* outward = query.GetNormal(t);
@@ -604,6 +606,7 @@ AscentReport Ascend(const vtkMedialSurfaceQuery& query, const double p[3], const
     const int probes = sliding ? limits.SlideProbes : limits.Probes;
     vtkMedialSurfaceQuery::ClosestHit hit;
     double blockedAt = HUGE_VAL; // the smallest step whose ball was found not empty
+    inside.clear();
     int extra = 0; // (Thorough) the probe after those that found only balls out of reach
     for (int i = 0; i < probes + extra && s > 0.0; ++i)
     {
@@ -613,6 +616,7 @@ AscentReport Ascend(const vtkMedialSurfaceQuery& query, const double p[3], const
       if (blocked)
       {
         blockedAt = s;
+        inside.push_back({ hit.Point[0], hit.Point[1], hit.Point[2] });
       }
       if (inscribed > radius && (!sliding || !blocked || i + 1 == probes) && within(x, inscribed))
       {
@@ -661,21 +665,44 @@ AscentReport Ascend(const vtkMedialSurfaceQuery& query, const double p[3], const
       // little, so the probes run out. The largest empty ball on the path below the
       // smallest blocked step, by bisection, is still tangent to every contact and
       // touches what blocks it just beyond. Either may go farther; the larger is kept.
+      // A ball that holds a surface point found on this path (by a probe or an earlier
+      // evaluation) strictly inside, by more than rounding, is not empty: no query. The
+      // contact is the closest point at the last step found not empty, queried at the
+      // end when that step was decided so (the same query as without the shortcut).
       vtkMedialSurfaceQuery::ClosestHit beyond;
-      bool found = false;
+      bool found = false, known = false; // known: beyond is the last blocked step's
+      double lastBlocked = blockedAt;
       int evaluations = 0;
       const double lo = G::BisectLargestEmpty(0.0, blockedAt, 1e-9 * r,
         [&](double step) {
           G::AddScaled(c, step, v, x);
-          if (query.ClosestPoint(x, radiusAt(step) - slack, hit))
+          const double clear = radiusAt(step) - 2.0 * slack;
+          bool blocked = false;
+          for (size_t k = 0; k < inside.size() && clear > 0.0 && !blocked; ++k)
+          {
+            blocked = G::Distance2(x, inside[k].data()) < clear * clear;
+          }
+          const bool queried = !blocked && query.ClosestPoint(x, radiusAt(step) - slack, hit);
+          if (queried)
           {
             beyond = hit;
+            inside.push_back({ hit.Point[0], hit.Point[1], hit.Point[2] });
+          }
+          if (blocked || queried)
+          {
             found = true;
+            known = queried;
+            lastBlocked = step;
             return false;
           }
           return true;
         },
         evaluations);
+      if (found && !known)
+      {
+        G::AddScaled(c, lastBlocked, v, x);
+        query.ClosestPoint(x, radiusAt(lastBlocked) - slack, beyond);
+      }
       G::AddScaled(c, lo, v, x);
       if (lo > 0.0 && radiusAt(lo) > radius && within(x, radiusAt(lo)))
       {
