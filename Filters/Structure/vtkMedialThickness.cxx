@@ -918,23 +918,30 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
     // The corner's balls by the plain ascent, without the robust rules and without the
     // thorough ones too: where the corner's own ball slid farther from the cell, those
     // may still be admissible here.
-    for (int k = 0; k < 12; ++k)
+    // Each corner's four balls, in this order: its own, the plain, the kept, the prior;
+    // the corners in turn within each kind.
+    using Ball = std::pair<double Measure::*, double (Measure::*)[3]>;
+    static constexpr Ball Kinds[4] = { { &Measure::Radius, &Measure::Centre },
+      { &Measure::PlainRadius, &Measure::PlainCentre }, { &Measure::KeptRadius, &Measure::KeptCentre },
+      { &Measure::PriorRadius, &Measure::PriorCentre } };
+    for (const Ball& kind : Kinds)
     {
-      const Measure& corner = corners[v[k % 3]];
-      const double radius =
-        k < 3 ? corner.Radius : k < 6 ? corner.PlainRadius : k < 9 ? corner.KeptRadius : corner.PriorRadius;
-      const double* centre =
-        k < 3 ? corner.Centre : k < 6 ? corner.PlainCentre : k < 9 ? corner.KeptCentre : corner.PriorCentre;
-      if (!(radius > m.Radius))
+      for (int k = 0; k < 3; ++k)
       {
-        continue;
-      }
-      const double toVertex = std::sqrt(G::Distance2(centre, mesh.GetPoint(v[k % 3]))) - radius;
-      const double toCentroid = std::sqrt(G::Distance2(centre, p)) - radius;
-      if (toCentroid <= std::max(toVertex, this->SurfaceTolerance * size))
-      {
-        m.Radius = radius;
-        std::copy(centre, centre + 3, m.Centre);
+        const Measure& corner = corners[v[k]];
+        const double radius = corner.*kind.first;
+        const double* centre = corner.*kind.second;
+        if (!(radius > m.Radius))
+        {
+          continue;
+        }
+        const double toVertex = std::sqrt(G::Distance2(centre, mesh.GetPoint(v[k]))) - radius;
+        const double toCentroid = std::sqrt(G::Distance2(centre, p)) - radius;
+        if (toCentroid <= std::max(toVertex, this->SurfaceTolerance * size))
+        {
+          m.Radius = radius;
+          std::copy(centre, centre + 3, m.Centre);
+        }
       }
     }
     return next;
