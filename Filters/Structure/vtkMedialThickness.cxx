@@ -556,6 +556,13 @@ struct vtkMedialThickness::Walls
       std::binary_search(this->Convex.begin(), this->Convex.end(), std::make_pair(std::min(a, b), std::max(a, b)));
   }
 
+  // The triangle that stands for a contact on triangle t on its wall: t itself, or for a
+  // point contact (-1) the sample's first face (-1 when it has none).
+  static vtkIdType WallOf(const std::vector<vtkIdType>& faces, vtkIdType t)
+  {
+    return t >= 0 ? t : (faces.empty() ? -1 : faces.front());
+  }
+
   // True when triangle t lies on none of the walls of the contacts on `triangles` (-1:
   // one of `faces`) and its wall meets one of theirs along a convex crease (whole walls:
   // the cheap part of MaySlide, asked first where a new contact may join).
@@ -569,7 +576,7 @@ struct vtkMedialThickness::Walls
     bool meets = false;
     for (int i = 0; i < count; ++i)
     {
-      const vtkIdType c = triangles[i] >= 0 ? triangles[i] : (faces.empty() ? -1 : faces.front());
+      const vtkIdType c = WallOf(faces, triangles[i]);
       if (c >= 0)
       {
         const vtkIdType wc = this->OfTriangle[c];
@@ -601,7 +608,7 @@ struct vtkMedialThickness::Walls
     Scratch& scratch = LocalScratch();
     for (int i = 0; i < count; ++i)
     {
-      const vtkIdType t = triangles[i] >= 0 ? triangles[i] : (faces.empty() ? -1 : faces.front());
+      const vtkIdType t = WallOf(faces, triangles[i]);
       if (t < 0)
       {
         continue;
