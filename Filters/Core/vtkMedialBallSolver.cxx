@@ -239,9 +239,10 @@ bool Touches(const vtkMedialSurfaceQuery& query, vtkIdType t, const double x[3],
   return G::ClosestPointOnTriangle(x, a, a + 3, a + 6, closest) <= distance * distance;
 }
 
-// Surface points that the ascents of one ball found inside a probe's ball (the latest
-// MaxSurfacePoints): a ball that holds one is not empty, and the nearest one bounds a
-// closest-point query (which then finds the same point, sooner).
+// Surface points that the ascents found inside a probe's ball (the latest
+// MaxSurfacePoints; vtkMedialGrowBall's surfacePoints): a ball that holds one is not
+// empty, and the nearest one bounds a closest-point query (which then finds the same
+// point, sooner).
 using SurfacePoints = std::vector<std::array<double, 3>>;
 constexpr size_t MaxSurfacePoints = 64;
 void AddSurfacePoint(SurfacePoints& points, const double q[3])
@@ -776,7 +777,8 @@ AscentReport Ascend(const vtkMedialSurfaceQuery& query, const double p[3], const
 
 void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
   const vtkMedialGrowthLimits& limits, const vtkIdType* faces, int faceCount, vtkMedialSampleRecord& out,
-  vtkMedialSampleRecord* plain, vtkMedialSampleRecord* kept, vtkMedialSampleRecord* prior)
+  vtkMedialSampleRecord* plain, vtkMedialSampleRecord* kept, vtkMedialSampleRecord* prior,
+  std::vector<std::array<double, 3>>* surfacePoints)
 {
   // The ascent is a local search: where the plain one slides, the one that keeps its
   // contacts goes on where the plain one stops early beside a crease (a curved wall,
@@ -791,7 +793,8 @@ void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
   // that its rules change (a ball that stops before it can slide), and counts where it
   // goes farther.
   const vtkMedialSampleRecord start = out;
-  SurfacePoints inside;
+  SurfacePoints local;
+  SurfacePoints& inside = surfacePoints ? *surfacePoints : local;
   const AscentReport first = Ascend(query, p, limits, faces, faceCount, out, AscentRules::Plain, inside);
   unsigned thorough = first.Thorough;
   if (plain)

@@ -170,6 +170,21 @@ bool SolveInLeafOrder(vtkAlgorithm* self, const vtkMedialSurfaceQuery& query,
   return true;
 }
 
+// The surface points that the ascents of this thread's chain found so far
+// (vtkMedialGrowBall's surfacePoints): neighbours' balls meet the same surface. Every
+// item asks for them first, and a chain starts with no hint (SolveInLeafOrder), so they
+// never outlive it, nor reach a run on another surface; they only spare queries, and
+// the balls are the same without them.
+std::vector<std::array<double, 3>>& ChainPoints(vtkIdType hint)
+{
+  thread_local std::vector<std::array<double, 3>> points;
+  if (hint < 0)
+  {
+    points.clear();
+  }
+  return points;
+}
+
 // The ball of a valid record as a radius and a centre; its contact triangle hints the
 // next item.
 vtkIdType Keep(const vtkMedialSampleRecord& ball, vtkIdType hint, double& radius, double centre[3])
@@ -736,6 +751,7 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
     }
   }
   auto solve = [&](vtkIdType v, vtkIdType hint) {
+    std::vector<std::array<double, 3>>& points = ChainPoints(hint);
     const double* p = mesh.GetPoint(v);
     const double* n = &normals[3 * v];
     const std::vector<vtkIdType> fan(around.begin() + start[v], around.begin() + start[v + 1]);
@@ -820,7 +836,8 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
     if (grown.Valid)
     {
       vtkMedialSampleRecord plain, kept, prior;
-      vtkMedialGrowBall(query, p, limits, fan.data(), static_cast<int>(fan.size()), grown, &plain, &kept, &prior);
+      vtkMedialGrowBall(
+        query, p, limits, fan.data(), static_cast<int>(fan.size()), grown, &plain, &kept, &prior, &points);
       for (const auto& [ball, radius, centre] : { std::make_tuple(&plain, &m.PlainRadius, m.PlainCentre),
              std::make_tuple(&kept, &m.KeptRadius, m.KeptCentre),
              std::make_tuple(&prior, &m.PriorRadius, m.PriorCentre) })
@@ -877,6 +894,7 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
     }
   }
   auto solve = [&](vtkIdType c, vtkIdType hint) {
+    std::vector<std::array<double, 3>>& points = ChainPoints(hint);
     const vtkIdType t = largest[c];
     const vtkIdType* v = mesh.GetTriangle(t);
     double p[3], n[3];
@@ -911,7 +929,7 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
       limits.Across = [&](const vtkIdType* touched, int count, vtkIdType other) {
         return walls.Across(faces, touched, count, other);
       };
-      vtkMedialGrowBall(query, p, limits, &t, 1, start);
+      vtkMedialGrowBall(query, p, limits, &t, 1, start, nullptr, nullptr, nullptr, &points);
     }
     if (start.Valid && start.Radius > m.Radius)
     {
