@@ -239,6 +239,30 @@ bool Touches(const vtkMedialSurfaceQuery& query, vtkIdType t, const double x[3],
   return G::ClosestPointOnTriangle(x, a, a + 3, a + 6, closest) <= distance * distance;
 }
 
+// Surface points that the ascents found inside a probe's ball (the latest
+// MaxSurfacePoints; vtkMedialGrowBall's surfacePoints): a ball that holds one is not
+// empty, and the nearest one bounds a closest-point query (which then finds the same
+// point, sooner).
+using SurfacePoints = std::vector<std::array<double, 3>>;
+constexpr size_t MaxSurfacePoints = 64;
+void AddSurfacePoint(SurfacePoints& points, const double q[3])
+{
+  if (points.size() == MaxSurfacePoints)
+  {
+    points.erase(points.begin(), points.begin() + MaxSurfacePoints / 2);
+  }
+  points.push_back({ q[0], q[1], q[2] });
+}
+double NearestSurfacePoint2(const SurfacePoints& points, const double x[3])
+{
+  double nearest = HUGE_VAL;
+  for (const auto& q : points)
+  {
+    nearest = std::min(nearest, G::Distance2(x, q.data()));
+  }
+  return nearest;
+}
+
 // The rules of one ascent (see vtkMedialGrowBall).
 //  - Plain: the ascent as it was before the slide kept its contacts.
 //  - Keep: the sliding steps keep their contacts (the ball made exactly tangent, a
@@ -326,7 +350,7 @@ enum ThoroughRule : unsigned
 
 // One ascent by `rules`.
 AscentReport Ascend(const vtkMedialSurfaceQuery& query, const double p[3], const vtkMedialGrowthLimits& limits,
-  const vtkIdType* faces, int faceCount, vtkMedialSampleRecord& out, AscentRules rules)
+  const vtkIdType* faces, int faceCount, vtkMedialSampleRecord& out, AscentRules rules, SurfacePoints& inside)
 {
   AscentReport report;
   const bool keep = rules != AscentRules::Plain;
@@ -608,11 +632,13 @@ AscentReport Ascend(const vtkMedialSurfaceQuery& query, const double p[3], const
     for (int i = 0; i < probes + extra && s > 0.0; ++i)
     {
       G::AddScaled(c, s, v, x);
-      const bool blocked = query.ClosestPoint(x, radiusAt(s) - slack, hit);
+      const double known = std::sqrt(NearestSurfacePoint2(inside, x)) + 4.0 * slack;
+      const bool blocked = query.ClosestPoint(x, std::min(radiusAt(s) - slack, known), hit);
       const double inscribed = blocked ? hit.Distance : radiusAt(s);
       if (blocked)
       {
         blockedAt = s;
+        AddSurfacePoint(inside, hit.Point);
       }
       if (inscribed > radius && (!sliding || !blocked || i + 1 == probes) && within(x, inscribed))
       {
@@ -661,21 +687,40 @@ AscentReport Ascend(const vtkMedialSurfaceQuery& query, const double p[3], const
       // little, so the probes run out. The largest empty ball on the path below the
       // smallest blocked step, by bisection, is still tangent to every contact and
       // touches what blocks it just beyond. Either may go farther; the larger is kept.
+      // A ball that holds a surface point found by this ball's ascents (a probe's or an
+      // earlier evaluation's) strictly inside, by more than rounding, is not empty: no
+      // query. The contact is the closest point at the last step found not empty, queried
+      // at the end when that step was decided so (the same query as without the shortcut).
       vtkMedialSurfaceQuery::ClosestHit beyond;
-      bool found = false;
+      bool found = false, known = false; // known: beyond is the last blocked step's
+      double lastBlocked = blockedAt;
       int evaluations = 0;
       const double lo = G::BisectLargestEmpty(0.0, blockedAt, 1e-9 * r,
         [&](double step) {
           G::AddScaled(c, step, v, x);
-          if (query.ClosestPoint(x, radiusAt(step) - slack, hit))
+          const double clear = radiusAt(step) - 2.0 * slack;
+          const bool blocked = clear > 0.0 && NearestSurfacePoint2(inside, x) < clear * clear;
+          const bool queried = !blocked && query.ClosestPoint(x, radiusAt(step) - slack, hit);
+          if (queried)
           {
             beyond = hit;
+            AddSurfacePoint(inside, hit.Point);
+          }
+          if (blocked || queried)
+          {
             found = true;
+            known = queried;
+            lastBlocked = step;
             return false;
           }
           return true;
         },
         evaluations);
+      if (found && !known)
+      {
+        G::AddScaled(c, lastBlocked, v, x);
+        query.ClosestPoint(x, radiusAt(lastBlocked) - slack, beyond);
+      }
       G::AddScaled(c, lo, v, x);
       if (lo > 0.0 && radiusAt(lo) > radius && within(x, radiusAt(lo)))
       {
@@ -732,7 +777,8 @@ AscentReport Ascend(const vtkMedialSurfaceQuery& query, const double p[3], const
 
 void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
   const vtkMedialGrowthLimits& limits, const vtkIdType* faces, int faceCount, vtkMedialSampleRecord& out,
-  vtkMedialSampleRecord* plain, vtkMedialSampleRecord* kept, vtkMedialSampleRecord* prior)
+  vtkMedialSampleRecord* plain, vtkMedialSampleRecord* kept, vtkMedialSampleRecord* prior,
+  std::vector<std::array<double, 3>>* surfacePoints)
 {
   // The ascent is a local search: where the plain one slides, the one that keeps its
   // contacts goes on where the plain one stops early beside a crease (a curved wall,
@@ -747,7 +793,9 @@ void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
   // that its rules change (a ball that stops before it can slide), and counts where it
   // goes farther.
   const vtkMedialSampleRecord start = out;
-  const AscentReport first = Ascend(query, p, limits, faces, faceCount, out, AscentRules::Plain);
+  SurfacePoints local;
+  SurfacePoints& inside = surfacePoints ? *surfacePoints : local;
+  const AscentReport first = Ascend(query, p, limits, faces, faceCount, out, AscentRules::Plain, inside);
   unsigned thorough = first.Thorough;
   if (plain)
   {
@@ -756,12 +804,12 @@ void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
   if (first.Slid)
   {
     vtkMedialSampleRecord robust = start;
-    const AscentReport second = Ascend(query, p, limits, faces, faceCount, robust, AscentRules::Robust);
+    const AscentReport second = Ascend(query, p, limits, faces, faceCount, robust, AscentRules::Robust, inside);
     thorough |= second.Thorough;
     if (second.Tolerated)
     {
       vtkMedialSampleRecord keep = start;
-      thorough |= Ascend(query, p, limits, faces, faceCount, keep, AscentRules::Keep).Thorough;
+      thorough |= Ascend(query, p, limits, faces, faceCount, keep, AscentRules::Keep, inside).Thorough;
       if (keep.Radius > out.Radius)
       {
         out = keep;
@@ -791,7 +839,7 @@ void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
   if (thorough)
   {
     vtkMedialSampleRecord deeper = start;
-    Ascend(query, p, limits, faces, faceCount, deeper, AscentRules::Thorough);
+    Ascend(query, p, limits, faces, faceCount, deeper, AscentRules::Thorough, inside);
     if (deeper.Radius > out.Radius)
     {
       out = deeper;

@@ -24,7 +24,9 @@
 #include "vtkMedialTriangleBVH.h" // for BlockerChain
 #include "vtkType.h"
 
+#include <array>
 #include <functional>
+#include <vector>
 
 class vtkMedialSurfaceNormals;
 class vtkMedialSurfaceQuery;
@@ -147,10 +149,13 @@ struct vtkMedialGrowthLimits
 /// and the one that keeps its contacts without the rules that do not rely on exact
 /// coplanarity (a caller that compares balls at other points may still want those where
 /// the largest lies too far from them); `prior`: the largest ball without the thorough
-/// ascent.
+/// ascent. `surfacePoints`, when given: points of this query's surface found by earlier
+/// calls (a caller that grows nearby balls in turn keeps it between them; it gets this
+/// call's too); they only spare closest-point queries (a ball that holds one is not
+/// empty, the nearest bounds a search), the balls are the same without them.
 void vtkMedialGrowBall(const vtkMedialSurfaceQuery& query, const double p[3],
   const vtkMedialGrowthLimits& limits, const vtkIdType* faces, int faceCount, vtkMedialSampleRecord& out,
   vtkMedialSampleRecord* plain = nullptr, vtkMedialSampleRecord* kept = nullptr,
-  vtkMedialSampleRecord* prior = nullptr);
+  vtkMedialSampleRecord* prior = nullptr, std::vector<std::array<double, 3>>* surfacePoints = nullptr);
 
 #endif

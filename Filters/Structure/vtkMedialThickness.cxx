@@ -170,6 +170,21 @@ bool SolveInLeafOrder(vtkAlgorithm* self, const vtkMedialSurfaceQuery& query,
   return true;
 }
 
+// The surface points that the ascents of this thread's chain found so far
+// (vtkMedialGrowBall's surfacePoints): neighbours' balls meet the same surface. Every
+// item asks for them first, and a chain starts with no hint (SolveInLeafOrder), so they
+// never outlive it, nor reach a run on another surface; they only spare queries, and
+// the balls are the same without them.
+std::vector<std::array<double, 3>>& ChainPoints(vtkIdType hint)
+{
+  thread_local std::vector<std::array<double, 3>> points;
+  if (hint < 0)
+  {
+    points.clear();
+  }
+  return points;
+}
+
 // The ball of a valid record as a radius and a centre; its contact triangle hints the
 // next item.
 vtkIdType Keep(const vtkMedialSampleRecord& ball, vtkIdType hint, double& radius, double centre[3])
@@ -556,6 +571,13 @@ struct vtkMedialThickness::Walls
       std::binary_search(this->Convex.begin(), this->Convex.end(), std::make_pair(std::min(a, b), std::max(a, b)));
   }
 
+  // The triangle that stands for a contact on triangle t on its wall: t itself, or for a
+  // point contact (-1) the sample's first face (-1 when it has none).
+  static vtkIdType WallOf(const std::vector<vtkIdType>& faces, vtkIdType t)
+  {
+    return t >= 0 ? t : (faces.empty() ? -1 : faces.front());
+  }
+
   // True when triangle t lies on none of the walls of the contacts on `triangles` (-1:
   // one of `faces`) and its wall meets one of theirs along a convex crease (whole walls:
   // the cheap part of MaySlide, asked first where a new contact may join).
@@ -569,7 +591,7 @@ struct vtkMedialThickness::Walls
     bool meets = false;
     for (int i = 0; i < count; ++i)
     {
-      const vtkIdType c = triangles[i] >= 0 ? triangles[i] : (faces.empty() ? -1 : faces.front());
+      const vtkIdType c = WallOf(faces, triangles[i]);
       if (c >= 0)
       {
         const vtkIdType wc = this->OfTriangle[c];
@@ -601,7 +623,7 @@ struct vtkMedialThickness::Walls
     Scratch& scratch = LocalScratch();
     for (int i = 0; i < count; ++i)
     {
-      const vtkIdType t = triangles[i] >= 0 ? triangles[i] : (faces.empty() ? -1 : faces.front());
+      const vtkIdType t = WallOf(faces, triangles[i]);
       if (t < 0)
       {
         continue;
@@ -729,6 +751,7 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
     }
   }
   auto solve = [&](vtkIdType v, vtkIdType hint) {
+    std::vector<std::array<double, 3>>& points = ChainPoints(hint);
     const double* p = mesh.GetPoint(v);
     const double* n = &normals[3 * v];
     const std::vector<vtkIdType> fan(around.begin() + start[v], around.begin() + start[v + 1]);
@@ -813,7 +836,8 @@ bool vtkMedialThickness::VertexBalls(const vtkMedialTriangleMesh& mesh,
     if (grown.Valid)
     {
       vtkMedialSampleRecord plain, kept, prior;
-      vtkMedialGrowBall(query, p, limits, fan.data(), static_cast<int>(fan.size()), grown, &plain, &kept, &prior);
+      vtkMedialGrowBall(
+        query, p, limits, fan.data(), static_cast<int>(fan.size()), grown, &plain, &kept, &prior, &points);
       for (const auto& [ball, radius, centre] : { std::make_tuple(&plain, &m.PlainRadius, m.PlainCentre),
              std::make_tuple(&kept, &m.KeptRadius, m.KeptCentre),
              std::make_tuple(&prior, &m.PriorRadius, m.PriorCentre) })
@@ -870,6 +894,7 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
     }
   }
   auto solve = [&](vtkIdType c, vtkIdType hint) {
+    std::vector<std::array<double, 3>>& points = ChainPoints(hint);
     const vtkIdType t = largest[c];
     const vtkIdType* v = mesh.GetTriangle(t);
     double p[3], n[3];
@@ -904,7 +929,7 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
       limits.Across = [&](const vtkIdType* touched, int count, vtkIdType other) {
         return walls.Across(faces, touched, count, other);
       };
-      vtkMedialGrowBall(query, p, limits, &t, 1, start);
+      vtkMedialGrowBall(query, p, limits, &t, 1, start, nullptr, nullptr, nullptr, &points);
     }
     if (start.Valid && start.Radius > m.Radius)
     {
@@ -918,23 +943,30 @@ bool vtkMedialThickness::CellBalls(const vtkMedialTriangleMesh& mesh,
     // The corner's balls by the plain ascent, without the robust rules and without the
     // thorough ones too: where the corner's own ball slid farther from the cell, those
     // may still be admissible here.
-    for (int k = 0; k < 12; ++k)
+    // Each corner's four balls, in this order: its own, the plain, the kept, the prior;
+    // the corners in turn within each kind.
+    using Ball = std::pair<double Measure::*, double (Measure::*)[3]>;
+    static constexpr Ball Kinds[4] = { { &Measure::Radius, &Measure::Centre },
+      { &Measure::PlainRadius, &Measure::PlainCentre }, { &Measure::KeptRadius, &Measure::KeptCentre },
+      { &Measure::PriorRadius, &Measure::PriorCentre } };
+    for (const Ball& kind : Kinds)
     {
-      const Measure& corner = corners[v[k % 3]];
-      const double radius =
-        k < 3 ? corner.Radius : k < 6 ? corner.PlainRadius : k < 9 ? corner.KeptRadius : corner.PriorRadius;
-      const double* centre =
-        k < 3 ? corner.Centre : k < 6 ? corner.PlainCentre : k < 9 ? corner.KeptCentre : corner.PriorCentre;
-      if (!(radius > m.Radius))
+      for (int k = 0; k < 3; ++k)
       {
-        continue;
-      }
-      const double toVertex = std::sqrt(G::Distance2(centre, mesh.GetPoint(v[k % 3]))) - radius;
-      const double toCentroid = std::sqrt(G::Distance2(centre, p)) - radius;
-      if (toCentroid <= std::max(toVertex, this->SurfaceTolerance * size))
-      {
-        m.Radius = radius;
-        std::copy(centre, centre + 3, m.Centre);
+        const Measure& corner = corners[v[k]];
+        const double radius = corner.*kind.first;
+        const double* centre = corner.*kind.second;
+        if (!(radius > m.Radius))
+        {
+          continue;
+        }
+        const double toVertex = std::sqrt(G::Distance2(centre, mesh.GetPoint(v[k]))) - radius;
+        const double toCentroid = std::sqrt(G::Distance2(centre, p)) - radius;
+        if (toCentroid <= std::max(toVertex, this->SurfaceTolerance * size))
+        {
+          m.Radius = radius;
+          std::copy(centre, centre + 3, m.Centre);
+        }
       }
     }
     return next;
