@@ -2,6 +2,7 @@
 #include "vtkMedialSeamSolver.h"
 
 #include "vtkMedialGeometry.h"
+#include "vtkMedialGroupByKey.h"
 #include "vtkMedialNearestPoints.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialThreads.h"
@@ -1027,35 +1028,15 @@ std::vector<vtkMedialSeamSolver::Pair> vtkMedialSeamSolver::NearestPairs(
       }
     }
   }
-  // Each pair once, in order: bucketed by the smaller id (a counting sort), then each
-  // bucket's larger ids sorted and unique; the list a sort of all the pairs gives, in a
-  // fraction of its comparisons (the buckets hold about 2k ids).
-  std::vector<vtkIdType> offsets(static_cast<size_t>(n + 1), 0);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    for (int s = 0; s < wanted; ++s)
-    {
-      const vtkIdType j = found[i * wanted + s];
-      if (j >= 0)
-      {
-        ++offsets[std::min(i, j) + 1];
-      }
-    }
-  }
-  std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
-  std::vector<vtkIdType> larger(static_cast<size_t>(offsets[n]));
-  std::vector<vtkIdType> next(offsets.begin(), offsets.end() - 1);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    for (int s = 0; s < wanted; ++s)
-    {
-      const vtkIdType j = found[i * wanted + s];
-      if (j >= 0)
-      {
-        larger[next[std::min(i, j)]++] = std::max(i, j);
-      }
-    }
-  }
+  // Each pair once, in order: grouped by the smaller id (unused slots under key n), then
+  // each group's larger ids sorted and unique; the list a sort of all the pairs gives, in
+  // a fraction of its comparisons (the groups hold about 2k ids).
+  const vtkIdType slots = n * wanted;
+  auto smaller = [&](vtkIdType s) { return found[s] < 0 ? n : std::min(s / wanted, found[s]); };
+  std::vector<vtkIdType> larger(static_cast<size_t>(slots));
+  const auto offsets = vtkMedialGroupByKey(
+    slots, n + 1, smaller, [&](vtkIdType s, vtkIdType at) { larger[at] = std::max(s / wanted, found[s]); },
+    std::max(1, threads));
   pairs.reserve(larger.size());
   for (vtkIdType a = 0; a < n; ++a)
   {
