@@ -5,7 +5,7 @@
  *
  * The coordinates (x0 y0 z0 x1 ...) are wrapped in a vtkDoubleArray that reads them in
  * place (no copy, never freed by VTK), so they must outlive the locator. Used where an
- * engine keeps its points in a std::vector (the repair's weld, the seams' neighbours, the
+ * engine keeps its points in a std::vector (the repair's weld, the
  * coverage selection's pairs) and wants VTK's bucket locator over them.
  */
 #ifndef vtkMedialPointCloud_h

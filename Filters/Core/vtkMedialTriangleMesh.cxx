@@ -2,6 +2,7 @@
 #include "vtkMedialTriangleMesh.h"
 
 #include "vtkMedialGeometry.h"
+#include "vtkMedialGroupByKey.h"
 #include "vtkMedialTriangleBVH.h"
 
 #include "vtkCellArray.h"
@@ -58,51 +59,6 @@ std::string FormatPoint(const double x[3])
   os.precision(6);
   os << "(" << x[0] << ", " << x[1] << ", " << x[2] << ")";
   return os.str();
-}
-
-// Items 0..n-1 grouped by key(i) in [0, keys) with a counting sort, stable: emit(i,
-// position) places item i, the items of each key in increasing order. Returns where
-// each key's items start (keys + 1 entries). Large inputs are cut into a few
-// consecutive chunks counted and placed in parallel; chunk c's items of a key go after
-// those of the chunks before it, so the result is the serial one.
-template <class Key, class Emit>
-vtkMedialBuffer<vtkIdType> GroupByKey(vtkIdType n, vtkIdType keys, Key key, Emit emit)
-{
-  // At most 4 chunks: each keeps a count per key.
-  const int chunks = n >= (1 << 16) ? std::max(1, std::min(4, omp_get_max_threads())) : 1;
-  auto chunkBegin = [&](int c) { return static_cast<vtkIdType>(n * static_cast<double>(c) / chunks); };
-  std::vector<vtkMedialBuffer<vtkIdType>> next(chunks); // per chunk: where its next item of each key goes
-#pragma omp parallel for num_threads(chunks) schedule(static, 1)
-  for (int c = 0; c < chunks; ++c)
-  {
-    next[c].assign(static_cast<size_t>(keys), 0);
-    for (vtkIdType i = chunkBegin(c); i < chunkBegin(c + 1); ++i)
-    {
-      ++next[c][key(i)];
-    }
-  }
-  vtkMedialBuffer<vtkIdType> offsets(static_cast<size_t>(keys) + 1);
-  vtkIdType total = 0;
-  for (vtkIdType k = 0; k < keys; ++k)
-  {
-    offsets[k] = total;
-    for (int c = 0; c < chunks; ++c)
-    {
-      const vtkIdType count = next[c][k];
-      next[c][k] = total;
-      total += count;
-    }
-  }
-  offsets[keys] = total;
-#pragma omp parallel for num_threads(chunks) schedule(static, 1)
-  for (int c = 0; c < chunks; ++c)
-  {
-    for (vtkIdType i = chunkBegin(c); i < chunkBegin(c + 1); ++i)
-    {
-      emit(i, next[c][key(i)]++);
-    }
-  }
-  return offsets;
 }
 
 // The points as doubles, 3 per point, without a virtual call per point for the usual
@@ -198,7 +154,7 @@ void MergeCoincidentPoints(vtkMedialBuffer<double>& points, vtkMedialBuffer<vtkI
     hash[i] = static_cast<vtkIdType>(h & static_cast<std::uint64_t>(buckets - 1));
   }
   vtkMedialBuffer<vtkIdType> byHash(np);
-  const vtkMedialBuffer<vtkIdType> offsets = GroupByKey(
+  const vtkMedialBuffer<vtkIdType> offsets = vtkMedialGroupByKey(
     np, buckets, [&](vtkIdType i) { return hash[i]; }, [&](vtkIdType i, vtkIdType at) { byHash[at] = i; });
   vtkMedialBuffer<vtkIdType>& merged = hash; // reused: the point each one merges into
   vtkIdType mergedCount = 0;
@@ -570,7 +526,7 @@ bool vtkMedialTriangleMesh::BuildAdjacency(Adjacency& adjacency, const std::func
     a = v[use % 3];
     b = v[(use + 1) % 3];
   };
-  adjacency.First = GroupByKey(
+  adjacency.First = vtkMedialGroupByKey(
     3 * nt, this->GetNumberOfPoints(),
     [&](vtkIdType use) {
       vtkIdType a, b;
@@ -760,7 +716,7 @@ vtkIdType vtkMedialTriangleMesh::CountPinchedVertices(vtkIdType* example) const
       std::int32_t From, To;
     };
     vtkMedialBuffer<LinkEdge> links(static_cast<size_t>(corners));
-    const vtkMedialBuffer<vtkIdType> group = GroupByKey(
+    const vtkMedialBuffer<vtkIdType> group = vtkMedialGroupByKey(
       corners, np, [tris](vtkIdType c) { return tris[c]; },
       [&](vtkIdType c, vtkIdType at) {
         const vtkIdType* v = tris + 3 * (c / 3);

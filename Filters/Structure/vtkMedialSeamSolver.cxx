@@ -2,14 +2,11 @@
 #include "vtkMedialSeamSolver.h"
 
 #include "vtkMedialGeometry.h"
-#include "vtkMedialPointCloud.h"
+#include "vtkMedialGroupByKey.h"
+#include "vtkMedialNearestPoints.h"
 #include "vtkMedialSurfaceQuery.h"
 #include "vtkMedialThreads.h"
 #include "vtkMedialTriangleMesh.h"
-
-#include "vtkIdList.h"
-#include "vtkNew.h"
-#include "vtkStaticPointLocator.h"
 
 #include <omp.h>
 
@@ -1011,46 +1008,35 @@ std::vector<vtkMedialSeamSolver::Pair> vtkMedialSeamSolver::NearestPairs(
   {
     return pairs;
   }
-  const auto locator = vtkMedialPointCloud::Locator(centres, n);
+  vtkMedialNearestPoints nearest;
+  nearest.Build(centres, n);
+  // Each centre finds itself among its k + 1 nearest (unless more than k + 1 centres
+  // share its place and have smaller ids): k + 1 slots per centre, self and unused -1.
   const int wanted = static_cast<int>(std::min<vtkIdType>(k + 1, n));
-  std::vector<std::vector<vtkIdType>> neighbours(static_cast<size_t>(n));
+  std::vector<vtkIdType> found(static_cast<size_t>(n) * wanted, -1);
 #pragma omp parallel num_threads(std::max(1, threads))
   {
-    vtkNew<vtkIdList> ids;
+    std::vector<double> dist2(static_cast<size_t>(wanted));
 #pragma omp for schedule(static)
     for (vtkIdType i = 0; i < n; ++i)
     {
-      locator->FindClosestNPoints(wanted, centres + 3 * i, ids);
-      for (vtkIdType j = 0; j < ids->GetNumberOfIds(); ++j)
+      vtkIdType* ids = found.data() + i * wanted;
+      const int count = nearest.Find(centres + 3 * i, wanted, ids, dist2.data());
+      for (int j = 0; j < count; ++j)
       {
-        if (ids->GetId(j) != i)
-        {
-          neighbours[i].push_back(ids->GetId(j));
-        }
+        ids[j] = ids[j] == i ? -1 : ids[j];
       }
     }
   }
-  // Each pair once, in order: bucketed by the smaller id (a counting sort), then each
-  // bucket's larger ids sorted and unique; the list a sort of all the pairs gives, in a
-  // fraction of its comparisons (the buckets hold about 2k ids).
-  std::vector<vtkIdType> offsets(static_cast<size_t>(n + 1), 0);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    for (vtkIdType j : neighbours[i])
-    {
-      ++offsets[std::min(i, j) + 1];
-    }
-  }
-  std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
-  std::vector<vtkIdType> larger(static_cast<size_t>(offsets[n]));
-  std::vector<vtkIdType> next(offsets.begin(), offsets.end() - 1);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    for (vtkIdType j : neighbours[i])
-    {
-      larger[next[std::min(i, j)]++] = std::max(i, j);
-    }
-  }
+  // Each pair once, in order: grouped by the smaller id (unused slots under key n), then
+  // each group's larger ids sorted and unique; the list a sort of all the pairs gives, in
+  // a fraction of its comparisons (the groups hold about 2k ids).
+  const vtkIdType slots = n * wanted;
+  auto smaller = [&](vtkIdType s) { return found[s] < 0 ? n : std::min(s / wanted, found[s]); };
+  std::vector<vtkIdType> larger(static_cast<size_t>(slots));
+  const auto offsets = vtkMedialGroupByKey(
+    slots, n + 1, smaller, [&](vtkIdType s, vtkIdType at) { larger[at] = std::max(s / wanted, found[s]); },
+    std::max(1, threads));
   pairs.reserve(larger.size());
   for (vtkIdType a = 0; a < n; ++a)
   {

@@ -129,7 +129,8 @@ public:
     const std::function<bool()>& aborted, Result& result) const;
 
   /// The k nearest other centres of each of n centres (3 per centre), as sorted unique (i < j) pairs,
-  /// found on `threads` threads (the result does not depend on them).
+  /// found on `threads` threads (the result does not depend on them). Nearest as in
+  /// vtkMedialNearestPoints: ties at the k-th distance go to the smaller id.
   static std::vector<Pair> NearestPairs(const double* centres, vtkIdType n, int k, int threads);
 
   /**
