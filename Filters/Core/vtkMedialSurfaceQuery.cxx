@@ -330,22 +330,23 @@ void vtkMedialSurfaceQuery::VisitNear(
 }
 
 bool vtkMedialSurfaceQuery::TrianglesWithinIfEmpty(const double x[3], double distance, double emptyRadius,
-  std::vector<ClosestHit>& hits, double* nearestBound) const
+  std::vector<ClosestHit>& hits, double* nearestBound, const Nearby* nearby) const
 {
   hits.clear();
   // ContainsBall's limit: at or below zero the ball is empty.
   const double limit = emptyRadius - this->Slack;
   const bool empty = this->Tree.VisitWithinIfEmpty(x, distance, limit > 0.0 ? limit : 0.0,
-    HitCollector{ hits }, nearestBound);
+    HitCollector{ hits }, nearestBound, nearby);
   SortByTriangle(hits);
   return empty;
 }
 
 void vtkMedialSurfaceQuery::TrianglesWithin(
-  const double x[3], double distance, std::vector<ClosestHit>& hits, const ContactFilter* filter) const
+  const double x[3], double distance, std::vector<ClosestHit>& hits, const ContactFilter* filter,
+  const Nearby* nearby) const
 {
   hits.clear();
   this->Tree.VisitWithin(x, distance, filter ? filter->SamplePoint : nullptr, filter ? filter->CosMinAngle : 1.0,
-    HitCollector{ hits });
+    HitCollector{ hits }, nearby);
   SortByTriangle(hits);
 }

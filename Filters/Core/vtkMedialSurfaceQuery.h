@@ -65,6 +65,7 @@ public:
   };
 
   using TangentBall = vtkMedialTriangleBVH::TangentBall;
+  using Nearby = vtkMedialTriangleBVH::Nearby;
 
   vtkMedialSurfaceQuery() = default;
   vtkMedialSurfaceQuery(const vtkMedialSurfaceQuery&) = delete;
@@ -103,7 +104,7 @@ public:
    * internal tree.
    */
   void TrianglesWithin(const double x[3], double distance, std::vector<ClosestHit>& hits,
-    const ContactFilter* filter = nullptr) const;
+    const ContactFilter* filter = nullptr, const Nearby* nearby = nullptr) const;
 
   /**
    * ContainsBall(x, emptyRadius) && TrianglesWithin(x, distance, hits), in one walk
@@ -113,7 +114,19 @@ public:
    * ClosestPoint from there finds what it finds from any larger bound, sooner. No filter.
    */
   bool TrianglesWithinIfEmpty(const double x[3], double distance, double emptyRadius,
-    std::vector<ClosestHit>& hits, double* nearestBound = nullptr) const;
+    std::vector<ClosestHit>& hits, double* nearestBound = nullptr, const Nearby* nearby = nullptr) const;
+
+  /// The triangles within `distance` of `centre`, for TrianglesWithin and
+  /// TrianglesWithinIfEmpty to read instead of walking the tree when they are asked
+  /// about balls inside that reach (vtkMedialTriangleBVH::Nearby): the same answers.
+  void GatherNearby(const double centre[3], double distance, Nearby& out) const
+  {
+    this->Tree.GatherNearby(centre, distance, out);
+  }
+  bool Covers(const Nearby& nearby, const double x[3], double distance) const
+  {
+    return this->Tree.Covers(nearby, x, distance);
+  }
 
   /**
    * Largest admissible ball tangent at p with centre p + r n (n unit, inward),

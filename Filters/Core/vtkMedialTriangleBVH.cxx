@@ -2276,6 +2276,44 @@ private:
 #endif
 }
 
+namespace
+{
+// A leaf triangle that a walk of squared reach reach2 about x skips: its plane misses
+// the ball, or its box does (with room for `rounding`), so its closest point would
+// come out at reach2 or beyond, which no visit counts. VisitAdmissible and the walks
+// read from a Nearby list share it, so that both see the same triangles.
+template <class Leaf>
+inline bool LeafMisses(const Leaf& leaf, const double x[3], const double xRel[3], double reach2, double rounding)
+{
+  const double off = G::Dot(leaf.Plane, x) - leaf.Plane[3];
+  return off * off >= reach2 || BoxDistance2(leaf.Lo, leaf.Hi, xRel) >= reach2 * (1.0 + 1e-9) + rounding;
+}
+}
+
+template <class Visit>
+void vtkMedialTriangleBVH::VisitListed(const Nearby& nearby, const double x[3], double reach2, Visit visit) const
+{
+  double xRel[3];
+  G::Sub(x, this->Origin, xRel);
+  const double rounding = 10.0 * this->RoundingPad * std::sqrt(reach2); // as VisitAdmissible's
+  for (const std::int32_t slot : nearby.Slots)
+  {
+    const LeafTriangle& leaf = this->LeafTriangles[slot];
+    if (LeafMisses(leaf, x, xRel, reach2, rounding))
+    {
+      continue;
+    }
+    double scratch[9];
+    const double* a = this->Corners(slot, scratch);
+    double q[3];
+    const double d2 = G::ClosestPointOnTriangle(x, a, a + 3, a + 6, q);
+    if (!visit(d2, q, leaf.Triangle))
+    {
+      return;
+    }
+  }
+}
+
 template <class Visit>
 void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTriangle,
   const double samplePoint[3], double cosMinAngle, bool capOnly, double& reach2, Visit visit) const
@@ -2306,16 +2344,8 @@ void vtkMedialTriangleBVH::VisitAdmissible(const double x[3], vtkIdType ownTrian
     const double rounding = 10.0 * this->RoundingPad * std::sqrt(reach2);
     for (std::int32_t slot = start; slot < end; ++slot)
     {
-      // The triangle's plane misses the ball.
       const LeafTriangle& leaf = this->LeafTriangles[slot];
-      const double off = G::Dot(leaf.Plane, x) - leaf.Plane[3];
-      if (leaf.Triangle == ownTriangle || off * off >= reach2)
-      {
-        continue;
-      }
-      // Its box misses the ball (with room for the rounding): its closest point would
-      // come out at reach2 or beyond, which no visit counts.
-      if (BoxDistance2(leaf.Lo, leaf.Hi, xRel) >= reach2 * (1.0 + 1e-9) + rounding)
+      if (leaf.Triangle == ownTriangle || LeafMisses(leaf, x, xRel, reach2, rounding))
       {
         continue;
       }
@@ -2936,24 +2966,50 @@ void vtkMedialTriangleBVH::VisitBox(
 }
 
 void vtkMedialTriangleBVH::VisitWithin(const double x[3], double distance, const double samplePoint[3],
-  double cosMinAngle, const std::function<void(double, const double*, vtkIdType)>& visit) const
+  double cosMinAngle, const std::function<void(double, const double*, vtkIdType)>& visit,
+  const Nearby* nearby) const
 {
   const double limit2 = distance * distance;
   // The traversal culls nodes at or beyond its reach: reach a little further and
   // decide in double on each triangle.
   double reach2 = limit2 * (1.0 + 1e-12) + 1e-300;
-  this->VisitAdmissible(x, -1, samplePoint, cosMinAngle, false, reach2,
-    [&](double d2, const double q[3], vtkIdType t) {
-      if (d2 <= limit2)
-      {
-        visit(d2, q, t);
-      }
-      return true;
-    });
+  auto within = [&](double d2, const double q[3], vtkIdType t) {
+    if (d2 <= limit2)
+    {
+      visit(d2, q, t);
+    }
+    return true;
+  };
+  if (nearby && !(cosMinAngle < 1.0 && samplePoint) && this->Covers(*nearby, x, distance))
+  {
+    this->VisitListed(*nearby, x, reach2, within);
+    return;
+  }
+  this->VisitAdmissible(x, -1, samplePoint, cosMinAngle, false, reach2, within);
+}
+
+void vtkMedialTriangleBVH::GatherNearby(const double centre[3], double distance, Nearby& out) const
+{
+  std::copy(centre, centre + 3, out.Centre);
+  out.Distance = distance;
+  out.Slots.clear();
+  this->VisitWithin(centre, distance, nullptr, 1.0,
+    [&](double, const double*, vtkIdType t) { out.Slots.push_back(this->LeafRank[t]); });
+  std::sort(out.Slots.begin(), out.Slots.end());
+}
+
+bool vtkMedialTriangleBVH::Covers(const Nearby& nearby, const double x[3], double distance) const
+{
+  // A triangle the query can visit or be blocked by has its computed closest point
+  // within `distance` of x, so it is within |x - Centre| + distance of Centre, up to
+  // the rounding of two closest points (ulps of the extent): the margin is far above.
+  const double margin = 1e-9 * nearby.Distance + 1e6 * this->RoundingPad;
+  return std::sqrt(G::Distance2(x, nearby.Centre)) + distance + margin <= nearby.Distance;
 }
 
 bool vtkMedialTriangleBVH::VisitWithinIfEmpty(const double x[3], double distance, double emptyRadius,
-  const std::function<void(double, const double*, vtkIdType)>& visit, double* nearestBound) const
+  const std::function<void(double, const double*, vtkIdType)>& visit, double* nearestBound,
+  const Nearby* nearby) const
 {
   // The blocker's distance (or emptyRadius) is above the closest point's; the pad, far
   // above the rounding of a plane offset or a closest point (ulps of the extent), keeps
@@ -2973,7 +3029,7 @@ bool vtkMedialTriangleBVH::VisitWithinIfEmpty(const double x[3], double distance
 #endif
   if (!(emptyRadius > 0.0))
   {
-    this->VisitWithin(x, distance, nullptr, 1.0, visit);
+    this->VisitWithin(x, distance, nullptr, 1.0, visit, nearby);
     return true; // ContainsBall's reach is empty
   }
   if (!wide || !(emptyRadius <= distance))
@@ -2997,7 +3053,7 @@ bool vtkMedialTriangleBVH::VisitWithinIfEmpty(const double x[3], double distance
   const double limit2 = distance * distance;
   double reach2 = limit2 * (1.0 + 1e-12) + 1e-300; // as VisitWithin
   bool blocked = false;
-  this->VisitAdmissible(x, -1, nullptr, 1.0, false, reach2, [&](double d2, const double q[3], vtkIdType t) {
+  auto test = [&](double d2, const double q[3], vtkIdType t) {
     if (d2 < empty2)
     {
       const LeafTriangle& leaf = this->LeafTriangles[this->LeafRank[t]];
@@ -3017,6 +3073,14 @@ bool vtkMedialTriangleBVH::VisitWithinIfEmpty(const double x[3], double distance
       visit(d2, q, t);
     }
     return true;
-  });
+  };
+  if (nearby && this->Covers(*nearby, x, distance))
+  {
+    this->VisitListed(*nearby, x, reach2, test);
+  }
+  else
+  {
+    this->VisitAdmissible(x, -1, nullptr, 1.0, false, reach2, test);
+  }
   return !blocked;
 }

@@ -233,13 +233,28 @@ public:
     const std::vector<RayCrossing>& crossings, double tMin, double tMax, double& t, vtkIdType& triangle);
 
   /**
+   * The triangles near a point, for many queries about it (the seam solver's
+   * bisections, whose balls differ by less and less): every triangle whose closest
+   * point to Centre is within Distance, in leaf order. Given to VisitWithin (without
+   * a cap) or VisitWithinIfEmpty, a list that covers the query is read instead of
+   * walking the tree: the same leaf tests on every triangle the walk could reach, so
+   * the same answers and visits (in leaf order); a list that does not cover it is
+   * ignored.
+   */
+  struct Nearby
+  {
+    double Centre[3] = { 0, 0, 0 };
+    double Distance = -1.0; // below zero: holds nothing, covers no query
+    std::vector<std::int32_t> Slots;
+  };
+  /**
    * Every triangle whose closest point to x is at most `distance` away: visit(d2, q,
    * triangle) gets the squared distance, that closest point and the mesh triangle
    * id, in traversal order (deterministic for a given mesh). With cosMinAngle < 1
    * only the admissible part of each triangle counts (same rule as ClosestPoint).
    */
   void VisitWithin(const double x[3], double distance, const double samplePoint[3], double cosMinAngle,
-    const std::function<void(double, const double*, vtkIdType)>& visit) const;
+    const std::function<void(double, const double*, vtkIdType)>& visit, const Nearby* nearby = nullptr) const;
 
   /**
    * VisitWithin(x, distance) without a cap, in one walk, when ContainsBall(x,
@@ -252,7 +267,12 @@ public:
    * as from any larger bound, and its walk prunes from the start.
    */
   bool VisitWithinIfEmpty(const double x[3], double distance, double emptyRadius,
-    const std::function<void(double, const double*, vtkIdType)>& visit, double* nearestBound = nullptr) const;
+    const std::function<void(double, const double*, vtkIdType)>& visit, double* nearestBound = nullptr,
+    const Nearby* nearby = nullptr) const;
+
+  void GatherNearby(const double centre[3], double distance, Nearby& out) const;
+  /// Whether `nearby` holds every triangle within `distance` of x, with room for rounding.
+  bool Covers(const Nearby& nearby, const double x[3], double distance) const;
 
   /**
    * Whether the searches may drop a lane on its subtree's inner sphere (WideSphere), on
@@ -466,6 +486,9 @@ private:
   template <class Visit>
   void VisitAdmissible(const double x[3], vtkIdType ownTriangle, const double samplePoint[3],
     double cosMinAngle, bool capOnly, double& reach2, Visit visit) const;
+  // VisitAdmissible without a cap or an own triangle, over a Nearby list instead of the tree.
+  template <class Visit>
+  void VisitListed(const Nearby& nearby, const double x[3], double reach2, Visit visit) const;
 
   vtkMedialBuffer<Node> Nodes;
   // The tangent search's tree. A lane is named by its reference, wide node * 4 + lane;

@@ -844,14 +844,14 @@ bool vtkMedialGovernors::Explains(int f, const double q[3], vtkIdType t, double 
   return this->DistanceToFeature(f, q) <= tolerance;
 }
 
-bool vtkMedialGovernors::TouchedFeatures(
-  const double c[3], double radius, double tolerance, std::vector<int>& out, bool checkEmpty) const
+bool vtkMedialGovernors::TouchedFeatures(const double c[3], double radius, double tolerance, std::vector<int>& out,
+  bool checkEmpty, const vtkMedialTriangleBVH::Nearby* nearby) const
 {
   out.clear();
   thread_local std::vector<vtkMedialSurfaceQuery::ClosestHit> hits;
   if (checkEmpty)
   {
-    if (!this->Query->TrianglesWithinIfEmpty(c, radius + tolerance, radius - tolerance, hits))
+    if (!this->Query->TrianglesWithinIfEmpty(c, radius + tolerance, radius - tolerance, hits, nullptr, nearby))
     {
       out.clear();
       return false;
@@ -859,7 +859,7 @@ bool vtkMedialGovernors::TouchedFeatures(
   }
   else
   {
-    this->Query->TrianglesWithin(c, radius + tolerance, hits);
+    this->Query->TrianglesWithin(c, radius + tolerance, hits, nullptr, nearby);
   }
   const double eps2 = 1e-24 * this->Diagonal * this->Diagonal;
   auto consider = [&](int f) {

@@ -60,6 +60,7 @@
 #ifndef vtkMedialGovernors_h
 #define vtkMedialGovernors_h
 
+#include "vtkMedialTriangleBVH.h"
 #include "vtkType.h"
 
 #include <string>
@@ -136,10 +137,12 @@ public:
    * a reflex edge gives the edge and no face). Sorted ids. Returns false when some
    * surface point is closer than radius - tolerance (the ball is not empty). With
    * checkEmpty, also false when the query's ContainsBall(centre, radius - tolerance)
-   * is, found in the same walk as the contacts.
+   * is, found in the same walk as the contacts. `nearby` (may be null): the query's
+   * list of the triangles near the ball (vtkMedialSurfaceQuery::GatherNearby), read
+   * instead of the tree when it covers the ball; the same answer.
    */
   bool TouchedFeatures(const double centre[3], double radius, double tolerance, std::vector<int>& out,
-    bool checkEmpty = false) const;
+    bool checkEmpty = false, const vtkMedialTriangleBVH::Nearby* nearby = nullptr) const;
 
   /// MedialPointType of a ball with that many governors (see the class comment).
   int PointType(int governorCount, double radius) const;

@@ -200,7 +200,10 @@ private:
   // The ball on the seam of `features` nearest to `guess` in the hyperplane through it
   // perpendicular to `tangent`.
   bool OnSeam(const int features[3], const BallVector& guess, const double tangent[4], BallVector& out) const;
-  int SeamState(const int features[3], const BallVector& X, double tolerance, std::vector<int>& touched) const;
+  // Whether X is on the seam of `features`, LEFT it or is BLOCKED (not empty); `nearby`
+  // (may be null): the triangles near X, read instead of walking the tree.
+  int SeamState(const int features[3], const BallVector& X, double tolerance, std::vector<int>& touched,
+    const vtkMedialTriangleBVH::Nearby* nearby = nullptr) const;
   // Follows the seam of `features` both ways from `start` (a verified seam point) to
   // its ends: marching with a predictor-corrector, then bisecting where it stops.
   void TraceSeam(const int features[3], const BallVector& start, TraceEnds& ends) const;

@@ -22,6 +22,9 @@ constexpr int MaximumBisections = 64;
 // Features touching a seam's last ball beyond which the end is degenerate: three are the
 // seam's own, one more a junction or a transition; a few more occur at symmetric ends.
 constexpr size_t MaximumTouched = 12;
+// The bisection's list of nearby triangles (Ends): gathered once the bracket is below
+// this share of the radius, when the list about a wider bracket would be long.
+constexpr double NearbyShare = 1e-3;
 
 double Distance4(const BallVector& a, const BallVector& b)
 {
@@ -61,8 +64,8 @@ bool vtkMedialSeamSolver::OnSeam(
   return best < HUGE_VAL;
 }
 
-int vtkMedialSeamSolver::SeamState(
-  const int features[3], const BallVector& X, double tolerance, std::vector<int>& touched) const
+int vtkMedialSeamSolver::SeamState(const int features[3], const BallVector& X, double tolerance,
+  std::vector<int>& touched, const vtkMedialTriangleBVH::Nearby* nearby) const
 {
   if (!(X[3] > tolerance))
   {
@@ -84,7 +87,7 @@ int vtkMedialSeamSolver::SeamState(
   // Empty (the contains-ball query) and the contacts in one walk, which stops at the
   // first point inside: cheap for the balls beyond a seam's end, which may hold much
   // of the surface.
-  if (!this->Governors.TouchedFeatures(X.data(), X[3], tolerance, touched, true))
+  if (!this->Governors.TouchedFeatures(X.data(), X[3], tolerance, touched, true, nearby))
   {
     touched.clear();
     return BLOCKED;
@@ -153,6 +156,14 @@ void vtkMedialSeamSolver::Ends(const int features[3], const BallVector& last, co
   const double diagonal = this->Governors.GetDiagonal();
   const double tolerance = this->VerifyTolerance * diagonal;
   std::vector<int> touched;
+  // The bisection's balls differ by less and less: once the bracket is small beside the
+  // radius, their walks read a list of the triangles near it instead of the tree (the
+  // same answers). Gathered then, the list is short (the contact patches within a thin
+  // shell about the ball), and it covers the rest of the bisection (gathered again only
+  // if a ball strays out of it).
+  const vtkMedialSurfaceQuery& query = this->Governors.GetQuery();
+  thread_local vtkMedialTriangleBVH::Nearby nearby; // per-thread scratch
+  nearby.Distance = -1.0;
   BallVector lo = last, hi = beyond;
   for (int i = 0; i < MaximumBisections && Distance4(lo, hi) > 1e-10 * diagonal; ++i)
   {
@@ -166,7 +177,12 @@ void vtkMedialSeamSolver::Ends(const int features[3], const BallVector& last, co
     {
       z = mid;
     }
-    (this->SeamState(features, z, tolerance, touched) == ON_SEAM ? lo : hi) = z;
+    const double width = Distance4(lo, hi);
+    if (width <= NearbyShare * z[3] && !query.Covers(nearby, z.data(), z[3] + tolerance))
+    {
+      query.GatherNearby(z.data(), z[3] + tolerance + 2.0 * width, nearby);
+    }
+    (this->SeamState(features, z, tolerance, touched, &nearby) == ON_SEAM ? lo : hi) = z;
   }
   if (!(lo[3] > tolerance))
   {
@@ -183,7 +199,7 @@ void vtkMedialSeamSolver::Ends(const int features[3], const BallVector& last, co
   }
   // What touches the last ball on the seam, within the bracket: the fourth governor
   // (a junction) or the edge or vertex a contact moves onto (a transition).
-  this->Governors.TouchedFeatures(lo.data(), lo[3], tolerance + bracket, touched);
+  this->Governors.TouchedFeatures(lo.data(), lo[3], tolerance + bracket, touched, false, &nearby);
   if (touched.size() > MaximumTouched)
   {
     return; // a degenerate end (many coplanar or cospherical features): no candidate is trusted

@@ -7,7 +7,10 @@
 // (ties at shared edges and vertices), a geodesic sphere and the jack, from points
 // inside, around and far beyond each shape (where the tree walks in double), with
 // the empty radius below, at (to the bit) and above the brute-force distance, and
-// contact distances at and beyond it.
+// contact distances at and beyond it. The same queries read from a list of the
+// triangles near a point beside x (vtkMedialTriangleBVH::Nearby, the seam solver's
+// bisections) give the same answers and visits (in leaf order, so compared by
+// triangle), whether the list covers the query or is ignored for not covering it.
 #include "MedialTestUtilities.h"
 #include "MedialTreeTestUtilities.h"
 
@@ -16,6 +19,7 @@
 #include "vtkMedialTriangleBVH.h"
 #include "vtkMedialTriangleMesh.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
@@ -51,7 +55,7 @@ int CheckShape(int shape, const char* name, int resolution)
   MEDIAL_CHECK(tree.Build(mesh), "%s: no tree", name);
   std::mt19937_64 random(17);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  int queries = 0, empty = 0, blocked = 0;
+  int queries = 0, empty = 0, blocked = 0, covered = 0;
   for (int i = 0; i < 300; ++i)
   {
     // Around the shape, or (one point in ten) far beyond its box.
@@ -87,6 +91,33 @@ int CheckShape(int shape, const char* name, int resolution)
           i, radius, exact, answer ? "empty" : "blocked", reference ? "empty" : "blocked");
         MEDIAL_CHECK(!answer || got == expected, "%s, point %d, radius %.17g, distance %.17g: %zu visits, expected %zu",
           name, i, radius, distance, got.size(), expected.size());
+        // A list gathered about a point beside x: wide enough to cover the query, or
+        // (one query in three) just too narrow, when it must be ignored.
+        vtkMedialTriangleBVH::Nearby nearby;
+        const double shift = 0.01 * mesh.Diagonal;
+        const double beside[3] = { x[0] + shift, x[1], x[2] };
+        const bool narrow = queries % 3 == 2;
+        tree.GatherNearby(beside, distance + (narrow ? 0.5 : 2.0) * shift, nearby);
+        covered += tree.Covers(nearby, x, distance) ? 1 : 0;
+        MEDIAL_CHECK(!narrow || !tree.Covers(nearby, x, distance), "%s, point %d: a narrow list covers", name, i);
+        std::vector<Visit> listed;
+        const bool fromList = tree.VisitWithinIfEmpty(x, distance, radius, into(listed), nullptr, &nearby);
+        auto byTriangle = [](std::vector<Visit>& list) {
+          std::sort(list.begin(), list.end(), [](const Visit& a, const Visit& b) { return a[4] < b[4]; });
+          return list;
+        };
+        MEDIAL_CHECK(fromList == reference, "%s, point %d, radius %.17g: the list says %s", name, i, radius,
+          fromList ? "empty" : "blocked");
+        MEDIAL_CHECK(!fromList || byTriangle(listed) == byTriangle(expected),
+          "%s, point %d, radius %.17g: %zu visits from the list, expected %zu", name, i, radius, listed.size(),
+          expected.size());
+        listed.clear();
+        tree.VisitWithin(x, distance, nullptr, 1.0, into(listed), &nearby);
+        if (reference)
+        {
+          MEDIAL_CHECK(byTriangle(listed) == byTriangle(expected), "%s, point %d: VisitWithin from the list differs",
+            name, i);
+        }
         ++queries;
         (answer ? empty : blocked) += 1;
       }
@@ -94,7 +125,8 @@ int CheckShape(int shape, const char* name, int resolution)
   }
   MEDIAL_CHECK(empty > queries / 4 && blocked > queries / 4, "%s: %d empty, %d blocked of %d", name, empty,
     blocked, queries);
-  std::printf("%s: %d queries agree (%d empty, %d blocked)\n", name, queries, empty, blocked);
+  MEDIAL_CHECK(covered > queries / 2, "%s: %d of %d queries read from a list", name, covered, queries);
+  std::printf("%s: %d queries agree (%d empty, %d blocked, %d from a list)\n", name, queries, empty, blocked, covered);
   return EXIT_SUCCESS;
 }
 }
