@@ -265,23 +265,13 @@ struct vtkMedialThickness::Walls
   // tolerance's unit; a cell's is the largest of its corners').
   std::vector<double> Size;
 
-  void Build(const vtkMedialTriangleMesh& mesh, double creaseDegrees)
+  // `start` and `around`: the triangles around each point, by increasing id
+  // (vtkMedialTriangleMesh::TrianglesAroundPoints).
+  void Build(const vtkMedialTriangleMesh& mesh, double creaseDegrees, const std::vector<vtkIdType>& start,
+    const std::vector<vtkIdType>& around)
   {
     const double cosCrease = std::cos(creaseDegrees * Pi / 180.0);
     const vtkIdType nt = mesh.GetNumberOfTriangles();
-    // Each edge as (lower point, higher point, triangle, edge index in it); an edge of
-    // exactly two triangles joins them, unless it is a crease.
-    std::vector<std::array<vtkIdType, 4>> edges;
-    edges.reserve(3 * static_cast<size_t>(nt));
-    for (vtkIdType t = 0; t < nt; ++t)
-    {
-      const vtkIdType* v = mesh.GetTriangle(t);
-      for (int j = 0; j < 3; ++j)
-      {
-        edges.push_back({ std::min(v[j], v[(j + 1) % 3]), std::max(v[j], v[(j + 1) % 3]), t, j });
-      }
-    }
-    std::sort(edges.begin(), edges.end());
     this->Box.resize(nt);
     this->Middle.resize(nt);
     for (vtkIdType t = 0; t < nt; ++t)
@@ -298,52 +288,76 @@ struct vtkMedialThickness::Walls
     this->Size.assign(mesh.GetNumberOfPoints(), 0.0);
     this->Neighbour.assign(3 * static_cast<size_t>(nt), -1);
     this->Kind.assign(3 * static_cast<size_t>(nt), Other);
-    for (const auto& e : edges)
-    {
-      const double length = std::sqrt(G::Distance2(mesh.GetPoint(e[0]), mesh.GetPoint(e[1])));
-      this->Size[e[0]] = std::max(this->Size[e[0]], length);
-      this->Size[e[1]] = std::max(this->Size[e[1]], length);
-    }
     vtkMedialDisjointSets sets(nt);
     std::vector<std::pair<vtkIdType, vtkIdType>> convex;
-    for (size_t i = 0; i < edges.size();)
+    // The edges in (lower point, higher point, triangle, edge index) order, an edge of
+    // exactly two triangles joining them unless it is a crease: the order of the joins
+    // fixes the walls' ids. A point's edges to higher points are gathered from the
+    // triangles around it and sorted there (a few), not all edges sorted at once.
+    std::vector<std::array<vtkIdType, 3>> edges; // (higher point, triangle, edge index)
+    const vtkIdType np = mesh.GetNumberOfPoints();
+    for (vtkIdType p = 0; p < np; ++p)
     {
-      size_t j = i + 1;
-      while (j < edges.size() && edges[j][0] == edges[i][0] && edges[j][1] == edges[i][1])
+      edges.clear();
+      for (vtkIdType k = start[p]; k < start[p + 1]; ++k)
       {
-        ++j;
-      }
-      const vtkIdType a = edges[i][2], b = edges[j - 1][2];
-      if (j == i + 2 && mesh.Areas[a] > 0.0 && mesh.Areas[b] > 0.0)
-      {
-        EdgeKind kind = Smooth;
-        if (G::Dot(mesh.GetNormal(a), mesh.GetNormal(b)) >= cosCrease)
+        const vtkIdType t = around[k];
+        const vtkIdType* v = mesh.GetTriangle(t);
+        for (int j = 0; j < 3; ++j)
         {
-          sets.Join(a, b);
-        }
-        else
-        {
-          // Convex: b's third point lies below a's plane.
-          const vtkIdType* tb = mesh.GetTriangle(b);
-          int k = 0;
-          while (k < 2 && (tb[k] == edges[i][0] || tb[k] == edges[i][1]))
+          const vtkIdType u = v[j], w = v[(j + 1) % 3];
+          if (std::min(u, w) == p)
           {
-            ++k;
-          }
-          double d[3];
-          G::Sub(mesh.GetPoint(tb[k]), mesh.GetPoint(edges[i][0]), d);
-          kind = G::Dot(mesh.GetNormal(a), d) < 0.0 ? ConvexCrease : ConcaveCrease;
-          if (kind == ConvexCrease)
-          {
-            convex.emplace_back(a, b);
+            edges.push_back({ std::max(u, w), t, j });
           }
         }
-        this->Neighbour[3 * a + edges[i][3]] = b;
-        this->Neighbour[3 * b + edges[i + 1][3]] = a;
-        this->Kind[3 * a + edges[i][3]] = kind;
-        this->Kind[3 * b + edges[i + 1][3]] = kind;
       }
-      i = j;
+      std::sort(edges.begin(), edges.end());
+      for (const auto& e : edges)
+      {
+        const double length = std::sqrt(G::Distance2(mesh.GetPoint(p), mesh.GetPoint(e[0])));
+        this->Size[p] = std::max(this->Size[p], length);
+        this->Size[e[0]] = std::max(this->Size[e[0]], length);
+      }
+      for (size_t i = 0; i < edges.size();)
+      {
+        size_t j = i + 1;
+        while (j < edges.size() && edges[j][0] == edges[i][0])
+        {
+          ++j;
+        }
+        const vtkIdType a = edges[i][1], b = edges[j - 1][1];
+        if (j == i + 2 && mesh.Areas[a] > 0.0 && mesh.Areas[b] > 0.0)
+        {
+          EdgeKind kind = Smooth;
+          if (G::Dot(mesh.GetNormal(a), mesh.GetNormal(b)) >= cosCrease)
+          {
+            sets.Join(a, b);
+          }
+          else
+          {
+            // Convex: b's third point lies below a's plane.
+            const vtkIdType* tb = mesh.GetTriangle(b);
+            int k = 0;
+            while (k < 2 && (tb[k] == p || tb[k] == edges[i][0]))
+            {
+              ++k;
+            }
+            double d[3];
+            G::Sub(mesh.GetPoint(tb[k]), mesh.GetPoint(p), d);
+            kind = G::Dot(mesh.GetNormal(a), d) < 0.0 ? ConvexCrease : ConcaveCrease;
+            if (kind == ConvexCrease)
+            {
+              convex.emplace_back(a, b);
+            }
+          }
+          this->Neighbour[3 * a + edges[i][2]] = b;
+          this->Neighbour[3 * b + edges[i + 1][2]] = a;
+          this->Kind[3 * a + edges[i][2]] = kind;
+          this->Kind[3 * b + edges[i + 1][2]] = kind;
+        }
+        i = j;
+      }
     }
     this->OfTriangle.resize(nt);
     for (vtkIdType t = 0; t < nt; ++t)
@@ -1159,7 +1173,7 @@ int vtkMedialThickness::RequestData(
   std::vector<char> sharp;
   this->VertexNormals(mesh, start, around, normals, sharp);
   Walls walls;
-  walls.Build(mesh, this->CreaseAngle);
+  walls.Build(mesh, this->CreaseAngle, start, around);
   std::vector<Measure> vertices, cells;
   if (!this->VertexBalls(mesh, query, param, walls, start, around, normals, sharp, vertices))
   {
