@@ -330,14 +330,24 @@ void vtkMedialSurfaceQuery::VisitNear(
 }
 
 bool vtkMedialSurfaceQuery::TrianglesWithinIfEmpty(const double x[3], double distance, double emptyRadius,
-  std::vector<ClosestHit>& hits, double* nearestBound, const Nearby* nearby) const
+  std::vector<ClosestHit>& hits, double* nearestBound, const Nearby* nearby, ClosestHit* nearest) const
 {
   hits.clear();
   // ContainsBall's limit: at or below zero the ball is empty.
   const double limit = emptyRadius - this->Slack;
+  vtkMedialTriangleBVH::NearestPoint closest;
   const bool empty = this->Tree.VisitWithinIfEmpty(x, distance, limit > 0.0 ? limit : 0.0,
-    HitCollector{ hits }, nearestBound, nearby);
+    HitCollector{ hits }, nearestBound, nearby, nearest ? &closest : nullptr);
   SortByTriangle(hits);
+  if (nearest)
+  {
+    nearest->Triangle = empty ? -1 : closest.Triangle;
+    if (nearest->Triangle >= 0)
+    {
+      std::copy(closest.Point, closest.Point + 3, nearest->Point);
+      nearest->Distance = closest.Distance;
+    }
+  }
   return empty;
 }
 

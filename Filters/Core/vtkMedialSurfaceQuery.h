@@ -112,9 +112,12 @@ public:
    * When false, `hits` holds only some of them, and `nearestBound` (if given) an upper
    * bound on the distance of x's closest point (vtkMedialTriangleBVH::VisitWithinIfEmpty):
    * ClosestPoint from there finds what it finds from any larger bound, sooner. No filter.
+   * When false and `nearest` is given, it may hold that ClosestPoint's answer, found in
+   * the same walk (nearest->Triangle >= 0; else -1, and ClosestPoint must be asked).
    */
   bool TrianglesWithinIfEmpty(const double x[3], double distance, double emptyRadius,
-    std::vector<ClosestHit>& hits, double* nearestBound = nullptr, const Nearby* nearby = nullptr) const;
+    std::vector<ClosestHit>& hits, double* nearestBound = nullptr, const Nearby* nearby = nullptr,
+    ClosestHit* nearest = nullptr) const;
 
   /// The triangles within `distance` of `centre`, for TrianglesWithin and
   /// TrianglesWithinIfEmpty to read instead of walking the tree when they are asked

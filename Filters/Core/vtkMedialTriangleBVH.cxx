@@ -3009,8 +3009,12 @@ bool vtkMedialTriangleBVH::Covers(const Nearby& nearby, const double x[3], doubl
 
 bool vtkMedialTriangleBVH::VisitWithinIfEmpty(const double x[3], double distance, double emptyRadius,
   const std::function<void(double, const double*, vtkIdType)>& visit, double* nearestBound,
-  const Nearby* nearby) const
+  const Nearby* nearby, NearestPoint* nearest) const
 {
+  if (nearest)
+  {
+    nearest->Triangle = -1;
+  }
   // The blocker's distance (or emptyRadius) is above the closest point's; the pad, far
   // above the rounding of a plane offset or a closest point (ulps of the extent), keeps
   // every triangle at most that far inside the tests of a ClosestPoint walk bounded there.
@@ -3053,7 +3057,34 @@ bool vtkMedialTriangleBVH::VisitWithinIfEmpty(const double x[3], double distance
   const double limit2 = distance * distance;
   double reach2 = limit2 * (1.0 + 1e-12) + 1e-300; // as VisitWithin
   bool blocked = false;
+  // With `nearest`, once blocked the walk goes on as ClosestPoint's from the blocker's
+  // bound: the wide walk visits the lanes in the order of their keys (ties: the lower
+  // lane) whatever its reach, so the leaves both walks visit come in the same order and
+  // the first triangle at the least distance, the one ClosestPoint keeps, is the same.
+  // The nearest seen before the block counts too (a triangle nearer than emptyRadius
+  // that missed the leaf tests at that reach).
+  const bool listed = nearby && this->Covers(*nearby, x, distance);
+  const bool goOn = nearest && !listed;
+  double best2 = HUGE_VAL;
+  auto keep = [&](double d2, const double q[3], vtkIdType t) {
+    if (d2 < best2)
+    {
+      best2 = d2;
+      G::Copy(q, nearest->Point);
+      nearest->Triangle = t;
+    }
+  };
   auto test = [&](double d2, const double q[3], vtkIdType t) {
+    if (blocked)
+    {
+      keep(d2, q, t);
+      reach2 = best2; // ClosestPoint's shrinking reach
+      return true;
+    }
+    if (goOn)
+    {
+      keep(d2, q, t);
+    }
     if (d2 < empty2)
     {
       const LeafTriangle& leaf = this->LeafTriangles[this->LeafRank[t]];
@@ -3065,7 +3096,8 @@ bool vtkMedialTriangleBVH::VisitWithinIfEmpty(const double x[3], double distance
           *nearestBound = std::sqrt(d2) + pad;
         }
         blocked = true;
-        return false;
+        reach2 = best2;
+        return goOn;
       }
     }
     if (d2 <= limit2)
@@ -3074,13 +3106,24 @@ bool vtkMedialTriangleBVH::VisitWithinIfEmpty(const double x[3], double distance
     }
     return true;
   };
-  if (nearby && this->Covers(*nearby, x, distance))
+  if (listed)
   {
     this->VisitListed(*nearby, x, reach2, test);
   }
   else
   {
     this->VisitAdmissible(x, -1, nullptr, 1.0, false, reach2, test);
+  }
+  if (goOn)
+  {
+    if (blocked)
+    {
+      nearest->Distance = std::sqrt(best2);
+    }
+    else
+    {
+      nearest->Triangle = -1;
+    }
   }
   return !blocked;
 }

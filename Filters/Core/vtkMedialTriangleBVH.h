@@ -264,11 +264,20 @@ public:
    * distance; saves the contains-ball walk for the balls that are empty. When false and
    * `nearestBound` is given, it gets an upper bound on the distance of x's closest
    * point, with room for rounding: ClosestPoint(x, *nearestBound) finds the same point
-   * as from any larger bound, and its walk prunes from the start.
+   * as from any larger bound, and its walk prunes from the start. When false and
+   * `nearest` is given, the walk (if it is the tree's wide walk) goes on as that
+   * ClosestPoint walk and leaves its answer there (nearest->Triangle >= 0), else
+   * nearest->Triangle = -1: the same point, without a second walk from the root.
    */
+  struct NearestPoint
+  {
+    double Point[3] = { 0, 0, 0 };
+    double Distance = 0.0;
+    vtkIdType Triangle = -1;
+  };
   bool VisitWithinIfEmpty(const double x[3], double distance, double emptyRadius,
     const std::function<void(double, const double*, vtkIdType)>& visit, double* nearestBound = nullptr,
-    const Nearby* nearby = nullptr) const;
+    const Nearby* nearby = nullptr, NearestPoint* nearest = nullptr) const;
 
   void GatherNearby(const double centre[3], double distance, Nearby& out) const;
   /// Whether `nearby` holds every triangle within `distance` of x, with room for rounding.

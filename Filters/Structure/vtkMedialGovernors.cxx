@@ -720,14 +720,18 @@ int vtkMedialGovernors::GatherContacts(const double c[3], double radius, const d
   if ((thetaDegrees > 0.0 || requireEmpty) && radius > tolerance)
   {
     // Where the walk stopped bounds the nearest point: the closest-point walk starts there.
+    // With theta > 0 a ball that is not empty needs its nearest point: the walk goes on for it.
     double nearestBound = radius;
-    read = this->Query->TrianglesWithinIfEmpty(c, reach, radius - tolerance, s.Hits, &nearestBound);
+    const bool wantNearest = thetaDegrees > 0.0 && !requireEmpty;
+    read = this->Query->TrianglesWithinIfEmpty(
+      c, reach, radius - tolerance, s.Hits, &nearestBound, nullptr, wantNearest ? &deepest : nullptr);
     if (!read && requireEmpty)
     {
       blocked = true;
       return -1;
     }
-    if (!read && thetaDegrees > 0.0 && this->Query->ClosestPoint(c, std::min(radius, nearestBound), deepest))
+    if (!read && thetaDegrees > 0.0 &&
+      (deepest.Triangle >= 0 || this->Query->ClosestPoint(c, std::min(radius, nearestBound), deepest)))
     {
       // The ball overlaps the surface inside its cap (the sampler ignores contacts
       // there): the cap is one compound governor, and only the contacts beyond it,

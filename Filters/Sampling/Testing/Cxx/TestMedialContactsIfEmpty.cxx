@@ -11,6 +11,8 @@
 // triangles near a point beside x (vtkMedialTriangleBVH::Nearby, the seam solver's
 // bisections) give the same answers and visits (in leaf order, so compared by
 // triangle), whether the list covers the query or is ignored for not covering it.
+// Asked for the nearest point of a blocked ball, the walk goes on as ClosestPoint's
+// from the bound it gives, and finds ClosestPoint's point, distance and triangle.
 #include "MedialTestUtilities.h"
 #include "MedialTreeTestUtilities.h"
 
@@ -55,7 +57,7 @@ int CheckShape(int shape, const char* name, int resolution)
   MEDIAL_CHECK(tree.Build(mesh), "%s: no tree", name);
   std::mt19937_64 random(17);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  int queries = 0, empty = 0, blocked = 0, covered = 0;
+  int queries = 0, empty = 0, blocked = 0, covered = 0, nearestInWalk = 0;
   for (int i = 0; i < 300; ++i)
   {
     // Around the shape, or (one point in ten) far beyond its box.
@@ -91,6 +93,29 @@ int CheckShape(int shape, const char* name, int resolution)
           i, radius, exact, answer ? "empty" : "blocked", reference ? "empty" : "blocked");
         MEDIAL_CHECK(!answer || got == expected, "%s, point %d, radius %.17g, distance %.17g: %zu visits, expected %zu",
           name, i, radius, distance, got.size(), expected.size());
+        // Asked for the nearest point too: when blocked, the walk goes on as ClosestPoint's
+        // from the bound it gives, and must find that walk's point, distance and triangle.
+        {
+          std::vector<Visit> ignored;
+          double bound = HUGE_VAL;
+          vtkMedialTriangleBVH::NearestPoint nearest;
+          const bool again = tree.VisitWithinIfEmpty(x, distance, radius, into(ignored), &bound, nullptr, &nearest);
+          MEDIAL_CHECK(again == reference, "%s, point %d, radius %.17g: asked for the nearest, says %s", name, i,
+            radius, again ? "empty" : "blocked");
+          MEDIAL_CHECK(!again || nearest.Triangle < 0, "%s, point %d: an empty ball has a nearest point", name, i);
+          if (!again && nearest.Triangle >= 0)
+          {
+            double q[3], d;
+            vtkIdType t;
+            MEDIAL_CHECK(tree.ClosestPoint(x, bound, -1, nullptr, 1.0, false, q, d, t), "%s, point %d: no closest point",
+              name, i);
+            MEDIAL_CHECK(t == nearest.Triangle && d == nearest.Distance && q[0] == nearest.Point[0] &&
+                q[1] == nearest.Point[1] && q[2] == nearest.Point[2],
+              "%s, point %d, radius %.17g: nearest on triangle %lld at %.17g, ClosestPoint's on %lld at %.17g", name,
+              i, radius, static_cast<long long>(nearest.Triangle), nearest.Distance, static_cast<long long>(t), d);
+            ++nearestInWalk;
+          }
+        }
         // A list gathered about a point beside x: wide enough to cover the query, or
         // (one query in three) just too narrow, when it must be ignored.
         vtkMedialTriangleBVH::Nearby nearby;
@@ -126,7 +151,10 @@ int CheckShape(int shape, const char* name, int resolution)
   MEDIAL_CHECK(empty > queries / 4 && blocked > queries / 4, "%s: %d empty, %d blocked of %d", name, empty,
     blocked, queries);
   MEDIAL_CHECK(covered > queries / 2, "%s: %d of %d queries read from a list", name, covered, queries);
-  std::printf("%s: %d queries agree (%d empty, %d blocked, %d from a list)\n", name, queries, empty, blocked, covered);
+  MEDIAL_CHECK(nearestInWalk > blocked / 2, "%s: %d of %d blocked queries found their nearest point in the walk",
+    name, nearestInWalk, blocked);
+  std::printf("%s: %d queries agree (%d empty, %d blocked, %d nearest in the walk, %d from a list)\n", name,
+    queries, empty, blocked, nearestInWalk, covered);
   return EXIT_SUCCESS;
 }
 }
