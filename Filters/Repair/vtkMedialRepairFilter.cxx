@@ -1737,7 +1737,9 @@ bool vtkMedialRepairFilter::vtkInternals::Run(vtkPolyData* input, vtkPolyData* o
   }
   // Nothing changed but what the preparation does anyway (touching shells kept apart,
   // a pinch it would merge back): the preparation keeps the mesh it has.
-  if (!wrap && forPreparation)
+  // (the triangle count first: a soup of the whole mesh is not built where a step
+  // changed it, as on a large surface whose crossings were removed)
+  if (!wrap && forPreparation && static_cast<vtkIdType>(work.Triangles.size()) == m0.GetNumberOfTriangles())
   {
     const Soup prepared = SoupOf(m0);
     if (work.Points == prepared.Points && work.Triangles == prepared.Triangles)
